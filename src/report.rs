@@ -1,0 +1,165 @@
+//! Reports as data: every checker returns a [`CheckResult`] (serde-serialisable), rendered as
+//! text or JSON by the CLI. A result always carries the SPEC.md ID of the statement it checks.
+
+use serde::Serialize;
+
+/// How many offending elements a check lists in full; the total is always counted.
+pub const MAX_WITNESSES: usize = 8;
+
+/// The verdict vocabulary of SPEC.md.
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    /// The statement holds on the input (decided, certified or on every sample).
+    Holds,
+    /// The statement holds on the stated restricted domain only.
+    HoldsRestricted { domain: String },
+    /// The statement fails; witnesses are attached.
+    Fails,
+    /// Not a statement of the paper: an informational finding (e.g. unreferenced vertices).
+    Warning,
+    /// The check could not run because a precondition failed (named).
+    Skipped { reason: String },
+}
+
+impl Verdict {
+    pub fn is_failure(&self) -> bool {
+        matches!(self, Verdict::Fails)
+    }
+    pub fn label(&self) -> &'static str {
+        match self {
+            Verdict::Holds => "holds",
+            Verdict::HoldsRestricted { .. } => "holds (restricted)",
+            Verdict::Fails => "FAILS",
+            Verdict::Warning => "warning",
+            Verdict::Skipped { .. } => "skipped",
+        }
+    }
+}
+
+/// One concrete offending element or counterexample.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Witness {
+    /// Human-readable description, e.g. "face 12 (line 40): vertices 3, 7, 9 are collinear".
+    pub text: String,
+    /// Machine-readable form of the same witness.
+    pub data: serde_json::Value,
+}
+
+impl Witness {
+    pub fn new(text: impl Into<String>, data: serde_json::Value) -> Self {
+        Witness { text: text.into(), data }
+    }
+}
+
+/// The result of one named check.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CheckResult {
+    /// SPEC.md ID of the statement, e.g. `D3.1.1` or `D3.1.6(edges)`.
+    pub id: String,
+    /// Short name of the check.
+    pub name: String,
+    pub verdict: Verdict,
+    /// Number of offending elements found (all of them, not only the listed ones).
+    pub offenders: u64,
+    /// The first [`MAX_WITNESSES`] offending elements.
+    pub witnesses: Vec<Witness>,
+    /// Number of elements or samples examined.
+    pub examined: u64,
+    /// Seed of the sampler, when the check samples.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// Worst deviation found, when the check measures one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub worst_deviation: Option<f64>,
+    /// Tolerance used, derived from the precision in use, when the check is numerical.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// Free-form remark (method, precision, restriction).
+    #[serde(skip_serializing_if = "String::is_empty")]
+    pub note: String,
+}
+
+impl CheckResult {
+    pub fn new(id: impl Into<String>, name: impl Into<String>) -> Self {
+        CheckResult {
+            id: id.into(),
+            name: name.into(),
+            verdict: Verdict::Holds,
+            offenders: 0,
+            witnesses: Vec::new(),
+            examined: 0,
+            seed: None,
+            worst_deviation: None,
+            tolerance: None,
+            note: String::new(),
+        }
+    }
+
+    /// Record one offending element: counted always, listed while fewer than
+    /// [`MAX_WITNESSES`] are listed. Sets the verdict to `Fails` unless it is a warning.
+    pub fn offend(&mut self, w: impl FnOnce() -> Witness) {
+        self.offenders += 1;
+        if self.witnesses.len() < MAX_WITNESSES {
+            self.witnesses.push(w());
+        }
+        if !matches!(self.verdict, Verdict::Warning) {
+            self.verdict = Verdict::Fails;
+        }
+    }
+
+    pub fn with_note(mut self, note: impl Into<String>) -> Self {
+        self.note = note.into();
+        self
+    }
+
+    pub fn failed(&self) -> bool {
+        self.verdict.is_failure()
+    }
+}
+
+/// Render a list of results as a text table, one line per check plus indented witnesses.
+pub fn render_text(results: &[CheckResult]) -> String {
+    use std::fmt::Write;
+    let mut s = String::new();
+    for r in results {
+        let _ = write!(s, "{:<8} {:<18} {:<48}", r.verdict.label(), r.id, r.name);
+        let _ = write!(s, " examined {}", r.examined);
+        if r.offenders > 0 {
+            let _ = write!(s, ", offending {}", r.offenders);
+        }
+        if let Some(seed) = r.seed {
+            let _ = write!(s, ", seed {seed}");
+        }
+        if let Some(d) = r.worst_deviation {
+            let _ = write!(s, ", worst deviation {d:.3e}");
+        }
+        if let Some(t) = r.tolerance {
+            let _ = write!(s, ", tolerance {t:.3e}");
+        }
+        s.push('\n');
+        match &r.verdict {
+            Verdict::HoldsRestricted { domain } => {
+                let _ = writeln!(s, "           restricted to: {domain}");
+            }
+            Verdict::Skipped { reason } => {
+                let _ = writeln!(s, "           skipped: {reason}");
+            }
+            _ => {}
+        }
+        if !r.note.is_empty() {
+            let _ = writeln!(s, "           note: {}", r.note);
+        }
+        for w in &r.witnesses {
+            let _ = writeln!(s, "           - {}", w.text);
+        }
+        if r.offenders > r.witnesses.len() as u64 {
+            let _ = writeln!(
+                s,
+                "           ... and {} more",
+                r.offenders - r.witnesses.len() as u64
+            );
+        }
+    }
+    s
+}
