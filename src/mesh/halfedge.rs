@@ -1,7 +1,225 @@
-//! Sec. 6.1.1 (DCEL) and Sec. 6.1.2 (labelling s_v). Being written in issue 2.
+//! Sec. 6.1.1: the half-edge structure (DCEL) of a validated simplicial surface, and
+//! Sec. 6.1.2: the labelling of each vertex's outgoing half-edges 0..m_v−1 in one cyclic
+//! order, which *is* the simplicial isomorphism s_v : st(v, K) → T_v of Def. 4.1.4
+//! (s_v(v) = v′, s_v(dest h) = v′_{label h}).
+//!
+//! Half-edge `3f + k` runs from corner k to corner k+1 of face f (faces consistently
+//! oriented). The labels go counterclockwise with respect to that orientation:
+//! label(rot h) = label(h) + 1 (mod m_v) with rot h = twin(prev h), so the link vertices
+//! v_0, …, v_{m−1} of Def. 4.1.4 are consecutive: [v, v_i, v_{i+1}] is a triangle.
 
-/// A validated simplicial surface (Def. 3.1.6). Only the validator constructs it.
+use crate::mesh::{FaceId, HalfedgeId, RawMesh, VertexId};
+use std::path::PathBuf;
+
+/// A simplicial surface (Def. 3.1.6) in R³ that passed every check of Sec. 3.1, with its
+/// consistently oriented DCEL. Only [`crate::mesh::validate::validate`] constructs it.
 #[derive(Debug, Clone)]
 pub struct SimplicialSurface {
-    _private: (),
+    positions: Vec<[f64; 3]>,
+    /// Faces, re-oriented consistently where the file was not.
+    faces: Vec<[VertexId; 3]>,
+    /// twin[h]: the mate of half-edge h (Sec. 6.1.1).
+    twin: Vec<HalfedgeId>,
+    /// label[h] = s_{origin h}(dest h) as an index i of v′_i.
+    label: Vec<u32>,
+    /// CSR: out[out_start[v] + i] is the outgoing half-edge of v with label i.
+    out_start: Vec<u32>,
+    out: Vec<HalfedgeId>,
+    referenced: Vec<bool>,
+    flipped_faces: u64,
+    source: Option<PathBuf>,
+}
+
+impl SimplicialSurface {
+    /// Build the DCEL. Called by the validator only after every check of Sec. 3.1 passed
+    /// (so every edge has two faces and every link is one cycle); returns `None` if the
+    /// structure nevertheless cannot be built, rather than panicking.
+    pub(crate) fn from_validated(
+        raw: &RawMesh,
+        flip: &[bool],
+        referenced: &[bool],
+    ) -> Option<SimplicialSurface> {
+        let nv = raw.positions.len();
+        let nf = raw.faces.len();
+        let faces: Vec<[VertexId; 3]> = raw
+            .faces
+            .iter()
+            .enumerate()
+            .map(|(f, t)| {
+                let t = if flip.get(f).copied().unwrap_or(false) {
+                    [t[0], t[2], t[1]]
+                } else {
+                    *t
+                };
+                [VertexId(t[0]), VertexId(t[1]), VertexId(t[2])]
+            })
+            .collect();
+        let nh = 3 * nf;
+        // Twins by sorting directed half-edges (origin, dest).
+        let mut directed: Vec<(u32, u32, u32)> = Vec::with_capacity(nh);
+        for (f, t) in faces.iter().enumerate() {
+            for k in 0..3 {
+                directed.push((t[k].0, t[(k + 1) % 3].0, (3 * f + k) as u32));
+            }
+        }
+        directed.sort_unstable();
+        let find = |a: u32, b: u32| -> Option<u32> {
+            directed
+                .binary_search_by(|x| (x.0, x.1).cmp(&(a, b)))
+                .ok()
+                .map(|i| directed[i].2)
+        };
+        let mut twin = vec![HalfedgeId(0); nh];
+        for &(a, b, h) in &directed {
+            twin[h as usize] = HalfedgeId(find(b, a)?);
+        }
+        // Outgoing half-edges per vertex, ordered by rotation rot h = twin(prev h).
+        let mut degree = vec![0u32; nv];
+        let mut first: Vec<Option<u32>> = vec![None; nv];
+        for (f, t) in faces.iter().enumerate() {
+            for k in 0..3 {
+                let v = t[k].idx();
+                degree[v] += 1;
+                if first[v].is_none() {
+                    first[v] = Some((3 * f + k) as u32);
+                }
+            }
+        }
+        let mut out_start = vec![0u32; nv + 1];
+        for v in 0..nv {
+            out_start[v + 1] = out_start[v] + degree[v];
+        }
+        let mut out = vec![HalfedgeId(0); out_start[nv] as usize];
+        let mut label = vec![0u32; nh];
+        let prev = |h: u32| (h / 3) * 3 + (h % 3 + 2) % 3;
+        for v in 0..nv {
+            let Some(h0) = first[v] else { continue };
+            let mut h = h0;
+            for i in 0..degree[v] {
+                out[(out_start[v] + i) as usize] = HalfedgeId(h);
+                label[h as usize] = i;
+                h = twin[prev(h) as usize].0;
+                if h == h0 && i + 1 < degree[v] {
+                    return None; // link not one cycle: validator would have said so
+                }
+            }
+            if h != h0 {
+                return None;
+            }
+        }
+        Some(SimplicialSurface {
+            positions: raw.positions.clone(),
+            faces,
+            twin,
+            label,
+            out_start,
+            out,
+            referenced: referenced.to_vec(),
+            flipped_faces: flip.iter().filter(|&&b| b).count() as u64,
+            source: raw.source.clone(),
+        })
+    }
+
+    /// Number of vertex slots (file vertices, including unreferenced ones).
+    pub fn vertex_slots(&self) -> usize {
+        self.positions.len()
+    }
+    /// The vertices of K (the index set I of Ch. 4): file indices used by some face.
+    pub fn vertices(&self) -> impl Iterator<Item = VertexId> + '_ {
+        (0..self.positions.len() as u32)
+            .map(VertexId)
+            .filter(|v| self.referenced[v.idx()])
+    }
+    pub fn num_vertices(&self) -> usize {
+        self.referenced.iter().filter(|&&b| b).count()
+    }
+    /// Is `v` a vertex of K?
+    pub fn contains(&self, v: VertexId) -> bool {
+        self.referenced.get(v.idx()).copied().unwrap_or(false)
+    }
+    pub fn num_faces(&self) -> usize {
+        self.faces.len()
+    }
+    pub fn num_halfedges(&self) -> usize {
+        self.twin.len()
+    }
+    pub fn num_edges(&self) -> usize {
+        self.twin.len() / 2
+    }
+    pub fn faces(&self) -> impl Iterator<Item = FaceId> {
+        (0..self.faces.len() as u32).map(FaceId)
+    }
+    /// Corners of face f, in the consistent orientation.
+    pub fn face(&self, f: FaceId) -> [VertexId; 3] {
+        self.faces[f.idx()]
+    }
+    pub fn position(&self, v: VertexId) -> [f64; 3] {
+        self.positions[v.idx()]
+    }
+    /// Faces the validator reversed to obtain a consistent orientation.
+    pub fn flipped_faces(&self) -> u64 {
+        self.flipped_faces
+    }
+    pub fn source(&self) -> Option<&std::path::Path> {
+        self.source.as_deref()
+    }
+
+    /// m_v, the degree of v (Def. 4.1.1); 0 for a vertex slot not in K.
+    pub fn degree(&self, v: VertexId) -> u32 {
+        match (self.out_start.get(v.idx()), self.out_start.get(v.idx() + 1)) {
+            (Some(a), Some(b)) => b - a,
+            _ => 0,
+        }
+    }
+    /// Outgoing half-edges of v in label order: `outgoing(v)[i]` points to s_v⁻¹(v′_i).
+    pub fn outgoing(&self, v: VertexId) -> &[HalfedgeId] {
+        match (self.out_start.get(v.idx()), self.out_start.get(v.idx() + 1)) {
+            (Some(&a), Some(&b)) => &self.out[a as usize..b as usize],
+            _ => &[],
+        }
+    }
+    pub fn origin(&self, h: HalfedgeId) -> VertexId {
+        self.faces[h.idx() / 3][h.idx() % 3]
+    }
+    pub fn dest(&self, h: HalfedgeId) -> VertexId {
+        self.faces[h.idx() / 3][(h.idx() + 1) % 3]
+    }
+    pub fn twin(&self, h: HalfedgeId) -> HalfedgeId {
+        self.twin[h.idx()]
+    }
+    pub fn next(&self, h: HalfedgeId) -> HalfedgeId {
+        HalfedgeId((h.0 / 3) * 3 + (h.0 % 3 + 1) % 3)
+    }
+    pub fn prev(&self, h: HalfedgeId) -> HalfedgeId {
+        HalfedgeId((h.0 / 3) * 3 + (h.0 % 3 + 2) % 3)
+    }
+    pub fn face_of(&self, h: HalfedgeId) -> FaceId {
+        FaceId(h.0 / 3)
+    }
+    /// The Sec. 6.1.2 label of h: s_{origin h}(dest h) = v′_{label h}.
+    pub fn label(&self, h: HalfedgeId) -> u32 {
+        self.label[h.idx()]
+    }
+    /// The half-edge u → w, if [u, w] is an edge of K.
+    pub fn halfedge(&self, u: VertexId, w: VertexId) -> Option<HalfedgeId> {
+        self.outgoing(u)
+            .iter()
+            .copied()
+            .find(|&h| self.dest(h) == w)
+    }
+    /// Def. 4.1.4: s_v(x) for x ∈ lk(v, K), as the index i of v′_i.
+    pub fn s(&self, v: VertexId, x: VertexId) -> Option<u32> {
+        self.halfedge(v, x).map(|h| self.label(h))
+    }
+    /// s_v⁻¹(v′_i): the link vertex v_i of Def. 4.1.4.
+    pub fn link_vertex(&self, v: VertexId, i: u32) -> Option<VertexId> {
+        self.outgoing(v).get(i as usize).map(|&h| self.dest(h))
+    }
+    /// Undirected edges [u, w] with u < w.
+    pub fn edges(&self) -> impl Iterator<Item = (VertexId, VertexId)> + '_ {
+        (0..self.twin.len() as u32)
+            .map(HalfedgeId)
+            .filter(|&h| self.origin(h) < self.dest(h))
+            .map(|h| (self.origin(h), self.dest(h)))
+    }
 }

@@ -6,10 +6,12 @@
 //! * [`halfedge`] is the DCEL of Sec. 6.1.1 with the labelling s_v of Sec. 6.1.2.
 
 pub mod error;
+pub mod generate;
 pub mod halfedge;
 pub mod ids;
 pub mod io;
 pub mod raw;
+pub mod star;
 pub mod validate;
 
 pub use error::{Location, MeshError};

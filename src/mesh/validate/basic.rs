@@ -1,0 +1,137 @@
+//! Sanity checks that precede the paper's definitions: indices in range, finite coordinates,
+//! repeated corners, duplicate faces, unreferenced vertices.
+
+use super::{ErrorClass, Incidence};
+use crate::mesh::RawMesh;
+use crate::report::{CheckResult, Verdict, Witness};
+use serde_json::json;
+
+/// Def. 3.1.3(i) as it applies to a triangle list: K is the closure of the listed triangles,
+/// so "every face of a simplex of K is in K" fails exactly when a triangle names a vertex
+/// that does not exist (an index out of range).
+pub fn indices_in_range(raw: &RawMesh) -> CheckResult {
+    let n = raw.positions.len() as u64;
+    let mut r = CheckResult::new("D3.1.3(i)", "faces of faces present (indices in range)");
+    r.examined = raw.faces.len() as u64;
+    for (f, tri) in raw.faces.iter().enumerate() {
+        for &i in tri {
+            if u64::from(i) >= n {
+                r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "{}: vertex index {} out of range ({} vertices): its 0-face is missing",
+                            raw.describe_face(f),
+                            i,
+                            n
+                        ),
+                        json!({"face": f, "index": i, "vertices": n}),
+                    )
+                });
+            }
+        }
+    }
+    r
+}
+
+/// Coordinates must be finite real numbers (a NaN or infinite coordinate is not a point of R³).
+pub fn coordinates_finite(raw: &RawMesh) -> CheckResult {
+    let mut r = CheckResult::new("X-finite", "coordinates finite");
+    r.examined = raw.positions.len() as u64;
+    for (v, p) in raw.positions.iter().enumerate() {
+        if !p.iter().all(|c| c.is_finite()) {
+            r.offend(|| {
+                Witness::new(
+                    format!("{}: coordinates {:?} not finite", raw.describe_vertex(v), p),
+                    json!({"vertex": v, "position": format!("{p:?}")}),
+                )
+            });
+        }
+    }
+    r
+}
+
+/// A triangle whose corner list repeats a vertex spans fewer than 3 points (Def. 3.1.1).
+pub fn repeated_corners(raw: &RawMesh) -> (CheckResult, Vec<bool>) {
+    let mut r = CheckResult::new("X-repeated-corner", "no face repeats a vertex");
+    r.examined = raw.faces.len() as u64;
+    let mut bad = vec![false; raw.faces.len()];
+    for (f, t) in raw.faces.iter().enumerate() {
+        if t[0] == t[1] || t[1] == t[2] || t[0] == t[2] {
+            bad[f] = true;
+            r.offend(|| {
+                Witness::new(
+                    format!("{}: corners {:?} repeat a vertex", raw.describe_face(f), t),
+                    json!({"face": f, "corners": t}),
+                )
+            });
+        }
+    }
+    (r, bad)
+}
+
+/// Two faces with the same vertex set (in any order or orientation) are one simplex listed
+/// twice; Def. 3.1.3 describes a *set* of simplices.
+pub fn duplicate_faces(raw: &RawMesh, inc: &Incidence) -> CheckResult {
+    let mut r = CheckResult::new("X-duplicate-face", "no duplicate faces");
+    r.examined = raw.faces.len() as u64;
+    for group in inc.duplicate_groups() {
+        let (first, rest) = match group.split_first() {
+            Some(x) => x,
+            None => continue,
+        };
+        for &g in rest {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "{} duplicates {} (vertices {:?})",
+                        raw.describe_face(g as usize),
+                        raw.describe_face(*first as usize),
+                        raw.faces.get(g as usize)
+                    ),
+                    json!({"face": g, "duplicate_of": first}),
+                )
+            });
+        }
+    }
+    r
+}
+
+/// Vertices that no face uses are not in K (K is the closure of the triangles). Not an error,
+/// but reported: a user's vertex ids stay file indices, so these ids are not in I.
+pub fn unreferenced_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
+    let mut r = CheckResult::new("X-unreferenced", "every vertex is used by a face");
+    r.verdict = Verdict::Warning;
+    r.examined = raw.positions.len() as u64;
+    let mut any = false;
+    for (v, &used) in referenced.iter().enumerate() {
+        if !used {
+            any = true;
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "{} is used by no face (not a vertex of K)",
+                        raw.describe_vertex(v)
+                    ),
+                    json!({"vertex": v}),
+                )
+            });
+        }
+    }
+    if !any {
+        r.verdict = Verdict::Holds;
+    }
+    r
+}
+
+pub(super) fn classes_of(r: &CheckResult) -> Vec<ErrorClass> {
+    if !r.failed() {
+        return vec![];
+    }
+    match r.id.as_str() {
+        "X-duplicate-face" => vec![ErrorClass::DuplicateFace],
+        "X-repeated-corner" => vec![ErrorClass::DegenerateFace],
+        "D3.1.3(i)" => vec![ErrorClass::IndexOutOfRange],
+        "X-finite" => vec![ErrorClass::NonFinite],
+        _ => vec![],
+    }
+}

@@ -1,0 +1,127 @@
+//! Edge and vertex incidences of a triangle list, built once by sorting (O(F log F)), shared
+//! by the combinatorial checks.
+
+use crate::mesh::RawMesh;
+
+/// Compressed incidence tables over the *well-formed* faces (indices in range, three distinct
+/// corners); the other faces are reported by their own checks and take no part here.
+#[derive(Debug, Clone, Default)]
+pub struct Incidence {
+    /// Faces that take part (well-formed).
+    pub active: Vec<bool>,
+    /// Undirected edges (a < b), sorted.
+    pub edges: Vec<(u32, u32)>,
+    /// CSR: faces of edge e are `edge_faces[edge_start[e]..edge_start[e+1]]`.
+    pub edge_start: Vec<u32>,
+    pub edge_faces: Vec<u32>,
+    /// CSR: faces of vertex v are `vertex_faces[vertex_start[v]..vertex_start[v+1]]`.
+    pub vertex_start: Vec<u32>,
+    pub vertex_faces: Vec<u32>,
+    /// Faces sorted by their sorted vertex triple (for duplicate detection).
+    sorted_keys: Vec<([u32; 3], u32)>,
+}
+
+impl Incidence {
+    pub fn build(raw: &RawMesh, active: Vec<bool>) -> Incidence {
+        let nv = raw.positions.len();
+        let mut half: Vec<(u32, u32, u32)> = Vec::with_capacity(raw.faces.len() * 3);
+        let mut deg = vec![0u32; nv + 1];
+        let mut sorted_keys = Vec::with_capacity(raw.faces.len());
+        for (f, t) in raw.faces.iter().enumerate() {
+            if !active[f] {
+                continue;
+            }
+            for k in 0..3 {
+                let a = t[k];
+                let b = t[(k + 1) % 3];
+                half.push((a.min(b), a.max(b), f as u32));
+                deg[a as usize] += 1;
+            }
+            let mut key = *t;
+            key.sort_unstable();
+            sorted_keys.push((key, f as u32));
+        }
+        half.sort_unstable();
+        sorted_keys.sort_unstable();
+        let mut edges = Vec::new();
+        let mut edge_start = Vec::new();
+        let mut edge_faces = Vec::with_capacity(half.len());
+        let mut i = 0;
+        while i < half.len() {
+            let (a, b, _) = half[i];
+            edges.push((a, b));
+            edge_start.push(edge_faces.len() as u32);
+            while i < half.len() && half[i].0 == a && half[i].1 == b {
+                edge_faces.push(half[i].2);
+                i += 1;
+            }
+        }
+        edge_start.push(edge_faces.len() as u32);
+        // Vertex → faces CSR.
+        let mut vertex_start = vec![0u32; nv + 1];
+        for v in 0..nv {
+            vertex_start[v + 1] = vertex_start[v] + deg[v];
+        }
+        let mut fill = vertex_start.clone();
+        let mut vertex_faces = vec![0u32; vertex_start[nv] as usize];
+        for (f, t) in raw.faces.iter().enumerate() {
+            if !active[f] {
+                continue;
+            }
+            for &a in t {
+                let slot = &mut fill[a as usize];
+                vertex_faces[*slot as usize] = f as u32;
+                *slot += 1;
+            }
+        }
+        Incidence {
+            active,
+            edges,
+            edge_start,
+            edge_faces,
+            vertex_start,
+            vertex_faces,
+            sorted_keys,
+        }
+    }
+
+    pub fn faces_of_edge(&self, e: usize) -> &[u32] {
+        &self.edge_faces[self.edge_start[e] as usize..self.edge_start[e + 1] as usize]
+    }
+
+    pub fn faces_of_vertex(&self, v: usize) -> &[u32] {
+        match (self.vertex_start.get(v), self.vertex_start.get(v + 1)) {
+            (Some(&a), Some(&b)) => &self.vertex_faces[a as usize..b as usize],
+            _ => &[],
+        }
+    }
+
+    /// Index of the undirected edge {a, b}, if present.
+    pub fn edge_index(&self, a: u32, b: u32) -> Option<usize> {
+        self.edges.binary_search(&(a.min(b), a.max(b))).ok()
+    }
+
+    /// Groups (of size ≥ 2) of faces with the same vertex set.
+    pub fn duplicate_groups(&self) -> Vec<Vec<u32>> {
+        let mut out = Vec::new();
+        let mut i = 0;
+        while i < self.sorted_keys.len() {
+            let mut j = i + 1;
+            while j < self.sorted_keys.len() && self.sorted_keys[j].0 == self.sorted_keys[i].0 {
+                j += 1;
+            }
+            if j - i > 1 {
+                out.push(self.sorted_keys[i..j].iter().map(|x| x.1).collect());
+            }
+            i = j;
+        }
+        out
+    }
+
+    /// Vertices used by at least one active face.
+    pub fn referenced(&self, nv: usize) -> Vec<bool> {
+        (0..nv)
+            .map(|v| !self.faces_of_vertex(v).is_empty())
+            .collect()
+    }
+}

@@ -1,0 +1,194 @@
+//! Def. 3.1.3(ii): two simplices of K meet, if at all, in a common face. For a triangle list in
+//! R³ this means: no two vertices at the same point, and two triangles meet exactly in their
+//! shared vertex or edge (or not at all). Decided exactly (see [`super::predicates`]), with an
+//! R*-tree over the triangles' bounding boxes so only nearby pairs are tested.
+
+use super::predicates::{
+    in_cone_at, nondegenerate_projection, orient3, segment_meets_triangle, P3,
+};
+use crate::mesh::RawMesh;
+use crate::report::{CheckResult, Witness};
+use rayon::prelude::*;
+use rstar::{RTree, RTreeObject, AABB};
+use serde_json::json;
+use std::cmp::Ordering;
+
+struct FaceBox {
+    face: u32,
+    env: AABB<[f64; 3]>,
+}
+
+impl RTreeObject for FaceBox {
+    type Envelope = AABB<[f64; 3]>;
+    fn envelope(&self) -> Self::Envelope {
+        self.env
+    }
+}
+
+/// Two distinct vertices of K at the same point of R³ violate Def. 3.1.3(ii) (two 0-simplices
+/// meet but are not a common face).
+pub fn coincident_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
+    let mut r = CheckResult::new("D3.1.3(ii)(vertices)", "no two vertices at the same point");
+    let mut vs: Vec<u32> = (0..raw.positions.len() as u32)
+        .filter(|&v| {
+            referenced.get(v as usize).copied().unwrap_or(false)
+                && raw.positions[v as usize].iter().all(|c| c.is_finite())
+        })
+        .collect();
+    r.examined = vs.len() as u64;
+    // -0.0 and 0.0 are the same point: compare as numbers, not bits.
+    let key = |v: &u32| raw.positions[*v as usize];
+    vs.sort_by(|a, b| {
+        let (pa, pb) = (key(a), key(b));
+        pa.partial_cmp(&pb).unwrap_or(Ordering::Equal)
+    });
+    for w in vs.windows(2) {
+        if key(&w[0]) == key(&w[1]) {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "{} and {} are both at {:?}",
+                        raw.describe_vertex(w[0] as usize),
+                        raw.describe_vertex(w[1] as usize),
+                        key(&w[0])
+                    ),
+                    json!({"vertices": [w[0], w[1]]}),
+                )
+            });
+        }
+    }
+    r
+}
+
+/// Exact test: does the intersection of triangles t1 and t2 (non-degenerate, distinct vertex
+/// sets) contain a point that is not in a common face?
+pub fn triangles_meet_improperly(pos: &[P3], t1: [u32; 3], t2: [u32; 3]) -> bool {
+    let p = |i: u32| &pos[i as usize];
+    let shared: Vec<u32> = t1.iter().copied().filter(|x| t2.contains(x)).collect();
+    match shared.len() {
+        0 => {
+            (0..3).any(|k| {
+                segment_meets_triangle(p(t1[k]), p(t1[(k + 1) % 3]), p(t2[0]), p(t2[1]), p(t2[2]))
+            }) || (0..3).any(|k| {
+                segment_meets_triangle(p(t2[k]), p(t2[(k + 1) % 3]), p(t1[0]), p(t1[1]), p(t1[2]))
+            })
+        }
+        1 => {
+            let v = shared[0];
+            let check = |a: [u32; 3], b: [u32; 3]| -> bool {
+                // Rotate `a` so that a[0] = v.
+                let k = a.iter().position(|&x| x == v).unwrap_or(0);
+                let (a1, a2) = (a[(k + 1) % 3], a[(k + 2) % 3]);
+                let kb = b.iter().position(|&x| x == v).unwrap_or(0);
+                let (b1, b2) = (b[(kb + 1) % 3], b[(kb + 2) % 3]);
+                // The edge of `a` opposite v: any common point is not v.
+                if segment_meets_triangle(p(a1), p(a2), p(v), p(b1), p(b2)) {
+                    return true;
+                }
+                // An edge [v, a_i] meets b beyond v only if it lies in b's plane and points
+                // into b's corner at v.
+                [a1, a2].iter().any(|&ai| {
+                    orient3(p(v), p(b1), p(b2), p(ai)) == Ordering::Equal
+                        && in_cone_at(p(v), p(b1), p(b2), p(ai))
+                })
+            };
+            check(t1, t2) || check(t2, t1)
+        }
+        2 => {
+            // Sharing the edge [s0, s1]: the triangles overlap iff they are coplanar and the
+            // opposite corners lie on the same side of the edge.
+            let (s0, s1) = (shared[0], shared[1]);
+            let o1 = t1
+                .iter()
+                .copied()
+                .find(|x| !shared.contains(x))
+                .unwrap_or(s0);
+            let o2 = t2
+                .iter()
+                .copied()
+                .find(|x| !shared.contains(x))
+                .unwrap_or(s0);
+            if orient3(p(t1[0]), p(t1[1]), p(t1[2]), p(o2)) != Ordering::Equal {
+                return false;
+            }
+            match nondegenerate_projection(p(t1[0]), p(t1[1]), p(t1[2])) {
+                Some(pr) => pr.orient(p(s0), p(s1), p(o1)) == pr.orient(p(s0), p(s1), p(o2)),
+                None => false,
+            }
+        }
+        _ => false,
+    }
+}
+
+/// Def. 3.1.3(ii) for triangles: every pair of triangles meets only in a common face.
+/// `eligible[f]` marks the faces that are well-formed, finite and non-degenerate (the others
+/// are reported by their own checks; exact predicates on a degenerate triangle answer a
+/// different question). Pairs with identical vertex sets are duplicates, reported elsewhere.
+pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult {
+    let mut r = CheckResult::new(
+        "D3.1.3(ii)(triangles)",
+        "triangles meet only in common faces (no self-intersection)",
+    );
+    let pos = &raw.positions;
+    let boxes: Vec<FaceBox> = raw
+        .faces
+        .iter()
+        .enumerate()
+        .filter(|(f, _)| eligible.get(*f).copied().unwrap_or(false))
+        .map(|(f, t)| {
+            let mut lo = [f64::INFINITY; 3];
+            let mut hi = [f64::NEG_INFINITY; 3];
+            for &i in t {
+                for d in 0..3 {
+                    lo[d] = lo[d].min(pos[i as usize][d]);
+                    hi[d] = hi[d].max(pos[i as usize][d]);
+                }
+            }
+            FaceBox {
+                face: f as u32,
+                env: AABB::from_corners(lo, hi),
+            }
+        })
+        .collect();
+    r.examined = boxes.len() as u64;
+    let tree = RTree::bulk_load(boxes);
+    let mut hits: Vec<(u32, u32)> = tree
+        .iter()
+        .collect::<Vec<_>>()
+        .par_iter()
+        .flat_map_iter(|fb| {
+            let t1 = raw.faces[fb.face as usize];
+            let mut k1 = t1;
+            k1.sort_unstable();
+            tree.locate_in_envelope_intersecting(&fb.env)
+                .filter(move |o| o.face > fb.face)
+                .filter_map(move |o| {
+                    let t2 = raw.faces[o.face as usize];
+                    let mut k2 = t2;
+                    k2.sort_unstable();
+                    if k1 != k2 && triangles_meet_improperly(pos, t1, t2) {
+                        Some((fb.face, o.face))
+                    } else {
+                        None
+                    }
+                })
+        })
+        .collect();
+    hits.sort_unstable();
+    for (a, b) in hits {
+        r.offend(|| {
+            Witness::new(
+                format!(
+                    "{} {:?} and {} {:?} intersect outside a common face",
+                    raw.describe_face(a as usize),
+                    raw.faces[a as usize],
+                    raw.describe_face(b as usize),
+                    raw.faces[b as usize]
+                ),
+                json!({"faces": [a, b]}),
+            )
+        });
+    }
+    r.note = "exact orientation predicates; R*-tree candidate pairs".into();
+    r
+}

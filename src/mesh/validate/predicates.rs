@@ -1,0 +1,128 @@
+//! Exact geometric predicates on f64 coordinates. Every f64 is a rational number, so "exactly
+//! zero" is meaningful; `robust` (Shewchuk's adaptive-precision arithmetic) returns the sign of
+//! the exact determinant, which is all these tests use. Inputs must be finite.
+
+use robust::{orient2d, orient3d, Coord, Coord3D};
+use std::cmp::Ordering;
+
+pub type P3 = [f64; 3];
+
+fn c3(p: &P3) -> Coord3D<f64> {
+    Coord3D {
+        x: p[0],
+        y: p[1],
+        z: p[2],
+    }
+}
+
+/// Sign of the exact orientation determinant of (a, b, c, d).
+pub fn orient3(a: &P3, b: &P3, c: &P3, d: &P3) -> Ordering {
+    let v = orient3d(c3(a), c3(b), c3(c), c3(d));
+    v.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+}
+
+/// A projection R³ → R² that drops coordinate `drop`.
+#[derive(Debug, Clone, Copy)]
+pub struct Proj {
+    pub drop: usize,
+}
+
+impl Proj {
+    pub fn apply(&self, p: &P3) -> Coord<f64> {
+        match self.drop {
+            0 => Coord { x: p[1], y: p[2] },
+            1 => Coord { x: p[2], y: p[0] },
+            _ => Coord { x: p[0], y: p[1] },
+        }
+    }
+    pub fn orient(&self, a: &P3, b: &P3, c: &P3) -> Ordering {
+        let v = orient2d(self.apply(a), self.apply(b), self.apply(c));
+        v.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+    }
+}
+
+/// Def. 3.1.1 for a triangle in R³: a, b, c are affinely independent iff (b−a)×(c−a) ≠ 0,
+/// i.e. iff at least one of its three coordinate projections has non-zero exact orientation.
+/// Returns a projection under which the triangle is non-degenerate, or `None` when the three
+/// points are collinear (or coincide).
+pub fn nondegenerate_projection(a: &P3, b: &P3, c: &P3) -> Option<Proj> {
+    (0..3)
+        .rev()
+        .map(|drop| Proj { drop })
+        .find(|p| p.orient(a, b, c) != Ordering::Equal)
+}
+
+fn sgn(o: Ordering) -> i8 {
+    match o {
+        Ordering::Less => -1,
+        Ordering::Equal => 0,
+        Ordering::Greater => 1,
+    }
+}
+
+/// Closed point-in-triangle test in a 2-D projection where (a, b, c) is non-degenerate.
+pub fn point_in_triangle_2d(pr: Proj, p: &P3, a: &P3, b: &P3, c: &P3) -> bool {
+    let s = sgn(pr.orient(a, b, c));
+    let o1 = sgn(pr.orient(a, b, p)) * s;
+    let o2 = sgn(pr.orient(b, c, p)) * s;
+    let o3 = sgn(pr.orient(c, a, p)) * s;
+    o1 >= 0 && o2 >= 0 && o3 >= 0
+}
+
+fn on_segment_2d(pr: Proj, p: &P3, q: &P3, x: &P3) -> bool {
+    // x is collinear with p, q: check it lies within their bounding box in the projection.
+    let (p, q, x) = (pr.apply(p), pr.apply(q), pr.apply(x));
+    x.x >= p.x.min(q.x) && x.x <= p.x.max(q.x) && x.y >= p.y.min(q.y) && x.y <= p.y.max(q.y)
+}
+
+/// Closed segment–segment intersection in a 2-D projection (all four points coplanar).
+pub fn segments_intersect_2d(pr: Proj, p: &P3, q: &P3, a: &P3, b: &P3) -> bool {
+    let d1 = sgn(pr.orient(a, b, p));
+    let d2 = sgn(pr.orient(a, b, q));
+    let d3 = sgn(pr.orient(p, q, a));
+    let d4 = sgn(pr.orient(p, q, b));
+    if d1 * d2 < 0 && d3 * d4 < 0 {
+        return true;
+    }
+    (d1 == 0 && on_segment_2d(pr, a, b, p))
+        || (d2 == 0 && on_segment_2d(pr, a, b, q))
+        || (d3 == 0 && on_segment_2d(pr, p, q, a))
+        || (d4 == 0 && on_segment_2d(pr, p, q, b))
+}
+
+/// Does the closed segment [p, q] meet the closed, non-degenerate triangle (a, b, c)? Exact.
+pub fn segment_meets_triangle(p: &P3, q: &P3, a: &P3, b: &P3, c: &P3) -> bool {
+    let op = sgn(orient3(a, b, c, p));
+    let oq = sgn(orient3(a, b, c, q));
+    if op * oq > 0 {
+        return false;
+    }
+    if op == 0 && oq == 0 {
+        let pr = match nondegenerate_projection(a, b, c) {
+            Some(pr) => pr,
+            None => return false,
+        };
+        return point_in_triangle_2d(pr, p, a, b, c)
+            || point_in_triangle_2d(pr, q, a, b, c)
+            || segments_intersect_2d(pr, p, q, a, b)
+            || segments_intersect_2d(pr, p, q, b, c)
+            || segments_intersect_2d(pr, p, q, c, a);
+    }
+    // The line pq crosses the plane in one point, which lies on the segment; it is in the
+    // triangle iff the three signed volumes around the line agree in sign (zeros allowed).
+    let s1 = sgn(orient3(p, q, a, b));
+    let s2 = sgn(orient3(p, q, b, c));
+    let s3 = sgn(orient3(p, q, c, a));
+    (s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0)
+}
+
+/// For a triangle (v, b1, b2) and a point x coplanar with it: does the segment from v towards
+/// x enter the triangle beyond v, i.e. does x lie in the closed cone of the triangle at v?
+pub fn in_cone_at(v: &P3, b1: &P3, b2: &P3, x: &P3) -> bool {
+    let pr = match nondegenerate_projection(v, b1, b2) {
+        Some(pr) => pr,
+        None => return false,
+    };
+    let s = sgn(pr.orient(v, b1, b2));
+    sgn(pr.orient(v, b1, x)) * s >= 0 && sgn(pr.orient(v, x, b2)) * s >= 0
+}

@@ -1,0 +1,365 @@
+//! Sec. 3.1 checks on meshes built in code, each with a planted fault that the check must catch.
+
+use pseudomanifold::mesh::generate::{icosahedron, octahedron, tetrahedron, torus};
+use pseudomanifold::mesh::star::{
+    canonical_triangulation, check_star_isomorphism, link, star, TVertex,
+};
+use pseudomanifold::mesh::validate::{validate, ErrorClass, ValidationReport};
+use pseudomanifold::mesh::{HalfedgeId, RawMesh, VertexId};
+use pseudomanifold::report::Verdict;
+
+fn check<'a>(rep: &'a ValidationReport, id: &str) -> &'a pseudomanifold::report::CheckResult {
+    rep.checks
+        .iter()
+        .find(|c| c.id == id)
+        .unwrap_or_else(|| panic!("no check {id}"))
+}
+
+fn good_meshes() -> Vec<(&'static str, RawMesh)> {
+    vec![
+        ("tetrahedron", tetrahedron()),
+        ("octahedron", octahedron()),
+        ("icosahedron", icosahedron()),
+        ("torus", torus(6, 5)),
+    ]
+}
+
+#[test]
+fn generated_meshes_are_simplicial_surfaces() {
+    for (name, m) in good_meshes() {
+        let v = validate(&m);
+        assert!(
+            v.report.is_simplicial_surface,
+            "{name}: {:#?}",
+            v.report.checks
+        );
+        assert!(v.surface.is_some(), "{name}");
+        assert!(v.report.error_classes.is_empty(), "{name}");
+    }
+}
+
+#[test]
+fn d3_1_1_collinear_face_is_caught_exactly() {
+    // Planted fault: move a vertex of the octahedron onto the segment between two others,
+    // exactly (0.5 is representable), making face [0, 2, 4] ... collinear.
+    let mut m = octahedron();
+    m.positions[4] = [0.5, 0.5, 0.0]; // on the segment [v0, v2] = [(1,0,0), (0,1,0)]
+    let v = validate(&m);
+    let c = check(&v.report, "D3.1.1");
+    assert_eq!(c.verdict, Verdict::Fails);
+    assert!(
+        c.witnesses[0].text.contains("face 0"),
+        "{}",
+        c.witnesses[0].text
+    );
+    assert!(v.report.error_classes.contains(&ErrorClass::DegenerateFace));
+    assert!(v.surface.is_none());
+}
+
+#[test]
+fn d3_1_1_nearly_collinear_is_not_degenerate() {
+    // One ulp off the segment: a genuine (thin) triangle; an epsilon test would call it
+    // degenerate, the exact test must not.
+    let mut m = octahedron();
+    m.positions[4] = [0.5, f64::from_bits(0.5f64.to_bits() + 1), 0.0];
+    let v = validate(&m);
+    assert_eq!(check(&v.report, "D3.1.1").verdict, Verdict::Holds);
+}
+
+#[test]
+fn d3_1_2_faces_of_a_simplex() {
+    // Def. 3.1.2: the faces of a 2-simplex are its 3 vertices, 3 edges and itself; the star
+    // of a vertex contains exactly the faces of its triangles.
+    let k = validate(&tetrahedron()).surface.expect("valid");
+    let st = star(&k, VertexId(0));
+    assert_eq!(st.triangles.len(), 3);
+    assert_eq!(st.edges.len(), 6); // 3 spokes + 3 link edges
+    assert_eq!(st.vertices.len(), 4);
+    for t in &st.triangles {
+        for i in 0..3 {
+            assert!(st.vertices.contains(&t[i]));
+            let mut e = [t[i], t[(i + 1) % 3]];
+            e.sort();
+            assert!(st.edges.contains(&e), "face {e:?} of {t:?} missing");
+        }
+    }
+}
+
+#[test]
+fn d3_1_3_i_index_out_of_range_is_caught() {
+    let mut m = tetrahedron();
+    m.faces[2] = [0, 2, 9];
+    m.faces[3] = [7, 3, 2];
+    let v = validate(&m);
+    let c = check(&v.report, "D3.1.3(i)");
+    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.offenders, 2, "every offending index is counted");
+    assert!(c.witnesses[0].text.contains("face 2"));
+    assert!(v
+        .report
+        .error_classes
+        .contains(&ErrorClass::IndexOutOfRange));
+}
+
+#[test]
+fn d3_1_3_ii_coincident_vertices_are_caught() {
+    // Two octahedra far apart, then one vertex of the second moved onto a vertex of the first.
+    let a = octahedron();
+    let mut pos = a.positions.clone();
+    let mut faces = a.faces.clone();
+    for p in &a.positions {
+        pos.push([p[0] + 10.0, p[1], p[2]]);
+    }
+    for f in &a.faces {
+        faces.push([f[0] + 6, f[1] + 6, f[2] + 6]);
+    }
+    let clean = validate(&RawMesh::from_arrays(pos.clone(), faces.clone()));
+    assert!(clean.report.is_simplicial_surface);
+    assert_eq!(clean.report.components.len(), 2);
+    pos[7] = pos[0]; // vertex 7 (= -x of the second) onto vertex 0 (+x of the first)
+                     // keep the second octahedron a valid surface by shifting it to touch
+    let v = validate(&RawMesh::from_arrays(pos, faces));
+    let c = check(&v.report, "D3.1.3(ii)(vertices)");
+    assert_eq!(c.verdict, Verdict::Fails);
+    assert!(v
+        .report
+        .error_classes
+        .contains(&ErrorClass::CoincidentVertices));
+}
+
+#[test]
+fn d3_1_3_ii_interpenetrating_tetrahedra_are_caught() {
+    let a = tetrahedron();
+    let mut pos = a.positions.clone();
+    let mut faces = a.faces.clone();
+    for p in &a.positions {
+        pos.push([p[0] + 0.5, p[1] + 0.25, p[2] + 0.125]);
+    }
+    for f in &a.faces {
+        faces.push([f[0] + 4, f[1] + 4, f[2] + 4]);
+    }
+    let v = validate(&RawMesh::from_arrays(pos, faces));
+    let c = check(&v.report, "D3.1.3(ii)(triangles)");
+    assert_eq!(c.verdict, Verdict::Fails);
+    assert!(c.offenders >= 2);
+    assert!(v
+        .report
+        .error_classes
+        .contains(&ErrorClass::SelfIntersection));
+    // Combinatorially the two tetrahedra are fine: only the geometric check fires.
+    assert_eq!(check(&v.report, "D3.1.6(edges)").verdict, Verdict::Holds);
+    assert_eq!(check(&v.report, "D3.1.6(link)").verdict, Verdict::Holds);
+    assert!(v.surface.is_none());
+}
+
+#[test]
+fn d3_1_3_ii_vertex_pushed_through_the_tube_is_caught() {
+    // Torus: push an outer-equator vertex through the tube into the hole; its fan now
+    // crosses the inner wall.
+    let mut m = torus(8, 6);
+    assert!(validate(&m).report.is_simplicial_surface);
+    m.positions[0] = [0.9, 0.0, 0.0];
+    let v = validate(&m);
+    let c = check(&v.report, "D3.1.3(ii)(triangles)");
+    assert_eq!(c.verdict, Verdict::Fails);
+    assert!(v.surface.is_none());
+}
+
+#[test]
+fn d3_1_3_ii_shared_face_cases_of_the_exact_test() {
+    use pseudomanifold::mesh::validate::intersect::triangles_meet_improperly;
+    let pos = vec![
+        [0.0, 0.0, 0.0],   // 0
+        [1.0, 0.0, 0.0],   // 1
+        [0.0, 1.0, 0.0],   // 2
+        [1.0, 1.0, 0.0],   // 3
+        [0.25, 0.25, 0.0], // 4 (inside triangle 0,1,2)
+        [0.0, 0.0, 1.0],   // 5
+        [0.5, 0.5, 0.0],   // 6 (on segment 1-2)
+        [-1.0, -1.0, 0.0], // 7
+    ];
+    // Shared edge [1,2], coplanar, opposite corners on opposite sides: proper.
+    assert!(!triangles_meet_improperly(&pos, [0, 1, 2], [1, 3, 2]));
+    // Shared edge, coplanar, same side: overlap.
+    assert!(triangles_meet_improperly(&pos, [0, 1, 2], [1, 4, 2]));
+    // Shared edge, not coplanar: proper.
+    assert!(!triangles_meet_improperly(&pos, [0, 1, 2], [1, 5, 2]));
+    // Shared vertex 0, coplanar, second triangle inside the first's corner: overlap.
+    assert!(triangles_meet_improperly(&pos, [0, 1, 2], [0, 4, 6]));
+    // Shared vertex 0, coplanar, pointing away: proper.
+    assert!(!triangles_meet_improperly(&pos, [0, 1, 2], [0, 7, 5]));
+    // No shared vertex, a vertex in the interior of the other's edge: improper.
+    assert!(triangles_meet_improperly(&pos, [0, 1, 2], [6, 3, 5]));
+    // No shared vertex, disjoint.
+}
+
+#[test]
+fn d3_1_4_skeleta_counts() {
+    // Def. 3.1.4: K^(0), K^(1), K^(2) of the icosahedron have 12, 30, 20 simplices.
+    let k = validate(&icosahedron()).surface.expect("valid");
+    assert_eq!(k.num_vertices(), 12);
+    assert_eq!(k.num_edges(), 30);
+    assert_eq!(k.edges().count(), 30);
+    assert_eq!(k.num_faces(), 20);
+}
+
+#[test]
+fn d3_1_5_star_and_link_by_definition() {
+    let k = validate(&torus(5, 4)).surface.expect("valid");
+    for v in k.vertices() {
+        let lk = link(&k, v);
+        let st = star(&k, v);
+        assert_eq!(lk.vertices.len() as u32, k.degree(v));
+        assert_eq!(lk.edges.len() as u32, k.degree(v));
+        assert!(!lk.vertices.contains(&v));
+        assert!(lk.edges.iter().all(|e| !e.contains(&v)));
+        assert!(lk.edges.iter().all(|e| st.edges.contains(e)));
+    }
+}
+
+#[test]
+fn d3_1_6_boundary_edge_is_caught() {
+    let mut m = icosahedron();
+    m.faces.remove(7);
+    m.face_origin.remove(7);
+    let v = validate(&m);
+    let c = check(&v.report, "D3.1.6(edges)");
+    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.offenders, 3, "all three edges of the hole");
+    assert!(v.report.error_classes.contains(&ErrorClass::Boundary));
+    assert_eq!(check(&v.report, "D3.1.6(link)").offenders, 3);
+}
+
+#[test]
+fn d3_1_6_nonmanifold_vertex_is_caught() {
+    // Two tetrahedra sharing only a vertex (the paper's Fig. 3.3 situation): every edge is in
+    // two triangles, but the link of the shared vertex is two cycles.
+    let a = tetrahedron();
+    let mut pos = a.positions.clone();
+    let mut faces = a.faces.clone();
+    for p in &a.positions[1..] {
+        pos.push([2.0 - p[0], 2.0 - p[1], 2.0 - p[2]]); // point reflection through v0
+    }
+    let map = |i: u32| if i == 0 { 0 } else { i + 3 };
+    for f in &a.faces {
+        faces.push([map(f[0]), map(f[2]), map(f[1])]);
+    }
+    let v = validate(&RawMesh::from_arrays(pos, faces));
+    assert_eq!(check(&v.report, "D3.1.6(edges)").verdict, Verdict::Holds);
+    let c = check(&v.report, "D3.1.6(link)");
+    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.offenders, 1);
+    assert!(c.witnesses[0].text.contains("vertex 0"));
+    assert_eq!(v.report.error_classes, vec![ErrorClass::NonmanifoldVertex]);
+}
+
+#[test]
+fn d3_1_6_nonmanifold_edge_and_duplicates_are_caught() {
+    let mut m = tetrahedron();
+    m.faces.push([0, 1, 2]); // duplicate
+    m.face_origin.push(4);
+    let v = validate(&m);
+    assert_eq!(check(&v.report, "X-duplicate-face").offenders, 1);
+    assert!(v.report.error_classes.contains(&ErrorClass::DuplicateFace));
+    assert!(v
+        .report
+        .error_classes
+        .contains(&ErrorClass::NonmanifoldEdge));
+}
+
+#[test]
+fn d3_1_7_simplicial_map_of_tetrahedron() {
+    // Def. 3.1.7: on a tetrahedron every vertex bijection is a simplicial isomorphism; the
+    // labelling of each star by the half-edges is one.
+    let k = validate(&tetrahedron()).surface.expect("valid");
+    for v in k.vertices() {
+        let t = canonical_triangulation(k.degree(v));
+        assert_eq!(t.triangles.len(), 3);
+        assert!(t.vertices.contains(&TVertex::Centre));
+    }
+    assert_eq!(
+        check_star_isomorphism(&k, |v, x| k.s(v, x)).verdict,
+        Verdict::Holds
+    );
+}
+
+#[test]
+fn d4_1_4_s_v_is_a_simplicial_isomorphism_on_generated_meshes() {
+    for (name, m) in good_meshes() {
+        let k = validate(&m).surface.expect("valid");
+        let r = check_star_isomorphism(&k, |v, x| k.s(v, x));
+        assert_eq!(r.verdict, Verdict::Holds, "{name}: {:?}", r.witnesses);
+        assert_eq!(r.examined as usize, k.num_vertices());
+    }
+}
+
+#[test]
+fn d4_1_4_planted_wrong_labels_are_caught() {
+    // Swap the labels of two non-adjacent link vertices of vertex 0 of the icosahedron: still
+    // a bijection on vertices, but spokes' neighbours no longer map to polygon sides.
+    let k = validate(&icosahedron()).surface.expect("valid");
+    let v0 = VertexId(0);
+    let a = k.link_vertex(v0, 0).expect("label 0");
+    let b = k.link_vertex(v0, 2).expect("label 2");
+    let r = check_star_isomorphism(&k, |v, x| {
+        let l = k.s(v, x)?;
+        if v == v0 && x == a {
+            Some(2)
+        } else if v == v0 && x == b {
+            Some(0)
+        } else {
+            Some(l)
+        }
+    });
+    assert_eq!(r.verdict, Verdict::Fails);
+    assert_eq!(r.offenders, 1);
+    assert!(r.witnesses[0].text.contains("vertex 0"));
+}
+
+#[test]
+fn l3_1_1_surface_invariants() {
+    let v = validate(&torus(7, 4));
+    let c = check(&v.report, "L3.1.1");
+    assert_eq!(c.verdict, Verdict::Holds);
+    assert_eq!(v.report.components[0].genus, Some(1));
+    let v = validate(&icosahedron());
+    assert_eq!(v.report.components[0].genus, Some(0));
+    // Not a simplicial surface: the lemma's conclusion is not claimed.
+    let mut m = icosahedron();
+    m.faces.pop();
+    m.face_origin.pop();
+    let v = validate(&m);
+    assert!(matches!(
+        check(&v.report, "L3.1.1").verdict,
+        Verdict::Skipped { .. }
+    ));
+}
+
+#[test]
+fn dcel_invariants_hold_on_generated_meshes() {
+    for (name, m) in good_meshes() {
+        let k = validate(&m).surface.expect("valid");
+        for h in (0..k.num_halfedges() as u32).map(HalfedgeId) {
+            assert_eq!(k.twin(k.twin(h)), h, "{name}");
+            assert_ne!(k.twin(h), h);
+            assert_eq!(k.next(k.next(k.next(h))), h);
+            assert_eq!(k.origin(k.twin(h)), k.dest(h));
+            assert_eq!(k.dest(k.twin(h)), k.origin(h));
+            assert_eq!(k.origin(k.next(h)), k.dest(h));
+            // Labels advance by one around the origin (counterclockwise rotation).
+            let rot = k.twin(k.prev(h));
+            let m_v = k.degree(k.origin(h));
+            assert_eq!(k.label(rot), (k.label(h) + 1) % m_v, "{name}");
+        }
+    }
+}
+
+#[test]
+fn inconsistent_orientation_is_repaired_and_reported() {
+    let mut m = icosahedron();
+    m.faces[3] = [m.faces[3][0], m.faces[3][2], m.faces[3][1]];
+    let v = validate(&m);
+    assert!(v.report.is_simplicial_surface);
+    let k = v.surface.expect("valid");
+    assert_eq!(k.flipped_faces(), 1);
+}
