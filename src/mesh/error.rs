@@ -52,7 +52,9 @@ pub enum MeshError {
         at: Location,
         msg: String,
     },
-    #[error("{path}: {at}: {what} count {count} exceeds what the file can hold or the limit {limit}")]
+    #[error(
+        "{path}: {at}: {what} count {count} exceeds what the file can hold or the limit {limit}"
+    )]
     TooLarge {
         path: PathBuf,
         at: Location,
@@ -72,6 +74,12 @@ pub enum MeshError {
         at: Location,
         sides: usize,
         why: String,
+    },
+    #[error("{path}: {at}: face with {sides} vertices; a face needs at least 3")]
+    TooFewSides {
+        path: PathBuf,
+        at: Location,
+        sides: usize,
     },
     #[error("{path}: the file has no faces")]
     Empty { path: PathBuf },
