@@ -75,6 +75,12 @@ pub enum MeshError {
         sides: usize,
         why: String,
     },
+    #[error("{path}: {at}: face with {sides} vertices; a face needs at least 3")]
+    TooFewSides {
+        path: PathBuf,
+        at: Location,
+        sides: usize,
+    },
     #[error("{path}: the file has no faces")]
     Empty { path: PathBuf },
     #[error("{path}: cannot write: {source}")]
