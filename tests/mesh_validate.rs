@@ -254,17 +254,37 @@ fn d3_1_6_nonmanifold_vertex_is_caught() {
 }
 
 #[test]
-fn d3_1_6_nonmanifold_edge_and_duplicates_are_caught() {
+fn d3_1_6_duplicate_face_is_one_simplex_of_k() {
+    // K is a set (Def. 3.1.3): a face listed twice is reported as a duplicate, and counted once
+    // for the edge condition of Def. 3.1.6.
     let mut m = tetrahedron();
-    m.faces.push([0, 1, 2]); // duplicate
+    m.faces.push([0, 2, 1]); // same triangle, opposite orientation
     m.face_origin.push(4);
     let v = validate(&m);
     assert_eq!(check(&v.report, "X-duplicate-face").offenders, 1);
-    assert!(v.report.error_classes.contains(&ErrorClass::DuplicateFace));
+    assert_eq!(v.report.error_classes, vec![ErrorClass::DuplicateFace]);
+    assert!(v.surface.is_none());
+}
+
+#[test]
+fn d3_1_6_nonmanifold_edge_is_caught() {
+    // A fin: a third triangle on edge [0, 1] of the tetrahedron.
+    let mut m = tetrahedron();
+    m.positions.push([3.0, 0.0, 0.0]);
+    m.faces.push([0, 1, 4]);
+    m.face_origin.push(4);
+    let v = validate(&m);
+    let c = check(&v.report, "D3.1.6(edges)");
+    assert_eq!(c.verdict, Verdict::Fails);
+    assert!(c
+        .witnesses
+        .iter()
+        .any(|w| w.text.contains("edge [0, 1] is in 3")));
     assert!(v
         .report
         .error_classes
         .contains(&ErrorClass::NonmanifoldEdge));
+    assert!(v.report.error_classes.contains(&ErrorClass::Boundary)); // the fin's free edges
 }
 
 #[test]
@@ -336,7 +356,7 @@ fn l3_1_1_surface_invariants() {
 }
 
 #[test]
-fn dcel_invariants_hold_on_generated_meshes() {
+fn c6_1_2_labelling_dcel_invariants_hold_on_generated_meshes() {
     for (name, m) in good_meshes() {
         let k = validate(&m).surface.expect("valid");
         for h in (0..k.num_halfedges() as u32).map(HalfedgeId) {
@@ -362,4 +382,45 @@ fn inconsistent_orientation_is_repaired_and_reported() {
     assert!(v.report.is_simplicial_surface);
     let k = v.surface.expect("valid");
     assert_eq!(k.flipped_faces(), 1);
+}
+
+#[test]
+fn c4_1_degree_ge_3_follows_from_link_cycle() {
+    use pseudomanifold::mesh::validate::surface::{link_shape, LinkShape};
+    // A 2-cycle link (vertex of degree 2) is not a simple cycle.
+    assert_eq!(link_shape(0, &[(1, 2), (2, 1)]), LinkShape::Other);
+    assert_eq!(link_shape(0, &[(1, 2), (2, 3), (3, 1)]), LinkShape::Cycle);
+    assert_eq!(link_shape(0, &[(1, 2), (2, 3)]), LinkShape::Path);
+    for (_, m) in good_meshes() {
+        let k = validate(&m).surface.expect("valid");
+        assert!(k.vertices().all(|v| k.degree(v) >= 3));
+    }
+}
+
+#[test]
+fn d4_1_3_canonical_triangulation_counts() {
+    for m in 3..=12u32 {
+        let t = canonical_triangulation(m);
+        assert_eq!(t.vertices.len() as u32, m + 1);
+        assert_eq!(t.edges.len() as u32, 2 * m);
+        assert_eq!(t.triangles.len() as u32, m);
+    }
+}
+
+#[test]
+fn x_input_sanity_checks_catch_planted_faults() {
+    let mut m = octahedron();
+    m.positions[1][2] = f64::NAN;
+    m.faces[5] = [1, 1, 5];
+    m.positions.push([9.0, 9.0, 9.0]); // unreferenced
+    m.vertex_origin.push(6);
+    let v = validate(&m);
+    assert_eq!(check(&v.report, "X-finite").verdict, Verdict::Fails);
+    assert_eq!(check(&v.report, "X-repeated-corner").offenders, 1);
+    assert_eq!(check(&v.report, "X-unreferenced").verdict, Verdict::Warning);
+    assert_eq!(check(&v.report, "X-unreferenced").offenders, 1);
+    assert!(v.report.error_classes.contains(&ErrorClass::NonFinite));
+    let empty = validate(&RawMesh::from_arrays(vec![], vec![]));
+    assert_eq!(check(&empty.report, "X-nonempty").verdict, Verdict::Fails);
+    assert!(!empty.report.is_simplicial_surface);
 }

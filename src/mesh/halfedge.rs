@@ -25,6 +25,10 @@ pub struct SimplicialSurface {
     /// CSR: out[out_start[v] + i] is the outgoing half-edge of v with label i.
     out_start: Vec<u32>,
     out: Vec<HalfedgeId>,
+    /// CSR vertex → incident faces, built from the face list alone (independent of the
+    /// half-edges, so checks can compare the two).
+    vf_start: Vec<u32>,
+    vf: Vec<FaceId>,
     referenced: Vec<bool>,
     flipped_faces: u64,
     source: Option<PathBuf>,
@@ -107,8 +111,27 @@ impl SimplicialSurface {
                 return None;
             }
         }
+        let mut vf_start = vec![0u32; nv + 1];
+        for t in &faces {
+            for c in t {
+                vf_start[c.idx() + 1] += 1;
+            }
+        }
+        for v in 0..nv {
+            vf_start[v + 1] += vf_start[v];
+        }
+        let mut fill = vf_start.clone();
+        let mut vf = vec![FaceId(0); 3 * nf];
+        for (f, t) in faces.iter().enumerate() {
+            for c in t {
+                vf[fill[c.idx()] as usize] = FaceId(f as u32);
+                fill[c.idx()] += 1;
+            }
+        }
         Some(SimplicialSurface {
             positions: raw.positions.clone(),
+            vf_start,
+            vf,
             faces,
             twin,
             label,
@@ -155,6 +178,13 @@ impl SimplicialSurface {
     }
     pub fn position(&self, v: VertexId) -> [f64; 3] {
         self.positions[v.idx()]
+    }
+    /// The faces having v as a vertex, from the face list (not from the half-edges).
+    pub fn faces_around(&self, v: VertexId) -> &[FaceId] {
+        match (self.vf_start.get(v.idx()), self.vf_start.get(v.idx() + 1)) {
+            (Some(&a), Some(&b)) => &self.vf[a as usize..b as usize],
+            _ => &[],
+        }
     }
     /// Faces the validator reversed to obtain a consistent orientation.
     pub fn flipped_faces(&self) -> u64 {

@@ -48,11 +48,11 @@ fn sorted3<V: Ord + Copy>(a: V, b: V, c: V) -> [V; 3] {
 }
 
 /// Def. 3.1.5: st(v, K) = every face of every simplex having v as a face — computed from the
-/// definition, by scanning all triangles of K (not from the half-edges, so the check below
-/// compares two independent constructions).
+/// definition over the triangles containing v, found from the face list (not from the
+/// half-edges, so the check below compares two independent constructions).
 pub fn star(k: &SimplicialSurface, v: VertexId) -> Complex<VertexId> {
     let mut c = Complex::new();
-    for f in k.faces() {
+    for &f in k.faces_around(v) {
         let t = k.face(f);
         if !t.contains(&v) {
             continue;

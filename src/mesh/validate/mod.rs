@@ -98,6 +98,17 @@ pub fn validate(raw: &RawMesh) -> Validation {
         .enumerate()
         .map(|(f, t)| in_range(t) && !repeated_bad[f])
         .collect();
+    // K is a *set* of simplices (Def. 3.1.3): a face listed twice is one triangle of K. The
+    // repeats are reported by the duplicate check and take no further part.
+    let first_pass = Incidence::build(raw, active.clone());
+    let dup = basic::duplicate_faces(raw, &first_pass);
+    classes.extend(basic::classes_of(&dup));
+    let mut active = active;
+    for group in first_pass.duplicate_groups() {
+        for &g in group.iter().skip(1) {
+            active[g as usize] = false;
+        }
+    }
     let inc = Incidence::build(raw, active);
     let mut referenced = vec![false; nv];
     for t in raw.faces.iter().filter(|t| in_range(t)) {
@@ -106,8 +117,6 @@ pub fn validate(raw: &RawMesh) -> Validation {
         }
     }
 
-    let dup = basic::duplicate_faces(raw, &inc);
-    classes.extend(basic::classes_of(&dup));
     let unref = basic::unreferenced_vertices(raw, &referenced);
 
     // Geometry: only on faces whose corners are finite.
