@@ -573,17 +573,21 @@ pub fn in_quad_q<S: Scalar>(q: &P2<S>) -> Trit {
 /// production model is [`Paper`]. Overriding one elementary piece (e.g. `h`, a rotation, the
 /// lens test) changes every composite that uses it, which is how tests plant faults.
 pub trait Ppm<S: Scalar>: Sync {
+    /// Def. 4.1.5: Π.
+    fn polar(&self, p: &P2<S>) -> Result<Polar<S>, MapError> {
+        polar(p)
+    }
     /// Def. 4.1.7.
     fn h(&self, p: &P2<S>) -> P2<S> {
         h(p)
     }
     /// Def. 4.1.6.
     fn g_v(&self, m: u32, p: &P2<S>) -> Result<P2<S>, MapError> {
-        g_v(m, p)
+        Ok(polar_inv(&f_v(m, &self.polar(p)?)))
     }
     /// Def. 4.1.6 (stated inverse).
     fn g_v_inv(&self, m: u32, q: &P2<S>) -> Result<P2<S>, MapError> {
-        g_v_inv(m, q)
+        Ok(polar_inv(&f_v_inv(m, &self.polar(q)?)))
     }
     /// Def. 4.1.8: R_(u,w), the rotation about (0,0) taking u'_i = s_u(w) to u'_0, i.e. by
     /// −2π·i/m_u.
@@ -782,6 +786,30 @@ pub fn h_identity_lhs<S: Scalar>(p: &P2<S>) -> P2<S> {
         q = h(&rotate_frac(&q, -1, 6));
     }
     q
+}
+
+/// All preimages of q ≠ 0 under g_v on R² − {0}: the points with polar angle
+/// θ_k = 6(β + 2πk)/m_v ∈ (−π, π] and radius s·cos(π/m_v)/cos(π/6), where (β, s) = Π(q).
+/// (g_v is injective iff m_v ≤ 6; for m_v > 6 a point has up to ⌈m_v/6⌉ preimages.)
+pub fn g_v_preimages<S: Scalar>(m: u32, q: &P2<S>) -> Result<Vec<P2<S>>, MapError> {
+    let prec = q.prec();
+    let pq = polar(q)?;
+    let base = f_v_inv(m, &pq);
+    let pi = S::pi(prec);
+    let step = S::from_ratio(12, m as i64, prec).mul(&pi); // 6·2π/m
+    let mut out = Vec::new();
+    let kmax = (m as i64) / 6 + 2;
+    for k in -kmax..=kmax {
+        let th = base.theta.add(&step.mul(&S::from_i64(k, prec)));
+        let in_range = pi.neg().lt(&th).and(th.le(&pi));
+        if !in_range.is_false() {
+            out.push(polar_inv(&Polar {
+                theta: th,
+                r: base.r.clone(),
+            }));
+        }
+    }
+    Ok(out)
 }
 
 /// Evaluate φ_wu(p) in f64 and in `Mp` at `prec` bits (p given in f64, exact in both).
