@@ -23,8 +23,8 @@ pub const IDENTITY_COND: f64 = 64.0;
 /// Condition factor of the g_v round trips: 256 · max(1, m/6, 6/m) (angle scaled by m/6 then
 /// by 6/m; trigonometric functions of angles up to m·π/6).
 pub const GV_COND: f64 = 256.0;
-/// Condition factor of the central-difference Jacobian test (Taylor remainder h²/6·|f'''| plus
-/// rounding ε·|f|/h, with a safety factor of 16 on the bound |f'''| ≤ L·max(1,k)²/r²).
+/// Condition factor of the central-difference Jacobian test (Taylor remainder h²/6·|f'''| with
+/// |f'''| ≤ L·max(1,k)²/r², plus rounding ε(|F(p)| + L·r)/h), a safety factor of 16.
 pub const FD_COND: f64 = 16.0;
 /// Condition factor of the jump test: rounding of |f(a) − f(b)| is ≤ 64·ε·|f|.
 pub const JUMP_COND: f64 = 64.0;
@@ -343,7 +343,11 @@ fn smooth_test<S: Scalar>(
             dev = dev.max(jac[1][c].sub(&col[c].y).abs().to_f64());
         }
         let k3 = spec.kmax.max(1.0).powi(2);
-        let tol = FD_COND * (hh * hh * spec.lip * k3 / (6.0 * r * r) + eps * spec.lip * 2.0 / cbrt);
+        let fp = (spec.f)(p)
+            .map(|q| q.norm2().sqrt().to_f64())
+            .unwrap_or(0.0);
+        let tol =
+            FD_COND * (hh * hh * spec.lip * k3 / (6.0 * r * r) + eps * (fp + spec.lip * r) / hh);
         let rel = dev / tol * m.tol();
         m.dev(rel, || {
             Witness::new(
@@ -433,7 +437,7 @@ pub fn check_c4_1_6_gv_smooth<S: Scalar, M: Ppm<S>>(
         .collect();
     let (b1, _) = smooth_test(&mut res, &spec, &pts_r, &[], prec);
     let note = format!(
-        "samples {} ; Jacobian tests {a1}, jump pairs across the cut {a2}; Lipschitz bound L = cos(π/6)/cos(π/m)·max(1, m/6) = {lip:.6}; FD tolerance = {FD_COND}·(h²·L·max(1,k)²/(6r²) + 2Lε/ε^(1/3)) (deviations reported relative to it, tolerance 1); restricted run: {b1} Jacobian tests",
+        "samples {} ; Jacobian tests {a1}, jump pairs across the cut {a2}; Lipschitz bound L = cos(π/6)/cos(π/m)·max(1, m/6) = {lip:.6}; FD tolerance = {FD_COND}·(h²·L·max(1,k)²/(6r²) + ε(|F(p)| + L r)/h), h = ε^(1/3)·r (deviations reported relative to it, tolerance 1); restricted run: {b1} Jacobian tests",
         s.counts_string()
     );
     let domain = "R² − {(x, 0) : x ≤ 0} (g_v is C^∞ across the cut iff 6 | m_v)".to_string();
