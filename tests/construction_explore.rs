@@ -5,8 +5,21 @@ use pseudomanifold::report::CheckResult;
 
 fn show(rs: &[CheckResult]) {
     for r in rs {
-        let w = r.witnesses.first().map(|w| w.text.clone()).unwrap_or_default();
-        println!("  {:<18} {:<36} ex {:>4} off {:>4} worst {:.2e} tol {:.2e} | {}", r.verdict.label(), r.id, r.examined, r.offenders, r.worst_deviation.unwrap_or(0.0), r.tolerance.unwrap_or(0.0), &w.chars().take(260).collect::<String>());
+        let w = r
+            .witnesses
+            .first()
+            .map(|w| w.text.clone())
+            .unwrap_or_default();
+        println!(
+            "  {:<18} {:<36} ex {:>4} off {:>4} worst {:.2e} tol {:.2e} | {}",
+            r.verdict.label(),
+            r.id,
+            r.examined,
+            r.offenders,
+            r.worst_deviation.unwrap_or(0.0),
+            r.tolerance.unwrap_or(0.0),
+            &w.chars().take(260).collect::<String>()
+        );
     }
 }
 
@@ -26,7 +39,9 @@ fn explore() {
     for m in [3, 6, 10, 11, 12, 13] {
         let s = StarConfig::uniform(m, 6).unwrap();
         println!("==== star {m}");
-        show(&check_star_overlaps::<f64, _>(&Paper, &s, false, 1, 300, 53));
+        show(&check_star_overlaps::<f64, _>(
+            &Paper, &s, false, 1, 300, 53,
+        ));
         show(&check_star_overlaps::<f64, _>(&Paper, &s, true, 1, 300, 53));
     }
 }

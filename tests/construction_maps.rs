@@ -8,7 +8,9 @@ const SEED: u64 = 20240601;
 const N: usize = 240;
 
 fn get<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
-    rs.iter().find(|r| r.id == id).unwrap_or_else(|| panic!("no result {id}"))
+    rs.iter()
+        .find(|r| r.id == id)
+        .unwrap_or_else(|| panic!("no result {id}"))
 }
 fn holds(r: &CheckResult) -> bool {
     matches!(r.verdict, Verdict::Holds | Verdict::HoldsRestricted { .. })
@@ -27,7 +29,10 @@ fn e(mu: u32, i: u32, mw: u32, j: u32) -> EdgeConfig {
 struct RawAtan2;
 impl<S: Scalar> Ppm<S> for RawAtan2 {
     fn polar(&self, p: &P2<S>) -> Result<Polar<S>, MapError> {
-        Ok(Polar { theta: p.y.atan2(&p.x), r: p.norm2().sqrt() })
+        Ok(Polar {
+            theta: p.y.atan2(&p.x),
+            r: p.norm2().sqrt(),
+        })
     }
 }
 /// h(x, y) = (1 − (1 + 1e−6)x, −y): no longer an involution.
@@ -51,7 +56,11 @@ impl<S: Scalar> Ppm<S> for KinkG {
     fn g_v(&self, m: u32, p: &P2<S>) -> Result<P2<S>, MapError> {
         let q = g_v(m, p)?;
         let up = p.y.sign() == Some(std::cmp::Ordering::Greater);
-        Ok(if up { P2::new(q.x.add(&q.x.like_f64(1e-6)), q.y) } else { q })
+        Ok(if up {
+            P2::new(q.x.add(&q.x.like_f64(1e-6)), q.y)
+        } else {
+            q
+        })
     }
 }
 /// g_v with radial factor ×0.99.
@@ -160,9 +169,11 @@ fn d4_1_5_planted_fault_caught() {
 #[test]
 fn d4_1_7_h_involution_and_c4_1_7_h_identity_holds() {
     let p = P2::new(0.3f64, -0.7);
-    assert_eq!(h(&h(&p)), p);
+    assert!(h(&h(&p)).dist_f64(&p) <= f64::EPSILON);
     assert!(h_identity_lhs(&p).dist_f64(&p) < 1e-15);
-    assert!(holds(&check_c4_1_7_h_identity::<f64, _>(&Paper, SEED, N, 53)));
+    assert!(holds(&check_c4_1_7_h_identity::<f64, _>(
+        &Paper, SEED, N, 53
+    )));
     let r = check_c4_1_7_h_identity::<Mp, _>(&Paper, SEED, N, 256);
     assert!(holds(&r) && r.worst_deviation.unwrap() < 1e-70, "{r:?}");
 }
@@ -174,13 +185,27 @@ fn c4_1_7_h_identity_planted_fault_caught() {
 
 #[test]
 fn d4_1_8_config_validation_is_typed() {
-    assert!(matches!(EdgeConfig::new(2, 0, 6, 0), Err(ConfigError::DegreeTooSmall { m: 2 })));
-    assert!(matches!(EdgeConfig::new(6, 6, 6, 0), Err(ConfigError::LabelOutOfRange { .. })));
-    assert!(matches!(EdgeConfig::new(6, 0, 5, 5), Err(ConfigError::LabelOutOfRange { .. })));
+    assert!(matches!(
+        EdgeConfig::new(2, 0, 6, 0),
+        Err(ConfigError::DegreeTooSmall { m: 2 })
+    ));
+    assert!(matches!(
+        EdgeConfig::new(6, 6, 6, 0),
+        Err(ConfigError::LabelOutOfRange { .. })
+    ));
+    assert!(matches!(
+        EdgeConfig::new(6, 0, 5, 5),
+        Err(ConfigError::LabelOutOfRange { .. })
+    ));
     assert!(TriangleConfig::new(6, 6, 6, 0, 2, 0, 1, 0, 1).is_err()); // u's labels not adjacent
     assert!(TriangleConfig::new(6, 6, 6, 0, 1, 0, 5, 0, 5).is_err()); // mixed orientations
     assert!(TriangleConfig::ccw(5, 7, 3, 4, 6, 2).is_ok());
-    let bad = EdgeConfig { m_u: 6, i: 9, m_w: 6, j: 0 };
+    let bad = EdgeConfig {
+        m_u: 6,
+        i: 9,
+        m_w: 6,
+        j: 0,
+    };
     let rs = run_edge_checks::<f64>(&bad, SEED, 10, 53);
     assert!(matches!(rs[0].verdict, Verdict::Skipped { .. }));
     assert!(phi_wu(&VertexPair::NotAdjacent, &P2::new(0.1f64, 0.0)).is_err());
@@ -191,10 +216,16 @@ fn d4_1_10_phi_same_vertex_is_identity_and_outside_is_error() {
     let p = P2::new(0.2f64, 0.1);
     assert_eq!(phi_wu(&VertexPair::Same { m: 5 }, &p).unwrap(), p);
     let far = P2::new(0.95f64, 0.0);
-    assert!(matches!(phi_wu(&VertexPair::Same { m: 5 }, &far), Err(MapError::NotInDomain(_))));
+    assert!(matches!(
+        phi_wu(&VertexPair::Same { m: 5 }, &far),
+        Err(MapError::NotInDomain(_))
+    ));
     let e = e(6, 0, 6, 0);
     // On the far side of Ω_u (opposite w) p is not in Ω_uw.
-    assert!(matches!(phi_wu(&VertexPair::Edge(e), &P2::new(-0.5f64, 0.0)), Err(MapError::NotInDomain(_))));
+    assert!(matches!(
+        phi_wu(&VertexPair::Edge(e), &P2::new(-0.5f64, 0.0)),
+        Err(MapError::NotInDomain(_))
+    ));
 }
 
 #[test]
@@ -217,7 +248,11 @@ fn c4_1_6_gv_bijective_holds_m6_fails_as_written_otherwise() {
     for m in [3, 5, 7, 12] {
         let r = check_c4_1_6_gv_bijective::<f64, _>(&Paper, m, SEED, N, 53);
         assert_fails_with_witness(&r[0]);
-        assert!(matches!(r[1].verdict, Verdict::HoldsRestricted { .. }), "m = {m}: {:?}", r[1]);
+        assert!(
+            matches!(r[1].verdict, Verdict::HoldsRestricted { .. }),
+            "m = {m}: {:?}",
+            r[1]
+        );
     }
 }
 
@@ -233,7 +268,11 @@ fn c4_1_6_gv_smooth_fails_as_written_unless_6_divides_m() {
     for m in [3, 4, 5, 7, 11] {
         let r = check_c4_1_6_gv_smooth::<f64, _>(&Paper, m, SEED, N, 53);
         assert_fails_with_witness(&r[0]);
-        assert!(matches!(r[1].verdict, Verdict::HoldsRestricted { .. }), "m = {m}: {:?}", r[1]);
+        assert!(
+            matches!(r[1].verdict, Verdict::HoldsRestricted { .. }),
+            "m = {m}: {:?}",
+            r[1]
+        );
     }
     for m in [6, 12] {
         let r = check_c4_1_6_gv_smooth::<f64, _>(&Paper, m, SEED, N, 53);
@@ -264,8 +303,12 @@ fn c4_1_8_onto_intc_planted_fault_caught() {
 
 #[test]
 fn c4_1_8_lens_in_q_holds_and_planted_fault_caught() {
-    assert!(holds(&check_c4_1_8_lens_in_q::<f64, _>(&Paper, SEED, N, 53)));
-    assert!(holds(&check_c4_1_8_lens_in_q::<Mp, _>(&Paper, SEED, N, 256)));
+    assert!(holds(&check_c4_1_8_lens_in_q::<f64, _>(
+        &Paper, SEED, N, 53
+    )));
+    assert!(holds(&check_c4_1_8_lens_in_q::<Mp, _>(
+        &Paper, SEED, N, 256
+    )));
     assert_fails_with_witness(&check_c4_1_8_lens_in_q::<f64, _>(&ShiftedLens, SEED, N, 53));
 }
 
@@ -284,7 +327,11 @@ fn c4_1_8_guw_bijective_fails_for_m_u_above_6_and_planted_fault_caught() {
 fn p4_1_1_fails_as_written_unless_6_divides_m_u() {
     let r = check_p4_1_1_guw_smooth::<f64, _>(&Paper, &e(5, 1, 6, 0), SEED, N, 53);
     assert_fails_with_witness(&r[0]);
-    assert!(matches!(r[1].verdict, Verdict::HoldsRestricted { .. }), "{:?}", r[1]);
+    assert!(
+        matches!(r[1].verdict, Verdict::HoldsRestricted { .. }),
+        "{:?}",
+        r[1]
+    );
     let r = check_p4_1_1_guw_smooth::<f64, _>(&Paper, &e(12, 1, 5, 0), SEED, N, 53);
     assert!(holds(&r[0]), "{:?}", r[0].witnesses);
 }
@@ -323,22 +370,47 @@ fn p4_1_3_planted_fault_caught() {
 #[test]
 fn d4_1_9_lens_agreement_holds_below_11_fails_from_11() {
     for cfg in [e(6, 0, 6, 0), e(3, 2, 10, 4), e(10, 9, 3, 0)] {
-        assert!(holds(&check_d4_1_9_lens_agreement::<f64, _>(&Paper, &cfg, SEED, N, 53)), "{cfg:?}");
+        assert!(
+            holds(&check_d4_1_9_lens_agreement::<f64, _>(
+                &Paper, &cfg, SEED, N, 53
+            )),
+            "{cfg:?}"
+        );
     }
     for cfg in [e(11, 0, 6, 3), e(12, 3, 6, 0)] {
-        assert_fails_with_witness(&check_d4_1_9_lens_agreement::<f64, _>(&Paper, &cfg, SEED, N, 53));
+        assert_fails_with_witness(&check_d4_1_9_lens_agreement::<f64, _>(
+            &Paper, &cfg, SEED, N, 53,
+        ));
     }
 }
 
 #[test]
 fn d4_1_9_lens_planted_fault_caught() {
-    assert_fails_with_witness(&check_d4_1_9_lens_agreement::<f64, _>(&ShiftedLens, &e(6, 1, 6, 2), SEED, N, 53));
+    assert_fails_with_witness(&check_d4_1_9_lens_agreement::<f64, _>(
+        &ShiftedLens,
+        &e(6, 1, 6, 2),
+        SEED,
+        N,
+        53,
+    ));
 }
 
 #[test]
 fn p4_2_1_holds_and_planted_fault_caught() {
-    assert!(holds(&check_p4_2_1::<f64, _>(&Paper, &e(5, 0, 7, 3), SEED, N, 53)));
-    assert_fails_with_witness(&check_p4_2_1::<f64, _>(&EmptyWhenLabelZero, &e(5, 0, 7, 3), SEED, N, 53));
+    assert!(holds(&check_p4_2_1::<f64, _>(
+        &Paper,
+        &e(5, 0, 7, 3),
+        SEED,
+        N,
+        53
+    )));
+    assert_fails_with_witness(&check_p4_2_1::<f64, _>(
+        &EmptyWhenLabelZero,
+        &e(5, 0, 7, 3),
+        SEED,
+        N,
+        53,
+    ));
 }
 
 #[test]
@@ -348,7 +420,10 @@ fn p4_2_3_phi_inverse_holds() {
         assert!(holds(&r[0]) && holds(&r[1]), "{cfg:?}: {:?}", r);
     }
     let r = check_p4_2_3::<Mp, _>(&Paper, &e(5, 1, 7, 2), SEED, 80, 192);
-    assert!(holds(&r[0]) && r[0].worst_deviation.unwrap() < 1e-50, "{r:?}");
+    assert!(
+        holds(&r[0]) && r[0].worst_deviation.unwrap() < 1e-50,
+        "{r:?}"
+    );
 }
 
 #[test]
@@ -359,21 +434,49 @@ fn p4_2_3_planted_fault_caught() {
 
 #[test]
 fn l4_2_3_holds_and_planted_fault_caught() {
-    assert!(holds(&check_l4_2_3::<f64, _>(&Paper, &e(4, 1, 9, 2), SEED, N, 53)));
-    assert_fails_with_witness(&check_l4_2_3::<f64, _>(&ShiftedG, &e(4, 1, 9, 2), SEED, N, 53));
+    assert!(holds(&check_l4_2_3::<f64, _>(
+        &Paper,
+        &e(4, 1, 9, 2),
+        SEED,
+        N,
+        53
+    )));
+    assert_fails_with_witness(&check_l4_2_3::<f64, _>(
+        &ShiftedG,
+        &e(4, 1, 9, 2),
+        SEED,
+        N,
+        53,
+    ));
 }
 
 #[test]
 fn l4_2_4_phi_smooth_holds_and_planted_fault_caught() {
     for cfg in [e(5, 1, 7, 2), e(3, 0, 11, 5)] {
-        assert!(holds(&check_l4_2_4::<f64, _>(&Paper, &cfg, SEED, N, 53)), "{cfg:?}");
+        assert!(
+            holds(&check_l4_2_4::<f64, _>(&Paper, &cfg, SEED, N, 53)),
+            "{cfg:?}"
+        );
     }
-    assert_fails_with_witness(&check_l4_2_4::<f64, _>(&KinkPhi, &e(5, 1, 7, 2), SEED, N, 53));
+    assert_fails_with_witness(&check_l4_2_4::<f64, _>(
+        &KinkPhi,
+        &e(5, 1, 7, 2),
+        SEED,
+        N,
+        53,
+    ));
 }
 
 #[test]
 fn l4_2_2_cocycle_holds_on_sampled_triangles() {
-    for (mu, mw, mx) in [(6, 6, 6), (3, 5, 7), (3, 3, 3), (12, 4, 11), (4, 12, 5), (13, 3, 9)] {
+    for (mu, mw, mx) in [
+        (6, 6, 6),
+        (3, 5, 7),
+        (3, 3, 3),
+        (12, 4, 11),
+        (4, 12, 5),
+        (13, 3, 9),
+    ] {
         let t = TriangleConfig::ccw(mu, mw, mx, 1 % mu, 2 % mw, 0).unwrap();
         let r = check_l4_2_1_l4_2_2::<f64, _>(&Paper, &t, SEED, N, 53);
         for x in &r {
@@ -385,9 +488,9 @@ fn l4_2_2_cocycle_holds_on_sampled_triangles() {
 
 #[test]
 fn l4_2_1_l4_2_2_cocycle_planted_fault_caught() {
-    let t = TriangleConfig::ccw(6, 6, 6, 1, 2, 0).unwrap();
-    // u's label of w (1) rotated as 2 = u's label of x.
-    let r = check_l4_2_1_l4_2_2::<f64, _>(&WrongRotation { m: 6, label: 1 }, &t, SEED, N, 53);
+    let t = TriangleConfig::ccw(7, 6, 5, 1, 2, 0).unwrap();
+    // u's label of w (1) rotated as 2 = u's label of x (only u has degree 7).
+    let r = check_l4_2_1_l4_2_2::<f64, _>(&WrongRotation { m: 7, label: 1 }, &t, SEED, N, 53);
     assert!(r[0].failed() || r[1].failed(), "{r:?}");
     let r = check_l4_2_1_l4_2_2::<f64, _>(&ShiftedPhi, &t, SEED, N, 53);
     assert_fails_with_witness(&r[1]);
@@ -430,7 +533,8 @@ fn c5_4_at_most_two_holds_literal_fails_sec613_from_11() {
 #[test]
 fn c5_4_at_most_two_planted_fault_caught() {
     let s = StarConfig::uniform(6, 6).unwrap();
-    let r = check_star_overlaps::<f64, _>(&WrongRotation { m: 6, label: 0 }, &s, false, SEED, 120, 53);
+    let r =
+        check_star_overlaps::<f64, _>(&WrongRotation { m: 6, label: 0 }, &s, false, SEED, 120, 53);
     assert_fails_with_witness(&r[1]);
 }
 
@@ -441,7 +545,11 @@ fn edge_checks_same_verdicts_in_f64_and_mp() {
         let b = run_edge_checks::<Mp>(&cfg, SEED, 60, 128);
         assert_eq!(a.len(), b.len());
         for (x, y) in a.iter().zip(&b) {
-            assert_eq!((x.id.as_str(), x.verdict.label()), (y.id.as_str(), y.verdict.label()), "{cfg:?}");
+            assert_eq!(
+                (x.id.as_str(), x.verdict.label()),
+                (y.id.as_str(), y.verdict.label()),
+                "{cfg:?}"
+            );
         }
     }
 }
