@@ -1,1 +1,17 @@
 //! Chapter 4: the PPM set of gluing data built from a simplicial surface (issue 4).
+//!
+//! This module holds the pure mathematics of Sec. 4.1 (independent of meshes), generic over
+//! the scalar type ([`scalar::Scalar`]: `f64`, [`scalar::Mp`]), the seeded samplers, and the
+//! conformance checks of Secs. 4.1–4.2. See `SPEC_ROWS.md` for the statement-by-statement
+//! verdicts.
+
+pub mod checks;
+pub mod maps;
+pub mod sampling;
+pub mod scalar;
+
+pub use maps::{
+    g_uw, in_omega_uw, in_omega_uw_lens, phi_wu, phi_wu_f64_vs_mp, ConfigError, EdgeConfig,
+    MapError, Paper, Ppm, TriangleConfig, VertexPair, P2,
+};
+pub use scalar::{Mp, Scalar, Trit, DEFAULT_MP_PREC};

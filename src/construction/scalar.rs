@@ -1,0 +1,284 @@
+//! Scalar types for the Chapter 4 maps: `f64` and the multi-precision [`Mp`] (MPFR via `rug`).
+//!
+//! The maps of Sec. 4.1 are written once, generic over [`Scalar`]. Every decision that the
+//! maps take (a sign, a comparison deciding membership in a set, the branch of Π) goes through
+//! [`Scalar::sign`], which may answer `None` ("cannot decide"). Point types (`f64`, [`Mp`])
+//! answer `None` only for NaN; a future interval type (issue 6: `inari::Interval` or an MPFR
+//! interval) answers `None` when the enclosure contains zero, and the maps propagate that as
+//! [`Trit::Unknown`] / [`super::maps::MapError::Undecided`] without any change to the maps.
+//!
+//! Precision is carried by the values: constants are built with [`Scalar::from_ratio`] etc. at
+//! the precision of the operands; binary operations on [`Mp`] values of different precision
+//! are carried out at the larger of the two precisions.
+
+use std::cmp::Ordering;
+use std::fmt::Debug;
+
+/// Default precision of [`Mp`] in bits.
+pub const DEFAULT_MP_PREC: u32 = 256;
+
+/// Precision (significand bits) of IEEE-754 binary64.
+pub const F64_PREC: u32 = 53;
+
+/// Three-valued truth: the answer of a decision made with a scalar type that may be unable to
+/// decide (intervals). Point types never produce `Unknown` except on NaN.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+pub enum Trit {
+    True,
+    False,
+    Unknown,
+}
+
+impl Trit {
+    pub fn from_bool(b: bool) -> Trit {
+        if b {
+            Trit::True
+        } else {
+            Trit::False
+        }
+    }
+    /// Kleene conjunction.
+    pub fn and(self, o: Trit) -> Trit {
+        match (self, o) {
+            (Trit::False, _) | (_, Trit::False) => Trit::False,
+            (Trit::True, Trit::True) => Trit::True,
+            _ => Trit::Unknown,
+        }
+    }
+    /// Kleene negation.
+    pub fn not(self) -> Trit {
+        match self {
+            Trit::True => Trit::False,
+            Trit::False => Trit::True,
+            Trit::Unknown => Trit::Unknown,
+        }
+    }
+    pub fn is_true(self) -> bool {
+        self == Trit::True
+    }
+    pub fn is_false(self) -> bool {
+        self == Trit::False
+    }
+}
+
+/// A real-number type for the maps of Chapter 4.
+///
+/// Arithmetic is by methods on references (no HRTB operator bounds needed). Constants take the
+/// precision in bits (`prec`), which `f64` ignores.
+pub trait Scalar: Clone + Debug + Send + Sync + 'static {
+    /// Human-readable name of the type ("f64", "mp256").
+    fn type_name(&self) -> String;
+    /// `x` rounded to `prec` bits (exact for `Mp` with `prec >= 53`).
+    fn from_f64(x: f64, prec: u32) -> Self;
+    fn from_i64(x: i64, prec: u32) -> Self;
+    /// `p/q` correctly rounded to `prec` bits. `q` must be non-zero (a zero `q` gives ±∞/NaN).
+    fn from_ratio(p: i64, q: i64, prec: u32) -> Self;
+    /// π rounded to `prec` bits.
+    fn pi(prec: u32) -> Self;
+    /// Nearest `f64` (the midpoint for interval types).
+    fn to_f64(&self) -> f64;
+    /// Significand bits of this value.
+    fn precision_bits(&self) -> u32;
+    /// Unit roundoff `2^-precision_bits` of this value's precision, as `f64`.
+    fn epsilon(&self) -> f64 {
+        (2.0f64).powi(-(self.precision_bits() as i32))
+    }
+
+    fn add(&self, o: &Self) -> Self;
+    fn sub(&self, o: &Self) -> Self;
+    fn mul(&self, o: &Self) -> Self;
+    fn div(&self, o: &Self) -> Self;
+    fn neg(&self) -> Self;
+    fn sqrt(&self) -> Self;
+    fn sin(&self) -> Self;
+    fn cos(&self) -> Self;
+    fn abs(&self) -> Self;
+    /// `atan2(self, x)`: the angle of the point `(x, self)` in `[-π, π]` (IEEE/MPFR semantics,
+    /// including signed zeros). The maps never rely on the sign of zero: see `maps::polar`.
+    fn atan2(&self, x: &Self) -> Self;
+
+    /// Sign of the value: `Some(Less|Equal|Greater)`, or `None` when it cannot be decided
+    /// (NaN; an interval containing 0). Both zeros give `Some(Equal)`.
+    fn sign(&self) -> Option<Ordering>;
+
+    fn sqr(&self) -> Self {
+        self.mul(self)
+    }
+    /// Three-valued comparison `self ? o`, via the sign of the difference.
+    fn cmp3(&self, o: &Self) -> Option<Ordering> {
+        self.sub(o).sign()
+    }
+    /// `self < o` as a [`Trit`].
+    fn lt(&self, o: &Self) -> Trit {
+        match self.cmp3(o) {
+            Some(Ordering::Less) => Trit::True,
+            Some(_) => Trit::False,
+            None => Trit::Unknown,
+        }
+    }
+    /// `self <= o` as a [`Trit`].
+    fn le(&self, o: &Self) -> Trit {
+        match self.cmp3(o) {
+            Some(Ordering::Greater) => Trit::False,
+            Some(_) => Trit::True,
+            None => Trit::Unknown,
+        }
+    }
+    /// Same type and precision as `self`, value `x`.
+    fn like_f64(&self, x: f64) -> Self {
+        Self::from_f64(x, self.precision_bits())
+    }
+    fn like_ratio(&self, p: i64, q: i64) -> Self {
+        Self::from_ratio(p, q, self.precision_bits())
+    }
+}
+
+impl Scalar for f64 {
+    fn type_name(&self) -> String {
+        "f64".into()
+    }
+    fn from_f64(x: f64, _prec: u32) -> Self {
+        x
+    }
+    fn from_i64(x: i64, _prec: u32) -> Self {
+        x as f64
+    }
+    fn from_ratio(p: i64, q: i64, _prec: u32) -> Self {
+        // One IEEE division of exactly representable operands is correctly rounded.
+        (p as f64) / (q as f64)
+    }
+    fn pi(_prec: u32) -> Self {
+        std::f64::consts::PI
+    }
+    fn to_f64(&self) -> f64 {
+        *self
+    }
+    fn precision_bits(&self) -> u32 {
+        F64_PREC
+    }
+    fn add(&self, o: &Self) -> Self {
+        self + o
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self - o
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self * o
+    }
+    fn div(&self, o: &Self) -> Self {
+        self / o
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn sqrt(&self) -> Self {
+        f64::sqrt(*self)
+    }
+    fn sin(&self) -> Self {
+        f64::sin(*self)
+    }
+    fn cos(&self) -> Self {
+        f64::cos(*self)
+    }
+    fn abs(&self) -> Self {
+        f64::abs(*self)
+    }
+    fn atan2(&self, x: &Self) -> Self {
+        f64::atan2(*self, *x)
+    }
+    fn sign(&self) -> Option<Ordering> {
+        self.partial_cmp(&0.0)
+    }
+}
+
+/// A multi-precision float (MPFR, round-to-nearest) whose precision is carried in the value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mp(pub rug::Float);
+
+impl Mp {
+    /// Clamp a requested precision to what MPFR accepts.
+    fn clamp(prec: u32) -> u32 {
+        prec.clamp(
+            rug::float::prec_min().max(2),
+            rug::float::prec_max().min(1 << 20),
+        )
+    }
+    fn p2(&self, o: &Self) -> u32 {
+        self.0.prec().max(o.0.prec())
+    }
+    pub fn new(prec: u32, x: f64) -> Mp {
+        Mp(rug::Float::with_val(Self::clamp(prec), x))
+    }
+}
+
+impl Scalar for Mp {
+    fn type_name(&self) -> String {
+        format!("mp{}", self.0.prec())
+    }
+    fn from_f64(x: f64, prec: u32) -> Self {
+        Mp(rug::Float::with_val(Self::clamp(prec), x))
+    }
+    fn from_i64(x: i64, prec: u32) -> Self {
+        Mp(rug::Float::with_val(Self::clamp(prec), x))
+    }
+    fn from_ratio(p: i64, q: i64, prec: u32) -> Self {
+        let prec = Self::clamp(prec);
+        if q == 0 {
+            return Mp(rug::Float::with_val(prec, p) / rug::Float::with_val(prec, 0));
+        }
+        Mp(rug::Float::with_val(prec, rug::Rational::from((p, q))))
+    }
+    fn pi(prec: u32) -> Self {
+        Mp(rug::Float::with_val(
+            Self::clamp(prec),
+            rug::float::Constant::Pi,
+        ))
+    }
+    fn to_f64(&self) -> f64 {
+        self.0.to_f64()
+    }
+    fn precision_bits(&self) -> u32 {
+        self.0.prec()
+    }
+    fn add(&self, o: &Self) -> Self {
+        Mp(rug::Float::with_val(self.p2(o), &self.0 + &o.0))
+    }
+    fn sub(&self, o: &Self) -> Self {
+        Mp(rug::Float::with_val(self.p2(o), &self.0 - &o.0))
+    }
+    fn mul(&self, o: &Self) -> Self {
+        Mp(rug::Float::with_val(self.p2(o), &self.0 * &o.0))
+    }
+    fn div(&self, o: &Self) -> Self {
+        Mp(rug::Float::with_val(self.p2(o), &self.0 / &o.0))
+    }
+    fn neg(&self) -> Self {
+        Mp(-self.0.clone())
+    }
+    fn sqrt(&self) -> Self {
+        Mp(self.0.clone().sqrt())
+    }
+    fn sin(&self) -> Self {
+        Mp(self.0.clone().sin())
+    }
+    fn cos(&self) -> Self {
+        Mp(self.0.clone().cos())
+    }
+    fn abs(&self) -> Self {
+        Mp(self.0.clone().abs())
+    }
+    fn atan2(&self, x: &Self) -> Self {
+        Mp(rug::Float::with_val(self.p2(x), self.0.atan2_ref(&x.0)))
+    }
+    fn sign(&self) -> Option<Ordering> {
+        if self.0.is_nan() {
+            None
+        } else if self.0.is_zero() {
+            Some(Ordering::Equal)
+        } else if self.0.is_sign_negative() {
+            Some(Ordering::Less)
+        } else {
+            Some(Ordering::Greater)
+        }
+    }
+}
