@@ -252,16 +252,11 @@ fn binary_ply_list_count_4e9_is_bounded() {
 #[test]
 fn binary_ply_trailing_bytes() {
     let e = fails("binary_extra_bytes.ply", "2 bytes of unexpected data");
-    assert!(
-        matches!(
-            e,
-            MeshError::Parse {
-                at: Location::Byte(_),
-                ..
-            }
-        ),
-        "{e}"
-    );
+    let len = std::fs::metadata(hostile("binary_extra_bytes.ply"))
+        .unwrap()
+        .len();
+    assert_eq!(at(&e), Some(&Location::Byte(len - 2)), "{e}");
+    assert!(matches!(e, MeshError::Parse { .. }), "{e}");
 }
 
 #[test]
@@ -404,7 +399,10 @@ fn single_byte_corruptions_are_handled() {
         ("tetrahedron.off", MeshFormat::Off),
         ("octahedron.obj", MeshFormat::Obj),
         ("icosahedron_ascii.ply", MeshFormat::PlyAscii),
-        ("icosahedron_binary_le.ply", MeshFormat::PlyBinaryLittleEndian),
+        (
+            "icosahedron_binary_le.ply",
+            MeshFormat::PlyBinaryLittleEndian,
+        ),
         ("icosahedron_binary_be.ply", MeshFormat::PlyBinaryBigEndian),
     ] {
         let bytes = std::fs::read(dir.join(name)).unwrap();
@@ -424,4 +422,50 @@ fn single_byte_corruptions_are_handled() {
         }
     }
     assert!(errors > 1000, "only {errors} corruptions were detected");
+}
+
+#[test]
+fn ascii_ply_values_must_fit_their_types() {
+    let head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+                property float z\nelement face 1\nproperty list uchar uchar vertex_indices\n\
+                end_header\n0 0 0\n1 0 0\n0 1 0\n";
+    for (face, msg) in [
+        ("3 0 1 256", "vertex index 256 does not fit"),
+        ("256 0 1 2", "list count 256 does not fit"),
+        ("3 0 1 2 7", "more values than the declared properties"),
+        ("3 0 1", "missing an item"),
+    ] {
+        let s = format!("{head}{face}\n");
+        let e = read_mesh_from_bytes(
+            s.as_bytes(),
+            MeshFormat::PlyAscii,
+            "t.ply",
+            &Default::default(),
+        )
+        .unwrap_err();
+        assert!(
+            matches!(
+                e,
+                MeshError::Parse {
+                    at: Location::Line(13),
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        assert!(e.to_string().contains(msg), "{face}: {e}");
+    }
+}
+
+#[test]
+fn utf8_bom_is_skipped() {
+    let s = "\u{feff}OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    let m = read_mesh_from_bytes(
+        s.as_bytes(),
+        MeshFormat::Off,
+        "bom.off",
+        &Default::default(),
+    )
+    .unwrap();
+    assert_eq!(m.faces, vec![[0, 1, 2]]);
 }
