@@ -284,3 +284,16 @@ fn format_detection_by_magic_then_extension() {
     let err = read_mesh(&data("does-not-exist.off"), &Default::default()).unwrap_err();
     assert!(matches!(err, MeshError::Io { .. }), "{err}");
 }
+
+#[test]
+fn obj_polygon_before_its_vertices_is_triangulated_at_the_end() {
+    let s = "f 1 2 3 4\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nfo -4 -2 -1\n";
+    let opts = ReadOptions {
+        triangulate: true,
+        ..Default::default()
+    };
+    let m = read_mesh_from_bytes(s.as_bytes(), MeshFormat::Obj, "fwd.obj", &opts).unwrap();
+    assert_eq!(m.faces, vec![[0, 1, 2], [0, 2, 3], [0, 2, 3]]);
+    assert_eq!(m.face_origin, vec![1, 1, 6]);
+    assert_eq!(m.triangulated_polygons, 1);
+}
