@@ -72,11 +72,15 @@ pub(crate) fn parse_index(ctx: &Ctx<'_>, line: u64, tok: &str) -> Result<u32, Me
 }
 
 /// The next content line, or a typed error (encoding, truncation).
-fn next<'a>(ctx: &Ctx<'_>, lines: &mut Lines<'a>, what: &str) -> Result<(u64, &'a str), MeshError> {
+fn next<'a>(
+    ctx: &Ctx<'_>,
+    lines: &mut Lines<'a>,
+    what: impl FnOnce() -> String,
+) -> Result<(u64, &'a str), MeshError> {
     match lines.next_content() {
         Some((no, Ok(s))) => Ok((no, s)),
         Some((no, Err(_))) => Err(ctx.encoding(Location::Line(no))),
-        None => Err(ctx.truncated(Location::Line(lines.line_no()), what.to_string())),
+        None => Err(ctx.truncated(Location::Line(lines.line_no()), what())),
     }
 }
 
@@ -102,7 +106,7 @@ pub(crate) fn read(bytes: &[u8], ctx: &Ctx<'_>) -> Result<RawMesh, MeshError> {
         return Err(ctx.parse(Location::Line(hline), "binary OFF is not supported"));
     }
     let cline = if rest.is_empty() {
-        let (no, s) = next(ctx, &mut lines, "missing the 'V F E' counts line")?;
+        let (no, s) = next(ctx, &mut lines, || "missing the 'V F E' counts line".into())?;
         rest = s.split_ascii_whitespace().collect();
         no
     } else {
@@ -128,11 +132,9 @@ pub(crate) fn read(bytes: &[u8], ctx: &Ctx<'_>) -> Result<RawMesh, MeshError> {
     let mut positions = Vec::with_capacity(vcap);
     let mut vertex_origin = Vec::with_capacity(vcap);
     for k in 0..nv {
-        let (no, s) = next(
-            ctx,
-            &mut lines,
-            &format!("the file ends after {k} of {nv} declared vertices"),
-        )?;
+        let (no, s) = next(ctx, &mut lines, || {
+            format!("the file ends after {k} of {nv} declared vertices")
+        })?;
         let mut t = s.split_ascii_whitespace();
         let mut p = [0.0; 3];
         for (axis, c) in p.iter_mut().enumerate() {
@@ -158,11 +160,9 @@ pub(crate) fn read(bytes: &[u8], ctx: &Ctx<'_>) -> Result<RawMesh, MeshError> {
     let mut idx: Vec<u32> = Vec::new();
     let mut toks: Vec<&str> = Vec::new();
     for k in 0..nf {
-        let (no, s) = next(
-            ctx,
-            &mut lines,
-            &format!("the file ends after {k} of {nf} declared faces"),
-        )?;
+        let (no, s) = next(ctx, &mut lines, || {
+            format!("the file ends after {k} of {nf} declared faces")
+        })?;
         toks.clear();
         toks.extend(s.split_ascii_whitespace());
         let (first, rest) = toks

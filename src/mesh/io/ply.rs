@@ -392,7 +392,8 @@ pub(crate) fn read(bytes: &[u8], ctx: &Ctx<'_>) -> Result<RawMesh, MeshError> {
                 pos: 0,
                 be: header.encoding == Encoding::Be,
             };
-            read_binary(ctx, &header.elements, &mut cur, &mut body)?;
+            let body_offset = bytes.len() - body_bytes.len();
+            read_binary(ctx, &header.elements, &mut cur, body_offset, &mut body)?;
             let format = if cur.be {
                 MeshFormat::PlyBinaryBigEndian
             } else {
@@ -484,12 +485,27 @@ fn read_ascii(
                             }
                         }
                     }
-                    Kind::List { item, .. } => {
-                        let n = ascii_uint(ctx, no, next("the count")?, "list count")?;
+                    Kind::List { count, item } => {
+                        let tok = next("the count")?;
+                        let n = ascii_uint(ctx, no, tok, "list count")?;
+                        if ascii_scalar(tok, count).is_none() {
+                            return Err(ctx.parse(
+                                at(),
+                                format!("list count {n} does not fit the count type {count:?}"),
+                            ));
+                        }
                         for _ in 0..n {
                             let tok = next("an item")?;
                             if *role == Role::Corners {
                                 let v = ascii_uint(ctx, no, tok, "vertex index")?;
+                                if ascii_scalar(tok, item).is_none() {
+                                    return Err(ctx.parse(
+                                        at(),
+                                        format!(
+                                            "vertex index {v} does not fit the index type {item:?}"
+                                        ),
+                                    ));
+                                }
                                 let v = u32::try_from(v).map_err(|_| {
                                     ctx.parse(at(), format!("vertex index {v} exceeds 2^32-1"))
                                 })?;
@@ -624,6 +640,7 @@ fn read_binary(
     ctx: &Ctx<'_>,
     elements: &[Element],
     cur: &mut Cursor<'_>,
+    body_offset: usize,
     body: &mut Body,
 ) -> Result<(), MeshError> {
     let mut idx: Vec<u32> = Vec::new();
@@ -721,9 +738,9 @@ fn read_binary(
     }
     if cur.remaining() > 0 {
         return Err(ctx.parse(
-            Location::Byte(cur.pos as u64),
+            Location::Byte(cur.pos.saturating_add(body_offset) as u64),
             format!(
-                "{} bytes of unexpected data after the last declared element (body offset)",
+                "{} bytes of unexpected data after the last declared element",
                 cur.remaining()
             ),
         ));

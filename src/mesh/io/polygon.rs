@@ -188,7 +188,7 @@ fn check_fan(idx: &[u32], positions: &[[f64; 3]], pts: &mut Vec<[f64; 3]>) -> Re
         }
     }
     let diam = norm(sub(hi, lo));
-    if !(diam > 0.0) || !diam.is_finite() {
+    if diam <= 0.0 || !diam.is_finite() {
         return Err("all corners coincide".into());
     }
     // Newell normal of the centred polygon (twice the vector area).
@@ -201,7 +201,7 @@ fn check_fan(idx: &[u32], positions: &[[f64; 3]], pts: &mut Vec<[f64; 3]>) -> Re
         nn[2] += (a[0] - b[0]) * (a[1] + b[1]);
     }
     let len = norm(nn);
-    if !(len > 1e-12 * diam * diam) {
+    if len.is_nan() || len <= 1e-12 * diam * diam {
         return Err("the polygon has (nearly) zero area".into());
     }
     let nh = [nn[0] / len, nn[1] / len, nn[2] / len];
@@ -219,11 +219,11 @@ fn check_fan(idx: &[u32], positions: &[[f64; 3]], pts: &mut Vec<[f64; 3]>) -> Re
         let e1 = sub(pts[i], pts[(i + n - 1) % n]);
         let e2 = sub(pts[(i + 1) % n], pts[i]);
         let (l1, l2) = (norm(e1), norm(e2));
-        if !(l1 > 0.0 && l2 > 0.0) {
+        if l1 == 0.0 || l2 == 0.0 {
             return Err(format!("corner {i} coincides with a neighbour"));
         }
         let s = dot(cross(e1, e2), nh);
-        if !(s > TURN_TOL * l1 * l2) {
+        if s.is_nan() || s <= TURN_TOL * l1 * l2 {
             return Err(format!(
                 "not convex: the turn at corner {i} is reflex or straight"
             ));

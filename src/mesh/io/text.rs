@@ -8,10 +8,11 @@ pub(crate) struct Lines<'a> {
 }
 
 impl<'a> Lines<'a> {
-    /// Lines of `bytes`, numbered from `first_line`.
+    /// Lines of `bytes`, numbered from `first_line`. A leading UTF-8 byte-order mark is
+    /// skipped.
     pub(crate) fn new(bytes: &'a [u8], first_line: u64) -> Self {
         Lines {
-            rest: bytes,
+            rest: bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(bytes),
             line_no: first_line.saturating_sub(1),
         }
     }
