@@ -7,6 +7,7 @@
 
 pub mod checks;
 pub mod maps;
+pub mod mesh_gluing;
 pub mod sampling;
 pub mod scalar;
 
@@ -14,4 +15,5 @@ pub use maps::{
     g_uw, in_omega_uw, in_omega_uw_lens, phi_wu, phi_wu_f64_vs_mp, ConfigError, EdgeConfig,
     MapError, Paper, Ppm, TriangleConfig, VertexPair, P2,
 };
+pub use mesh_gluing::{GluingError, PpmGluing};
 pub use scalar::{Mp, Scalar, Trit, DEFAULT_MP_PREC};
