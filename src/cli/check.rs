@@ -1,8 +1,13 @@
 //! `ppm check`: read, validate, report.
 
+use crate::conditions::chapter4::{
+    render as render_ch4, run_chapter4, Ch4Options, Ch4Report, Precision,
+};
+use crate::construction::{phi_wu_f64_vs_mp, PpmGluing};
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::mesh::star::check_star_isomorphism;
 use crate::mesh::validate::{validate, ValidationReport};
+use crate::mesh::VertexId;
 use crate::report::{render_text, CheckResult};
 use serde::Serialize;
 use std::path::Path;
@@ -12,15 +17,60 @@ use std::time::Instant;
 /// Inputs at least this large get progress lines on stderr.
 const PROGRESS_FACES: usize = 50_000;
 
+/// Options of the Chapter 4 run of `ppm check --spec`.
+#[derive(clap::Args, Debug, Clone)]
+pub struct Ch4Args {
+    /// Seed of every sampler.
+    #[arg(long, default_value_t = 20240601)]
+    pub seed: u64,
+    /// Samples per category per configuration.
+    #[arg(long, default_value_t = 24)]
+    pub samples: usize,
+    /// `f64` or `mp:BITS` (MPFR), e.g. `mp:256`.
+    #[arg(long, default_value = "f64")]
+    pub precision: String,
+    /// Check at most this many distinct configurations of each kind (seeded subset).
+    #[arg(long)]
+    pub max_configs: Option<usize>,
+}
+
+impl Ch4Args {
+    fn options(&self) -> Result<Ch4Options, String> {
+        let precision = match self.precision.as_str() {
+            "f64" => Precision::F64,
+            other => match other.strip_prefix("mp:").map(str::parse::<u32>) {
+                Some(Ok(b)) if (2..=1_000_000).contains(&b) => Precision::Mp(b),
+                _ => return Err(format!("--precision {other}: expected f64 or mp:BITS")),
+            },
+        };
+        Ok(Ch4Options {
+            seed: self.seed,
+            samples: self.samples.max(1),
+            precision,
+            max_edge_configs: self.max_configs,
+            max_triangle_configs: self.max_configs,
+            max_star_configs: self.max_configs,
+        })
+    }
+}
+
 #[derive(Serialize)]
 struct CheckOutput<'a> {
     #[serde(flatten)]
     validation: &'a ValidationReport,
     extra_checks: &'a [CheckResult],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    chapter4: Option<&'a Ch4Report>,
     seconds: f64,
 }
 
-pub fn run(file: &Path, json: bool, triangulate: bool, labels: bool) -> ExitCode {
+pub fn run(
+    file: &Path,
+    json: bool,
+    triangulate: bool,
+    labels: bool,
+    spec: Option<&Ch4Args>,
+) -> ExitCode {
     let t0 = Instant::now();
     let opts = ReadOptions {
         triangulate,
@@ -44,20 +94,39 @@ pub fn run(file: &Path, json: bool, triangulate: bool, labels: bool) -> ExitCode
     }
     let v = validate(&raw);
     let mut extra = Vec::new();
+    let mut ch4 = None;
     if let Some(k) = &v.surface {
-        if labels {
+        if labels || spec.is_some() {
             extra.push(check_star_isomorphism(k, |a, b| k.s(a, b)));
+        }
+        if let Some(a) = spec {
+            let opts = match a.options() {
+                Ok(o) => o,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    return ExitCode::from(2);
+                }
+            };
+            if big {
+                eprintln!("ppm: running the Chapter 4 checks ...");
+            }
+            ch4 = Some(run_chapter4(k, &opts));
         }
     }
     if big {
         eprintln!("ppm: validated in {:.2} s", t0.elapsed().as_secs_f64());
     }
-    let ok = v.report.is_simplicial_surface && extra.iter().all(|c| !c.failed());
+    let ok = v.report.is_simplicial_surface
+        && extra.iter().all(|c| !c.failed())
+        && ch4
+            .as_ref()
+            .is_none_or(|r| r.unexpected_failures.is_empty());
     let secs = t0.elapsed().as_secs_f64();
     if json {
         let out = CheckOutput {
             validation: &v.report,
             extra_checks: &extra,
+            chapter4: ch4.as_ref(),
             seconds: secs,
         };
         match serde_json::to_string_pretty(&out) {
@@ -69,6 +138,9 @@ pub fn run(file: &Path, json: bool, triangulate: bool, labels: bool) -> ExitCode
         }
     } else {
         print!("{}", render_report(&v.report, &extra, secs));
+        if let Some(r) = &ch4 {
+            print!("{}", render_ch4(r));
+        }
     }
     if ok {
         ExitCode::SUCCESS
@@ -128,4 +200,55 @@ pub fn render_report(r: &ValidationReport, extra: &[CheckResult], secs: f64) -> 
         );
     }
     s
+}
+
+/// `ppm eval-map`: φ_wu(p) in f64 and in MPFR with their difference.
+pub fn eval_map(file: &Path, u: u32, w: u32, p: [f64; 2], bits: u32, json: bool) -> ExitCode {
+    let raw = match read_mesh(file, &ReadOptions::default()) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let v = validate(&raw);
+    let Some(k) = v.surface else {
+        eprintln!(
+            "error: {}: not a simplicial surface (run `ppm check` for the details)",
+            file.display()
+        );
+        return ExitCode::from(1);
+    };
+    let g = PpmGluing::new(&k);
+    let (u, w) = (VertexId(u), VertexId(w));
+    let pair = match g.pair(u, w) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    match phi_wu_f64_vs_mp(&pair, p, bits) {
+        Ok((a, b, d)) => {
+            if json {
+                println!(
+                    "{}",
+                    serde_json::json!({"u": u, "w": w, "p": p, "pair": pair, "f64": a, "mp": b, "mp_bits": bits, "difference": d})
+                );
+            } else {
+                println!("φ_{w}{u}({:?}) [Def. 4.1.10, {pair:?}]", p);
+                println!("  f64      : ({:e}, {:e})", a[0], a[1]);
+                println!(
+                    "  mp {bits:>4} : ({:e}, {:e})  (rounded to f64)",
+                    b[0], b[1]
+                );
+                println!("  |f64 − mp| = {d:.3e}");
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: φ_{w}{u}({p:?}): {e}");
+            ExitCode::from(1)
+        }
+    }
 }

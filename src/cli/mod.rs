@@ -34,6 +34,31 @@ enum Command {
         /// Also print the s_v labelling check (Def. 4.1.4) for a valid surface.
         #[arg(long)]
         labels: bool,
+        /// Also run the Chapter 4 conformance checks (every statement of SPEC.md that is
+        /// checked on data) on the valid surface.
+        #[arg(long)]
+        spec: bool,
+        #[command(flatten)]
+        ch4: check::Ch4Args,
+    },
+    /// Evaluate the transition map φ_wu(p) (Def. 4.1.10: from Ω_uw to Ω_wu) of a mesh in f64
+    /// and in multi-precision, and print both with their difference (oracle use).
+    EvalMap {
+        /// The mesh file.
+        file: PathBuf,
+        /// u (the map goes from Ω_uw ⊂ Ω_u …).
+        u: u32,
+        /// w (… to Ω_wu ⊂ Ω_w).
+        w: u32,
+        /// x coordinate of p in Ω_u.
+        x: f64,
+        /// y coordinate of p in Ω_u.
+        y: f64,
+        /// MPFR precision in bits.
+        #[arg(long, default_value_t = 256)]
+        bits: u32,
+        #[arg(long)]
+        json: bool,
     },
 }
 
@@ -46,6 +71,17 @@ pub fn main() -> ExitCode {
             json,
             triangulate,
             labels,
-        } => check::run(&file, json, triangulate, labels),
+            spec,
+            ch4,
+        } => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
+        Command::EvalMap {
+            file,
+            u,
+            w,
+            x,
+            y,
+            bits,
+            json,
+        } => check::eval_map(&file, u, w, [x, y], bits, json),
     }
 }

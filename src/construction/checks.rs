@@ -297,6 +297,23 @@ struct SmoothSpec<'a, S> {
     jac: &'a dyn Fn(&P2<S>) -> Result<Jac<S>, MapError>,
     lip: f64,
     kmax: f64,
+    /// Local length scale of the map at p: the distance (in the domain) to the nearest
+    /// singular point of any polar map in the composition. The derivatives of a polar map
+    /// grow like 1/r^k near its centre, so the finite-difference step and the truncation
+    /// bound are scaled by it. `None`: |p| (the map's own centre only).
+    scale: Option<&'a dyn Fn(&P2<S>) -> Option<f64>>,
+}
+
+/// For g_(u,w) = R⁻¹∘g_w⁻¹∘h∘g_u∘R: besides p = 0 (centre of g_u), the map is singular where
+/// h(g_u(R p)) = 0, i.e. g_u(R p) = (1, 0). The distance of p to that preimage is at least
+/// |h(q)| / (c_u·max(1, m_u/6)) (the Lipschitz constant of g_u∘R), so the local scale is the
+/// smaller of |p| and that.
+fn guw_scale<S: Scalar, M: Ppm<S>>(model: &M, e: &EdgeConfig, p: &P2<S>) -> Option<f64> {
+    let q = model.g_v(e.m_u, &model.r_uw(e, p)).ok()?;
+    let hq = model.h(&q).norm2().sqrt().to_f64();
+    let cu = f_v_radial_factor::<f64>(e.m_u, 53);
+    let ku = (e.m_u as f64 / 6.0).max(1.0);
+    Some(p.norm2().sqrt().to_f64().min(hq / (cu * ku)))
 }
 
 fn smooth_test<S: Scalar>(
@@ -310,7 +327,10 @@ fn smooth_test<S: Scalar>(
     let (mut fd_n, mut jump_n) = (0u64, 0u64);
     let cbrt = eps.cbrt();
     for p in pts {
-        let r = p.norm2().sqrt().to_f64();
+        let r = match spec.scale {
+            Some(sc) => sc(p).unwrap_or(0.0),
+            None => p.norm2().sqrt().to_f64(),
+        };
         if r == 0.0 {
             continue;
         }
@@ -416,6 +436,7 @@ pub fn check_c4_1_6_gv_smooth<S: Scalar, M: Ppm<S>>(
         jac: &jac,
         lip,
         kmax: k,
+        scale: None,
     };
     let pts: Vec<P2<S>> = s.points.iter().map(|(_, p)| p.clone()).collect();
     let partners: Vec<(P2<S>, P2<S>)> = s
@@ -719,11 +740,13 @@ pub fn check_p4_1_1_guw_smooth<S: Scalar, M: Ppm<S>>(
     ));
     let f = |p: &P2<S>| model.g_uw(e, p);
     let jac = |p: &P2<S>| model.g_uw_jacobian(e, p);
+    let scale = |p: &P2<S>| guw_scale(model, e, p);
     let spec = SmoothSpec {
         f: &f,
         jac: &jac,
         lip,
         kmax,
+        scale: Some(&scale),
     };
     let pts: Vec<P2<S>> = s
         .points
@@ -1113,11 +1136,13 @@ pub fn check_l4_2_4<S: Scalar, M: Ppm<S>>(
     let pair = VertexPair::Edge(*e);
     let f = |p: &P2<S>| model.phi_wu(&pair, p);
     let jac = |p: &P2<S>| model.g_uw_jacobian(e, p);
+    let scale = |p: &P2<S>| guw_scale(model, e, p);
     let spec = SmoothSpec {
         f: &f,
         jac: &jac,
         lip,
         kmax,
+        scale: Some(&scale),
     };
     let lp = lens_pullbacks(model, e, seed, n, prec);
     let pts: Vec<P2<S>> = lp
