@@ -48,7 +48,10 @@ pub struct Witness {
 
 impl Witness {
     pub fn new(text: impl Into<String>, data: serde_json::Value) -> Self {
-        Witness { text: text.into(), data }
+        Witness {
+            text: text.into(),
+            data,
+        }
     }
 }
 

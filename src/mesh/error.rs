@@ -52,7 +52,9 @@ pub enum MeshError {
         at: Location,
         msg: String,
     },
-    #[error("{path}: {at}: {what} count {count} exceeds what the file can hold or the limit {limit}")]
+    #[error(
+        "{path}: {at}: {what} count {count} exceeds what the file can hold or the limit {limit}"
+    )]
     TooLarge {
         path: PathBuf,
         at: Location,

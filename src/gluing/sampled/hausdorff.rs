@@ -1,0 +1,155 @@
+//! Sampled check of Def. 3.4.1(4), the Hausdorff condition: for (i, j) ∈ K, i ≠ j, and
+//! x ∈ ∂Ω_ij ∩ Ω_i, y ∈ ∂Ω_ji ∩ Ω_j, there are open balls V_x, V_y centred at x, y such that no
+//! point of V_y ∩ Ω_ji is φ_ji of a point of V_x ∩ Ω_ij.
+//!
+//! Method: for shrinking radii r = scale·2⁻ᵏ (k = 2, 6, …, 42) measure
+//! m(r) = min |φ_ji(x') − y| over samples x' ∈ V_x ∩ Ω_ij (uniform in the ball plus points at
+//! geometric distances from x). If φ_ji extends continuously with x ↦ y, m(r) → 0 with r; the
+//! pair fails when m at the smallest radius is below `SEPARATION_FACTOR`·scale. Otherwise the
+//! radii (r, m(r)/2) for the largest r with m(r) clear of that threshold are reported. The exact
+//! 1-D backend decides (4) instead.
+
+use super::{sampled_k, SampleConfig};
+use crate::gluing::data::{dist, fmt_point, from_f64, point_json, to_f64, GluingData, Idx, Point};
+use crate::report::{CheckResult, Witness};
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
+use serde_json::json;
+
+/// Images closer to y than this (relative to the data's scale) at radius scale·2⁻⁴² count as
+/// "φ_ji(x') → y". Far above the ~2⁻⁴² a Lipschitz map produces, far below any honest gap.
+pub const SEPARATION_FACTOR: f64 = 1e-6;
+
+/// Radii found for one separated pair (x, y).
+#[derive(Clone, Debug)]
+pub struct SampledSeparation {
+    pub i: Idx,
+    pub j: Idx,
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    pub r_x: f64,
+    pub r_y: f64,
+}
+
+fn ball_samples<G: GluingData<N>, const N: usize>(
+    g: &G,
+    i: Idx,
+    j: Idx,
+    x: &Point<G::S, N>,
+    r: f64,
+    rng: &mut ChaCha8Rng,
+) -> Vec<Point<G::S, N>> {
+    let mut out = Vec::new();
+    let conv = from_f64::<G::S>;
+    for t in 0..96 {
+        // Random direction; the radius is uniform for half of the points, geometric for the rest.
+        let mut u = [0f64; N];
+        for c in u.iter_mut() {
+            *c = rng.gen_range(-1.0..1.0);
+        }
+        let n = u.iter().map(|c| c * c).sum::<f64>().sqrt();
+        if n < 1e-12 {
+            continue;
+        }
+        let rho = if t % 2 == 0 {
+            r * rng.gen_range(0.0..1.0)
+        } else {
+            r * 2f64.powi(-((t / 2) as i32 % 40))
+        } * 0.999;
+        let mut p = *x;
+        for m in 0..N {
+            p[m] = p[m] + conv(rho * u[m] / n);
+        }
+        if dist(&p, x) < r && g.in_gluing_domain(i, j, &p) {
+            out.push(p);
+        }
+    }
+    out
+}
+
+/// Def. 3.4.1(4), sampled. Returns the result and, for separated pairs, the radii found.
+pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
+    g: &G,
+    cfg: &SampleConfig,
+) -> (CheckResult, Vec<SampledSeparation>) {
+    let mut r = CheckResult::new("D3.4.1(4)", "Hausdorff condition (separating balls)");
+    r.seed = Some(cfg.seed);
+    let scale = g.scale();
+    let thr = SEPARATION_FACTOR * scale;
+    r.tolerance = Some(thr);
+    let mut rng = cfg.rng(9);
+    let mut seps = Vec::new();
+    let nb = (cfg.n / 10).clamp(2, 16);
+    for (i, j) in sampled_k(g, cfg) {
+        if i == j {
+            continue;
+        }
+        let xs = g.gluing_boundary_points(i, j, &mut rng, nb);
+        let ys = g.gluing_boundary_points(j, i, &mut rng, nb);
+        for x in &xs {
+            // m(r) does not depend on y's choice of samples, so compute images once per radius.
+            let radii: Vec<f64> = (0..11).map(|s| scale * 2f64.powi(-(2 + 4 * s))).collect();
+            let images: Vec<Vec<Point<G::S, N>>> = radii
+                .iter()
+                .map(|&rad| {
+                    ball_samples(g, i, j, x, rad, &mut rng)
+                        .iter()
+                        .filter_map(|p| g.phi(j, i, p))
+                        .collect()
+                })
+                .collect();
+            for y in &ys {
+                r.examined += 1;
+                let m: Vec<f64> = images
+                    .iter()
+                    .map(|im| im.iter().map(|z| dist(z, y)).fold(f64::INFINITY, f64::min))
+                    .collect();
+                let last = m.last().copied().unwrap_or(f64::INFINITY);
+                if last <= thr {
+                    let worst = r.worst_deviation.map_or(last, |w| w.min(last));
+                    r.worst_deviation = Some(worst);
+                    r.offend(|| {
+                        Witness::new(
+                            format!(
+                                "(i,j)=({i},{j}): x = {} ∈ ∂Ω_{i}{j} ∩ Ω_{i}, y = {} ∈ ∂Ω_{j}{i} ∩ Ω_{j}: images of V_x ∩ Ω_{i}{j} come within {last:.3e} of y at radius {:.3e}",
+                                fmt_point(x), fmt_point(y), radii[radii.len() - 1]
+                            ),
+                            json!({"kind": "not_separated", "i": i, "j": j, "x": point_json(x), "y": point_json(y), "gap": last}),
+                        )
+                    });
+                } else if let Some(s) = (0..radii.len()).find(|&s| m[s] > thr) {
+                    seps.push(SampledSeparation {
+                        i,
+                        j,
+                        x: x.iter().map(|c| to_f64(*c)).collect(),
+                        y: y.iter().map(|c| to_f64(*c)).collect(),
+                        r_x: radii[s],
+                        r_y: m[s] / 2.0,
+                    });
+                }
+            }
+        }
+    }
+    let listed: Vec<String> = seps
+        .iter()
+        .take(4)
+        .map(|s| {
+            format!(
+                "({},{}) x={:?} y={:?}: r_x={:.3e}, r_y={:.3e}",
+                s.i, s.j, s.x, s.y, s.r_x, s.r_y
+            )
+        })
+        .collect();
+    r.note = format!(
+        "sampled; {} separated pairs{}{}",
+        seps.len(),
+        if listed.is_empty() { "" } else { "; radii " },
+        listed.join("; ")
+    );
+    (r, seps)
+}
+
+/// Def. 3.4.1(4), sampled (see [`check_4_with_radii`]).
+pub fn check_4<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
+    check_4_with_radii(g, cfg).0
+}
