@@ -141,3 +141,21 @@ pub fn iv(lo: i64, hi: i64) -> Interval {
         hi: q(hi, 1),
     }
 }
+
+/// "x + 4", "-x - 1/2", "2·x": an affine map a·x + b written as a reader would.
+pub fn affine_str(a: &Q, b: &Q) -> String {
+    let lin = if a.is_one() {
+        "x".to_string()
+    } else if (-a).is_one() {
+        "-x".to_string()
+    } else {
+        format!("{}·x", fmt_q(a))
+    };
+    if b.is_zero() {
+        lin
+    } else if *b < Q::zero() {
+        format!("{lin} - {}", fmt_q(&-b))
+    } else {
+        format!("{lin} + {}", fmt_q(b))
+    }
+}

@@ -424,11 +424,11 @@ pub fn check_3c(g: &Exact1d) -> CheckResult {
 pub fn check_grimm_hughes(g: &Exact1d, strict: bool) -> CheckResult {
     let (id, name) = if strict {
         (
-            "A.2(GH-strict)",
+            "CA.2-GH-strict",
             "Grimm–Hughes cocycle, RHS required defined",
         )
     } else {
-        ("A.2(GH)", "Grimm–Hughes cocycle (where both sides defined)")
+        ("CA.2-GH", "Grimm–Hughes cocycle (where both sides defined)")
     };
     let mut r = CheckResult::new(id, name);
     let ids = g.ids();

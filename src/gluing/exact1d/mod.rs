@@ -4,6 +4,7 @@
 pub mod data;
 pub mod decide;
 pub mod interval;
+pub mod random;
 pub mod sampled_view;
 
 pub use data::{Exact1d, Piece};

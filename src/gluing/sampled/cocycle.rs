@@ -210,11 +210,11 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
 ) -> CheckResult {
     let (id, name) = if strict {
         (
-            "A.2(GH-strict)",
+            "CA.2-GH-strict",
             "Grimm–Hughes cocycle, RHS required defined",
         )
     } else {
-        ("A.2(GH)", "Grimm–Hughes cocycle (where both sides defined)")
+        ("CA.2-GH", "Grimm–Hughes cocycle (where both sides defined)")
     };
     let mut r = CheckResult::new(id, name).with_note("sampled over all triples (i, j, k)");
     r.seed = Some(cfg.seed);
