@@ -13,18 +13,27 @@ use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 
 fn load(name: &str) -> Exact1d {
-    let p = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("examples/gluing/{name}.toml"));
+    let p = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join(format!("examples/gluing/{name}.toml"));
     read_gluing_file(&p).expect("parses").data
 }
 
 fn kinds(r: &CheckResult) -> Vec<String> {
-    r.witnesses.iter().map(|w| w.data["kind"].as_str().unwrap_or("").to_string()).collect()
+    r.witnesses
+        .iter()
+        .map(|w| w.data["kind"].as_str().unwrap_or("").to_string())
+        .collect()
 }
 
 fn assert_caught(r: &CheckResult, kind: &str) {
     assert!(r.failed(), "{} missed the planted fault: {r:?}", r.id);
     assert!(r.offenders > 0 && !r.witnesses.is_empty());
-    assert!(kinds(r).iter().any(|k| k == kind), "{}: expected a `{kind}` witness, got {:?}", r.id, kinds(r));
+    assert!(
+        kinds(r).iter().any(|k| k == kind),
+        "{}: expected a `{kind}` witness, got {:?}",
+        r.id,
+        kinds(r)
+    );
 }
 
 /// Three intervals all glued to each other over their whole length, optionally with φ_31 (and
@@ -82,14 +91,26 @@ impl GluingData<1> for ClosedInterval {
         v.extend((1..n).map(|_| [rng.gen_range(0.01..0.99)]));
         v
     }
-    fn sample_gluing_domain(&self, i: Idx, j: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<Point<f64, 1>> {
+    fn sample_gluing_domain(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<f64, 1>> {
         if i == j {
             self.sample_p_domain(i, rng, n)
         } else {
             Vec::new()
         }
     }
-    fn gluing_boundary_points(&self, _: Idx, _: Idx, _: &mut ChaCha8Rng, _: usize) -> Vec<Point<f64, 1>> {
+    fn gluing_boundary_points(
+        &self,
+        _: Idx,
+        _: Idx,
+        _: &mut ChaCha8Rng,
+        _: usize,
+    ) -> Vec<Point<f64, 1>> {
         Vec::new()
     }
 }
@@ -128,7 +149,10 @@ fn d3_4_1_3_planted_not_a_bijection() {
     g.glue.get_mut(&(1, 2)).expect("glued")[0].a = q(2, 1);
     g.glue.get_mut(&(1, 2)).expect("glued")[0].b = q(6, 1);
     assert_caught(&decide::check_bijection(&g), "not_into");
-    assert_caught(&sampled::check_maps_into(&g, &SampleConfig::default()), "not_into");
+    assert_caught(
+        &sampled::check_maps_into(&g, &SampleConfig::default()),
+        "not_into",
+    );
     // Two pieces with the same image: not injective.
     let mut g = load("circle2");
     g.glue.get_mut(&(1, 2)).expect("glued")[1].b = q(10, 1); // (2,3) ↦ (12,13) too
@@ -152,7 +176,10 @@ fn d3_4_1_3a_planted_reflection_of_omega_1() {
     let r = decide::check_3a(&g);
     assert_caught(&r, "not_identity");
     assert!(r.worst_deviation.unwrap_or(0.0) > 0.0 || r.witnesses[0].data["x"] == "3/2");
-    assert_caught(&sampled::check_3a(&g, &SampleConfig::default()), "not_identity");
+    assert_caught(
+        &sampled::check_3a(&g, &SampleConfig::default()),
+        "not_identity",
+    );
     assert!(!decide::check_3a(&load("circle3")).failed());
 }
 
@@ -199,7 +226,10 @@ fn ca_2_gh_planted_equation_fault_caught_by_both_readings() {
     assert!(!decide::check_grimm_hughes(&triangle(false), true).failed());
     let line = load("line_counterexample");
     assert!(!sampled::check_grimm_hughes(&line, &cfg, false).failed());
-    assert_caught(&sampled::check_grimm_hughes(&line, &cfg, true), "rhs_undefined");
+    assert_caught(
+        &sampled::check_grimm_hughes(&line, &cfg, true),
+        "rhs_undefined",
+    );
 }
 
 #[test]
@@ -219,7 +249,9 @@ fn d3_4_1_4_planted_fork_and_split_point() {
     for (lo, hi) in [(q(2, 1), q(5, 2)), (q(5, 2), q(3, 1))] {
         let dom = pseudomanifold::gluing::exact1d::Interval::new(lo, hi).expect("non-empty");
         g.add_piece(1, 2, dom.clone(), q(1, 1), q(8, 1));
-        let img = pseudomanifold::gluing::exact1d::Interval::new(&dom.lo + q(8, 1), &dom.hi + q(8, 1)).expect("non-empty");
+        let img =
+            pseudomanifold::gluing::exact1d::Interval::new(&dom.lo + q(8, 1), &dom.hi + q(8, 1))
+                .expect("non-empty");
         g.add_piece(2, 1, img, q(1, 1), q(-8, 1));
     }
     let r = decide::check_4(&g);
@@ -244,7 +276,10 @@ fn t3_4_1_equiv_planted_reflexivity_symmetry_transitivity() {
     g.glue.get_mut(&(2, 1)).expect("glued")[0].b = q(13, 1);
     assert_caught(&check_equivalence(&g, &GridSample::new(&g, 6)), "symmetry");
     let g = load("line_counterexample");
-    assert_caught(&check_equivalence(&g, &GridSample::new(&g, 6)), "transitivity");
+    assert_caught(
+        &check_equivalence(&g, &GridSample::new(&g, 6)),
+        "transitivity",
+    );
     let g = load("circle3");
     assert!(!check_equivalence(&g, &GridSample::new(&g, 6)).failed());
 }
@@ -265,19 +300,39 @@ fn t3_4_1_claim_planted_classes_meeting_outside_k() {
 #[test]
 fn d3_4_1_sampled_and_exact_verdicts_agree_on_all_examples() {
     let cfg = SampleConfig { seed: 7, n: 300 };
-    let mut examples: Vec<(String, Exact1d)> = ["line_counterexample", "line_repaired", "fork", "fork_repaired", "circle2", "circle3"]
-        .iter()
-        .map(|n| (n.to_string(), load(n)))
-        .collect();
+    let mut examples: Vec<(String, Exact1d)> = [
+        "line_counterexample",
+        "line_repaired",
+        "fork",
+        "fork_repaired",
+        "circle2",
+        "circle3",
+    ]
+    .iter()
+    .map(|n| (n.to_string(), load(n)))
+    .collect();
     examples.push(("triangle-bad".into(), triangle(true)));
     for (name, g) in &examples {
         let exact = decide::check_all(g);
         let samp = sampled::check_all(g, &cfg);
         for e in &exact {
             // D3.4.1(3) differs in scope (sampled: "into" only); compare where both decide.
-            let Some(s) = samp.iter().find(|s| s.id == e.id) else { continue };
-            assert_eq!(e.failed(), s.failed(), "{name}: {} exact {:?} vs sampled {:?}", e.id, e.witnesses, s.witnesses);
-            assert!(s.examined > 0 || e.examined == 0 || e.id == "D3.4.1(4)", "{name}: {} sampled nothing", s.id);
+            let Some(s) = samp.iter().find(|s| s.id == e.id) else {
+                continue;
+            };
+            assert_eq!(
+                e.failed(),
+                s.failed(),
+                "{name}: {} exact {:?} vs sampled {:?}",
+                e.id,
+                e.witnesses,
+                s.witnesses
+            );
+            assert!(
+                s.examined > 0 || e.examined == 0 || e.id == "D3.4.1(4)",
+                "{name}: {} sampled nothing",
+                s.id
+            );
         }
     }
 }
