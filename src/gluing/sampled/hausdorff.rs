@@ -67,6 +67,64 @@ fn ball_samples<G: GluingData<N>, const N: usize>(
     out
 }
 
+/// Limits of φ_ji at x along a few random directions into Ω_ij (linear extrapolation from
+/// φ_ji at distances t and 2t, t = scale·2⁻²⁰), kept when they lie in Ω_j with margin
+/// `LIMIT_MARGIN`·scale (a limit on ∂Ω_j is not a point of Ω_j) and outside Ω_ji.
+fn limit_candidates<G: GluingData<N>, const N: usize>(
+    g: &G,
+    i: Idx,
+    j: Idx,
+    x: &Point<G::S, N>,
+    rng: &mut ChaCha8Rng,
+) -> Vec<Point<G::S, N>> {
+    let t = g.scale() * 2f64.powi(-20);
+    let eta = from_f64::<G::S>(LIMIT_MARGIN * g.scale());
+    let mut out: Vec<Point<G::S, N>> = Vec::new();
+    for _ in 0..8 {
+        let mut u = [0f64; N];
+        for c in u.iter_mut() {
+            *c = rng.gen_range(-1.0..1.0);
+        }
+        let n = u.iter().map(|c| c * c).sum::<f64>().sqrt();
+        if n < 1e-9 {
+            continue;
+        }
+        let at = |s: f64| {
+            let mut p = *x;
+            for m in 0..N {
+                p[m] = p[m] + from_f64::<G::S>(s * u[m] / n);
+            }
+            p
+        };
+        let (p1, p2) = (at(t), at(2.0 * t));
+        if !(g.in_gluing_domain(i, j, &p1) && g.in_gluing_domain(i, j, &p2)) {
+            continue;
+        }
+        let (Some(y1), Some(y2)) = (g.phi(j, i, &p1), g.phi(j, i, &p2)) else {
+            continue;
+        };
+        let mut y = y1;
+        for m in 0..N {
+            y[m] = y1[m] + y1[m] - y2[m];
+        }
+        let inside_with_margin = g.in_p_domain(j, &y)
+            && (0..N).all(|m| {
+                let (mut a, mut b) = (y, y);
+                a[m] = a[m] + eta;
+                b[m] = b[m] - eta;
+                g.in_p_domain(j, &a) && g.in_p_domain(j, &b)
+            });
+        let fresh = out.iter().all(|o| dist(o, &y) > LIMIT_MARGIN * g.scale());
+        if inside_with_margin && !g.in_gluing_domain(j, i, &y) && fresh {
+            out.push(y);
+        }
+    }
+    out
+}
+
+/// Margin for deciding that an extrapolated limit lies in the open set Ω_j.
+pub const LIMIT_MARGIN: f64 = 1e-6;
+
 /// Def. 3.4.1(4), sampled. Returns the result and, for separated pairs, the radii found.
 pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
     g: &G,
@@ -87,6 +145,10 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
         let xs = g.gluing_boundary_points(i, j, &mut rng, nb);
         let ys = g.gluing_boundary_points(j, i, &mut rng, nb);
         for x in &xs {
+            // The sampler cannot hit the one y that φ_ji's limit at x may be; so estimate that
+            // limit and add it as a candidate y when it lies in Ω_j with a margin.
+            let mut ys_x = ys.clone();
+            ys_x.extend(limit_candidates(g, i, j, x, &mut rng));
             // m(r) does not depend on y's choice of samples, so compute images once per radius.
             let radii: Vec<f64> = (0..11).map(|s| scale * 2f64.powi(-(2 + 4 * s))).collect();
             let images: Vec<Vec<Point<G::S, N>>> = radii
@@ -98,7 +160,7 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
                         .collect()
                 })
                 .collect();
-            for y in &ys {
+            for y in &ys_x {
                 r.examined += 1;
                 let m: Vec<f64> = images
                     .iter()
