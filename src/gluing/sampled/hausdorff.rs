@@ -54,7 +54,7 @@ fn ball_samples<G: GluingData<N>, const N: usize>(
         let rho = if t % 2 == 0 {
             r * rng.gen_range(0.0..1.0)
         } else {
-            r * 2f64.powi(-((t / 2) as i32 % 40))
+            r * 2f64.powi(-((t / 2) % 40))
         } * 0.999;
         let mut p = *x;
         for m in 0..N {
