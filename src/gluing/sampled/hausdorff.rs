@@ -4,10 +4,11 @@
 //!
 //! Method: for shrinking radii r = scale·2⁻ᵏ (k = 2, 6, …, 42) measure
 //! m(r) = min |φ_ji(x') − y| over samples x' ∈ V_x ∩ Ω_ij (uniform in the ball plus points at
-//! geometric distances from x). If φ_ji extends continuously with x ↦ y, m(r) → 0 with r; the
-//! pair fails when m at the smallest radius is below `SEPARATION_FACTOR`·scale. Otherwise the
-//! radii (r, m(r)/2) for the largest r with m(r) clear of that threshold are reported. The exact
-//! 1-D backend decides (4) instead.
+//! geometric distances from x), down to the scalar's resolution (1024·ε·max(scale, ‖x‖)). If
+//! φ_ji extends continuously with x ↦ y, m(r) → 0 with r; the pair fails when m at the smallest
+//! sampled radius r_last is below max(`SEPARATION_FACTOR`·scale, 64·r_last) (the tolerance
+//! reported; it assumes φ_ji is 64-Lipschitz near x). Otherwise the radii (r, m(r)/2) for the
+//! largest r with m(r) clear of that threshold are reported. The exact 1-D backend decides (4).
 
 use super::{sampled_k, SampleConfig};
 use crate::gluing::data::{dist, fmt_point, from_f64, point_json, to_f64, GluingData, Idx, Point};
@@ -77,7 +78,11 @@ fn limit_candidates<G: GluingData<N>, const N: usize>(
     x: &Point<G::S, N>,
     rng: &mut ChaCha8Rng,
 ) -> Vec<Point<G::S, N>> {
-    let t = g.scale() * 2f64.powi(-20);
+    let t = (g.scale() * 2f64.powi(-20)).max(
+        1024.0
+            * to_f64(<G::S as num_traits::Float>::epsilon())
+            * g.scale().max(crate::gluing::data::norm(x)),
+    );
     let eta = from_f64::<G::S>(LIMIT_MARGIN * g.scale());
     let mut out: Vec<Point<G::S, N>> = Vec::new();
     for _ in 0..8 {
@@ -134,7 +139,7 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
     r.seed = Some(cfg.seed);
     let scale = g.scale();
     let thr = SEPARATION_FACTOR * scale;
-    r.tolerance = Some(thr);
+    let mut tol_used = thr;
     let mut rng = cfg.rng(9);
     let mut seps = Vec::new();
     let nb = (cfg.n / 10).clamp(2, 16);
@@ -150,7 +155,14 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
             let mut ys_x = ys.clone();
             ys_x.extend(limit_candidates(g, i, j, x, &mut rng));
             // m(r) does not depend on y's choice of samples, so compute images once per radius.
-            let radii: Vec<f64> = (0..11).map(|s| scale * 2f64.powi(-(2 + 4 * s))).collect();
+            // Radii below the scalar's resolution at x would sample nothing but x itself.
+            let r_min = 1024.0
+                * to_f64(<G::S as num_traits::Float>::epsilon())
+                * scale.max(crate::gluing::data::norm(x));
+            let radii: Vec<f64> = (0..11)
+                .map(|s| scale * 2f64.powi(-(2 + 4 * s)))
+                .filter(|&rad| rad >= r_min)
+                .collect();
             let images: Vec<Vec<Point<G::S, N>>> = radii
                 .iter()
                 .map(|&rad| {
@@ -166,20 +178,28 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
                     .iter()
                     .map(|im| im.iter().map(|z| dist(z, y)).fold(f64::INFINITY, f64::min))
                     .collect();
-                let last = m.last().copied().unwrap_or(f64::INFINITY);
+                // The smallest radius at which V_x ∩ Ω_ij was actually sampled.
+                let Some(k) = (0..m.len()).rev().find(|&k| m[k].is_finite()) else {
+                    r.examined -= 1; // nothing sampled near x: no evidence either way
+                    continue;
+                };
+                let (last, r_last) = (m[k], radii[k]);
+                // If φ_ji extends with x ↦ y, m(r) ≤ Lip·r; 64·r_last allows Lip ≤ 64.
+                let thr = thr.max(64.0 * r_last);
+                tol_used = tol_used.max(thr);
                 if last <= thr {
                     let worst = r.worst_deviation.map_or(last, |w| w.min(last));
                     r.worst_deviation = Some(worst);
                     r.offend(|| {
                         Witness::new(
                             format!(
-                                "(i,j)=({i},{j}): x = {} ∈ ∂Ω_{i}{j} ∩ Ω_{i}, y = {} ∈ ∂Ω_{j}{i} ∩ Ω_{j}: images of V_x ∩ Ω_{i}{j} come within {last:.3e} of y at radius {:.3e}",
-                                fmt_point(x), fmt_point(y), radii[radii.len() - 1]
+                                "(i,j)=({i},{j}): x = {} ∈ ∂Ω_{i}{j} ∩ Ω_{i}, y = {} ∈ ∂Ω_{j}{i} ∩ Ω_{j}: images of V_x ∩ Ω_{i}{j} come within {last:.3e} of y at radius {r_last:.3e}",
+                                fmt_point(x), fmt_point(y)
                             ),
                             json!({"kind": "not_separated", "i": i, "j": j, "x": point_json(x), "y": point_json(y), "gap": last}),
                         )
                     });
-                } else if let Some(s) = (0..radii.len()).find(|&s| m[s] > thr) {
+                } else if let Some(s) = (0..radii.len()).find(|&s| m[s].is_finite() && m[s] > thr) {
                     seps.push(SampledSeparation {
                         i,
                         j,
@@ -192,6 +212,7 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
             }
         }
     }
+    r.tolerance = Some(tol_used);
     let listed: Vec<String> = seps
         .iter()
         .take(4)
