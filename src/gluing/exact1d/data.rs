@@ -28,12 +28,7 @@ impl Piece {
         OpenSet::from_interval(self.dom.clone()).affine_image(&self.a, &self.b)
     }
     pub fn describe(&self) -> String {
-        format!(
-            "x ↦ {}·x + {} on {}",
-            fmt_q(&self.a),
-            fmt_q(&self.b),
-            self.dom
-        )
+        format!("x ↦ {} on {}", affine_str(&self.a, &self.b), self.dom)
     }
 }
 
