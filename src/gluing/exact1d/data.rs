@@ -1,0 +1,156 @@
+//! The exact 1-D backend's data: p-domains and gluing domains are finite unions of open
+//! intervals with rational endpoints, and each transition function φ_ji is piecewise affine,
+//! x ↦ a·x + b on each listed piece of Ω_ij (one piece is the common case; several pieces let a
+//! circle be glued from two intervals).
+
+use super::interval::{fmt_q, Interval, OpenSet, Q};
+use crate::gluing::data::Idx;
+use num_traits::{One, Zero};
+use std::collections::BTreeMap;
+
+/// One affine piece of φ_ji: on the open interval `dom` ⊆ Ω_ij, φ_ji(x) = a·x + b.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Piece {
+    pub dom: Interval,
+    pub a: Q,
+    pub b: Q,
+}
+
+impl Piece {
+    pub fn eval(&self, x: &Q) -> Q {
+        &self.a * x + &self.b
+    }
+    /// φ on the whole piece, as an open set (empty if a = 0 would collapse it).
+    pub fn image(&self) -> OpenSet {
+        if self.a.is_zero() {
+            return OpenSet::empty();
+        }
+        OpenSet::from_interval(self.dom.clone()).affine_image(&self.a, &self.b)
+    }
+    pub fn describe(&self) -> String {
+        format!("x ↦ {} on {}", affine_str(&self.a, &self.b), self.dom)
+    }
+}
+
+/// A set of gluing data in ℝ¹ (Def. 3.4.1) with exact rational data.
+#[derive(Clone, Debug, Default)]
+pub struct Exact1d {
+    /// Ω_i for i ∈ I.
+    pub domains: BTreeMap<Idx, OpenSet>,
+    /// For (i, j): the pieces of φ_ji, whose domains make up Ω_ij. A missing diagonal entry
+    /// (i, i) means the default Ω_ii = Ω_i, φ_ii = id (see [`Exact1d::with_default_diagonal`]).
+    pub glue: BTreeMap<(Idx, Idx), Vec<Piece>>,
+}
+
+impl Exact1d {
+    /// I.
+    pub fn ids(&self) -> Vec<Idx> {
+        self.domains.keys().copied().collect()
+    }
+    pub fn omega(&self, i: Idx) -> OpenSet {
+        self.domains.get(&i).cloned().unwrap_or_default()
+    }
+    /// Ω_ij: the union of the piece domains of φ_ji.
+    pub fn omega_ij(&self, i: Idx, j: Idx) -> OpenSet {
+        OpenSet::from_intervals(self.pieces(i, j).iter().map(|p| p.dom.clone()))
+    }
+    /// The pieces of φ_ji : Ω_ij → Ω_ji (note the order: key (i, j), map φ_ji).
+    pub fn pieces(&self, i: Idx, j: Idx) -> &[Piece] {
+        self.glue.get(&(i, j)).map(|v| v.as_slice()).unwrap_or(&[])
+    }
+    /// K of Def. 3.4.1(3).
+    pub fn k(&self) -> Vec<(Idx, Idx)> {
+        let ids = self.ids();
+        let mut k = Vec::new();
+        for &i in &ids {
+            for &j in &ids {
+                if !self.omega_ij(i, j).is_empty() {
+                    k.push((i, j));
+                }
+            }
+        }
+        k
+    }
+    /// φ_ji(x) for x ∈ Ω_ij (first piece containing x); `None` outside Ω_ij.
+    pub fn phi(&self, j: Idx, i: Idx, x: &Q) -> Option<Q> {
+        self.pieces(i, j)
+            .iter()
+            .find(|p| p.dom.contains(x))
+            .map(|p| p.eval(x))
+    }
+    /// Add a p-domain piece.
+    pub fn add_domain(&mut self, i: Idx, iv: Interval) {
+        let d = self.domains.entry(i).or_default();
+        *d = d.union(&OpenSet::from_interval(iv));
+    }
+    /// Add an empty p-domain (so that i ∈ I although Ω_i = ∅).
+    pub fn add_empty_domain(&mut self, i: Idx) {
+        self.domains.entry(i).or_default();
+    }
+    /// Add a piece of φ_ji on `dom` ⊆ Ω_ij.
+    pub fn add_piece(&mut self, i: Idx, j: Idx, dom: Interval, a: Q, b: Q) {
+        self.glue
+            .entry((i, j))
+            .or_default()
+            .push(Piece { dom, a, b });
+    }
+    /// Fill every missing diagonal entry with Ω_ii = Ω_i, φ_ii = id.
+    pub fn with_default_diagonal(mut self) -> Self {
+        for (i, d) in self.domains.clone() {
+            self.glue.entry((i, i)).or_insert_with(|| {
+                d.parts()
+                    .iter()
+                    .map(|iv| Piece {
+                        dom: iv.clone(),
+                        a: Q::one(),
+                        b: Q::zero(),
+                    })
+                    .collect()
+            });
+        }
+        self
+    }
+    /// Bounding box of all p-domains (for grids and scales).
+    pub fn hull(&self) -> Option<(Q, Q)> {
+        let mut lo: Option<Q> = None;
+        let mut hi: Option<Q> = None;
+        for d in self.domains.values() {
+            for p in d.parts() {
+                lo = Some(lo.map_or(p.lo.clone(), |l| l.min(p.lo.clone())));
+                hi = Some(hi.map_or(p.hi.clone(), |h| h.max(p.hi.clone())));
+            }
+        }
+        Some((lo?, hi?))
+    }
+}
+
+/// Convenience constructor: integer-or-fraction rational from i64 numerator/denominator.
+pub fn q(n: i64, d: i64) -> Q {
+    Q::new(n.into(), d.into())
+}
+
+/// Interval with integer endpoints, unchecked (for literal data; callers keep lo < hi).
+pub fn iv(lo: i64, hi: i64) -> Interval {
+    Interval {
+        lo: q(lo, 1),
+        hi: q(hi, 1),
+    }
+}
+
+/// "x + 4", "-x - 1/2", "2·x": an affine map a·x + b written as a reader would.
+pub fn affine_str(a: &Q, b: &Q) -> String {
+    let lin = if a.is_one() {
+        "x".to_string()
+    } else if (-a).is_one() {
+        "-x".to_string()
+    } else {
+        format!("{}·x", fmt_q(a))
+    };
+    if b.is_zero() {
+        lin
+    } else if *b < Q::zero() {
+        format!("{lin} - {}", fmt_q(&-b))
+    } else {
+        format!("{lin} + {}", fmt_q(b))
+    }
+}

@@ -1,0 +1,609 @@
+//! Exact decision procedures for every condition of Def. 3.4.1 and the Grimm–Hughes variant of
+//! App. A.2 on [`Exact1d`] data: sets, images, preimages and compositions are computed exactly
+//! over interval pieces, so each verdict is decided, not sampled.
+
+use super::data::{Exact1d, Piece};
+use super::interval::{fmt_q, q_to_f64, Interval, OpenSet, Q};
+use crate::gluing::data::Idx;
+use crate::report::{CheckResult, Witness};
+use num_traits::{One, Signed, Zero};
+use serde_json::json;
+
+/// The exact preimage of `set` under one affine piece, inside the piece's domain.
+pub fn piece_preimage(p: &Piece, set: &OpenSet) -> OpenSet {
+    if p.a.is_zero() {
+        // A constant piece: everything or nothing (only reachable on ill-formed data).
+        return if set.contains(&p.b) {
+            OpenSet::from_interval(p.dom.clone())
+        } else {
+            OpenSet::empty()
+        };
+    }
+    set.affine_preimage(&p.a, &p.b)
+        .intersect(&OpenSet::from_interval(p.dom.clone()))
+}
+
+/// φ_ji⁻¹(set) = {x ∈ Ω_ij : φ_ji(x) ∈ set}, with φ_ji given by `pieces` (key (i, j)).
+pub fn preimage(pieces: &[Piece], set: &OpenSet) -> OpenSet {
+    pieces.iter().fold(OpenSet::empty(), |acc, p| {
+        acc.union(&piece_preimage(p, set))
+    })
+}
+
+/// One cell of a composition: on `cell`, the composite is x ↦ a·x + b.
+#[derive(Clone, Debug)]
+pub struct Cell {
+    pub cell: Interval,
+    pub a: Q,
+    pub b: Q,
+}
+
+/// The cells of second ∘ first, where both are piecewise affine: for each pair of pieces
+/// (P of first, R of second) the interval {x ∈ P : P(x) ∈ R} with composite coefficients.
+pub fn compose(first: &[Piece], second: &[Piece]) -> Vec<Cell> {
+    let mut out = Vec::new();
+    for p in first {
+        for r in second {
+            let pre = piece_preimage(p, &OpenSet::from_interval(r.dom.clone()));
+            for c in pre.parts() {
+                out.push(Cell {
+                    cell: c.clone(),
+                    a: &r.a * &p.a,
+                    b: &r.a * &p.b + &r.b,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// Compare composite cells with the pieces of `target` on `restrict`; every disagreement is
+/// reported through `bad(x, lhs, rhs)` at the midpoint x of a maximal disagreeing cell.
+/// Returns the number of cells compared.
+fn compare_cells(
+    cells: &[Cell],
+    target: &[Piece],
+    restrict: &OpenSet,
+    mut bad: impl FnMut(&Q, &Q, &Q),
+) -> u64 {
+    let mut n = 0;
+    for c in cells {
+        for t in target {
+            let Some(common) = c.cell.intersect(&t.dom) else {
+                continue;
+            };
+            for part in OpenSet::from_interval(common).intersect(restrict).parts() {
+                n += 1;
+                // Two affine maps agree on an open interval iff their coefficients agree.
+                if c.a != t.a || c.b != t.b {
+                    let x = part.midpoint();
+                    bad(&x, &t.eval(&x), &(&c.a * &x + &c.b));
+                }
+            }
+        }
+    }
+    n
+}
+
+fn qs(x: &Q) -> serde_json::Value {
+    serde_json::Value::String(fmt_q(x))
+}
+
+fn exact(r: CheckResult) -> CheckResult {
+    let note = if r.note.is_empty() {
+        "exact (rational arithmetic)".to_string()
+    } else {
+        format!("exact (rational arithmetic); {}", r.note)
+    };
+    r.with_note(note)
+}
+
+fn dev(r: &mut CheckResult, d: &Q) {
+    let d = q_to_f64(&d.abs());
+    r.worst_deviation = Some(r.worst_deviation.unwrap_or(0.0).max(d));
+}
+
+/// Def. 3.4.1(1): I ≠ ∅; each Ω_i non-empty and open (open by representation); pairwise disjoint.
+pub fn check_1(g: &Exact1d) -> CheckResult {
+    let mut r = CheckResult::new("D3.4.1(1)", "p-domains non-empty, open, disjoint");
+    let ids = g.ids();
+    if ids.is_empty() {
+        r.offend(|| {
+            Witness::new(
+                "the index set I is empty",
+                json!({"kind": "empty_index_set"}),
+            )
+        });
+    }
+    for (n, &i) in ids.iter().enumerate() {
+        r.examined += 1;
+        if g.omega(i).is_empty() {
+            r.offend(|| Witness::new(format!("Ω_{i} is empty"), json!({"kind": "empty", "i": i})));
+        }
+        for &j in &ids[n + 1..] {
+            r.examined += 1;
+            let both = g.omega(i).intersect(&g.omega(j));
+            if let Some(p) = both.parts().first() {
+                let x = p.midpoint();
+                r.offend(|| {
+                    Witness::new(
+                        format!("Ω_{i} ∩ Ω_{j} = {both} ∋ {}", fmt_q(&x)),
+                        json!({"kind": "overlap", "i": i, "j": j, "x": qs(&x)}),
+                    )
+                });
+            }
+        }
+    }
+    exact(r.with_note("open by construction (open rational intervals)"))
+}
+
+/// Def. 3.4.1(2): Ω_ij ⊆ Ω_i (open by representation), Ω_ii = Ω_i, Ω_ij ≠ ∅ ⇔ Ω_ji ≠ ∅.
+pub fn check_2(g: &Exact1d) -> CheckResult {
+    let mut r = CheckResult::new("D3.4.1(2)", "Ω_ij ⊆ Ω_i open, Ω_ii = Ω_i, K symmetric");
+    let ids = g.ids();
+    for &i in &ids {
+        for &j in &ids {
+            r.examined += 1;
+            let oij = g.omega_ij(i, j);
+            if let Some(x) = oij.subset_witness(&g.omega(i)) {
+                r.offend(|| {
+                    Witness::new(
+                        format!("Ω_{i}{j} = {oij} ⊄ Ω_{i}: {} ∉ Ω_{i}", fmt_q(&x)),
+                        json!({"kind": "not_subset", "i": i, "j": j, "x": qs(&x)}),
+                    )
+                });
+            }
+            if i == j {
+                if let Some(x) = g.omega(i).subset_witness(&oij) {
+                    r.offend(|| {
+                        Witness::new(
+                            format!("Ω_{i}{i} = {oij} ≠ Ω_{i}: {} ∈ Ω_{i} ∖ Ω_{i}{i}", fmt_q(&x)),
+                            json!({"kind": "diag", "i": i, "x": qs(&x)}),
+                        )
+                    });
+                }
+            }
+            if oij.is_empty() != g.omega_ij(j, i).is_empty() {
+                r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "Ω_{i}{j} = {oij} but Ω_{j}{i} = {}: Ω_ij ≠ ∅ ⇔ Ω_ji ≠ ∅ fails",
+                            g.omega_ij(j, i)
+                        ),
+                        json!({"kind": "asymmetric_k", "i": i, "j": j}),
+                    )
+                });
+            }
+        }
+    }
+    exact(r)
+}
+
+/// Def. 3.4.1(3): for (i, j) ∈ K, φ_ji is a well-defined bijection Ω_ij → Ω_ji (affine pieces
+/// with a ≠ 0, pieces not overlapping with different maps, images pairwise disjoint, union of
+/// images = Ω_ji). Affine pieces with a ≠ 0 are C^∞, so only bijectivity needs deciding.
+pub fn check_bijection(g: &Exact1d) -> CheckResult {
+    let mut r = CheckResult::new("D3.4.1(3)", "φ_ji : Ω_ij → Ω_ji a (C^∞) bijection");
+    for (i, j) in g.k() {
+        r.examined += 1;
+        let ps = g.pieces(i, j);
+        for p in ps {
+            if p.a.is_zero() {
+                r.offend(|| {
+                    Witness::new(
+                        format!("φ_{j}{i} is constant on {}: not injective", p.dom),
+                        json!({"kind": "constant", "i": i, "j": j}),
+                    )
+                });
+            }
+        }
+        for (n, p) in ps.iter().enumerate() {
+            for o in &ps[n + 1..] {
+                if let Some(c) = p.dom.intersect(&o.dom) {
+                    if p.a != o.a || p.b != o.b {
+                        let x = c.midpoint();
+                        r.offend(|| {
+                            Witness::new(
+                                format!(
+                                    "φ_{j}{i} given twice at {}: {} vs {}",
+                                    fmt_q(&x),
+                                    fmt_q(&p.eval(&x)),
+                                    fmt_q(&o.eval(&x))
+                                ),
+                                json!({"kind": "not_function", "i": i, "j": j, "x": qs(&x)}),
+                            )
+                        });
+                    }
+                }
+                let both = p.image().intersect(&o.image());
+                if let Some(c) = both.parts().first() {
+                    if p.dom.intersect(&o.dom).is_none() {
+                        let y = c.midpoint();
+                        r.offend(|| {
+                            Witness::new(
+                                format!(
+                                    "φ_{j}{i} not injective: {} has preimages in {} and {}",
+                                    fmt_q(&y),
+                                    p.dom,
+                                    o.dom
+                                ),
+                                json!({"kind": "not_injective", "i": i, "j": j, "y": qs(&y)}),
+                            )
+                        });
+                    }
+                }
+            }
+        }
+        let image = ps
+            .iter()
+            .fold(OpenSet::empty(), |acc, p| acc.union(&p.image()));
+        let target = g.omega_ij(j, i);
+        if let Some(y) = image.subset_witness(&target) {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "φ_{j}{i}(Ω_{i}{j}) = {image} ⊄ Ω_{j}{i} = {target}: {} ∉ Ω_{j}{i}",
+                        fmt_q(&y)
+                    ),
+                    json!({"kind": "not_into", "i": i, "j": j, "y": qs(&y)}),
+                )
+            });
+        }
+        if let Some(y) = target.subset_witness(&image) {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "φ_{j}{i} not onto Ω_{j}{i} = {target}: {} has no preimage",
+                        fmt_q(&y)
+                    ),
+                    json!({"kind": "not_onto", "i": i, "j": j, "y": qs(&y)}),
+                )
+            });
+        }
+    }
+    exact(r)
+}
+
+/// Def. 3.4.1(3a): φ_ii = id_{Ω_i}: every piece of φ_ii is x ↦ 1·x + 0, and φ_ii is defined on
+/// all of Ω_i (otherwise the identity of Ω_i is not φ_ii).
+pub fn check_3a(g: &Exact1d) -> CheckResult {
+    let mut r = CheckResult::new("D3.4.1(3a)", "φ_ii = id");
+    for i in g.ids() {
+        r.examined += 1;
+        for p in g.pieces(i, i) {
+            if !(p.a.is_one() && p.b.is_zero()) {
+                let x = p.dom.midpoint();
+                let y = p.eval(&x);
+                dev(&mut r, &(&y - &x));
+                r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "φ_{i}{i}({}) = {} ≠ {} ({})",
+                            fmt_q(&x),
+                            fmt_q(&y),
+                            fmt_q(&x),
+                            p.describe()
+                        ),
+                        json!({"kind": "not_identity", "i": i, "x": qs(&x), "phi": qs(&y)}),
+                    )
+                });
+            }
+        }
+        if let Some(x) = g.omega(i).subset_witness(&g.omega_ij(i, i)) {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "φ_{i}{i}({}) undefined, but id_Ω_{i} is defined there",
+                        fmt_q(&x)
+                    ),
+                    json!({"kind": "undefined", "i": i, "x": qs(&x)}),
+                )
+            });
+        }
+    }
+    exact(r)
+}
+
+/// Def. 3.4.1(3b): φ_ij = φ_ji⁻¹ for (i, j) ∈ K, decided as φ_ij ∘ φ_ji = id on Ω_ij (for both
+/// orders of every pair, so both inverse laws are covered) including definedness.
+pub fn check_3b(g: &Exact1d) -> CheckResult {
+    let mut r = CheckResult::new("D3.4.1(3b)", "φ_ij = φ_ji⁻¹");
+    for (i, j) in g.k() {
+        r.examined += 1;
+        let first = g.pieces(i, j);
+        let second = g.pieces(j, i);
+        let oij = g.omega_ij(i, j);
+        let defined = preimage(first, &g.omega_ij(j, i));
+        if let Some(x) = oij.subset_witness(&defined) {
+            r.offend(|| {
+                Witness::new(
+                    format!("φ_{i}{j}(φ_{j}{i}({})) undefined", fmt_q(&x)),
+                    json!({"kind": "undefined", "i": i, "j": j, "x": qs(&x)}),
+                )
+            });
+        }
+        let ident = [Piece {
+            dom: match (oij.parts().first(), oij.parts().last()) {
+                (Some(a), Some(b)) => Interval {
+                    lo: a.lo.clone(),
+                    hi: b.hi.clone(),
+                },
+                _ => continue,
+            },
+            a: Q::one(),
+            b: Q::zero(),
+        }];
+        let cells = compose(first, second);
+        let mut found = Vec::new();
+        r.examined += compare_cells(&cells, &ident, &oij, |x, _, rhs| {
+            found.push((x.clone(), rhs.clone()))
+        });
+        for (x, z) in found {
+            dev(&mut r, &(&z - &x));
+            r.offend(|| {
+                Witness::new(
+                    format!("φ_{i}{j}(φ_{j}{i}({})) = {} ≠ x", fmt_q(&x), fmt_q(&z)),
+                    json!({"kind": "not_inverse", "i": i, "j": j, "x": qs(&x), "back": qs(&z)}),
+                )
+            });
+        }
+    }
+    exact(r)
+}
+
+/// The domain of the cocycle condition: φ_ji⁻¹(Ω_ji ∩ Ω_jk).
+pub fn cocycle_domain(g: &Exact1d, i: Idx, j: Idx, k: Idx) -> OpenSet {
+    preimage(
+        g.pieces(i, j),
+        &g.omega_ij(j, i).intersect(&g.omega_ij(j, k)),
+    )
+}
+
+/// Def. 3.4.1(3c), decided: for all i, j, k with Ω_ji ∩ Ω_jk ≠ ∅, D = φ_ji⁻¹(Ω_ji ∩ Ω_jk) ⊆ Ω_ik
+/// (exact inclusion of interval unions) and φ_ki = φ_kj ∘ φ_ji on D (coefficients compared on
+/// every cell of the piecewise-affine composition).
+pub fn check_3c(g: &Exact1d) -> CheckResult {
+    let mut r = CheckResult::new(
+        "D3.4.1(3c)",
+        "cocycle: domain inclusion and φ_ki = φ_kj∘φ_ji",
+    );
+    let ids = g.ids();
+    for &i in &ids {
+        for &j in &ids {
+            for &k in &ids {
+                if g.omega_ij(j, i).intersect(&g.omega_ij(j, k)).is_empty() {
+                    continue;
+                }
+                r.examined += 1;
+                let d = cocycle_domain(g, i, j, k);
+                let oik = g.omega_ij(i, k);
+                let (outside, points) = d.minus(&oik);
+                for x in outside.parts().iter().map(|p| p.midpoint()).chain(points) {
+                    let y = g.phi(j, i, &x).unwrap_or_else(Q::zero);
+                    let z = g.phi(k, j, &y).unwrap_or_else(Q::zero);
+                    r.offend(|| {
+                        Witness::new(
+                            format!(
+                                "(i,j,k)=({i},{j},{k}): x = {} ∈ φ_{j}{i}⁻¹(Ω_{j}{i} ∩ Ω_{j}{k}) = {d} but x ∉ Ω_{i}{k} = {oik}; so {} ∼ {} ∼ {} yet φ_{k}{i}({}) is undefined",
+                                fmt_q(&x), fmt_q(&x), fmt_q(&y), fmt_q(&z), fmt_q(&x)
+                            ),
+                            json!({"kind": "inclusion", "i": i, "j": j, "k": k, "x": qs(&x), "y": qs(&y), "z": qs(&z)}),
+                        )
+                    });
+                }
+                let cells = compose(g.pieces(i, j), g.pieces(j, k));
+                let mut found = Vec::new();
+                r.examined += compare_cells(&cells, g.pieces(i, k), &d, |x, l, rr| {
+                    found.push((x.clone(), l.clone(), rr.clone()))
+                });
+                for (x, lhs, rhs) in found {
+                    dev(&mut r, &(&lhs - &rhs));
+                    r.offend(|| {
+                        Witness::new(
+                            format!(
+                                "(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}(φ_{j}{i}(x)) = {}",
+                                fmt_q(&x), fmt_q(&lhs), fmt_q(&rhs)
+                            ),
+                            json!({"kind": "equation", "i": i, "j": j, "k": k, "x": qs(&x), "lhs": qs(&lhs), "rhs": qs(&rhs)}),
+                        )
+                    });
+                }
+            }
+        }
+    }
+    if r.worst_deviation.is_none() && !r.failed() {
+        r.worst_deviation = Some(0.0);
+    }
+    exact(r)
+}
+
+/// App. A.2, the Grimm–Hughes cocycle condition, decided: for all i, j, k and x ∈ Ω_ij ∩ Ω_ik,
+/// φ_ki(x) = φ_kj ∘ φ_ji(x). `strict = false`: required where the right side is defined (the
+/// reading under which App. A.2 calls it "too weak"); `strict = true`: the right side must
+/// also be defined on all of Ω_ij ∩ Ω_ik.
+pub fn check_grimm_hughes(g: &Exact1d, strict: bool) -> CheckResult {
+    let (id, name) = if strict {
+        (
+            "CA.2-GH-strict",
+            "Grimm–Hughes cocycle, RHS required defined",
+        )
+    } else {
+        ("CA.2-GH", "Grimm–Hughes cocycle (where both sides defined)")
+    };
+    let mut r = CheckResult::new(id, name);
+    let ids = g.ids();
+    for &i in &ids {
+        for &j in &ids {
+            for &k in &ids {
+                let e = g.omega_ij(i, j).intersect(&g.omega_ij(i, k));
+                if e.is_empty() {
+                    continue;
+                }
+                r.examined += 1;
+                if strict {
+                    let defined = cocycle_domain(g, i, j, k);
+                    let (outside, points) = e.minus(&defined);
+                    for x in outside.parts().iter().map(|p| p.midpoint()).chain(points) {
+                        let y = g.phi(j, i, &x).unwrap_or_else(Q::zero);
+                        r.offend(|| {
+                            Witness::new(
+                                format!(
+                                    "(i,j,k)=({i},{j},{k}): x = {} ∈ Ω_{i}{j} ∩ Ω_{i}{k} but φ_{j}{i}(x) = {} ∉ Ω_{j}{k}, so φ_{k}{j}∘φ_{j}{i}(x) is undefined",
+                                    fmt_q(&x), fmt_q(&y)
+                                ),
+                                json!({"kind": "rhs_undefined", "i": i, "j": j, "k": k, "x": qs(&x), "y": qs(&y)}),
+                            )
+                        });
+                    }
+                }
+                let cells = compose(g.pieces(i, j), g.pieces(j, k));
+                let mut found = Vec::new();
+                r.examined += compare_cells(&cells, g.pieces(i, k), &e, |x, l, rr| {
+                    found.push((x.clone(), l.clone(), rr.clone()))
+                });
+                for (x, lhs, rhs) in found {
+                    dev(&mut r, &(&lhs - &rhs));
+                    r.offend(|| {
+                        Witness::new(
+                            format!("(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}∘φ_{j}{i}(x) = {}", fmt_q(&x), fmt_q(&lhs), fmt_q(&rhs)),
+                            json!({"kind": "equation", "i": i, "j": j, "k": k, "x": qs(&x)}),
+                        )
+                    });
+                }
+            }
+        }
+    }
+    exact(r)
+}
+
+/// Separating balls for one pair (x, y) of Def. 3.4.1(4), exact.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Separation {
+    pub i: Idx,
+    pub j: Idx,
+    pub x: Q,
+    pub y: Q,
+    pub r_x: Q,
+    pub r_y: Q,
+}
+
+/// ∂Ω_ij ∩ Ω_i.
+pub fn glued_boundary(g: &Exact1d, i: Idx, j: Idx) -> Vec<Q> {
+    let om = g.omega(i);
+    g.omega_ij(i, j)
+        .boundary()
+        .into_iter()
+        .filter(|x| om.contains(x))
+        .collect()
+}
+
+/// Def. 3.4.1(4), decided. For x ∈ ∂Ω_ij ∩ Ω_i, only the pieces P of φ_ji whose closure
+/// contains x meet small balls V_x; each extends affinely to x with limit L_P = a_P·x + b_P.
+/// Claim: (4) fails at (x, y) iff L_P = y for some such P. If so, φ_ji maps P ∩ V_x onto an
+/// interval of Ω_ji with endpoint y, which meets every V_y ∩ Ω_ji. If not, with
+/// d = min_P |L_P − y| > 0, A = max_P |a_P| and δ = distance from x to the other pieces, the
+/// balls r_x = min(d / (2A), δ), r_y = d / 2 work: φ_ji(V_x ∩ Ω_ij) ⊆ ∪_P B(L_P, d/2), disjoint
+/// from B(y, d/2). Returns the verdict and the radii of every separated pair.
+pub fn check_4_with_radii(g: &Exact1d) -> (CheckResult, Vec<Separation>) {
+    let mut r = CheckResult::new("D3.4.1(4)", "Hausdorff condition (separating balls)");
+    let mut seps = Vec::new();
+    for (i, j) in g.k() {
+        if i == j {
+            continue;
+        }
+        let ys = glued_boundary(g, j, i);
+        for x in glued_boundary(g, i, j) {
+            let (touch, other): (Vec<&Piece>, Vec<&Piece>) = g
+                .pieces(i, j)
+                .iter()
+                .partition(|p| p.dom.closure_contains(&x));
+            for y in &ys {
+                r.examined += 1;
+                if let Some(p) = touch.iter().find(|p| &p.eval(&x) == y) {
+                    r.worst_deviation = Some(0.0);
+                    r.offend(|| {
+                        Witness::new(
+                            format!(
+                                "(i,j)=({i},{j}): x = {} ∈ ∂Ω_{i}{j} ∩ Ω_{i}, y = {} ∈ ∂Ω_{j}{i} ∩ Ω_{j}, and φ_{j}{i} ({}) extends continuously with x ↦ y: no balls separate them",
+                                fmt_q(&x), fmt_q(y), p.describe()
+                            ),
+                            json!({"kind": "not_separated", "i": i, "j": j, "x": qs(&x), "y": qs(y)}),
+                        )
+                    });
+                    continue;
+                }
+                let d = touch
+                    .iter()
+                    .map(|p| (p.eval(&x) - y).abs())
+                    .min()
+                    .unwrap_or_else(|| Q::from_integer(1.into()));
+                let amax = touch
+                    .iter()
+                    .map(|p| p.a.abs())
+                    .max()
+                    .filter(|a| !a.is_zero())
+                    .unwrap_or_else(Q::one);
+                let two = Q::from_integer(2.into());
+                let mut r_x = &d / (&two * amax);
+                for o in &other {
+                    let dist = if x <= o.dom.lo {
+                        &o.dom.lo - &x
+                    } else {
+                        &x - &o.dom.hi
+                    };
+                    r_x = r_x.min(dist);
+                }
+                seps.push(Separation {
+                    i,
+                    j,
+                    x: x.clone(),
+                    y: y.clone(),
+                    r_x,
+                    r_y: d / two,
+                });
+            }
+        }
+    }
+    let listed: Vec<String> = seps
+        .iter()
+        .take(6)
+        .map(|s| {
+            format!(
+                "({},{}) x={} y={}: r_x={}, r_y={}",
+                s.i,
+                s.j,
+                fmt_q(&s.x),
+                fmt_q(&s.y),
+                fmt_q(&s.r_x),
+                fmt_q(&s.r_y)
+            )
+        })
+        .collect();
+    r.note = format!(
+        "{} separated pair(s){}{}",
+        seps.len(),
+        if listed.is_empty() { "" } else { "; radii " },
+        listed.join("; ")
+    );
+    (exact(r), seps)
+}
+
+/// Def. 3.4.1(4), decided (see [`check_4_with_radii`]).
+pub fn check_4(g: &Exact1d) -> CheckResult {
+    check_4_with_radii(g).0
+}
+
+/// Every exact check of Def. 3.4.1 and App. A.2, in the order of the definition.
+pub fn check_all(g: &Exact1d) -> Vec<CheckResult> {
+    vec![
+        check_1(g),
+        check_2(g),
+        check_bijection(g),
+        check_3a(g),
+        check_3b(g),
+        check_3c(g),
+        check_grimm_hughes(g, false),
+        check_grimm_hughes(g, true),
+        check_4(g),
+    ]
+}

@@ -1,0 +1,11 @@
+//! The exact 1-D backend (issue 3, item 3): gluing data in ℝ¹ with rational interval endpoints
+//! and piecewise-affine transition maps, where every condition of Def. 3.4.1 is decided.
+
+pub mod data;
+pub mod decide;
+pub mod interval;
+pub mod random;
+pub mod sampled_view;
+
+pub use data::{Exact1d, Piece};
+pub use interval::{Interval, OpenSet, Q};

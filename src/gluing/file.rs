@@ -1,0 +1,192 @@
+//! The text format read by `ppm gluing FILE`: 1-D gluing data in TOML, decided by the exact
+//! backend. Rationals are strings ("1/3", "-2", "0.25") or TOML integers; TOML floats are refused
+//! because they are inexact.
+//!
+//! ```toml
+//! name = "fork (App. A.2)"      # optional
+//!
+//! [[domain]]                    # a p-domain Ω_i (repeat an id to make a union of intervals)
+//! id = 1
+//! interval = ["-3", "-1"]       # the open interval (-3, -1)
+//!
+//! [[glue]]                      # one piece of Ω_ij ⊆ Ω_i and of φ_ji : Ω_ij → Ω_ji
+//! i = 1
+//! j = 2
+//! omega_ij = ["-3", "-2"]       # this piece of Ω_ij
+//! a = "1"                       # φ_ji(x) = a·x + b on the piece
+//! b = "4"
+//! ```
+//!
+//! Every ordered pair is listed explicitly, as the paper lists them: φ_12 is not derived from
+//! φ_21 — the checker decides 3(b). Several `[[glue]]` entries with the same (i, j) form a
+//! gluing domain with several pieces. A pair with no entry has Ω_ij = ∅, except the diagonal:
+//! without an (i, i) entry, Ω_ii = Ω_i and φ_ii = id (list (i, i) explicitly to override).
+
+use super::error::GluingError;
+use super::exact1d::interval::{parse_q, Interval, Q};
+use super::exact1d::Exact1d;
+use super::Idx;
+use std::path::Path;
+use toml::Value;
+
+/// A parsed gluing file.
+#[derive(Clone, Debug)]
+pub struct GluingFile {
+    pub name: Option<String>,
+    pub data: Exact1d,
+}
+
+/// Read and parse a gluing file.
+pub fn read_gluing_file(path: &Path) -> Result<GluingFile, GluingError> {
+    let text = std::fs::read_to_string(path).map_err(|source| GluingError::Io {
+        file: path.to_path_buf(),
+        source,
+    })?;
+    parse_gluing_str(&text, path)
+}
+
+struct Ctx<'a> {
+    file: &'a Path,
+}
+
+impl Ctx<'_> {
+    fn err(&self, field: impl Into<String>, message: impl Into<String>) -> GluingError {
+        GluingError::Field {
+            file: self.file.to_path_buf(),
+            field: field.into(),
+            message: message.into(),
+        }
+    }
+    fn rational(&self, field: &str, v: Option<&Value>) -> Result<Q, GluingError> {
+        match v {
+            None => Err(self.err(field, "missing")),
+            Some(Value::String(s)) => parse_q(s)
+                .ok_or_else(|| self.err(field, format!("\"{s}\" is not a rational like \"1/3\""))),
+            Some(Value::Integer(n)) => Ok(Q::from_integer((*n).into())),
+            Some(Value::Float(_)) => Err(self.err(
+                field,
+                "floats are inexact; write the rational as a string, e.g. \"0.5\" or \"1/2\"",
+            )),
+            Some(other) => Err(self.err(
+                field,
+                format!("expected a rational, found {}", other.type_str()),
+            )),
+        }
+    }
+    fn index(&self, field: &str, v: Option<&Value>) -> Result<Idx, GluingError> {
+        match v {
+            None => Err(self.err(field, "missing")),
+            Some(Value::Integer(n)) => Idx::try_from(*n)
+                .map_err(|_| self.err(field, format!("{n} is not an index in 0..=2^32-1"))),
+            Some(other) => Err(self.err(
+                field,
+                format!("expected an integer index, found {}", other.type_str()),
+            )),
+        }
+    }
+    /// An open interval ["lo", "hi"]; lo ≥ hi is allowed and means the empty set.
+    fn interval(&self, field: &str, v: Option<&Value>) -> Result<Option<Interval>, GluingError> {
+        let arr = match v {
+            None => return Err(self.err(field, "missing")),
+            Some(Value::Array(a)) if a.len() == 2 => a,
+            Some(_) => return Err(self.err(field, "expected an array of two rationals [lo, hi]")),
+        };
+        let lo = self.rational(&format!("{field}[0]"), arr.first())?;
+        let hi = self.rational(&format!("{field}[1]"), arr.get(1))?;
+        Ok(Interval::new(lo, hi))
+    }
+    fn check_keys(
+        &self,
+        field: &str,
+        t: &toml::Table,
+        allowed: &[&str],
+    ) -> Result<(), GluingError> {
+        for k in t.keys() {
+            if !allowed.contains(&k.as_str()) {
+                return Err(self.err(
+                    format!("{field}.{k}"),
+                    format!("unknown key (allowed: {})", allowed.join(", ")),
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+fn tables<'a>(
+    ctx: &Ctx,
+    root: &'a toml::Table,
+    key: &str,
+) -> Result<Vec<&'a toml::Table>, GluingError> {
+    match root.get(key) {
+        None => Ok(Vec::new()),
+        Some(Value::Array(a)) => a
+            .iter()
+            .enumerate()
+            .map(|(n, v)| {
+                v.as_table().ok_or_else(|| {
+                    ctx.err(format!("{key}[{n}]"), format!("expected a table [[{key}]]"))
+                })
+            })
+            .collect(),
+        Some(_) => Err(ctx.err(key, format!("expected an array of tables [[{key}]]"))),
+    }
+}
+
+/// Parse gluing data from TOML text; `file` names the source in errors.
+pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingError> {
+    let ctx = Ctx { file };
+    let root: toml::Table = text
+        .parse()
+        .map_err(|e: toml::de::Error| GluingError::Syntax {
+            file: file.to_path_buf(),
+            message: e.to_string(),
+        })?;
+    ctx.check_keys("(top level)", &root, &["name", "domain", "glue"])?;
+    let name = match root.get("name") {
+        None => None,
+        Some(Value::String(s)) => Some(s.clone()),
+        Some(_) => return Err(ctx.err("name", "expected a string")),
+    };
+    let mut data = Exact1d::default();
+    let domains = tables(&ctx, &root, "domain")?;
+    if domains.is_empty() {
+        return Err(ctx.err(
+            "domain",
+            "no [[domain]] given: the index set I must be non-empty",
+        ));
+    }
+    for (n, t) in domains.iter().enumerate() {
+        let f = format!("domain[{n}]");
+        ctx.check_keys(&f, t, &["id", "interval"])?;
+        let id = ctx.index(&format!("{f}.id"), t.get("id"))?;
+        match ctx.interval(&format!("{f}.interval"), t.get("interval"))? {
+            Some(iv) => data.add_domain(id, iv),
+            None => data.add_empty_domain(id),
+        }
+    }
+    for (n, t) in tables(&ctx, &root, "glue")?.iter().enumerate() {
+        let f = format!("glue[{n}]");
+        ctx.check_keys(&f, t, &["i", "j", "omega_ij", "a", "b"])?;
+        let i = ctx.index(&format!("{f}.i"), t.get("i"))?;
+        let j = ctx.index(&format!("{f}.j"), t.get("j"))?;
+        for (which, id) in [("i", i), ("j", j)] {
+            if !data.domains.contains_key(&id) {
+                return Err(ctx.err(
+                    format!("{f}.{which}"),
+                    format!("no [[domain]] with id = {id}"),
+                ));
+            }
+        }
+        let a = ctx.rational(&format!("{f}.a"), t.get("a"))?;
+        let b = ctx.rational(&format!("{f}.b"), t.get("b"))?;
+        // An empty piece contributes nothing to Ω_ij (Ω_ij = ∅ is allowed by Def. 3.4.1).
+        if let Some(dom) = ctx.interval(&format!("{f}.omega_ij"), t.get("omega_ij"))? {
+            data.add_piece(i, j, dom, a, b);
+        }
+    }
+    Ok(GluingFile {
+        name,
+        data: data.with_default_diagonal(),
+    })
+}

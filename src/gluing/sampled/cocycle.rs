@@ -1,0 +1,264 @@
+//! Sampled checks of Def. 3.4.1(3): the transition functions, 3(a) identity, 3(b) inverses,
+//! 3(c) the full cocycle condition (with its domain inclusion), and the weaker Grimm–Hughes
+//! "proto-manifold" cocycle condition quoted in App. A.2.
+
+use super::{sampled_k, SampleConfig};
+use crate::gluing::data::{dist, fmt_point, norm, point_json, GluingData};
+use crate::gluing::tolerance::tol;
+use crate::report::{CheckResult, Witness};
+use serde_json::json;
+
+fn track(r: &mut CheckResult, dev: f64, t: f64) {
+    r.worst_deviation = Some(r.worst_deviation.unwrap_or(0.0).max(dev));
+    r.tolerance = Some(r.tolerance.unwrap_or(0.0).max(t));
+}
+
+/// Def. 3.4.1(3), the part a sampler can refute: φ_ji is defined on Ω_ij and maps it into Ω_ji.
+/// (Surjectivity onto Ω_ji and injectivity follow from 3(b), checked separately.)
+pub fn check_maps_into<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
+    let mut r = CheckResult::new("D3.4.1(3)", "φ_ji : Ω_ij → Ω_ji defined, into Ω_ji")
+        .with_note("sampled; bijectivity via 3(b)");
+    r.seed = Some(cfg.seed);
+    let mut rng = cfg.rng(3);
+    for (i, j) in sampled_k(g, cfg) {
+        for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
+            r.examined += 1;
+            match g.phi(j, i, &x) {
+                None => r.offend(|| {
+                    Witness::new(
+                        format!("φ_{j}{i}({}) undefined though the point is in Ω_{i}{j}", fmt_point(&x)),
+                        json!({"kind": "undefined", "i": i, "j": j, "x": point_json(&x)}),
+                    )
+                }),
+                Some(y) if !g.in_gluing_domain(j, i, &y) => r.offend(|| {
+                    Witness::new(
+                        format!("φ_{j}{i}({}) = {} ∉ Ω_{j}{i}", fmt_point(&x), fmt_point(&y)),
+                        json!({"kind": "not_into", "i": i, "j": j, "x": point_json(&x), "y": point_json(&y)}),
+                    )
+                }),
+                Some(_) => {}
+            }
+        }
+    }
+    r
+}
+
+/// Def. 3.4.1(3a): φ_ii = id on Ω_i.
+pub fn check_3a<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
+    let mut r = CheckResult::new("D3.4.1(3a)", "φ_ii = id").with_note("sampled");
+    r.seed = Some(cfg.seed);
+    let mut rng = cfg.rng(4);
+    for i in g.indices() {
+        for x in g.sample_p_domain(i, &mut rng, cfg.n) {
+            r.examined += 1;
+            let t = tol::<G::S>(norm(&x));
+            match g.phi(i, i, &x) {
+                None => r.offend(|| {
+                    Witness::new(
+                        format!("φ_{i}{i}({}) undefined", fmt_point(&x)),
+                        json!({"kind": "undefined", "i": i, "x": point_json(&x)}),
+                    )
+                }),
+                Some(y) => {
+                    let d = dist(&x, &y);
+                    track(&mut r, d, t);
+                    if d > t {
+                        r.offend(|| {
+                            Witness::new(
+                                format!("φ_{i}{i}({}) = {} ≠ {}", fmt_point(&x), fmt_point(&y), fmt_point(&x)),
+                                json!({"kind": "not_identity", "i": i, "x": point_json(&x), "phi": point_json(&y), "deviation": d}),
+                            )
+                        });
+                    }
+                }
+            }
+        }
+    }
+    r
+}
+
+/// Def. 3.4.1(3b): φ_ij = φ_ji⁻¹, checked as φ_ij(φ_ji(x)) = x for sampled x ∈ Ω_ij, for every
+/// (i, j) ∈ K (both orders, so both one-sided inverse laws are sampled).
+pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
+    let mut r = CheckResult::new("D3.4.1(3b)", "φ_ij = φ_ji⁻¹").with_note("sampled");
+    r.seed = Some(cfg.seed);
+    let mut rng = cfg.rng(5);
+    for (i, j) in sampled_k(g, cfg) {
+        for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
+            r.examined += 1;
+            let Some(y) = g.phi(j, i, &x) else { continue }; // reported by D3.4.1(3)
+            let t = tol::<G::S>(norm(&x).max(norm(&y)));
+            match g.phi(i, j, &y) {
+                None => r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "φ_{i}{j}(φ_{j}{i}({})) undefined: φ_{j}{i}(x) = {} ∉ Ω_{j}{i}",
+                            fmt_point(&x),
+                            fmt_point(&y)
+                        ),
+                        json!({"kind": "undefined", "i": i, "j": j, "x": point_json(&x)}),
+                    )
+                }),
+                Some(z) => {
+                    let d = dist(&x, &z);
+                    track(&mut r, d, t);
+                    if d > t {
+                        r.offend(|| {
+                            Witness::new(
+                                format!("φ_{i}{j}(φ_{j}{i}({})) = {} ≠ x", fmt_point(&x), fmt_point(&z)),
+                                json!({"kind": "not_inverse", "i": i, "j": j, "x": point_json(&x), "back": point_json(&z), "deviation": d}),
+                            )
+                        });
+                    }
+                }
+            }
+        }
+    }
+    r
+}
+
+/// Def. 3.4.1(3c), the full cocycle condition: for all i, j, k with Ω_ji ∩ Ω_jk ≠ ∅,
+/// φ_ji⁻¹(Ω_ji ∩ Ω_jk) ⊆ Ω_ik and φ_ki = φ_kj ∘ φ_ji there. Sampled as: x ∈ Ω_ij with
+/// φ_ji(x) ∈ Ω_jk must lie in Ω_ik, and φ_ki(x) = φ_kj(φ_ji(x)). Points of Ω_ji ∩ Ω_jk are
+/// also sampled directly and pulled back with φ_ij (relying on 3(b), checked separately), so
+/// that small intersections are hit.
+pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
+    let mut r = CheckResult::new(
+        "D3.4.1(3c)",
+        "cocycle: domain inclusion and φ_ki = φ_kj∘φ_ji",
+    )
+    .with_note("sampled over all triples (i, j, k)");
+    r.seed = Some(cfg.seed);
+    let mut rng = cfg.rng(6);
+    let ids = g.indices();
+    for &i in &ids {
+        for &j in &ids {
+            let xs = g.sample_gluing_domain(i, j, &mut rng, cfg.n);
+            if xs.is_empty() {
+                continue;
+            }
+            // Pull back samples of Ω_ji ∩ Ω_jk.
+            let ys = g.sample_gluing_domain(j, i, &mut rng, cfg.n);
+            for &k in &ids {
+                let mut cand = xs.clone();
+                for y in &ys {
+                    if g.in_gluing_domain(j, k, y) {
+                        if let Some(x) = g.phi(i, j, y) {
+                            cand.push(x);
+                        }
+                    }
+                }
+                for y in g.sample_gluing_domain(j, k, &mut rng, cfg.n / 4 + 1) {
+                    if g.in_gluing_domain(j, i, &y) {
+                        if let Some(x) = g.phi(i, j, &y) {
+                            cand.push(x);
+                        }
+                    }
+                }
+                for x in &cand {
+                    let Some(y) = g.phi(j, i, x) else { continue };
+                    if !(g.in_gluing_domain(j, i, &y) && g.in_gluing_domain(j, k, &y)) {
+                        continue;
+                    }
+                    r.examined += 1;
+                    if !g.in_gluing_domain(i, k, x) {
+                        r.offend(|| {
+                            Witness::new(
+                                format!(
+                                    "(i,j,k)=({i},{j},{k}): x = {} ∈ φ_{j}{i}⁻¹(Ω_{j}{i} ∩ Ω_{j}{k}) but x ∉ Ω_{i}{k} (domain inclusion fails)",
+                                    fmt_point(x)
+                                ),
+                                json!({"kind": "inclusion", "i": i, "j": j, "k": k, "x": point_json(x), "y": point_json(&y)}),
+                            )
+                        });
+                        continue;
+                    }
+                    let (Some(z1), Some(z2)) = (g.phi(k, i, x), g.phi(k, j, &y)) else {
+                        continue;
+                    };
+                    let d = dist(&z1, &z2);
+                    let t = tol::<G::S>(norm(&z1).max(norm(x)));
+                    track(&mut r, d, t);
+                    if d > t {
+                        r.offend(|| {
+                            Witness::new(
+                                format!(
+                                    "(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}(φ_{j}{i}(x)) = {}",
+                                    fmt_point(x), fmt_point(&z1), fmt_point(&z2)
+                                ),
+                                json!({"kind": "equation", "i": i, "j": j, "k": k, "x": point_json(x), "lhs": point_json(&z1), "rhs": point_json(&z2), "deviation": d}),
+                            )
+                        });
+                    }
+                }
+            }
+        }
+    }
+    r
+}
+
+/// App. A.2, the Grimm–Hughes proto-manifold cocycle condition: for all x ∈ Ω_ij ∩ Ω_ik,
+/// φ_ki(x) = φ_kj ∘ φ_ji(x). The paper does not say what happens when φ_ji(x) ∉ Ω_jk (the
+/// right side is undefined). `strict = false` reads it as an equation between partial functions
+/// (required only where both sides are defined) — the reading under which App. A.2's claim "too
+/// weak" is true; `strict = true` additionally requires the right side to be defined, and is
+/// then equivalent to 3(c) in the presence of 3(b).
+pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
+    g: &G,
+    cfg: &SampleConfig,
+    strict: bool,
+) -> CheckResult {
+    let (id, name) = if strict {
+        (
+            "CA.2-GH-strict",
+            "Grimm–Hughes cocycle, RHS required defined",
+        )
+    } else {
+        ("CA.2-GH", "Grimm–Hughes cocycle (where both sides defined)")
+    };
+    let mut r = CheckResult::new(id, name).with_note("sampled over all triples (i, j, k)");
+    r.seed = Some(cfg.seed);
+    let mut rng = cfg.rng(if strict { 8 } else { 7 });
+    let ids = g.indices();
+    for &i in &ids {
+        for &j in &ids {
+            let xs = g.sample_gluing_domain(i, j, &mut rng, cfg.n);
+            for &k in &ids {
+                let mut cand = xs.clone();
+                cand.extend(g.sample_gluing_domain(i, k, &mut rng, cfg.n / 4 + 1));
+                for x in &cand {
+                    if !(g.in_gluing_domain(i, j, x) && g.in_gluing_domain(i, k, x)) {
+                        continue;
+                    }
+                    r.examined += 1;
+                    let y = g.phi(j, i, x);
+                    let rhs = y.as_ref().and_then(|y| g.phi(k, j, y));
+                    let lhs = g.phi(k, i, x);
+                    match (lhs, rhs) {
+                        (Some(z1), Some(z2)) => {
+                            let d = dist(&z1, &z2);
+                            let t = tol::<G::S>(norm(&z1).max(norm(x)));
+                            track(&mut r, d, t);
+                            if d > t {
+                                r.offend(|| {
+                                    Witness::new(
+                                        format!("(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}∘φ_{j}{i}(x) = {}", fmt_point(x), fmt_point(&z1), fmt_point(&z2)),
+                                        json!({"kind": "equation", "i": i, "j": j, "k": k, "x": point_json(x), "deviation": d}),
+                                    )
+                                });
+                            }
+                        }
+                        (_, None) if strict => r.offend(|| {
+                            Witness::new(
+                                format!("(i,j,k)=({i},{j},{k}): x = {} ∈ Ω_{i}{j} ∩ Ω_{i}{k} but φ_{k}{j}∘φ_{j}{i}(x) undefined (φ_{j}{i}(x) ∉ Ω_{j}{k})", fmt_point(x)),
+                                json!({"kind": "rhs_undefined", "i": i, "j": j, "k": k, "x": point_json(x)}),
+                            )
+                        }),
+                        _ => {}
+                    }
+                }
+            }
+        }
+    }
+    r
+}

@@ -1,0 +1,91 @@
+//! Bad gluing files give typed errors naming the file and the field, never a panic.
+
+use pseudomanifold::gluing::file::{parse_gluing_str, read_gluing_file};
+use pseudomanifold::gluing::GluingError;
+use std::path::Path;
+
+fn field_err(text: &str) -> (String, String) {
+    match parse_gluing_str(text, Path::new("bad.toml")) {
+        Err(GluingError::Field {
+            file,
+            field,
+            message,
+        }) => {
+            assert_eq!(file, Path::new("bad.toml"));
+            (field, message)
+        }
+        other => panic!("expected a field error, got {other:?}"),
+    }
+}
+
+const DOM: &str = "[[domain]]\nid = 1\ninterval = [\"0\", \"1\"]\n";
+
+#[test]
+fn d3_4_1_file_errors_name_the_field() {
+    assert_eq!(field_err("").0, "domain");
+    assert_eq!(
+        field_err("[[domain]]\nid = 1\ninterval = [\"0\", \"x\"]\n").0,
+        "domain[0].interval[1]"
+    );
+    assert_eq!(
+        field_err("[[domain]]\nid = -1\ninterval = [\"0\", \"1\"]\n").0,
+        "domain[0].id"
+    );
+    assert_eq!(
+        field_err("[[domain]]\nid = 1\ninterval = [0.5, 1]\n").0,
+        "domain[0].interval[0]"
+    );
+    assert_eq!(
+        field_err("[[domain]]\nid = 1\ninterval = [\"0\"]\n").0,
+        "domain[0].interval"
+    );
+    let glue = |body: &str| format!("{DOM}[[glue]]\n{body}");
+    assert_eq!(
+        field_err(&glue(
+            "i = 1\nj = 7\nomega_ij = [\"0\",\"1\"]\na = \"1\"\nb = \"0\"\n"
+        ))
+        .0,
+        "glue[0].j"
+    );
+    assert_eq!(
+        field_err(&glue("i = 1\nj = 1\nomega_ij = [\"0\",\"1\"]\nb = \"0\"\n")).0,
+        "glue[0].a"
+    );
+    assert_eq!(
+        field_err(&glue(
+            "i = 1\nj = 1\nomega_ij = [\"0\",\"1\"]\na = \"1/0\"\nb = \"0\"\n"
+        ))
+        .0,
+        "glue[0].a"
+    );
+    assert_eq!(
+        field_err(&glue(
+            "i = 1\nj = 1\nomega = [\"0\",\"1\"]\na = \"1\"\nb = \"0\"\n"
+        ))
+        .0,
+        "glue[0].omega"
+    );
+    assert_eq!(field_err(&format!("glue = 3\n{DOM}")).0, "glue");
+    assert_eq!(field_err(&format!("{DOM}glue = 3\n")).0, "domain[0].glue");
+}
+
+#[test]
+fn d3_4_1_file_syntax_and_io_errors() {
+    assert!(matches!(
+        parse_gluing_str("[[domain", Path::new("x.toml")),
+        Err(GluingError::Syntax { .. })
+    ));
+    let e = read_gluing_file(Path::new("/nonexistent/gluing.toml")).unwrap_err();
+    assert!(matches!(e, GluingError::Io { .. }));
+    assert!(e.to_string().contains("/nonexistent/gluing.toml"));
+}
+
+#[test]
+fn d3_4_1_file_accepts_fractions_decimals_and_integers() {
+    let t = "[[domain]]\nid = 1\ninterval = [\"-1/3\", 2]\n[[domain]]\nid = 2\ninterval = [\"2.5\", \"3.25\"]\n";
+    let f = parse_gluing_str(t, Path::new("ok.toml")).expect("parses");
+    assert_eq!(f.data.omega(1).to_string(), "(-1/3, 2)");
+    assert_eq!(f.data.omega(2).to_string(), "(5/2, 13/4)");
+    // Default diagonal: Ω_ii = Ω_i, φ_ii = id.
+    assert_eq!(f.data.omega_ij(2, 2), f.data.omega(2));
+}
