@@ -41,6 +41,14 @@ enum Command {
         #[command(flatten)]
         ch4: check::Ch4Args,
     },
+    /// Check a user-written 1-D set of gluing data (TOML, see examples/gluing/README.md)
+    /// against every condition of Def. 3.4.1, decided exactly; prints the verdict table.
+    Gluing {
+        /// The gluing data file.
+        file: PathBuf,
+        #[arg(long)]
+        json: bool,
+    },
     /// Evaluate the transition map φ_wu(p) (Def. 4.1.10: from Ω_uw to Ω_wu) of a mesh in f64
     /// and in multi-precision, and print both with their difference (oracle use).
     EvalMap {
@@ -74,6 +82,22 @@ pub fn main() -> ExitCode {
             spec,
             ch4,
         } => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
+        Command::Gluing { file, json } => {
+            match crate::gluing::cli::run_gluing_command(&file, json) {
+                Ok((text, all_hold)) => {
+                    print!("{text}");
+                    if all_hold {
+                        ExitCode::SUCCESS
+                    } else {
+                        ExitCode::from(1)
+                    }
+                }
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(2)
+                }
+            }
+        }
         Command::EvalMap {
             file,
             u,

@@ -5,6 +5,7 @@
 //! conformance checks of Secs. 4.1–4.2. See `SPEC_ROWS.md` for the statement-by-statement
 //! verdicts.
 
+pub mod abstract_view;
 pub mod checks;
 pub mod maps;
 pub mod mesh_gluing;

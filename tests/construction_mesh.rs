@@ -1,0 +1,390 @@
+//! Chapter 4 on meshes: the construction wired to validated surfaces, the abstract Def. 3.4.1
+//! checkers run unchanged on it (Thm. 4.2.1), and the mesh-wide runner on generated, bundled
+//! and corpus meshes.
+
+mod common;
+
+use pseudomanifold::conditions::chapter4::{run_chapter4, Ch4Options, Precision};
+use pseudomanifold::construction::abstract_view::AbstractPpm;
+use pseudomanifold::construction::{GluingError, PpmGluing, Trit, P2};
+use pseudomanifold::gluing::sampled::{check_all, SampleConfig};
+use pseudomanifold::mesh::generate::{icosahedron, octahedron, tetrahedron, torus};
+use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
+use pseudomanifold::mesh::validate::validate;
+use pseudomanifold::mesh::{RawMesh, SimplicialSurface, VertexId};
+use pseudomanifold::report::Verdict;
+
+fn surface(m: &RawMesh) -> SimplicialSurface {
+    validate(m).surface.expect("valid surface")
+}
+
+/// The bipyramid over an n-gon: two apexes of degree n.
+fn bipyramid(n: u32) -> RawMesh {
+    let mut pos = vec![[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
+    for i in 0..n {
+        let a = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(n);
+        pos.push([a.cos(), a.sin(), 0.0]);
+    }
+    let mut faces = Vec::new();
+    for i in 0..n {
+        let (a, b) = (2 + i, 2 + (i + 1) % n);
+        faces.push([0, a, b]);
+        faces.push([1, b, a]);
+    }
+    RawMesh::from_arrays(pos, faces)
+}
+
+#[test]
+fn d4_1_10_phi_on_a_mesh_round_trips_and_names_bad_input() {
+    let k = surface(&icosahedron());
+    let g = PpmGluing::new(&k);
+    let (u, w) = k.edges().next().expect("an edge");
+    // A point of Ω_uw: pull back the centre of the canonical lens.
+    let e = g.edge_config(u, w).expect("config");
+    use pseudomanifold::construction::{Paper, Ppm};
+    let q = P2::new(0.5f64, 0.0);
+    let p = Paper.r_uw_inv(&e, &Paper.g_v_inv(e.m_u, &q).expect("g_v⁻¹"));
+    assert_eq!(g.in_omega_uw(u, w, &p).expect("pair"), Trit::True);
+    let t = g.phi::<f64>(w, u, &p).expect("φ_wu(p)");
+    assert_eq!(g.in_omega_uw(w, u, &t).expect("pair"), Trit::True);
+    let back = g.phi::<f64>(u, w, &t).expect("φ_uw(φ_wu(p))");
+    assert!(back.dist_f64(&p) < 1e-14);
+    // Not an edge: Ω_uw = ∅, φ undefined, typed error.
+    let far = k
+        .vertices()
+        .find(|&x| x != u && k.halfedge(u, x).is_none())
+        .expect("a non-neighbour");
+    assert_eq!(g.in_omega_uw(u, far, &p).expect("pair"), Trit::False);
+    assert!(matches!(
+        g.phi::<f64>(far, u, &p),
+        Err(GluingError::Map { .. })
+    ));
+    assert_eq!(
+        g.degree(VertexId(999)),
+        Err(GluingError::NoSuchVertex(VertexId(999)))
+    );
+}
+
+#[test]
+fn t4_2_1_abstract_checkers_hold_on_the_ppm_of_small_meshes() {
+    let cfg = SampleConfig { seed: 7, n: 24 };
+    for (name, m) in [
+        ("tetrahedron", tetrahedron()),
+        ("octahedron", octahedron()),
+        ("icosahedron", icosahedron()),
+    ] {
+        let k = surface(&m);
+        let view = AbstractPpm::new(PpmGluing::new(&k), k.vertices().collect());
+        for r in check_all(&view, &cfg) {
+            assert!(
+                !r.failed(),
+                "{name}: {} {}: {:?}",
+                r.id,
+                r.name,
+                r.witnesses.first()
+            );
+            assert!(r.examined > 0, "{name}: {} examined nothing", r.id);
+        }
+    }
+}
+
+#[test]
+fn t4_2_1_abstract_checkers_on_a_degree_12_star() {
+    // The star of a degree-12 apex (gluing domains of 12 neighbours): the literal Def. 4.1.9
+    // keeps every condition of Def. 3.4.1.
+    let k = surface(&bipyramid(12));
+    let view = AbstractPpm::star_of(PpmGluing::new(&k), VertexId(0));
+    for r in check_all(&view, &SampleConfig { seed: 11, n: 16 }) {
+        assert!(!r.failed(), "{} {:?}", r.id, r.witnesses.first());
+    }
+}
+
+#[test]
+fn t4_2_1_abstract_checkers_catch_a_planted_transition_fault() {
+    let k = surface(&octahedron());
+    let (u, w) = k.edges().next().expect("edge");
+    let g = PpmGluing::new(&k);
+    let view = AbstractPpm::new(g, k.vertices().collect()).with_phi_override(Box::new(
+        move |to, from, p| {
+            if (to, from) == (w, u) {
+                let r = g.phi::<f64>(to, from, &P2::new(p[0], p[1])).ok()?.to_f64();
+                Some([r[0] + 1e-6, r[1]])
+            } else {
+                None
+            }
+        },
+    ));
+    let results = check_all(&view, &SampleConfig { seed: 3, n: 24 });
+    let b3 = results.iter().find(|r| r.id == "D3.4.1(3b)").expect("3b");
+    assert_eq!(b3.verdict, Verdict::Fails);
+    assert!(!b3.witnesses.is_empty());
+    let c3 = results.iter().find(|r| r.id == "D3.4.1(3c)").expect("3c");
+    assert_eq!(c3.verdict, Verdict::Fails);
+}
+
+fn quick() -> Ch4Options {
+    Ch4Options {
+        samples: 6,
+        max_edge_configs: Some(60),
+        max_triangle_configs: Some(60),
+        max_star_configs: Some(30),
+        ..Ch4Options::default()
+    }
+}
+
+#[test]
+fn c4_1_6_gv_bijective_errata_depend_on_degree_on_meshes() {
+    // Every vertex of the grid torus has degree 6: the statements that fail only for m ≠ 6
+    // hold there, and the errata are not reported.
+    let k = surface(&torus(6, 6));
+    let r = run_chapter4(&k, &quick());
+    assert!(
+        r.unexpected_failures.is_empty(),
+        "{:?}",
+        r.unexpected_failures
+    );
+    for id in [
+        "C4.1.6-gv-bijective",
+        "C4.1.6-gv-smooth",
+        "P4.1.1",
+        "D4.1.9-lens",
+    ] {
+        let c = r.checks.iter().find(|c| c.id == id).expect(id);
+        assert_eq!(c.verdict, Verdict::Holds, "{id} on an all-degree-6 torus");
+    }
+    // A bipyramid over a 12-gon has two degree-12 apexes: the Sec. 6.1.3 lens test errata
+    // appear, and nothing else fails unexpectedly.
+    let k = surface(&bipyramid(12));
+    let r = run_chapter4(&k, &quick());
+    assert!(
+        r.unexpected_failures.is_empty(),
+        "{:?}",
+        r.unexpected_failures
+    );
+    for id in [
+        "D4.1.9-lens",
+        "C5.4-at-most-two[sec6.1.3]",
+        "C4.1.6-gv-bijective",
+    ] {
+        assert!(
+            r.errata_confirmed.iter().any(|e| e == id),
+            "{id} not confirmed"
+        );
+    }
+    for id in [
+        "C5.4-at-most-two",
+        "C4.2-nonadjacent-disjoint",
+        "L4.2.2",
+        "L4.2.1",
+        "P4.2.3",
+    ] {
+        let c = r.checks.iter().find(|c| c.id == id).expect(id);
+        assert_eq!(c.verdict, Verdict::Holds, "{id}");
+    }
+    assert_eq!(r.coverage.vertices_covered, r.coverage.vertices);
+}
+
+#[test]
+fn c5_4_at_most_two_holds_on_bundled_meshes_in_f64_and_mp() {
+    for path in common::bundled_good() {
+        let raw = read_mesh(&path, &ReadOptions::default()).expect("fixture readable");
+        let k = surface(&raw);
+        for precision in [Precision::F64, Precision::Mp(128)] {
+            let opts = Ch4Options {
+                precision,
+                samples: 4,
+                max_edge_configs: Some(6),
+                max_triangle_configs: Some(6),
+                max_star_configs: Some(4),
+                ..Ch4Options::default()
+            };
+            let r = run_chapter4(&k, &opts);
+            assert!(
+                r.unexpected_failures.is_empty(),
+                "{}: {:?}",
+                path.display(),
+                r.unexpected_failures
+            );
+            let c = r
+                .checks
+                .iter()
+                .find(|c| c.id == "C5.4-at-most-two")
+                .expect("C5.4");
+            assert!(c.examined > 0);
+            let l = r.checks.iter().find(|c| c.id == "L4.2.2").expect("L4.2.2");
+            let tol = l.tolerance.expect("tolerance printed");
+            match precision {
+                Precision::F64 => assert!(tol > 1e-15 && tol < 1e-8, "{tol}"),
+                Precision::Mp(_) => assert!(tol < 1e-30, "{tol}"),
+            }
+        }
+    }
+}
+
+#[test]
+fn l4_2_2_chapter4_on_every_good_corpus_mesh() {
+    for m in common::corpus().iter().filter(|m| m.good) {
+        let raw = read_mesh(&m.path, &ReadOptions::default()).expect("readable");
+        let k = surface(&raw);
+        let r = run_chapter4(&k, &quick());
+        assert!(
+            r.unexpected_failures.is_empty(),
+            "{}: {:?}",
+            m.file,
+            r.unexpected_failures
+        );
+        eprintln!(
+            "{}: {} errata confirmed, coverage {:?}",
+            m.file,
+            r.errata_confirmed.len(),
+            r.coverage
+        );
+    }
+}
+
+/// A planted fault for openness: the gluing domains of vertex 0 collapsed onto the line y = 0
+/// of its copy (a set with empty interior), sampler included.
+struct Collapsed<'a>(AbstractPpm<'a>);
+
+impl pseudomanifold::gluing::data::GluingData<2> for Collapsed<'_> {
+    type S = f64;
+    fn indices(&self) -> Vec<u32> {
+        self.0.indices()
+    }
+    fn in_p_domain(&self, i: u32, p: &[f64; 2]) -> bool {
+        self.0.in_p_domain(i, p)
+    }
+    fn in_gluing_domain(&self, i: u32, j: u32, p: &[f64; 2]) -> bool {
+        self.0.in_gluing_domain(i, j, p) && (i == j || i != self.0.indices()[0] || p[1] == 0.0)
+    }
+    fn phi(&self, j: u32, i: u32, p: &[f64; 2]) -> Option<[f64; 2]> {
+        self.0.phi(j, i, p)
+    }
+    fn sample_p_domain(
+        &self,
+        i: u32,
+        rng: &mut rand_chacha::ChaCha8Rng,
+        n: usize,
+    ) -> Vec<[f64; 2]> {
+        self.0.sample_p_domain(i, rng, n)
+    }
+    fn sample_gluing_domain(
+        &self,
+        i: u32,
+        j: u32,
+        rng: &mut rand_chacha::ChaCha8Rng,
+        n: usize,
+    ) -> Vec<[f64; 2]> {
+        let v = self.0.sample_gluing_domain(i, j, rng, n);
+        if i == j || i != self.0.indices()[0] {
+            return v;
+        }
+        v.into_iter()
+            .map(|p| [p[0], 0.0])
+            .filter(|p| self.in_gluing_domain(i, j, p))
+            .collect()
+    }
+    fn gluing_boundary_points(
+        &self,
+        i: u32,
+        j: u32,
+        rng: &mut rand_chacha::ChaCha8Rng,
+        n: usize,
+    ) -> Vec<[f64; 2]> {
+        self.0.gluing_boundary_points(i, j, rng, n)
+    }
+}
+
+#[test]
+fn p4_2_2_gluing_domains_are_open_and_a_collapsed_domain_is_caught() {
+    use pseudomanifold::gluing::sampled::check_2;
+    let k = surface(&bipyramid(12));
+    let cfg = SampleConfig { seed: 5, n: 32 };
+    let r = check_2(&AbstractPpm::star_of(PpmGluing::new(&k), VertexId(0)), &cfg);
+    assert_eq!(r.verdict, Verdict::Holds, "{:?}", r.witnesses.first());
+    assert!(r.examined > 100);
+    let bad = Collapsed(AbstractPpm::star_of(PpmGluing::new(&k), VertexId(0)));
+    let r = check_2(&bad, &cfg);
+    assert_eq!(r.verdict, Verdict::Fails);
+    assert!(r.witnesses.iter().any(|w| w.text.contains("not open")));
+}
+
+#[test]
+fn d4_1_1_p_domain_is_the_open_disk_of_radius_cos_pi_over_m() {
+    let k = surface(&bipyramid(7));
+    let g = PpmGluing::new(&k);
+    for v in k.vertices() {
+        let m = k.degree(v);
+        let r = (std::f64::consts::PI / m as f64).cos();
+        let inside = P2::new(r * (1.0 - 1e-12), 0.0);
+        let on = P2::new(0.0, r);
+        let outside = P2::new(r * (1.0 + 1e-12), 0.0);
+        assert_eq!(g.in_omega(v, &inside).expect("vertex"), Trit::True);
+        assert_eq!(g.in_omega(v, &outside).expect("vertex"), Trit::False);
+        assert_ne!(
+            g.in_omega(v, &on).expect("vertex"),
+            Trit::True,
+            "open: boundary excluded"
+        );
+    }
+}
+
+#[test]
+fn d4_1_2_omega_v_is_inscribed_in_the_p_polygon() {
+    // Def. 4.1.2: v'_i = (cos 2πi/m, sin 2πi/m); the inscribed circle of P_v has radius
+    // cos(π/m) = the radius of Ω_v (Def. 4.1.1), touching each side at its midpoint.
+    for m in 3..=20u32 {
+        let v = |i: u32| {
+            let a = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(m);
+            [a.cos(), a.sin()]
+        };
+        for i in 0..m {
+            let (a, b) = (v(i), v((i + 1) % m));
+            let mid = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
+            let d = (mid[0] * mid[0] + mid[1] * mid[1]).sqrt();
+            assert!((d - (std::f64::consts::PI / f64::from(m)).cos()).abs() < 1e-15);
+        }
+    }
+}
+
+#[test]
+fn d4_1_6_g_v_maps_sector_a_onto_the_canonical_sector_b() {
+    // Def. 4.1.6 and Fig. 4.2: the corner of sector A (angle 2π/m, radius cos π/m) goes to the
+    // corner of B (angle π/3, radius cos π/6).
+    use pseudomanifold::construction::maps::g_v;
+    for m in 3..=20u32 {
+        let a = 2.0 * std::f64::consts::PI / f64::from(m);
+        let r = (std::f64::consts::PI / f64::from(m)).cos();
+        let q = g_v::<f64>(m, &P2::new(r * a.cos(), r * a.sin())).expect("g_v");
+        let c6 = (std::f64::consts::PI / 6.0).cos();
+        let t = std::f64::consts::PI / 3.0;
+        assert!(
+            q.dist_f64(&P2::new(c6 * t.cos(), c6 * t.sin())) < 1e-14,
+            "m = {m}"
+        );
+    }
+}
+
+#[test]
+fn c4_2_nonadjacent_disjoint_on_mesh_stars_including_non_edge_triples() {
+    // u, w both neighbours of x with [u, w] not an edge (label difference ≥ 2): Ω_xu ∩ Ω_xw = ∅.
+    let k = surface(&bipyramid(9));
+    let r = run_chapter4(&k, &quick());
+    let c = r
+        .checks
+        .iter()
+        .find(|c| c.id == "C4.2-nonadjacent-disjoint")
+        .expect("check");
+    assert_eq!(c.verdict, Verdict::Holds);
+    assert!(c.examined > 0);
+    // The apex (degree 9) has non-adjacent neighbour pairs that are not edges of K.
+    let x = VertexId(0);
+    let (a, b) = (
+        k.link_vertex(x, 0).expect("n0"),
+        k.link_vertex(x, 3).expect("n3"),
+    );
+    assert!(
+        k.halfedge(a, b).is_none(),
+        "labels 0 and 3 are not adjacent"
+    );
+}
