@@ -14,4 +14,4 @@ pub use maps::{
     g_uw, in_omega_uw, in_omega_uw_lens, phi_wu, phi_wu_f64_vs_mp, ConfigError, EdgeConfig,
     MapError, Paper, Ppm, TriangleConfig, VertexPair, P2,
 };
-pub use scalar::{Mp, Scalar, Trit, DEFAULT_MP_PREC};
+pub use scalar::{Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC};
