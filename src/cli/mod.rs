@@ -35,6 +35,9 @@ enum Command {
         #[arg(long)]
         labels: bool,
     },
+    /// Certified interval proofs of the Chapter 4 conditions for all degree configurations
+    /// (issue 6).
+    Certify(crate::certify::cli::CertifyArgs),
 }
 
 /// Entry point of the `ppm` binary.
@@ -47,5 +50,6 @@ pub fn main() -> ExitCode {
             triangulate,
             labels,
         } => check::run(&file, json, triangulate, labels),
+        Command::Certify(a) => crate::certify::cli::run(a),
     }
 }
