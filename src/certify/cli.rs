@@ -1,6 +1,9 @@
 //! `ppm certify --max-degree M [--jobs N] [--shard K/N]` and `ppm certify merge FILES...`.
 
-use super::{all_configs, merge, run as prove_all, shard, summary_table, Certificate, CertifyError, Model, Settings};
+use super::{
+    all_configs, merge, run as prove_all, shard, summary_table, Certificate, CertifyError, Model,
+    Settings,
+};
 use clap::{Args, Subcommand};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -90,14 +93,25 @@ fn parse_shard(s: &str) -> Result<(usize, usize), CertifyError> {
 }
 
 fn run_inner(a: CertifyArgs) -> Result<bool, CertifyError> {
-    if let Some(MergeCmd::Merge { files, out, summary }) = a.merge {
-        let parts = files.iter().map(|f| read_certificate(f)).collect::<Result<Vec<_>, _>>()?;
+    if let Some(MergeCmd::Merge {
+        files,
+        out,
+        summary,
+    }) = a.merge
+    {
+        let parts = files
+            .iter()
+            .map(|f| read_certificate(f))
+            .collect::<Result<Vec<_>, _>>()?;
         let cert = merge(parts)?;
         emit(&cert, &out, summary.as_deref())?;
         return Ok(true);
     }
     if a.max_degree < 3 || a.max_degree > 64 {
-        return Err(CertifyError::BadArg(format!("--max-degree {} (3..=64)", a.max_degree)));
+        return Err(CertifyError::BadArg(format!(
+            "--max-degree {} (3..=64)",
+            a.max_degree
+        )));
     }
     let model = Model {
         lens_radius_offset: a.planted_lens_offset,
@@ -109,7 +123,14 @@ fn run_inner(a: CertifyArgs) -> Result<bool, CertifyError> {
         Some((k, n)) => shard(&all, k, n),
         None => all,
     };
-    let cert = prove_all(&configs, a.max_degree, &model, &Settings::default(), a.jobs, sh)?;
+    let cert = prove_all(
+        &configs,
+        a.max_degree,
+        &model,
+        &Settings::default(),
+        a.jobs,
+        sh,
+    )?;
     emit(&cert, &a.out, a.summary.as_deref())?;
     Ok(true)
 }

@@ -161,8 +161,18 @@ impl ConfigKey {
             let k = ConfigKey::of_triangle(t)?;
             if let ConfigKey::Triangle { m_u, m_w, m_x, ccw } = k {
                 v.push(k);
-                v.push(ConfigKey::Triangle { m_u: m_w, m_w: m_x, m_x: m_u, ccw });
-                v.push(ConfigKey::Triangle { m_u: m_x, m_w: m_u, m_x: m_w, ccw });
+                v.push(ConfigKey::Triangle {
+                    m_u: m_w,
+                    m_w: m_x,
+                    m_x: m_u,
+                    ccw,
+                });
+                v.push(ConfigKey::Triangle {
+                    m_u: m_x,
+                    m_w: m_u,
+                    m_x: m_w,
+                    ccw,
+                });
             }
         }
         v.sort();
@@ -376,13 +386,25 @@ impl PBox {
         let (t, r) = self.mid();
         if self.r.1 * (self.th.1 - self.th.0) >= self.r.1 - self.r.0 {
             [
-                PBox { th: (self.th.0, t), r: self.r },
-                PBox { th: (t, self.th.1), r: self.r },
+                PBox {
+                    th: (self.th.0, t),
+                    r: self.r,
+                },
+                PBox {
+                    th: (t, self.th.1),
+                    r: self.r,
+                },
             ]
         } else {
             [
-                PBox { th: self.th, r: (self.r.0, r) },
-                PBox { th: self.th, r: (r, self.r.1) },
+                PBox {
+                    th: self.th,
+                    r: (self.r.0, r),
+                },
+                PBox {
+                    th: self.th,
+                    r: (r, self.r.1),
+                },
             ]
         }
     }
@@ -515,7 +537,11 @@ fn finish(
         statement,
         bound: st.bound,
         centre_bound: st.centre,
-        delta: if st.unresolved > 0 { Some(st.delta) } else { None },
+        delta: if st.unresolved > 0 {
+            Some(st.delta)
+        } else {
+            None
+        },
         boxes: st.boxes,
         max_depth: st.max_depth,
         unresolved: st.unresolved,
@@ -545,7 +571,9 @@ fn canon_edge(m_u: u32, m_w: u32) -> EdgeConfig {
 pub fn prove_lens_agreement(m: u32, model: &Model, s: &Settings) -> PropertyResult {
     let t0 = Instant::now();
     let d = Deg::new(m);
-    let lens = Domain::Lens { r2: model.lens_r2() };
+    let lens = Domain::Lens {
+        r2: model.lens_r2(),
+    };
     let paper_lens = model.lens_radius_offset == 0.0;
     let st = bnb(disk_box(m), s.max_depth, s.budget, |b| {
         let (th, r) = (b.ith(), b.ir());
@@ -612,11 +640,19 @@ pub fn prove_lens_agreement(m: u32, model: &Model, s: &Settings) -> PropertyResu
 
 /// C5.4-at-most-two(cert) / C4.2-nonadjacent-disjoint(cert) and their Sec. 6.1.3 variants:
 /// for every p ∈ Ω_x (degree m), with Ω_xk the gluing domain of the neighbour at label k.
-pub fn prove_star(m: u32, use_lens: bool, nonadjacent: bool, model: &Model, s: &Settings) -> PropertyResult {
+pub fn prove_star(
+    m: u32,
+    use_lens: bool,
+    nonadjacent: bool,
+    model: &Model,
+    s: &Settings,
+) -> PropertyResult {
     let t0 = Instant::now();
     let d = Deg::new(m);
     let dom = if use_lens {
-        Domain::Lens { r2: model.lens_r2() }
+        Domain::Lens {
+            r2: model.lens_r2(),
+        }
     } else {
         Domain::Literal
     };
@@ -651,7 +687,11 @@ pub fn prove_star(m: u32, use_lens: bool, nonadjacent: bool, model: &Model, s: &
         } else if maybe.len() <= 2 {
             Leaf::Proven(None, None)
         } else if sure.len() >= 3 {
-            Leaf::Refuted(format!("p lies in {} gluing domains, labels {:?}", sure.len(), sure))
+            Leaf::Refuted(format!(
+                "p lies in {} gluing domains, labels {:?}",
+                sure.len(),
+                sure
+            ))
         } else {
             Leaf::Split
         }
@@ -661,13 +701,26 @@ pub fn prove_star(m: u32, use_lens: bool, nonadjacent: bool, model: &Model, s: &
         let count = |f64side: bool| -> Vec<u32> {
             (0..m)
                 .filter(|&k| {
-                    let e = EdgeConfig { m_u: m, i: k, m_w: m, j: 0 };
+                    let e = EdgeConfig {
+                        m_u: m,
+                        i: k,
+                        m_w: m,
+                        j: 0,
+                    };
                     let t = if f64side {
                         let q = P2::<f64>::new(p[0], p[1]);
-                        if use_lens { model.in_omega_uw_lens(&e, &q) } else { model.in_omega_uw_literal(&e, &q) }
+                        if use_lens {
+                            model.in_omega_uw_lens(&e, &q)
+                        } else {
+                            model.in_omega_uw_literal(&e, &q)
+                        }
                     } else {
                         let q = P2::<Mp>::from_f64(p[0], p[1], MP_PREC);
-                        if use_lens { model.in_omega_uw_lens(&e, &q) } else { model.in_omega_uw_literal(&e, &q) }
+                        if use_lens {
+                            model.in_omega_uw_lens(&e, &q)
+                        } else {
+                            model.in_omega_uw_literal(&e, &q)
+                        }
                     };
                     t.is_true()
                 })
@@ -675,7 +728,10 @@ pub fn prove_star(m: u32, use_lens: bool, nonadjacent: bool, model: &Model, s: &
         };
         let ok = |ks: &[u32]| {
             if nonadjacent {
-                ks.iter().any(|&a| ks.iter().any(|&c2| a != c2 && !adjacent(a as usize, c2 as usize)))
+                ks.iter().any(|&a| {
+                    ks.iter()
+                        .any(|&c2| a != c2 && !adjacent(a as usize, c2 as usize))
+                })
             } else {
                 ks.len() >= 3
             }
@@ -683,7 +739,10 @@ pub fn prove_star(m: u32, use_lens: bool, nonadjacent: bool, model: &Model, s: &
         let (kf, km) = (count(true), count(false));
         CertWitness {
             point: p,
-            text: format!("p = ({:.9}, {:.9}) in x's chart (m_x = {m}): {txt}; f64 finds labels {kf:?}", p[0], p[1]),
+            text: format!(
+                "p = ({:.9}, {:.9}) in x's chart (m_x = {m}): {txt}; f64 finds labels {kf:?}",
+                p[0], p[1]
+            ),
             f64_confirms: ok(&kf),
             mp_confirms: ok(&km),
         }
@@ -692,12 +751,26 @@ pub fn prove_star(m: u32, use_lens: bool, nonadjacent: bool, model: &Model, s: &
     let (id, stmt) = if nonadjacent {
         (
             format!("C4.2-nonadjacent-disjoint{sfx}(cert)"),
-            format!("Ω_xa ∩ Ω_xb = ∅ for all labels a, b not adjacent mod {m}{}", if use_lens { " (Sec. 6.1.3 lens domains)" } else { " (Def. 4.1.9)" }),
+            format!(
+                "Ω_xa ∩ Ω_xb = ∅ for all labels a, b not adjacent mod {m}{}",
+                if use_lens {
+                    " (Sec. 6.1.3 lens domains)"
+                } else {
+                    " (Def. 4.1.9)"
+                }
+            ),
         )
     } else {
         (
             format!("C5.4-at-most-two{sfx}(cert)"),
-            format!("every p ∈ Ω_x (m_x = {m}) lies in at most two Ω_xk{}", if use_lens { " (Sec. 6.1.3 lens domains)" } else { " (Def. 4.1.9)" }),
+            format!(
+                "every p ∈ Ω_x (m_x = {m}) lies in at most two Ω_xk{}",
+                if use_lens {
+                    " (Sec. 6.1.3 lens domains)"
+                } else {
+                    " (Def. 4.1.9)"
+                }
+            ),
         )
     };
     finish(ConfigKey::Vertex { m }, &id, stmt, st, witness, t0)
@@ -769,8 +842,12 @@ pub fn prove_inverse(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Propert
         if pieces.len() != 1 || !du.winding0(pieces[0]).is_true() {
             return Leaf::Split;
         }
-        let Some((tw, rw)) = phi_polar(&du, &dw, pieces[0], r) else { return Leaf::Split };
-        let Some((tu, ru)) = phi_polar(&dw, &du, tw, rw) else { return Leaf::Split };
+        let Some((tw, rw)) = phi_polar(&du, &dw, pieces[0], r) else {
+            return Leaf::Split;
+        };
+        let Some((tu, ru)) = phi_polar(&dw, &du, tw, rw) else {
+            return Leaf::Split;
+        };
         let whole = polar_dist(tu, ru, th, r);
         // Tight check at the centre with the generic maps (catches planted faults).
         let p = b.centre_xy();
@@ -792,9 +869,21 @@ pub fn prove_inverse(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Propert
     });
     let witness = st.refuted.as_ref().map(|(b, txt)| {
         let p = b.centre_xy();
-        let f = roundtrip_dev(model, &e, &P2::<f64>::new(p[0], p[1])).map(|v| v > s.fail_tol).unwrap_or(true);
-        let g = roundtrip_dev(model, &e, &P2::<Mp>::from_f64(p[0], p[1], MP_PREC)).map(|v| v.to_f64() > s.fail_tol).unwrap_or(true);
-        CertWitness { point: p, text: format!("p = ({:.9}, {:.9}) ∈ Ω_uw, edge ({m_u},{m_w}), labels 0: {txt}", p[0], p[1]), f64_confirms: f, mp_confirms: g }
+        let f = roundtrip_dev(model, &e, &P2::<f64>::new(p[0], p[1]))
+            .map(|v| v > s.fail_tol)
+            .unwrap_or(true);
+        let g = roundtrip_dev(model, &e, &P2::<Mp>::from_f64(p[0], p[1], MP_PREC))
+            .map(|v| v.to_f64() > s.fail_tol)
+            .unwrap_or(true);
+        CertWitness {
+            point: p,
+            text: format!(
+                "p = ({:.9}, {:.9}) ∈ Ω_uw, edge ({m_u},{m_w}), labels 0: {txt}",
+                p[0], p[1]
+            ),
+            f64_confirms: f,
+            mp_confirms: g,
+        }
     });
     finish(
         ConfigKey::Edge { m_u, m_w },
@@ -863,7 +952,15 @@ pub fn prove_hausdorff(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Prope
         let dev = Iv(q.norm2().0.sqrt() - dw.rm).abs();
         if dev.inf() > s.fail_tol {
             let pf = [p.x.to_f64(), p.y.to_f64()];
-            refuted = Some((pf, format!("arc point p = ({:.9}, {:.9}): ||g_(u,w)(p)| − cos(π/m_w)| ≥ {:.3e}", pf[0], pf[1], dev.inf())));
+            refuted = Some((
+                pf,
+                format!(
+                    "arc point p = ({:.9}, {:.9}): ||g_(u,w)(p)| − cos(π/m_w)| ≥ {:.3e}",
+                    pf[0],
+                    pf[1],
+                    dev.inf()
+                ),
+            ));
             break;
         }
         worst = worst.max(dev.sup());
@@ -873,10 +970,21 @@ pub fn prove_hausdorff(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Prope
     st.delta = delta;
     let witness = refuted.map(|(pf, txt)| {
         let chk = |v: f64| (v - dw.rm.mid()).abs() > s.fail_tol;
-        let f = model.g_uw_formula(&e, &P2::<f64>::new(pf[0], pf[1])).map(|q| chk(q.norm2().sqrt())).unwrap_or(true);
-        let g = model.g_uw_formula(&e, &P2::<Mp>::from_f64(pf[0], pf[1], MP_PREC)).map(|q| chk(q.norm2().sqrt().to_f64())).unwrap_or(true);
+        let f = model
+            .g_uw_formula(&e, &P2::<f64>::new(pf[0], pf[1]))
+            .map(|q| chk(q.norm2().sqrt()))
+            .unwrap_or(true);
+        let g = model
+            .g_uw_formula(&e, &P2::<Mp>::from_f64(pf[0], pf[1], MP_PREC))
+            .map(|q| chk(q.norm2().sqrt().to_f64()))
+            .unwrap_or(true);
         st.refuted = Some((disk_box(m_u), String::new()));
-        CertWitness { point: pf, text: txt, f64_confirms: f, mp_confirms: g }
+        CertWitness {
+            point: pf,
+            text: txt,
+            f64_confirms: f,
+            mp_confirms: g,
+        }
     });
     let mut r = finish(
         ConfigKey::Edge { m_u, m_w },
@@ -919,7 +1027,7 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
         let rhs = model.g_uw_formula(&xw, &mid).ok()?;
         Some(lhs.sub(&rhs).norm2().sqrt())
     };
-    let st = bnb(disk_box(t.m_u), s.max_depth.min(22), s.budget, |b| {
+    let st = bnb(disk_box(t.m_u), s.max_depth.min(14), s.budget, |b| {
         let (th, r) = (b.ith(), b.ir());
         // A = p ∈ Ω_ux ∧ φ_xu(p) ∈ Ω_xw, piecewise over the principal angle w.r.t. x.
         let mut a_pieces = Vec::new();
@@ -973,7 +1081,8 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
             let p = b.centre_xy();
             match cocycle(&iv_point(p)) {
                 Some(dv) if dv.inf() > s.fail_tol && cocycle_refuted.is_none() => {
-                    cocycle_refuted = Some((*b, format!("|φ_wu(p) − φ_wx(φ_xu(p))| ≥ {:.3e}", dv.inf())));
+                    cocycle_refuted =
+                        Some((*b, format!("|φ_wu(p) − φ_wx(φ_xu(p))| ≥ {:.3e}", dv.inf())));
                 }
                 Some(dv) => cb = Some(dv.sup()),
                 None => {}
@@ -985,17 +1094,26 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
         let p = b.centre_xy();
         let chk = |pf: P2<f64>| {
             model.in_omega_uw_literal(&ux, &pf).is_true()
-                && model.g_uw_formula(&ux, &pf).map(|q| model.in_omega_uw_literal(&xw, &q).is_true()).unwrap_or(false)
+                && model
+                    .g_uw_formula(&ux, &pf)
+                    .map(|q| model.in_omega_uw_literal(&xw, &q).is_true())
+                    .unwrap_or(false)
                 && model.in_omega_uw_literal(&uw, &pf).is_false()
         };
         let chm = |pf: P2<Mp>| {
             model.in_omega_uw_literal(&ux, &pf).is_true()
-                && model.g_uw_formula(&ux, &pf).map(|q| model.in_omega_uw_literal(&xw, &q).is_true()).unwrap_or(false)
+                && model
+                    .g_uw_formula(&ux, &pf)
+                    .map(|q| model.in_omega_uw_literal(&xw, &q).is_true())
+                    .unwrap_or(false)
                 && model.in_omega_uw_literal(&uw, &pf).is_false()
         };
         CertWitness {
             point: p,
-            text: format!("p = ({:.9}, {:.9}) in u's chart, triangle {t:?}: {txt}", p[0], p[1]),
+            text: format!(
+                "p = ({:.9}, {:.9}) in u's chart, triangle {t:?}: {txt}",
+                p[0], p[1]
+            ),
             f64_confirms: chk(P2::new(p[0], p[1])),
             mp_confirms: chm(P2::from_f64(p[0], p[1], MP_PREC)),
         }
@@ -1005,7 +1123,9 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
         let dev = |pf: &P2<f64>| -> f64 {
             (|| -> Option<f64> {
                 let l = model.g_uw_formula(&uw, pf).ok()?;
-                let r = model.g_uw_formula(&xw, &model.g_uw_formula(&ux, pf).ok()?).ok()?;
+                let r = model
+                    .g_uw_formula(&xw, &model.g_uw_formula(&ux, pf).ok()?)
+                    .ok()?;
                 Some(l.dist_f64(&r))
             })()
             .unwrap_or(f64::INFINITY)
@@ -1013,14 +1133,19 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
         let devm = |pf: &P2<Mp>| -> f64 {
             (|| -> Option<f64> {
                 let l = model.g_uw_formula(&uw, pf).ok()?;
-                let r = model.g_uw_formula(&xw, &model.g_uw_formula(&ux, pf).ok()?).ok()?;
+                let r = model
+                    .g_uw_formula(&xw, &model.g_uw_formula(&ux, pf).ok()?)
+                    .ok()?;
                 Some(l.dist_f64(&r))
             })()
             .unwrap_or(f64::INFINITY)
         };
         CertWitness {
             point: p,
-            text: format!("p = ({:.9}, {:.9}) in u's chart, triangle {t:?}: {txt}", p[0], p[1]),
+            text: format!(
+                "p = ({:.9}, {:.9}) in u's chart, triangle {t:?}: {txt}",
+                p[0], p[1]
+            ),
             f64_confirms: dev(&P2::new(p[0], p[1])) > s.fail_tol,
             mp_confirms: devm(&P2::from_f64(p[0], p[1], MP_PREC)) > s.fail_tol,
         }
@@ -1028,7 +1153,11 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
     let ms = t0.elapsed().as_millis() as u64;
     let incl_stmt = "φ_xu⁻¹(Ω_xu ∩ Ω_xw) ⊆ Ω_uw (literal Def. 4.1.9, u's chart): every box of the chart is proven outside Ω_ux ∩ φ_xu⁻¹(Ω_xw) or inside Ω_uw, except the unresolved boxes (diameter ≤ δ) along the common boundary, where the inclusion is tight".to_string();
     let coc_stmt = "φ_wu = φ_wx∘φ_xu on φ_xu⁻¹(Ω_xu ∩ Ω_xw) (outside the δ-boxes): `bound` = interval enclosure of the distance over every proven box (natural extension, polar form), `centre_bound` = enclosure at every box centre in the domain by the generic maps; exact identity by the proof of L4.2.2 on the certified branches".to_string();
-    let mk = |prop: &str, stmt: String, refuted: Option<CertWitness>, bound: Option<f64>, cb: Option<f64>| {
+    let mk = |prop: &str,
+              stmt: String,
+              refuted: Option<CertWitness>,
+              bound: Option<f64>,
+              cb: Option<f64>| {
         let outcome = if refuted.is_some() {
             Outcome::Refuted
         } else if st.refuted.is_some() {
@@ -1047,7 +1176,11 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
             statement: stmt,
             bound,
             centre_bound: cb,
-            delta: if st.unresolved > 0 { Some(st.delta) } else { None },
+            delta: if st.unresolved > 0 {
+                Some(st.delta)
+            } else {
+                None
+            },
             boxes: st.boxes,
             max_depth: st.max_depth,
             unresolved: st.unresolved,
@@ -1210,7 +1343,10 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Coverag
                 refuted: vec![],
                 inconclusive: vec![],
             };
-            for k in configs_needed.iter().filter(|k| properties_of(k).contains(&prop)) {
+            for k in configs_needed
+                .iter()
+                .filter(|k| properties_of(k).contains(&prop))
+            {
                 match cert
                     .results
                     .iter()
@@ -1253,7 +1389,9 @@ pub fn summary_table(cert: &Certificate) -> String {
     for (p, rs) in &by {
         let cnt = |o: Outcome| rs.iter().filter(|r| r.outcome == o).count();
         let mx = |f: &dyn Fn(&PropertyResult) -> Option<f64>| {
-            rs.iter().filter_map(|r| f(r)).fold(None, |a: Option<f64>, x| Some(a.map_or(x, |y| y.max(x))))
+            rs.iter()
+                .filter_map(|r| f(r))
+                .fold(None, |a: Option<f64>, x| Some(a.map_or(x, |y| y.max(x))))
         };
         s.push_str(&format!(
             "| `{p}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.1} |\n",
@@ -1271,7 +1409,12 @@ pub fn summary_table(cert: &Certificate) -> String {
         ));
     }
     s.push_str("\n## Per configuration (refutations and non-certified results)\n\n| configuration | property | result | bound | δ | boxes | time (ms) | witness |\n|---|---|---|---|---|---|---|---|\n");
-    for r in cert.results.iter().filter(|r| !matches!(r.outcome, Outcome::Certified | Outcome::CertifiedOutsideDelta)) {
+    for r in cert.results.iter().filter(|r| {
+        !matches!(
+            r.outcome,
+            Outcome::Certified | Outcome::CertifiedOutsideDelta
+        )
+    }) {
         s.push_str(&format!(
             "| {} | `{}` | {:?} | {} | {} | {} | {} | {} |\n",
             r.key,
@@ -1283,7 +1426,10 @@ pub fn summary_table(cert: &Certificate) -> String {
             r.millis,
             r.witness
                 .as_ref()
-                .map(|w| format!("{} (f64 confirms: {}, mp256 confirms: {})", w.text, w.f64_confirms, w.mp_confirms))
+                .map(|w| format!(
+                    "{} (f64 confirms: {}, mp256 confirms: {})",
+                    w.text, w.f64_confirms, w.mp_confirms
+                ))
                 .unwrap_or_default()
         ));
     }
