@@ -17,6 +17,7 @@
 //! * [`conditions`] — the conformance checkers and their reports.
 //! * [`cli`] — the `ppm` command line.
 
+pub mod certify;
 pub mod cli;
 pub mod conditions;
 pub mod construction;

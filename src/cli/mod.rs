@@ -68,6 +68,9 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Certified interval proofs of the Chapter 4 conditions for all degree configurations
+    /// (issue 6).
+    Certify(crate::certify::cli::CertifyArgs),
 }
 
 /// Entry point of the `ppm` binary.
@@ -82,6 +85,7 @@ pub fn main() -> ExitCode {
             spec,
             ch4,
         } => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
+        Command::Certify(a) => crate::certify::cli::run(a),
         Command::Gluing { file, json } => {
             match crate::gluing::cli::run_gluing_command(&file, json) {
                 Ok((text, all_hold)) => {

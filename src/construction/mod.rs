@@ -17,4 +17,4 @@ pub use maps::{
     MapError, Paper, Ppm, TriangleConfig, VertexPair, P2,
 };
 pub use mesh_gluing::{GluingError, PpmGluing};
-pub use scalar::{Mp, Scalar, Trit, DEFAULT_MP_PREC};
+pub use scalar::{Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC};

@@ -1,0 +1,147 @@
+//! `ppm certify --max-degree M [--jobs N] [--shard K/N]` and `ppm certify merge FILES...`.
+
+use super::{
+    all_configs, merge, run as prove_all, shard, summary_table, Certificate, CertifyError, Model,
+    Settings,
+};
+use clap::{Args, Subcommand};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Arguments of `ppm certify`.
+#[derive(Args, Debug)]
+pub struct CertifyArgs {
+    #[command(subcommand)]
+    pub merge: Option<MergeCmd>,
+    /// Largest vertex degree; all configurations with degrees 3..=M are proven.
+    #[arg(long, default_value_t = 7)]
+    pub max_degree: u32,
+    /// Worker threads.
+    #[arg(long, default_value_t = 2)]
+    pub jobs: usize,
+    /// Only shard K of N (1-based), e.g. `--shard 2/8`.
+    #[arg(long)]
+    pub shard: Option<String>,
+    /// Certificate JSON output.
+    #[arg(long, default_value = "certificate.json")]
+    pub out: PathBuf,
+    /// Readable summary output (Markdown); printed to stdout as well.
+    #[arg(long)]
+    pub summary: Option<PathBuf>,
+    /// Planted fault: add this to the lens radius cos(π/6).
+    #[arg(long, default_value_t = 0.0)]
+    pub planted_lens_offset: f64,
+    /// Planted fault: add this to the label in R_(u,w)⁻¹.
+    #[arg(long, default_value_t = 0)]
+    pub planted_label_shift: i64,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum MergeCmd {
+    /// Join shard certificates into one.
+    Merge {
+        files: Vec<PathBuf>,
+        #[arg(long, default_value = "certificate.json")]
+        out: PathBuf,
+        #[arg(long)]
+        summary: Option<PathBuf>,
+    },
+}
+
+fn write(path: &Path, text: &str) -> Result<(), CertifyError> {
+    std::fs::write(path, text).map_err(|source| CertifyError::Io {
+        path: path.display().to_string(),
+        source,
+    })
+}
+
+/// Read a certificate file.
+pub fn read_certificate(path: &Path) -> Result<Certificate, CertifyError> {
+    let s = std::fs::read_to_string(path).map_err(|source| CertifyError::Io {
+        path: path.display().to_string(),
+        source,
+    })?;
+    serde_json::from_str(&s).map_err(|source| CertifyError::Json {
+        path: path.display().to_string(),
+        source,
+    })
+}
+
+fn emit(cert: &Certificate, out: &Path, summary: Option<&Path>) -> Result<(), CertifyError> {
+    let json = serde_json::to_string_pretty(cert).map_err(|source| CertifyError::Json {
+        path: out.display().to_string(),
+        source,
+    })?;
+    write(out, &json)?;
+    let table = summary_table(cert);
+    if let Some(p) = summary {
+        write(p, &table)?;
+    }
+    println!("{table}");
+    Ok(())
+}
+
+fn parse_shard(s: &str) -> Result<(usize, usize), CertifyError> {
+    let bad = || CertifyError::BadArg(format!("--shard {s}: expected K/N with 1 ≤ K ≤ N"));
+    let (k, n) = s.split_once('/').ok_or_else(bad)?;
+    let k: usize = k.trim().parse().map_err(|_| bad())?;
+    let n: usize = n.trim().parse().map_err(|_| bad())?;
+    if k == 0 || n == 0 || k > n {
+        return Err(bad());
+    }
+    Ok((k, n))
+}
+
+fn run_inner(a: CertifyArgs) -> Result<bool, CertifyError> {
+    if let Some(MergeCmd::Merge {
+        files,
+        out,
+        summary,
+    }) = a.merge
+    {
+        let parts = files
+            .iter()
+            .map(|f| read_certificate(f))
+            .collect::<Result<Vec<_>, _>>()?;
+        let cert = merge(parts)?;
+        emit(&cert, &out, summary.as_deref())?;
+        return Ok(true);
+    }
+    if a.max_degree < 3 || a.max_degree > 64 {
+        return Err(CertifyError::BadArg(format!(
+            "--max-degree {} (3..=64)",
+            a.max_degree
+        )));
+    }
+    let model = Model {
+        lens_radius_offset: a.planted_lens_offset,
+        label_shift: a.planted_label_shift,
+    };
+    let all = all_configs(a.max_degree);
+    let sh = a.shard.as_deref().map(parse_shard).transpose()?;
+    let configs = match sh {
+        Some((k, n)) => shard(&all, k, n),
+        None => all,
+    };
+    let cert = prove_all(
+        &configs,
+        a.max_degree,
+        &model,
+        &Settings::default(),
+        a.jobs,
+        sh,
+    )?;
+    emit(&cert, &a.out, a.summary.as_deref())?;
+    Ok(true)
+}
+
+/// Entry point of `ppm certify`.
+pub fn run(a: CertifyArgs) -> ExitCode {
+    match run_inner(a) {
+        Ok(_) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("ppm certify: {e}");
+            ExitCode::from(2)
+        }
+    }
+}

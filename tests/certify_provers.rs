@@ -1,0 +1,157 @@
+//! Issue 6: interval provers on small degrees, and their refutations (planted faults and the
+//! paper's own failures).
+
+use pseudomanifold::certify::{
+    all_configs, coverage, merge, prove_config, prove_inverse, prove_lens_agreement,
+    prove_nonempty, prove_star, prove_triangle, run, shard, ConfigKey, Model, Outcome, Settings,
+};
+use pseudomanifold::construction::maps::{EdgeConfig, TriangleConfig};
+
+fn quick() -> Settings {
+    Settings {
+        max_depth: 20,
+        budget: 200_000,
+        fail_tol: 1e-9,
+    }
+}
+
+fn ok(o: Outcome) -> bool {
+    matches!(o, Outcome::Certified | Outcome::CertifiedOutsideDelta)
+}
+
+#[test]
+fn d4_1_9_lens_cert_agreement_certified_below_11_refuted_from_11() {
+    for m in [3, 6, 10] {
+        let r = prove_lens_agreement(m, &Model::paper(), &quick());
+        assert!(ok(r.outcome), "m = {m}: {r:?}");
+    }
+    let r = prove_lens_agreement(12, &Model::paper(), &quick());
+    assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
+    let w = r.witness.expect("witness");
+    assert!(w.f64_confirms && w.mp_confirms, "{w:?}");
+}
+
+#[test]
+fn d4_1_9_lens_cert_planted_lens_radius_refuted() {
+    let model = Model {
+        lens_radius_offset: 1e-6,
+        label_shift: 0,
+    };
+    let r = prove_lens_agreement(5, &model, &quick());
+    assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
+    let w = r.witness.expect("witness");
+    assert!(w.f64_confirms && w.mp_confirms, "{w:?}");
+}
+
+#[test]
+fn c5_4_at_most_two_cert_and_c4_2_nonadjacent_disjoint_cert_literal_certified() {
+    for m in [3, 4, 7, 12] {
+        assert!(ok(
+            prove_star(m, false, false, &Model::paper(), &quick()).outcome
+        ));
+        assert!(ok(
+            prove_star(m, false, true, &Model::paper(), &quick()).outcome
+        ));
+    }
+}
+
+#[test]
+fn c5_4_at_most_two_sec6_1_3_cert_refuted_from_11() {
+    let r = prove_star(12, true, false, &Model::paper(), &quick());
+    assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
+    let w = r.witness.expect("witness");
+    assert!(w.f64_confirms && w.mp_confirms, "{w:?}");
+}
+
+#[test]
+fn c4_2_nonadjacent_disjoint_sec6_1_3_cert_refuted_at_12() {
+    let r = prove_star(12, true, true, &Model::paper(), &quick());
+    assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
+    assert!(r.witness.expect("w").f64_confirms);
+}
+
+#[test]
+fn p4_2_1_cert_nonempty_certified() {
+    for (a, b) in [(3, 3), (3, 9), (12, 5)] {
+        assert_eq!(
+            prove_nonempty(a, b, &Model::paper()).outcome,
+            Outcome::Certified
+        );
+    }
+}
+
+#[test]
+fn p4_2_3_cert_inverse_certified_and_planted_rotation_refuted() {
+    let r = prove_inverse(5, 7, &Model::paper(), &quick());
+    assert!(ok(r.outcome), "{r:?}");
+    assert!(r.centre_bound.expect("centre bound") < 1e-12);
+    let bad = Model {
+        lens_radius_offset: 0.0,
+        label_shift: 1,
+    };
+    let r = prove_inverse(5, 7, &bad, &quick());
+    assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
+    let w = r.witness.expect("witness");
+    assert!(w.f64_confirms && w.mp_confirms, "{w:?}");
+}
+
+#[test]
+fn l4_2_1_cert_l4_2_2_cert_triangle_certified_and_planted_rotation_refuted() {
+    let key = ConfigKey::Triangle {
+        m_u: 3,
+        m_w: 5,
+        m_x: 7,
+        ccw: true,
+    };
+    let rs = prove_triangle(key, &Model::paper(), &quick());
+    assert_eq!(rs.len(), 2);
+    for r in &rs {
+        assert!(ok(r.outcome), "{r:?}");
+    }
+    assert!(rs[1].centre_bound.expect("centre") < 1e-12);
+    let bad = Model {
+        lens_radius_offset: 0.0,
+        label_shift: 1,
+    };
+    let rs = prove_triangle(key, &bad, &quick());
+    assert_eq!(rs[1].outcome, Outcome::Refuted, "{rs:?}");
+    assert!(rs[1].witness.as_ref().expect("w").f64_confirms);
+}
+
+#[test]
+fn l4_2_3_cert_hausdorff_arc_certified() {
+    let rs = prove_config(
+        ConfigKey::Edge { m_u: 4, m_w: 9 },
+        &Model::paper(),
+        &quick(),
+    );
+    let h = rs
+        .iter()
+        .find(|r| r.property == "L4.2.3(cert)")
+        .expect("hausdorff");
+    assert!(ok(h.outcome), "{h:?}");
+    assert!(h.bound.expect("bound") < 1e-12);
+}
+
+#[test]
+fn cert_shard_merge_and_coverage() {
+    let all = all_configs(3);
+    assert_eq!(all.len(), 1 + 1 + 2);
+    let s = quick();
+    let a = run(&shard(&all, 1, 2), 3, &Model::paper(), &s, 1, Some((1, 2))).expect("run");
+    let b = run(&shard(&all, 2, 2), 3, &Model::paper(), &s, 1, Some((2, 2))).expect("run");
+    let m = merge(vec![a.clone(), b]).expect("merge");
+    assert!(merge(vec![a.clone(), a]).is_err());
+    let e = EdgeConfig::new(3, 1, 3, 2).expect("edge");
+    let t = TriangleConfig::ccw(3, 3, 3, 0, 1, 2).expect("tri");
+    let need = ConfigKey::all_for(&[3], &[e], &[t]).expect("keys");
+    let cov = coverage(&m, &need);
+    assert!(!cov.is_empty());
+    for c in &cov {
+        assert!(c.certified, "{c:?}");
+    }
+    let need4 = ConfigKey::all_for(&[4], &[], &[]).expect("keys");
+    assert!(coverage(&m, &need4)
+        .iter()
+        .all(|c| !c.certified && !c.missing.is_empty()));
+}
