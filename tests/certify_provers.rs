@@ -33,14 +33,26 @@ fn d4_1_9_lens_cert_agreement_certified_below_11_refuted_from_11() {
 
 #[test]
 fn d4_1_9_lens_cert_planted_lens_radius_refuted() {
+    // A lens radius off by 1e-2 is refuted with a witness both evaluators confirm.
     let model = Model {
-        lens_radius_offset: 1e-6,
+        lens_radius_offset: 1e-2,
         label_shift: 0,
     };
     let r = prove_lens_agreement(5, &model, &quick());
     assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
     let w = r.witness.expect("witness");
     assert!(w.f64_confirms && w.mp_confirms, "{w:?}");
+    // Off by 1e-6, the disagreement lives within 1e-6 of ∂E, inside the band of width δ the
+    // certificate excludes at this depth: the prover must not claim more than it proved.
+    let model = Model {
+        lens_radius_offset: 1e-6,
+        label_shift: 0,
+    };
+    let r = prove_lens_agreement(5, &model, &quick());
+    assert_ne!(r.outcome, Outcome::Certified, "{r:?}");
+    if r.outcome == Outcome::CertifiedOutsideDelta {
+        assert!(r.delta.expect("δ reported") > 1e-6, "{r:?}");
+    }
 }
 
 #[test]
