@@ -23,5 +23,6 @@ pub mod conditions;
 pub mod construction;
 pub mod gluing;
 pub mod mesh;
+pub mod oracle;
 pub mod report;
 pub mod surface;

@@ -2,6 +2,7 @@
 //! (Sec. 3.1) and prints every check with its offending elements.
 
 mod check;
+mod oracle;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -49,6 +50,33 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Answer reference queries on stdin, one JSON request per line (docs/oracle.md).
+    Oracle {
+        /// Load this mesh first (or send {"op":"load","path":...}).
+        #[arg(long)]
+        mesh: Option<PathBuf>,
+        /// MPFR precision of the reference values.
+        #[arg(long, default_value_t = 256)]
+        bits: u32,
+    },
+    /// Compare another implementation's answers (JSON lines: a request plus "value") against
+    /// the reference; exit status 1 when a deviation exceeds --tolerance.
+    Diff {
+        /// The mesh the answers refer to.
+        #[arg(long)]
+        mesh: PathBuf,
+        /// The table of answers (JSON lines).
+        table: PathBuf,
+        #[arg(long, default_value_t = 1e-12)]
+        tolerance: f64,
+        #[arg(long, default_value_t = 256)]
+        bits: u32,
+        /// How many of the worst items to list.
+        #[arg(long, default_value_t = 10)]
+        worst: usize,
+        #[arg(long)]
+        json: bool,
+    },
     /// Evaluate the transition map φ_wu(p) (Def. 4.1.10: from Ω_uw to Ω_wu) of a mesh in f64
     /// and in multi-precision, and print both with their difference (oracle use).
     EvalMap {
@@ -85,6 +113,15 @@ pub fn main() -> ExitCode {
             spec,
             ch4,
         } => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
+        Command::Oracle { mesh, bits } => oracle::run_oracle(mesh.as_deref(), bits),
+        Command::Diff {
+            mesh,
+            table,
+            tolerance,
+            bits,
+            worst,
+            json,
+        } => oracle::run_diff(&mesh, &table, bits, tolerance, worst, json),
         Command::Certify(a) => crate::certify::cli::run(a),
         Command::Gluing { file, json } => {
             match crate::gluing::cli::run_gluing_command(&file, json) {

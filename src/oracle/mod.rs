@@ -1,0 +1,30 @@
+//! The oracle interface (issue 9): reference quantities of the construction, each evaluated in
+//! f64 *and* in MPFR at a chosen precision, with the difference as the error estimate of the
+//! f64 value. Faster implementations compare against these, point by point.
+//!
+//! * [`Session`] holds a validated mesh and answers [`Request`]s (the `ppm oracle` JSON-lines
+//!   protocol, documented in `docs/oracle.md`).
+//! * [`diff`] compares another implementation's answers against the reference (`ppm diff`).
+
+pub mod diff;
+pub mod protocol;
+
+pub use protocol::{OracleError, Request, Response, Session};
+
+use crate::construction::{Mp, Scalar};
+
+/// Render an MPFR value with all its significant decimal digits.
+pub fn mp_decimal(x: &Mp) -> String {
+    let digits = (f64::from(x.0.prec()) * std::f64::consts::LOG10_2).ceil() as usize + 2;
+    x.0.to_string_radix(10, Some(digits))
+}
+
+/// Distance between an f64 vector and an MPFR vector, computed in MPFR and rounded up to f64.
+pub fn mp_distance(a: &[f64], b: &[Mp]) -> f64 {
+    let mut s = 0.0f64;
+    for (x, y) in a.iter().zip(b) {
+        let d = y.sub(&Mp::from_f64(*x, y.precision_bits())).to_f64();
+        s += d * d;
+    }
+    s.sqrt()
+}
