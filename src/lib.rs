@@ -19,6 +19,7 @@
 
 pub mod cli;
 pub mod conditions;
+pub mod exact;
 pub mod construction;
 pub mod gluing;
 pub mod mesh;
