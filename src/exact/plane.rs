@@ -195,7 +195,7 @@ mod tests {
         assert!(h.is_isometry());
         assert_eq!(h.after(&h), Affine::identity());
         assert_eq!(Affine::rot_sixths(2).after(&Affine::rot_sixths(-2)), Affine::identity());
-        assert_eq!(Affine::compose(&[Affine::rot_sixths(1); 12]), Affine::identity());
+        assert_eq!(Affine::compose(&vec![Affine::rot_sixths(1); 12]), Affine::identity());
         assert!(disks::d().in_open_sector_sixths(-2, 2));
         assert!(!disks::d().in_open_sector_sixths(-1, 1));
     }

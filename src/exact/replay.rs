@@ -353,3 +353,42 @@ pub fn render(steps: &[Step], outcomes: &[Outcome]) -> String {
     }
     s
 }
+
+/// Plant a sign error in the first rotation of a step's check (for the planted-fault tests):
+/// the first rotation of a polar chain or of an affine composite is replaced by its inverse,
+/// or the first angle of a `RotEq` is negated. Returns whether anything was changed.
+pub fn plant_sign_error(step: &mut Step) -> bool {
+    fn flip_chain(c: &mut Chain) -> bool {
+        for m in c.0.iter_mut() {
+            if matches!(m, super::polar::PMap::Rot { .. }) {
+                *m = m.sign_flipped();
+                return true;
+            }
+        }
+        false
+    }
+    fn flip_affine(v: &mut [Affine]) -> bool {
+        for a in v.iter_mut() {
+            if a.t == Pt::origin() && *a != Affine::identity() && a.is_isometry() {
+                let l = a.l.clone();
+                a.l = [[l[0][0].clone(), l[1][0].clone()], [l[0][1].clone(), l[1][1].clone()]];
+                return true;
+            }
+        }
+        false
+    }
+    match &mut step.check {
+        Check::PolarEq { lhs, .. } | Check::PolarSetEq { lhs, .. } => flip_chain(lhs),
+        Check::PolarCovers { chain, .. } | Check::PolarInto { chain, .. } => flip_chain(chain),
+        Check::RotEq { lhs, .. } => match lhs.first_mut() {
+            Some(a) => {
+                *a = -a.clone();
+                true
+            }
+            None => false,
+        },
+        Check::AffineEq { lhs, .. } => flip_affine(lhs),
+        Check::DiskImage { map, .. } => flip_affine(map),
+        _ => false,
+    }
+}
