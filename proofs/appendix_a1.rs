@@ -12,7 +12,9 @@ mod support;
 use pseudomanifold::exact::plane::{disks, Pt};
 use pseudomanifold::exact::polar::Region;
 use pseudomanifold::exact::q3::{q, Q3};
-use pseudomanifold::exact::replay::{first_mismatch, plant_sign_error, render, replay, Check, Expect, Step};
+use pseudomanifold::exact::replay::{
+    first_mismatch, plant_sign_error, render, replay, Check, Expect, Step,
+};
 use support::*;
 
 /// Degrees enumerated (every label of every degree).
@@ -27,7 +29,10 @@ fn deg3(m: u32, fail: Region) -> Expect {
 }
 
 fn derived(ids: &[&str], expect: Expect) -> (Check, Expect) {
-    (Check::Derived(ids.iter().map(|s| s.to_string()).collect()), expect)
+    (
+        Check::Derived(ids.iter().map(|s| s.to_string()).collect()),
+        expect,
+    )
 }
 
 fn step(id: &str, claim: &str, ce: (Check, Expect)) -> Step {
@@ -304,7 +309,9 @@ pub fn l4_2_2_steps(t: Tri) -> Vec<Step> {
     let upper = oo(0, 1, 1, 3);
     let lower = oo(-1, 3, 0, 1);
     let hm = [h(), rot6(-2)];
-    let cdf_invariant = disk_eq(&hm, &disks::c(), &disks::d()) && disk_eq(&hm, &disks::d(), &disks::f()) && disk_eq(&hm, &disks::f(), &disks::c());
+    let cdf_invariant = disk_eq(&hm, &disks::c(), &disks::d())
+        && disk_eq(&hm, &disks::d(), &disks::f())
+        && disk_eq(&hm, &disks::f(), &disks::c());
     let mut s = extent_steps("L4.2.2");
     s.extend([
         step("L4.2.2-s0", "if two of u, w, x coincide the claim is condition (3)(b) (Prop. 4.2.3)", (Check::Definition, Expect::Definition)),
@@ -386,14 +393,23 @@ fn p4_2_4_proof_replays_exactly() {
         for i in 0..mu {
             for mw in degrees() {
                 for mz in [3, 5, 6, mw] {
-                    assert_replay(&format!("P4.2.4 (m_u={mu}, i={i}, m_w={mw}, m_z={mz})"), &p4_2_4_steps(mu, i, mw, mz));
+                    assert_replay(
+                        &format!("P4.2.4 (m_u={mu}, i={i}, m_w={mw}, m_z={mz})"),
+                        &p4_2_4_steps(mu, i, mw, mz),
+                    );
                     n += 1;
                 }
             }
         }
     }
     assert!(n > 1000);
-    println!("{}", render(&p4_2_4_steps(3, 1, 5, 7), &replay(&p4_2_4_steps(3, 1, 5, 7))));
+    println!(
+        "{}",
+        render(
+            &p4_2_4_steps(3, 1, 5, 7),
+            &replay(&p4_2_4_steps(3, 1, 5, 7))
+        )
+    );
 }
 
 /// The bounded configurations of the lemma replays: every degree triple in 3..=MAX_DEG with
@@ -405,7 +421,14 @@ fn lemma_configs() -> Vec<Tri> {
     for mu in degrees() {
         for mw in degrees() {
             for mx in degrees() {
-                v.push(Tri { mu, mw, mx, i: mu - 1, j: mw - 1, k: mx - 1 });
+                v.push(Tri {
+                    mu,
+                    mw,
+                    mx,
+                    i: mu - 1,
+                    j: mw - 1,
+                    k: mx - 1,
+                });
             }
         }
     }
@@ -420,7 +443,14 @@ fn l4_2_1_proof_replays_exactly() {
     for t in lemma_configs() {
         assert_replay(&format!("L4.2.1 {t:?}"), &l4_2_1_steps(t));
     }
-    let t = Tri { mu: 3, mw: 5, mx: 7, i: 1, j: 0, k: 2 };
+    let t = Tri {
+        mu: 3,
+        mw: 5,
+        mx: 7,
+        i: 1,
+        j: 0,
+        k: 2,
+    };
     println!("{}", render(&l4_2_1_steps(t), &replay(&l4_2_1_steps(t))));
 }
 
@@ -431,7 +461,14 @@ fn l4_2_2_proof_replays_exactly() {
     for t in lemma_configs() {
         assert_replay(&format!("L4.2.2 {t:?}"), &l4_2_2_steps(t));
     }
-    let t = Tri { mu: 3, mw: 3, mx: 3, i: 1, j: 0, k: 2 };
+    let t = Tri {
+        mu: 3,
+        mw: 3,
+        mx: 3,
+        i: 1,
+        j: 0,
+        k: 2,
+    };
     println!("{}", render(&l4_2_2_steps(t), &replay(&l4_2_2_steps(t))));
 }
 
@@ -444,17 +481,68 @@ fn a_1_planted_rotation_sign_error_fails_at_the_right_step() {
         ("P4.2.4-s9a", p4_2_4_steps(7, 2, 6, 6)),
         ("P4.2.4-iii", p4_2_4_steps(4, 1, 6, 6)),
         ("P4.2.4-s11c", p4_2_4_steps(6, 1, 6, 6)),
-        ("L4.2.1-c10", l4_2_1_steps(Tri { mu: 5, mw: 4, mx: 6, i: 1, j: 1, k: 1 })),
-        ("L4.2.2-A5", l4_2_2_steps(Tri { mu: 5, mw: 5, mx: 6, i: 1, j: 1, k: 1 })),
-        ("L4.2.2-xconj", l4_2_2_steps(Tri { mu: 4, mw: 5, mx: 6, i: 1, j: 1, k: 1 })),
-        ("L4.2.2-h3", l4_2_2_steps(Tri { mu: 4, mw: 5, mx: 6, i: 1, j: 1, k: 1 })),
+        (
+            "L4.2.1-c10",
+            l4_2_1_steps(Tri {
+                mu: 5,
+                mw: 4,
+                mx: 6,
+                i: 1,
+                j: 1,
+                k: 1,
+            }),
+        ),
+        (
+            "L4.2.2-A5",
+            l4_2_2_steps(Tri {
+                mu: 5,
+                mw: 5,
+                mx: 6,
+                i: 1,
+                j: 1,
+                k: 1,
+            }),
+        ),
+        (
+            "L4.2.2-xconj",
+            l4_2_2_steps(Tri {
+                mu: 4,
+                mw: 5,
+                mx: 6,
+                i: 1,
+                j: 1,
+                k: 1,
+            }),
+        ),
+        (
+            "L4.2.2-h3",
+            l4_2_2_steps(Tri {
+                mu: 4,
+                mw: 5,
+                mx: 6,
+                i: 1,
+                j: 1,
+                k: 1,
+            }),
+        ),
     ];
     for (id, mut steps) in cases {
-        assert!(first_mismatch(&replay(&steps)).is_none(), "unplanted replay of {id} must match");
-        let st = steps.iter_mut().find(|s| s.id == id).expect("step id exists");
+        assert!(
+            first_mismatch(&replay(&steps)).is_none(),
+            "unplanted replay of {id} must match"
+        );
+        let st = steps
+            .iter_mut()
+            .find(|s| s.id == id)
+            .expect("step id exists");
         assert!(plant_sign_error(st), "{id} has a rotation to flip");
         let out = replay(&steps);
         let bad = first_mismatch(&out).map(|o| o.id.clone());
-        assert_eq!(bad.as_deref(), Some(id), "planted error must be caught at {id}\n{}", render(&steps, &out));
+        assert_eq!(
+            bad.as_deref(),
+            Some(id),
+            "planted error must be caught at {id}\n{}",
+            render(&steps, &out)
+        );
     }
 }

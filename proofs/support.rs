@@ -62,7 +62,14 @@ impl Tri {
                     for i in labels(mu) {
                         for j in labels(mw) {
                             for k in labels(mx) {
-                                out.push(Tri { mu, mw, mx, i, j, k });
+                                out.push(Tri {
+                                    mu,
+                                    mw,
+                                    mx,
+                                    i,
+                                    j,
+                                    k,
+                                });
                             }
                         }
                     }
@@ -185,6 +192,10 @@ pub fn assert_replay(title: &str, steps: &[Step]) {
     use pseudomanifold::exact::replay::{first_mismatch, render, replay};
     let out = replay(steps);
     if let Some(bad) = first_mismatch(&out) {
-        panic!("{title}: replay differs from the recorded verdict at step {}\n{}", bad.id, render(steps, &out));
+        panic!(
+            "{title}: replay differs from the recorded verdict at step {}\n{}",
+            bad.id,
+            render(steps, &out)
+        );
     }
 }

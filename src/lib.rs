@@ -19,8 +19,8 @@
 
 pub mod cli;
 pub mod conditions;
-pub mod exact;
 pub mod construction;
+pub mod exact;
 pub mod gluing;
 pub mod mesh;
 pub mod report;

@@ -90,7 +90,10 @@ impl Affine {
             }
         }
         // L(o.t) + t
-        let lin = Affine { l: self.l.clone(), t: Pt::origin() };
+        let lin = Affine {
+            l: self.l.clone(),
+            t: Pt::origin(),
+        };
         let t0 = lin.apply(&o.t);
         Affine {
             l,
@@ -108,7 +111,9 @@ impl Affine {
         let c0 = Pt::new(self.l[0][0].clone(), self.l[1][0].clone());
         let c1 = Pt::new(self.l[0][1].clone(), self.l[1][1].clone());
         let dot = &(&c0.x * &c1.x) + &(&c0.y * &c1.y);
-        c0.dist2(&Pt::origin()) == Q3::one() && c1.dist2(&Pt::origin()) == Q3::one() && dot.is_zero()
+        c0.dist2(&Pt::origin()) == Q3::one()
+            && c1.dist2(&Pt::origin()) == Q3::one()
+            && dot.is_zero()
     }
 }
 
@@ -132,7 +137,8 @@ impl Disk {
     }
     /// The image under an isometry (`None` if `f` is not an isometry).
     pub fn image(&self, f: &Affine) -> Option<Disk> {
-        f.is_isometry().then(|| Disk::new(f.apply(&self.c), self.r2.clone()))
+        f.is_isometry()
+            .then(|| Disk::new(f.apply(&self.c), self.r2.clone()))
     }
     /// Whether the open disk lies in the open half-plane to the left of the line through the
     /// origin with unit direction `u` (cross(u, p) > 0): cross(u, c) ≥ 0 and cross(u, c)² ≥ r².
@@ -194,8 +200,14 @@ mod tests {
         let h = Affine::h();
         assert!(h.is_isometry());
         assert_eq!(h.after(&h), Affine::identity());
-        assert_eq!(Affine::rot_sixths(2).after(&Affine::rot_sixths(-2)), Affine::identity());
-        assert_eq!(Affine::compose(&vec![Affine::rot_sixths(1); 12]), Affine::identity());
+        assert_eq!(
+            Affine::rot_sixths(2).after(&Affine::rot_sixths(-2)),
+            Affine::identity()
+        );
+        assert_eq!(
+            Affine::compose(&vec![Affine::rot_sixths(1); 12]),
+            Affine::identity()
+        );
         assert!(disks::d().in_open_sector_sixths(-2, 2));
         assert!(!disks::d().in_open_sector_sixths(-1, 1));
     }

@@ -35,19 +35,39 @@ pub struct Interval {
 impl Interval {
     /// (lo, hi).
     pub fn open(lo: Q, hi: Q) -> Self {
-        Interval { lo, lo_closed: false, hi, hi_closed: false }
+        Interval {
+            lo,
+            lo_closed: false,
+            hi,
+            hi_closed: false,
+        }
     }
     /// (lo, hi].
     pub fn open_closed(lo: Q, hi: Q) -> Self {
-        Interval { lo, lo_closed: false, hi, hi_closed: true }
+        Interval {
+            lo,
+            lo_closed: false,
+            hi,
+            hi_closed: true,
+        }
     }
     /// [lo, hi).
     pub fn closed_open(lo: Q, hi: Q) -> Self {
-        Interval { lo, lo_closed: true, hi, hi_closed: false }
+        Interval {
+            lo,
+            lo_closed: true,
+            hi,
+            hi_closed: false,
+        }
     }
     /// [lo, hi].
     pub fn closed(lo: Q, hi: Q) -> Self {
-        Interval { lo, lo_closed: true, hi, hi_closed: true }
+        Interval {
+            lo,
+            lo_closed: true,
+            hi,
+            hi_closed: true,
+        }
     }
     /// The range (−π, π] of Π, i.e. t ∈ (−1, 1].
     pub fn pi_range() -> Self {
@@ -73,7 +93,12 @@ impl Interval {
         } else {
             (self.hi.clone(), self.hi_closed && o.hi_closed)
         };
-        Interval { lo, lo_closed, hi, hi_closed }
+        Interval {
+            lo,
+            lo_closed,
+            hi,
+            hi_closed,
+        }
     }
     /// self − o as up to two intervals.
     pub fn minus(&self, o: &Interval) -> Vec<Interval> {
@@ -92,18 +117,31 @@ impl Interval {
             hi: self.hi.clone(),
             hi_closed: self.hi_closed,
         });
-        [left, right].into_iter().filter(|i| !i.is_empty()).collect()
+        [left, right]
+            .into_iter()
+            .filter(|i| !i.is_empty())
+            .collect()
     }
     /// {a + b·t : t ∈ self} (b ≠ 0), or the point {a} when b = 0.
     pub fn affine_image(&self, a: &Q, b: &Q) -> Interval {
         let l = a + b * &self.lo;
         let h = a + b * &self.hi;
         if b.is_negative() {
-            Interval { lo: h, lo_closed: self.hi_closed, hi: l, hi_closed: self.lo_closed }
+            Interval {
+                lo: h,
+                lo_closed: self.hi_closed,
+                hi: l,
+                hi_closed: self.lo_closed,
+            }
         } else if b.is_zero() {
             Interval::closed(a.clone(), a.clone())
         } else {
-            Interval { lo: l, lo_closed: self.lo_closed, hi: h, hi_closed: self.hi_closed }
+            Interval {
+                lo: l,
+                lo_closed: self.lo_closed,
+                hi: h,
+                hi_closed: self.hi_closed,
+            }
         }
     }
     /// {t ∈ self : a + b·t ∈ target}.
@@ -167,7 +205,8 @@ impl Region {
         let mut out: Vec<Interval> = Vec::new();
         for i in v {
             if let Some(last) = out.last_mut() {
-                let touches = i.lo < last.hi || (i.lo == last.hi && (last.hi_closed || i.lo_closed));
+                let touches =
+                    i.lo < last.hi || (i.lo == last.hi && (last.hi_closed || i.lo_closed));
                 if touches {
                     if i.hi > last.hi || (i.hi == last.hi && i.hi_closed) {
                         last.hi = i.hi.clone();
@@ -269,15 +308,24 @@ pub enum PMap {
 impl PMap {
     /// Rotation by turn·π.
     pub fn rot(name: &str, turn: Q) -> Self {
-        PMap::Rot { name: name.to_string(), turn }
+        PMap::Rot {
+            name: name.to_string(),
+            turn,
+        }
     }
     /// g_v.
     pub fn g(name: &str, m: u32) -> Self {
-        PMap::G { name: name.to_string(), m }
+        PMap::G {
+            name: name.to_string(),
+            m,
+        }
     }
     /// g_v⁻¹.
     pub fn g_inv(name: &str, m: u32) -> Self {
-        PMap::GInv { name: name.to_string(), m }
+        PMap::GInv {
+            name: name.to_string(),
+            m,
+        }
     }
     /// Display name.
     pub fn name(&self) -> &str {
@@ -288,7 +336,10 @@ impl PMap {
     /// The same map with the rotation angle negated (used to plant a sign error).
     pub fn sign_flipped(&self) -> PMap {
         match self {
-            PMap::Rot { name, turn } => PMap::Rot { name: name.clone(), turn: -turn },
+            PMap::Rot { name, turn } => PMap::Rot {
+                name: name.clone(),
+                turn: -turn,
+            },
             other => other.clone(),
         }
     }
@@ -334,7 +385,13 @@ fn apply_pi(p: &Piece) -> Vec<Piece> {
         if !dom.is_empty() {
             let mut wraps = p.wraps.clone();
             wraps.push(k);
-            out.push(Piece { dom, a: &p.a + &shift, b: p.b.clone(), radial: p.radial.clone(), wraps });
+            out.push(Piece {
+                dom,
+                a: &p.a + &shift,
+                b: p.b.clone(),
+                radial: p.radial.clone(),
+                wraps,
+            });
         }
     }
     out
@@ -358,7 +415,13 @@ impl Chain {
         let mut pieces: Vec<Piece> = dom
             .0
             .iter()
-            .map(|d| Piece { dom: d.clone(), a: q(0, 1), b: q(1, 1), radial: BTreeMap::new(), wraps: vec![] })
+            .map(|d| Piece {
+                dom: d.clone(),
+                a: q(0, 1),
+                b: q(1, 1),
+                radial: BTreeMap::new(),
+                wraps: vec![],
+            })
             .collect();
         for map in self.0.iter().rev() {
             pieces = match map {
@@ -392,7 +455,13 @@ impl Chain {
 
     /// The set of output angles (mod 2, in (−1, 1]) of the points of the t-region `dom`.
     pub fn image(&self, dom: &Region) -> Region {
-        Region::from_intervals(self.eval(dom).iter().map(|p| p.dom.affine_image(&p.a, &p.b)).collect()).mod2()
+        Region::from_intervals(
+            self.eval(dom)
+                .iter()
+                .map(|p| p.dom.affine_image(&p.a, &p.b))
+                .collect(),
+        )
+        .mod2()
     }
 
     /// The part of `dom` on which the chain is not injective (points whose image is also the
@@ -405,7 +474,10 @@ impl Chain {
             for (j, pj) in ps.iter().enumerate() {
                 let img = pj.dom.affine_image(&pj.a, &pj.b);
                 let own = pi.dom.affine_image(&pi.a, &pi.b);
-                for k in shift_range(&(&own.lo - &img.hi - q(2, 1)), &(&own.hi - &img.lo + q(2, 1))) {
+                for k in shift_range(
+                    &(&own.lo - &img.hi - q(2, 1)),
+                    &(&own.hi - &img.lo + q(2, 1)),
+                ) {
                     if i == j && k == 0 {
                         continue;
                     }
@@ -444,7 +516,8 @@ pub fn compare(lhs: &Chain, rhs: &Chain, dom: &Region) -> Comparison {
             if d.is_empty() {
                 continue;
             }
-            let same = pl.b == pr.b && is_integer(&((&pl.a - &pr.a) / q(2, 1))) && pl.radial == pr.radial;
+            let same =
+                pl.b == pr.b && is_integer(&((&pl.a - &pr.a) / q(2, 1))) && pl.radial == pr.radial;
             if same {
                 holds.push(d);
             } else {
@@ -472,15 +545,26 @@ mod tests {
     #[test]
     fn conjugated_rotation_wraps_exactly_for_degree_three() {
         // g_u∘M_{−2π/3}∘g_u⁻¹ vs M_{−π/3} on (−1/3, 1/3), m_u = 3.
-        let lhs = Chain(vec![PMap::g("g_u", 3), PMap::rot("M", q(-2, 3)), PMap::g_inv("g_u⁻¹", 3)]);
+        let lhs = Chain(vec![
+            PMap::g("g_u", 3),
+            PMap::rot("M", q(-2, 3)),
+            PMap::g_inv("g_u⁻¹", 3),
+        ]);
         let rhs = Chain(vec![PMap::rot("M_{−π/3}", q(-1, 3))]);
         let c = compare(&lhs, &rhs, &Region::of(Interval::open(q(-1, 3), q(1, 3))));
-        assert_eq!(c.fails, Region::of(Interval::open_closed(q(-1, 3), q(-1, 6))));
+        assert_eq!(
+            c.fails,
+            Region::of(Interval::open_closed(q(-1, 3), q(-1, 6)))
+        );
         assert_eq!(c.holds, Region::of(Interval::open(q(-1, 6), q(1, 3))));
         // g_v is injective on (−1, 1] iff m ≤ 6.
         let g7 = Chain(vec![PMap::g("g", 7)]);
-        assert!(!g7.non_injective(&Region::of(Interval::pi_range())).is_empty());
+        assert!(!g7
+            .non_injective(&Region::of(Interval::pi_range()))
+            .is_empty());
         let g6 = Chain(vec![PMap::g("g", 6)]);
-        assert!(g6.non_injective(&Region::of(Interval::pi_range())).is_empty());
+        assert!(g6
+            .non_injective(&Region::of(Interval::pi_range()))
+            .is_empty());
     }
 }

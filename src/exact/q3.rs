@@ -52,7 +52,10 @@ impl Q3 {
     }
     /// (n/d)·√3.
     pub fn sqrt3_times(n: i64, d: i64) -> Self {
-        Q3 { a: Q::zero(), b: q(n, d) }
+        Q3 {
+            a: Q::zero(),
+            b: q(n, d),
+        }
     }
     /// Whether this is 0.
     pub fn is_zero(&self) -> bool {
@@ -118,13 +121,19 @@ impl fmt::Display for Q3 {
 impl<'a> Add<&'a Q3> for &'a Q3 {
     type Output = Q3;
     fn add(self, o: &Q3) -> Q3 {
-        Q3 { a: &self.a + &o.a, b: &self.b + &o.b }
+        Q3 {
+            a: &self.a + &o.a,
+            b: &self.b + &o.b,
+        }
     }
 }
 impl<'a> Sub<&'a Q3> for &'a Q3 {
     type Output = Q3;
     fn sub(self, o: &Q3) -> Q3 {
-        Q3 { a: &self.a - &o.a, b: &self.b - &o.b }
+        Q3 {
+            a: &self.a - &o.a,
+            b: &self.b - &o.b,
+        }
     }
 }
 impl<'a> Mul<&'a Q3> for &'a Q3 {
@@ -139,7 +148,10 @@ impl<'a> Mul<&'a Q3> for &'a Q3 {
 impl Neg for &Q3 {
     type Output = Q3;
     fn neg(self) -> Q3 {
-        Q3 { a: -&self.a, b: -&self.b }
+        Q3 {
+            a: -&self.a,
+            b: -&self.b,
+        }
     }
 }
 impl Add for Q3 {

@@ -132,7 +132,9 @@ impl fmt::Display for Verdict {
         match self {
             Verdict::Definition => write!(f, "definition"),
             Verdict::Holds => write!(f, "holds"),
-            Verdict::HoldsOn { holds, fails } => write!(f, "FAILS on θ/π ∈ {fails} (holds on {holds})"),
+            Verdict::HoldsOn { holds, fails } => {
+                write!(f, "FAILS on θ/π ∈ {fails} (holds on {holds})")
+            }
             Verdict::Fails(s) => write!(f, "FAILS: {s}"),
             Verdict::Inherits(v) => write!(f, "unsupported: premise(s) {} fail", v.join(", ")),
         }
@@ -170,7 +172,12 @@ pub struct Step {
 impl Step {
     /// A step.
     pub fn new(id: &str, claim: &str, check: Check, expect: Expect) -> Self {
-        Step { id: id.to_string(), claim: claim.to_string(), check, expect }
+        Step {
+            id: id.to_string(),
+            claim: claim.to_string(),
+            check,
+            expect,
+        }
     }
 }
 
@@ -218,14 +225,21 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
             } else {
                 let p = Pt::origin();
                 (
-                    Verdict::Fails(format!("lhs(0,0) = {}, rhs(0,0) = {}; lhs ≠ rhs", l.apply(&p), r.apply(&p))),
+                    Verdict::Fails(format!(
+                        "lhs(0,0) = {}, rhs(0,0) = {}; lhs ≠ rhs",
+                        l.apply(&p),
+                        r.apply(&p)
+                    )),
                     vec![format!("{l:?} vs {r:?}")],
                 )
             }
         }
         Check::DiskImage { map, disk, claimed } => match disk.image(&Affine::compose(map)) {
             Some(img) if &img == claimed => (Verdict::Holds, vec![]),
-            Some(img) => (Verdict::Fails(format!("image is {img}, not {claimed}")), vec![]),
+            Some(img) => (
+                Verdict::Fails(format!("image is {img}, not {claimed}")),
+                vec![],
+            ),
             None => (Verdict::Fails("map is not an isometry".into()), vec![]),
         },
         Check::PointOutside { point, disk } => {
@@ -239,7 +253,10 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
             if disk.in_open_sector_sixths(*lo, *hi) {
                 (Verdict::Holds, vec![])
             } else {
-                (Verdict::Fails(format!("{disk} ⊄ sector ({lo}/6, {hi}/6)")), vec![])
+                (
+                    Verdict::Fails(format!("{disk} ⊄ sector ({lo}/6, {hi}/6)")),
+                    vec![],
+                )
             }
         }
         Check::RotEq { lhs, rhs } => {
@@ -251,14 +268,22 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
                 let diff = s(lhs) - s(rhs);
                 let two = Q::from_integer(2.into());
                 let red = &diff - &two * (&diff / &two).floor();
-                (Verdict::Fails(format!("angles differ by {red}·π (mod 2π)")), vec![])
+                (
+                    Verdict::Fails(format!("angles differ by {red}·π (mod 2π)")),
+                    vec![],
+                )
             }
         }
         Check::PolarEq { lhs, rhs, region } => {
             let c = compare(lhs, rhs, region);
             (from_regions(c.holds, c.fails), c.detail)
         }
-        Check::PolarSetEq { lhs, rhs, region, rhs_extent } => {
+        Check::PolarSetEq {
+            lhs,
+            rhs,
+            region,
+            rhs_extent,
+        } => {
             let c = compare(lhs, rhs, region);
             if c.fails.is_empty() {
                 return (Verdict::Holds, c.detail);
@@ -267,18 +292,37 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
             let mut d = c.detail;
             d.push(format!("lhs image of the failing part: θ/π ∈ {}; outside rhs extent {rhs_extent}: {escapes}", c.fails_lhs_image));
             if escapes.is_empty() {
-                d.push("the failing part stays inside the claimed set: pointwise failure only".into());
+                d.push(
+                    "the failing part stays inside the claimed set: pointwise failure only".into(),
+                );
             } else {
                 d.push("so the set identity fails: lhs(X) has points outside rhs(X)".into());
             }
-            (Verdict::HoldsOn { holds: c.holds, fails: c.fails }, d)
+            (
+                Verdict::HoldsOn {
+                    holds: c.holds,
+                    fails: c.fails,
+                },
+                d,
+            )
         }
-        Check::PolarCovers { chain, domain, target } => {
+        Check::PolarCovers {
+            chain,
+            domain,
+            target,
+        } => {
             let img = chain.image(domain);
             let uncovered = target.minus(&img);
-            (from_regions(target.intersect(&img), uncovered), vec![format!("image θ/π ∈ {img}")])
+            (
+                from_regions(target.intersect(&img), uncovered),
+                vec![format!("image θ/π ∈ {img}")],
+            )
         }
-        Check::PolarInto { chain, domain, target } => {
+        Check::PolarInto {
+            chain,
+            domain,
+            target,
+        } => {
             let mut bad = Vec::new();
             for p in chain.eval(domain) {
                 {
@@ -287,13 +331,20 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
                     for o in img.minus(target).0 {
                         // pull back each escaping angle interval (all shifts)
                         for k in -4i64..=4 {
-                            bad.push(part.preimage(&p.a, &p.b, &o.shift(&Q::from_integer((2 * k).into()))));
+                            bad.push(part.preimage(
+                                &p.a,
+                                &p.b,
+                                &o.shift(&Q::from_integer((2 * k).into())),
+                            ));
                         }
                     }
                 }
             }
             let bad = Region::from_intervals(bad);
-            (from_regions(domain.minus(&bad), bad), vec![format!("image θ/π ∈ {}", chain.image(domain))])
+            (
+                from_regions(domain.minus(&bad), bad),
+                vec![format!("image θ/π ∈ {}", chain.image(domain))],
+            )
         }
         Check::PolarInjective { chain, domain } => {
             let bad = chain.non_injective(domain);
@@ -326,7 +377,12 @@ pub fn replay(steps: &[Step]) -> Vec<Outcome> {
         let (verdict, detail) = run_check(&s.check, &done);
         let ok = matches(&verdict, &s.expect);
         done.insert(s.id.clone(), verdict.clone());
-        out.push(Outcome { id: s.id.clone(), verdict, matches: ok, detail });
+        out.push(Outcome {
+            id: s.id.clone(),
+            verdict,
+            matches: ok,
+            detail,
+        });
     }
     out
 }
@@ -371,7 +427,10 @@ pub fn plant_sign_error(step: &mut Step) -> bool {
         for a in v.iter_mut() {
             if a.t == Pt::origin() && *a != Affine::identity() && a.is_isometry() {
                 let l = a.l.clone();
-                a.l = [[l[0][0].clone(), l[1][0].clone()], [l[0][1].clone(), l[1][1].clone()]];
+                a.l = [
+                    [l[0][0].clone(), l[1][0].clone()],
+                    [l[0][1].clone(), l[1][1].clone()],
+                ];
                 return true;
             }
         }
