@@ -21,6 +21,7 @@ pub mod certify;
 pub mod cli;
 pub mod conditions;
 pub mod construction;
+pub mod exact;
 pub mod gluing;
 pub mod mesh;
 pub mod oracle;

@@ -1,0 +1,453 @@
+//! Proofs as data: a proof is a list of [`Step`]s, each the paper's statement, an exact
+//! [`Check`] and the [`Expect`]ed verdict recorded by the replay. [`replay`] runs the checks
+//! in order and reports, per step, the computed [`Verdict`] and whether it matches.
+
+use super::plane::{Affine, Disk, Pt};
+use super::polar::{compare, Chain, Region};
+use super::q3::Q;
+use std::collections::BTreeMap;
+use std::fmt;
+
+/// The exact check behind a step.
+#[derive(Clone, Debug)]
+pub enum Check {
+    /// A definition or notation; nothing to check.
+    Definition,
+    /// A set-theoretic consequence of earlier steps (by id): holds iff they all hold.
+    Derived(Vec<String>),
+    /// Two composites of affine maps over Q(√3) are equal (lists in the paper's order).
+    AffineEq {
+        /// Left side, f₁∘…∘fₙ.
+        lhs: Vec<Affine>,
+        /// Right side.
+        rhs: Vec<Affine>,
+    },
+    /// The image of an open disk under a composite of isometries is the claimed disk.
+    DiskImage {
+        /// The composite (paper's order).
+        map: Vec<Affine>,
+        /// The disk.
+        disk: Disk,
+        /// The claimed image.
+        claimed: Disk,
+    },
+    /// A point is not in an open disk.
+    PointOutside {
+        /// The point.
+        point: Pt,
+        /// The disk.
+        disk: Disk,
+    },
+    /// An open disk lies in the open sector {θ/π ∈ (lo/6, hi/6)}.
+    DiskInSector {
+        /// The disk.
+        disk: Disk,
+        /// Lower bounding ray, in sixths of π.
+        lo: i64,
+        /// Upper bounding ray, in sixths of π.
+        hi: i64,
+    },
+    /// Sum of rotation angles (in units of π) equal mod 2.
+    RotEq {
+        /// Angles on the left, composed.
+        lhs: Vec<Q>,
+        /// Angles on the right, composed.
+        rhs: Vec<Q>,
+    },
+    /// Pointwise identity of two polar-affine chains on a t-region (the region the proof uses);
+    /// the check includes every Π wrap along both chains.
+    PolarEq {
+        /// Left chain.
+        lhs: Chain,
+        /// Right chain.
+        rhs: Chain,
+        /// Region of t = θ/π where the proof uses the identity.
+        region: Region,
+    },
+    /// Pointwise identity as in `PolarEq`, read as a set identity lhs(X) = rhs(X) for a set X
+    /// with angular extent `region` whose right-hand image has angular extent within
+    /// `rhs_extent`: fails when part of lhs(X) lands outside `rhs_extent`.
+    PolarSetEq {
+        /// Left chain.
+        lhs: Chain,
+        /// Right chain.
+        rhs: Chain,
+        /// Angular extent of X.
+        region: Region,
+        /// Angular extent of rhs(X) (upper bound).
+        rhs_extent: Region,
+    },
+    /// chain(domain) covers `target` (angles mod 2); fails on the uncovered part of `target`.
+    PolarCovers {
+        /// The chain.
+        chain: Chain,
+        /// Region of t.
+        domain: Region,
+        /// Region of output angles.
+        target: Region,
+    },
+    /// chain maps `domain` into `target`; fails on the part of `domain` mapped outside.
+    PolarInto {
+        /// The chain.
+        chain: Chain,
+        /// Region of t.
+        domain: Region,
+        /// Region of output angles.
+        target: Region,
+    },
+    /// chain is injective on `domain`; fails on the points sharing their image.
+    PolarInjective {
+        /// The chain.
+        chain: Chain,
+        /// Region of t.
+        domain: Region,
+    },
+    /// An exact fact computed by the caller (e.g. a combination of the above).
+    Fact(bool, String),
+}
+
+/// The computed outcome of a step.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// A definition, not checked.
+    Definition,
+    /// Holds exactly on everything the proof claims.
+    Holds,
+    /// Holds exactly on `holds`, fails on the non-empty `fails` (t = θ/π, or output angle for
+    /// `PolarCovers`), both inside the claimed region.
+    HoldsOn {
+        /// Where it holds.
+        holds: Region,
+        /// Where it fails.
+        fails: Region,
+    },
+    /// Fails (exact counter-fact).
+    Fails(String),
+    /// Derived from premises of which these do not hold.
+    Inherits(Vec<String>),
+}
+
+impl fmt::Display for Verdict {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Verdict::Definition => write!(f, "definition"),
+            Verdict::Holds => write!(f, "holds"),
+            Verdict::HoldsOn { holds, fails } => {
+                write!(f, "FAILS on θ/π ∈ {fails} (holds on {holds})")
+            }
+            Verdict::Fails(s) => write!(f, "FAILS: {s}"),
+            Verdict::Inherits(v) => write!(f, "unsupported: premise(s) {} fail", v.join(", ")),
+        }
+    }
+}
+
+/// The verdict recorded for a step.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Expect {
+    /// Definition.
+    Definition,
+    /// Holds.
+    Holds,
+    /// Fails exactly on this region.
+    FailsOn(Region),
+    /// Fails (non-region counter-fact).
+    Fails,
+    /// Unsupported because a premise fails.
+    Inherits,
+}
+
+/// One step of a proof.
+#[derive(Clone, Debug)]
+pub struct Step {
+    /// Step id (e.g. `P4.2.4-s10`).
+    pub id: String,
+    /// The paper's statement at this step.
+    pub claim: String,
+    /// The exact check.
+    pub check: Check,
+    /// The recorded verdict.
+    pub expect: Expect,
+}
+
+impl Step {
+    /// A step.
+    pub fn new(id: &str, claim: &str, check: Check, expect: Expect) -> Self {
+        Step {
+            id: id.to_string(),
+            claim: claim.to_string(),
+            check,
+            expect,
+        }
+    }
+}
+
+/// The replay of one step.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    /// Step id.
+    pub id: String,
+    /// Computed verdict.
+    pub verdict: Verdict,
+    /// Whether it matches the recorded verdict.
+    pub matches: bool,
+    /// Extra exact detail (failing pieces, wraps).
+    pub detail: Vec<String>,
+}
+
+fn from_regions(holds: Region, fails: Region) -> Verdict {
+    if fails.is_empty() {
+        Verdict::Holds
+    } else {
+        Verdict::HoldsOn { holds, fails }
+    }
+}
+
+/// Run one check; `done` holds the verdicts of the earlier steps.
+pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, Vec<String>) {
+    match check {
+        Check::Definition => (Verdict::Definition, vec![]),
+        Check::Derived(ids) => {
+            let bad: Vec<String> = ids
+                .iter()
+                .filter(|i| !matches!(done.get(*i), Some(Verdict::Holds | Verdict::Definition)))
+                .cloned()
+                .collect();
+            if bad.is_empty() {
+                (Verdict::Holds, vec![])
+            } else {
+                (Verdict::Inherits(bad), vec![])
+            }
+        }
+        Check::AffineEq { lhs, rhs } => {
+            let (l, r) = (Affine::compose(lhs), Affine::compose(rhs));
+            if l == r {
+                (Verdict::Holds, vec![])
+            } else {
+                let p = Pt::origin();
+                (
+                    Verdict::Fails(format!(
+                        "lhs(0,0) = {}, rhs(0,0) = {}; lhs ≠ rhs",
+                        l.apply(&p),
+                        r.apply(&p)
+                    )),
+                    vec![format!("{l:?} vs {r:?}")],
+                )
+            }
+        }
+        Check::DiskImage { map, disk, claimed } => match disk.image(&Affine::compose(map)) {
+            Some(img) if &img == claimed => (Verdict::Holds, vec![]),
+            Some(img) => (
+                Verdict::Fails(format!("image is {img}, not {claimed}")),
+                vec![],
+            ),
+            None => (Verdict::Fails("map is not an isometry".into()), vec![]),
+        },
+        Check::PointOutside { point, disk } => {
+            if disk.contains(point) {
+                (Verdict::Fails(format!("{point} ∈ {disk}")), vec![])
+            } else {
+                (Verdict::Holds, vec![])
+            }
+        }
+        Check::DiskInSector { disk, lo, hi } => {
+            if disk.in_open_sector_sixths(*lo, *hi) {
+                (Verdict::Holds, vec![])
+            } else {
+                (
+                    Verdict::Fails(format!("{disk} ⊄ sector ({lo}/6, {hi}/6)")),
+                    vec![],
+                )
+            }
+        }
+        Check::RotEq { lhs, rhs } => {
+            let s = |v: &Vec<Q>| v.iter().fold(Q::from_integer(0.into()), |a, b| a + b);
+            let d = (s(lhs) - s(rhs)) / Q::from_integer(2.into());
+            if d.denom() == &1.into() {
+                (Verdict::Holds, vec![])
+            } else {
+                let diff = s(lhs) - s(rhs);
+                let two = Q::from_integer(2.into());
+                let red = &diff - &two * (&diff / &two).floor();
+                (
+                    Verdict::Fails(format!("angles differ by {red}·π (mod 2π)")),
+                    vec![],
+                )
+            }
+        }
+        Check::PolarEq { lhs, rhs, region } => {
+            let c = compare(lhs, rhs, region);
+            (from_regions(c.holds, c.fails), c.detail)
+        }
+        Check::PolarSetEq {
+            lhs,
+            rhs,
+            region,
+            rhs_extent,
+        } => {
+            let c = compare(lhs, rhs, region);
+            if c.fails.is_empty() {
+                return (Verdict::Holds, c.detail);
+            }
+            let escapes = c.fails_lhs_image.minus(rhs_extent);
+            let mut d = c.detail;
+            d.push(format!("lhs image of the failing part: θ/π ∈ {}; outside rhs extent {rhs_extent}: {escapes}", c.fails_lhs_image));
+            if escapes.is_empty() {
+                d.push(
+                    "the failing part stays inside the claimed set: pointwise failure only".into(),
+                );
+            } else {
+                d.push("so the set identity fails: lhs(X) has points outside rhs(X)".into());
+            }
+            (
+                Verdict::HoldsOn {
+                    holds: c.holds,
+                    fails: c.fails,
+                },
+                d,
+            )
+        }
+        Check::PolarCovers {
+            chain,
+            domain,
+            target,
+        } => {
+            let img = chain.image(domain);
+            let uncovered = target.minus(&img);
+            (
+                from_regions(target.intersect(&img), uncovered),
+                vec![format!("image θ/π ∈ {img}")],
+            )
+        }
+        Check::PolarInto {
+            chain,
+            domain,
+            target,
+        } => {
+            let mut bad = Vec::new();
+            for p in chain.eval(domain) {
+                {
+                    let part = &p.dom;
+                    let img = Region::of(part.affine_image(&p.a, &p.b)).mod2();
+                    for o in img.minus(target).0 {
+                        // pull back each escaping angle interval (all shifts)
+                        for k in -4i64..=4 {
+                            bad.push(part.preimage(
+                                &p.a,
+                                &p.b,
+                                &o.shift(&Q::from_integer((2 * k).into())),
+                            ));
+                        }
+                    }
+                }
+            }
+            let bad = Region::from_intervals(bad);
+            (
+                from_regions(domain.minus(&bad), bad),
+                vec![format!("image θ/π ∈ {}", chain.image(domain))],
+            )
+        }
+        Check::PolarInjective { chain, domain } => {
+            let bad = chain.non_injective(domain);
+            (from_regions(domain.minus(&bad), bad), vec![])
+        }
+        Check::Fact(ok, why) => {
+            if *ok {
+                (Verdict::Holds, vec![why.clone()])
+            } else {
+                (Verdict::Fails(why.clone()), vec![])
+            }
+        }
+    }
+}
+
+fn matches(v: &Verdict, e: &Expect) -> bool {
+    match (v, e) {
+        (Verdict::Definition, Expect::Definition) | (Verdict::Holds, Expect::Holds) => true,
+        (Verdict::HoldsOn { fails, .. }, Expect::FailsOn(r)) => fails == r,
+        (Verdict::Fails(_), Expect::Fails) | (Verdict::Inherits(_), Expect::Inherits) => true,
+        _ => false,
+    }
+}
+
+/// Replay the steps in order.
+pub fn replay(steps: &[Step]) -> Vec<Outcome> {
+    let mut done = BTreeMap::new();
+    let mut out = Vec::new();
+    for s in steps {
+        let (verdict, detail) = run_check(&s.check, &done);
+        let ok = matches(&verdict, &s.expect);
+        done.insert(s.id.clone(), verdict.clone());
+        out.push(Outcome {
+            id: s.id.clone(),
+            verdict,
+            matches: ok,
+            detail,
+        });
+    }
+    out
+}
+
+/// The id of the first step whose computed verdict differs from the recorded one.
+pub fn first_mismatch(outcomes: &[Outcome]) -> Option<&Outcome> {
+    outcomes.iter().find(|o| !o.matches)
+}
+
+/// A printable table of a replay.
+pub fn render(steps: &[Step], outcomes: &[Outcome]) -> String {
+    let mut s = String::new();
+    for (st, o) in steps.iter().zip(outcomes) {
+        s.push_str(&format!(
+            "{} {:<22} {}\n    ⇒ {}\n",
+            if o.matches { "ok " } else { "XX " },
+            o.id,
+            st.claim,
+            o.verdict
+        ));
+        for d in &o.detail {
+            s.push_str(&format!("      · {d}\n"));
+        }
+    }
+    s
+}
+
+/// Plant a sign error in the first rotation of a step's check (for the planted-fault tests):
+/// the first rotation of a polar chain or of an affine composite is replaced by its inverse,
+/// or the first angle of a `RotEq` is negated. Returns whether anything was changed.
+pub fn plant_sign_error(step: &mut Step) -> bool {
+    fn flip_chain(c: &mut Chain) -> bool {
+        for m in c.0.iter_mut() {
+            if matches!(m, super::polar::PMap::Rot { .. }) {
+                *m = m.sign_flipped();
+                return true;
+            }
+        }
+        false
+    }
+    fn flip_affine(v: &mut [Affine]) -> bool {
+        for a in v.iter_mut() {
+            if a.t == Pt::origin() && *a != Affine::identity() && a.is_isometry() {
+                let l = a.l.clone();
+                a.l = [
+                    [l[0][0].clone(), l[1][0].clone()],
+                    [l[0][1].clone(), l[1][1].clone()],
+                ];
+                return true;
+            }
+        }
+        false
+    }
+    match &mut step.check {
+        Check::PolarEq { lhs, .. } | Check::PolarSetEq { lhs, .. } => flip_chain(lhs),
+        Check::PolarCovers { chain, .. } | Check::PolarInto { chain, .. } => flip_chain(chain),
+        Check::RotEq { lhs, .. } => match lhs.first_mut() {
+            Some(a) => {
+                *a = -a.clone();
+                true
+            }
+            None => false,
+        },
+        Check::AffineEq { lhs, .. } => flip_affine(lhs),
+        Check::DiskImage { map, .. } => flip_affine(map),
+        _ => false,
+    }
+}
