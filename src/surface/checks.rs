@@ -1,0 +1,3 @@
+//! stub
+pub struct SurfaceCheckOptions;
+pub fn run_surface_checks() {}
