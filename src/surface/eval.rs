@@ -44,10 +44,7 @@ pub struct EvalPoint<S> {
 /// q′ = λa + μb + νc = (μ/2 + ν, −μ√3/2).
 pub fn canonical_point<S: SurfaceScalar>(bary: &[S; 3], c: &Consts<S>) -> P2<S> {
     let half = S::from_ratio(1, 2, c.prec);
-    P2::new(
-        bary[1].mul(&half).add(&bary[2]),
-        bary[1].mul(&c.s3h).neg(),
-    )
+    P2::new(bary[1].mul(&half).add(&bary[2]), bary[1].mul(&c.s3h).neg())
 }
 
 impl Pps {

@@ -3,7 +3,7 @@
 //! The design matrix A (A_{i, j(l+1)+k} = B_j^l(x_i)·B_k^l(y_i)) depends only on m_v and the
 //! profile, so it is factored once per degree by a thin SVD (no normal equations: the
 //! Bernstein tensor basis clipped to P_v is ill-conditioned, κ(A) ≈ 10⁴–10¹², and AᵀA would
-//! square that). Singular values below σ_max · max(n, (l+1)²) · ε are dropped (minimum-norm
+//! square that). Singular values below σ_max · max(RCOND, max(n, (l+1)²)·ε) are dropped (minimum-norm
 //! least-squares solution); the numerical rank and κ are reported per degree.
 //!
 //! The sample set of Sec. 5.2: a uniform grid on □_v = [−L, L]², L = cos(π/m_v), both ends
@@ -15,6 +15,12 @@ use super::bezier::bernstein_f64;
 use super::profile::Profile;
 use super::target::cubic_bernstein;
 use serde::Serialize;
+
+/// Relative truncation of the SVD: singular values ≤ RCOND·σ_max are dropped. With the
+/// rank-revealing floor max(n, k)·ε alone, high-degree fits (m ≥ 19) return minimum-norm
+/// solutions with control points ~10⁹ times the geometry (cancellation then costs ~10⁻⁷ in
+/// every evaluation of ψ_v); 10⁻⁹ bounds the amplification of the truncated problem.
+pub const RCOND: f64 = 1e-9;
 
 /// One sample of Sec. 5.2 (depends on the degree only).
 #[derive(Debug, Clone, Copy, Serialize)]
@@ -38,7 +44,7 @@ pub struct DegreeFitInfo {
     pub rows: usize,
     /// Unknowns per coordinate: (l+1)².
     pub unknowns: usize,
-    /// Numerical rank of A (singular values > σ_max · max(n, k) · ε).
+    /// Numerical rank of A (singular values > σ_max · max(RCOND, max(n, k) · ε)).
     pub rank: usize,
     /// κ(A) = σ_max/σ_min over all singular values (∞ if σ_min = 0).
     pub condition: f64,
@@ -124,7 +130,7 @@ pub fn factor_degree(m: u32, profile: Profile) -> DegreeFit {
     } else {
         0.0
     };
-    let tol = smax * (n.max(k) as f64) * f64::EPSILON;
+    let tol = smax * RCOND.max(n.max(k) as f64 * f64::EPSILON);
     let rank = sv.iter().filter(|&&s| s > tol).count();
     let smin_kept = sv
         .iter()

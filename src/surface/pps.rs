@@ -255,7 +255,10 @@ impl Pps {
     /// The control points of ψ_v (index j·(l+1)+k) and l.
     pub fn patch(&self, v: VertexId) -> (&[[f64; 3]], usize) {
         let i = v.idx();
-        (&self.cps[self.patch_off[i]..self.patch_off[i + 1]], self.patch_l[i])
+        (
+            &self.cps[self.patch_off[i]..self.patch_off[i + 1]],
+            self.patch_l[i],
+        )
     }
     /// Mutable control points (for planted-fault tests).
     pub fn patch_mut(&mut self, v: VertexId) -> &mut [[f64; 3]] {
@@ -351,10 +354,7 @@ impl Pps {
         let du = self.dc(c, u)?;
         // q = R_(v,u)(p): rotation by −2πi/m_v.
         let (co, si) = &dv.rot[i as usize];
-        let q = P2::new(
-            p.x.mul(co).add(&p.y.mul(si)),
-            p.y.mul(co).sub(&p.x.mul(si)),
-        );
+        let q = P2::new(p.x.mul(co).add(&p.y.mul(si)), p.y.mul(co).sub(&p.x.mul(si)));
         if q.x.sign() == Some(Ordering::Equal) && q.y.sign() == Some(Ordering::Equal) {
             return Ok(None);
         }

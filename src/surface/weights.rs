@@ -41,9 +41,7 @@ fn xi_open<S: SurfaceScalar>(k: &XiConsts<S>, t: &S) -> S {
     let prec = t.precision_bits();
     let one = S::from_i64(1, prec);
     let hh = t.sub(&k.h1).div(&k.h2.sub(&k.h1));
-    let s = one
-        .div(&one.sub(&hh).sqrt())
-        .sub(&one.div(&hh.sqrt()));
+    let s = one.div(&one.sub(&hh).sqrt()).sub(&one.div(&hh.sqrt()));
     let e = s.mul(&S::from_i64(2, prec)).exp();
     one.div(&one.add(&e))
 }
