@@ -515,7 +515,7 @@ fn c6_1_4_cover_holds_and_planted_fault_caught() {
 }
 
 #[test]
-fn c6_1_4_eval_lambda_mu_nu_are_real_barycentric() {
+fn d6_1_4_eval_lambda_mu_nu_are_real_barycentric() {
     let k = surface(&icosahedron());
     let pps = build(&k, Profile::Paper);
     // Corners give θ_v(0) of the corner vertices; non-integer coordinates are accepted.
