@@ -248,25 +248,25 @@ fn replay_case(which: &str) {
 /// {3, 6, 7, m_u} and labels all 0 or all m − 1, plus every label of every triple in {3, 5}.
 #[cfg_attr(kani, kani::proof)]
 #[test]
-fn c6_1_4_case1_replays_exactly() {
+fn c6_1_4_case1_proof_replays_exactly() {
     replay_case("C6.1.4-case1");
 }
 /// Case (2) q' ∈ C∩E_b.
 #[cfg_attr(kani, kani::proof)]
 #[test]
-fn c6_1_4_case2_replays_exactly_with_rotation_corrected() {
+fn c6_1_4_case2_proof_replays_exactly_with_rotation_corrected() {
     replay_case("C6.1.4-case2");
 }
 /// Case (3) q' ∈ D∩E_b.
 #[cfg_attr(kani, kani::proof)]
 #[test]
-fn c6_1_4_case3_replays_exactly_last_line_typo_found() {
+fn c6_1_4_case3_proof_replays_exactly_last_line_typo_found() {
     replay_case("C6.1.4-case3");
 }
 /// Case (4) q' ∈ C∩D∩E_b.
 #[cfg_attr(kani, kani::proof)]
 #[test]
-fn c6_1_4_case4_replays_exactly() {
+fn c6_1_4_case4_proof_replays_exactly() {
     replay_case("C6.1.4-case4");
 }
 

@@ -61,6 +61,8 @@ struct CheckOutput<'a> {
     extra_checks: &'a [CheckResult],
     #[serde(skip_serializing_if = "Option::is_none")]
     chapter4: Option<&'a Ch4Report>,
+    #[serde(skip_serializing_if = "<[CheckResult]>::is_empty")]
+    chapter5: &'a [CheckResult],
     seconds: f64,
 }
 
@@ -95,6 +97,7 @@ pub fn run(
     let v = validate(&raw);
     let mut extra = Vec::new();
     let mut ch4 = None;
+    let mut ch5: Vec<CheckResult> = Vec::new();
     if let Some(k) = &v.surface {
         if labels || spec.is_some() {
             extra.push(check_star_isomorphism(k, |a, b| k.s(a, b)));
@@ -111,6 +114,16 @@ pub fn run(
                 eprintln!("ppm: running the Chapter 4 checks ...");
             }
             ch4 = Some(run_chapter4(k, &opts));
+            if big {
+                eprintln!("ppm: running the Chapter 5 checks ...");
+            }
+            let sopts = crate::surface::checks::SurfaceCheckOptions {
+                seed: opts.seed,
+                samples_per_vertex: opts.samples.max(1),
+                max_vertices: opts.max_star_configs,
+                ..Default::default()
+            };
+            ch5 = crate::surface::checks::run_surface_checks(k, &sopts);
         }
     }
     if big {
@@ -127,6 +140,7 @@ pub fn run(
             validation: &v.report,
             extra_checks: &extra,
             chapter4: ch4.as_ref(),
+            chapter5: &ch5,
             seconds: secs,
         };
         match serde_json::to_string_pretty(&out) {
@@ -140,6 +154,10 @@ pub fn run(
         print!("{}", render_report(&v.report, &extra, secs));
         if let Some(r) = &ch4 {
             print!("{}", render_ch4(r));
+        }
+        if !ch5.is_empty() {
+            println!("Chapter 5 checks (surface, condition (C), eval of Sec. 6.1.4):");
+            print!("{}", crate::report::render_text(&ch5));
         }
     }
     if ok {

@@ -99,6 +99,30 @@ enum Command {
     /// Certified interval proofs of the Chapter 4 conditions for all degree configurations
     /// (issue 6).
     Certify(crate::certify::cli::CertifyArgs),
+    /// Sample the C^∞ surface M by midpoint subdivision through eval (Sec. 6.2) and write it
+    /// with per-vertex normals and curvatures (.obj, .off, .ply; PLY also with colours).
+    Sample {
+        file: PathBuf,
+        #[arg(long, default_value_t = 1)]
+        level: u32,
+        #[arg(short = 'o', long)]
+        output: PathBuf,
+        /// paper | authors-code
+        #[arg(long, default_value = "paper")]
+        profile: String,
+        #[arg(long)]
+        quiet: bool,
+    },
+    /// Evaluate one point of M: eval(σ, λ, μ, ν) of Sec. 6.1.4.
+    Eval {
+        file: PathBuf,
+        face: u32,
+        lambda: f64,
+        mu: f64,
+        nu: f64,
+        #[arg(long, default_value = "paper")]
+        profile: String,
+    },
 }
 
 /// Entry point of the `ppm` binary.
@@ -148,5 +172,20 @@ pub fn main() -> ExitCode {
             bits,
             json,
         } => check::eval_map(&file, u, w, [x, y], bits, json),
+        Command::Sample {
+            file,
+            level,
+            output,
+            profile,
+            quiet,
+        } => crate::surface::cli::run_sample(&file, level, &output, &profile, quiet),
+        Command::Eval {
+            file,
+            face,
+            lambda,
+            mu,
+            nu,
+            profile,
+        } => crate::surface::cli::run_eval(&file, face, [lambda, mu, nu], &profile),
     }
 }

@@ -1,0 +1,110 @@
+//! Def. 5.2.1: Bernstein polynomials over [−L, L] and tensor-product Bézier patches of
+//! bi-degree (l, l). Control point b_{j,k} is stored at index j·(l+1) + k (the paper's
+//! "j·l + k + 1" would make different (j, k) collide: a bi-degree (l, l) patch has (l+1)²
+//! control points, not l²).
+
+use super::scalar_ext::SurfaceScalar;
+
+/// Binomial coefficient C(n, k) as f64 (exact for n ≤ 56).
+pub fn binomial(n: usize, k: usize) -> f64 {
+    if k > n {
+        return 0.0;
+    }
+    let k = k.min(n - k);
+    let mut r = 1.0f64;
+    for i in 0..k {
+        r = r * (n - i) as f64 / (i + 1) as f64;
+    }
+    r.round()
+}
+
+/// Def. 5.2.1: B_i^l(t) = C(l,i) ((L−t)/2L)^{l−i} ((t+L)/2L)^i for i = 0..=l, in f64.
+pub fn bernstein_f64(l: usize, half: f64, t: f64, out: &mut [f64]) {
+    let u = (t + half) / (2.0 * half);
+    let w = (half - t) / (2.0 * half);
+    // out[i] = u^i, then multiply by w^{l-i} from the right end.
+    let mut pu = 1.0;
+    for o in out.iter_mut().take(l + 1) {
+        *o = pu;
+        pu *= u;
+    }
+    let mut pw = 1.0;
+    for i in (0..=l).rev() {
+        out[i] *= pw * binomial(l, i);
+        pw *= w;
+    }
+}
+
+/// Def. 5.2.1, generic: the l+1 Bernstein values at t.
+pub fn bernstein<S: SurfaceScalar>(l: usize, half: &S, t: &S) -> Vec<S> {
+    let prec = t.precision_bits();
+    let two_l = half.mul(&S::from_i64(2, prec));
+    let u = t.add(half).div(&two_l);
+    let w = half.sub(t).div(&two_l);
+    let mut pu = Vec::with_capacity(l + 1);
+    let mut acc = S::from_i64(1, prec);
+    for _ in 0..=l {
+        pu.push(acc.clone());
+        acc = acc.mul(&u);
+    }
+    let mut pw = S::from_i64(1, prec);
+    for i in (0..=l).rev() {
+        pu[i] = pu[i].mul(&pw).mul(&S::from_f64(binomial(l, i), prec));
+        pw = pw.mul(&w);
+    }
+    pu
+}
+
+/// ψ(x, y) = Σ_{j,k} b_{j,k} B_j^l(x) B_k^l(y) for control points `cp` (length (l+1)²).
+pub fn eval_patch<S: SurfaceScalar>(cp: &[[f64; 3]], l: usize, half: f64, x: &S, y: &S) -> [S; 3] {
+    let prec = x.precision_bits();
+    let h = S::from_f64(half, prec);
+    let bx = bernstein(l, &h, x);
+    let by = bernstein(l, &h, y);
+    let z = S::from_i64(0, prec);
+    let mut out = [z.clone(), z.clone(), z];
+    for (j, bxj) in bx.iter().enumerate() {
+        let mut row = [
+            S::from_i64(0, prec),
+            S::from_i64(0, prec),
+            S::from_i64(0, prec),
+        ];
+        for (k, byk) in by.iter().enumerate() {
+            let c = &cp[j * (l + 1) + k];
+            for d in 0..3 {
+                row[d] = row[d].add(&byk.mul(&S::from_f64(c[d], prec)));
+            }
+        }
+        for d in 0..3 {
+            out[d] = out[d].add(&row[d].mul(bxj));
+        }
+    }
+    out
+}
+
+/// Largest l for the stack-allocated f64 evaluator.
+pub const MAX_FAST_L: usize = 63;
+
+/// ψ(x, y) in f64 without allocation (l ≤ [`MAX_FAST_L`]).
+pub fn eval_patch_f64(cp: &[[f64; 3]], l: usize, half: f64, x: f64, y: f64) -> [f64; 3] {
+    let mut bx = [0.0f64; MAX_FAST_L + 1];
+    let mut by = [0.0f64; MAX_FAST_L + 1];
+    bernstein_f64(l, half, x, &mut bx);
+    bernstein_f64(l, half, y, &mut by);
+    let mut out = [0.0; 3];
+    for j in 0..=l {
+        let mut row = [0.0; 3];
+        let base = j * (l + 1);
+        for k in 0..=l {
+            let c = cp[base + k];
+            let b = by[k];
+            row[0] += b * c[0];
+            row[1] += b * c[1];
+            row[2] += b * c[2];
+        }
+        out[0] += bx[j] * row[0];
+        out[1] += bx[j] * row[1];
+        out[2] += bx[j] * row[2];
+    }
+    out
+}

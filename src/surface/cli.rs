@@ -1,0 +1,123 @@
+//! `ppm sample` and `ppm eval` (called from `crate::cli`).
+
+use super::output::{edge_use_counts, sample_surface, write_mesh_with_attributes};
+use super::pps::{Pps, PpsOptions};
+use super::profile::Profile;
+use super::target::PnTriangles;
+use crate::mesh::io::{read_mesh, ReadOptions};
+use crate::mesh::validate::validate;
+use crate::mesh::{FaceId, SimplicialSurface};
+use std::path::Path;
+use std::process::ExitCode;
+use std::time::Instant;
+
+fn load(file: &Path) -> Result<SimplicialSurface, ExitCode> {
+    let raw = read_mesh(file, &ReadOptions::default()).map_err(|e| {
+        eprintln!("error: {e}");
+        ExitCode::from(2)
+    })?;
+    validate(&raw).surface.ok_or_else(|| {
+        eprintln!(
+            "error: {} is not a simplicial surface (run `ppm check` for details)",
+            file.display()
+        );
+        ExitCode::from(1)
+    })
+}
+
+fn build(k: &SimplicialSurface, profile: &str) -> Result<Pps, ExitCode> {
+    let profile = Profile::parse(profile).ok_or_else(|| {
+        eprintln!("error: unknown profile {profile:?} (paper | authors-code)");
+        ExitCode::from(2)
+    })?;
+    let pn = PnTriangles::new(k);
+    Ok(Pps::build(
+        k,
+        &pn,
+        PpsOptions {
+            profile,
+            ..PpsOptions::default()
+        },
+    ))
+}
+
+/// `ppm sample FILE --level N -o OUT`: sample M by midpoint subdivision through eval (Sec. 6.2)
+/// and write it with normals and curvatures.
+pub fn run_sample(file: &Path, level: u32, out: &Path, profile: &str, quiet: bool) -> ExitCode {
+    let t0 = Instant::now();
+    let k = match load(file) {
+        Ok(k) => k,
+        Err(c) => return c,
+    };
+    let pps = match build(&k, profile) {
+        Ok(p) => p,
+        Err(c) => return c,
+    };
+    let t_build = t0.elapsed().as_secs_f64();
+    if !quiet {
+        eprintln!(
+            "ppm sample: {} vertices, {} faces; PPS ({}, S′ = {}) built in {t_build:.2} s",
+            k.num_vertices(),
+            k.num_faces(),
+            pps.options.profile.name(),
+            pps.target_name()
+        );
+        for f in pps.fit_info() {
+            eprintln!(
+                "  degree {:>2}: l = {:>2}, {} samples, {} unknowns, rank {}, κ = {:.2e}",
+                f.m, f.l, f.rows, f.unknowns, f.rank, f.condition
+            );
+        }
+    }
+    let m = match sample_surface(&pps, level, !quiet) {
+        Ok(m) => m,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(1);
+        }
+    };
+    let (two, other) = edge_use_counts(&m.faces);
+    if let Err(e) = write_mesh_with_attributes(out, &m) {
+        eprintln!("error: writing {}: {e}", out.display());
+        return ExitCode::from(2);
+    }
+    if !quiet {
+        eprintln!(
+            "ppm sample: wrote {} ({} vertices, {} faces; {} edges in two faces, {} otherwise) in {:.2} s",
+            out.display(),
+            m.positions.len(),
+            m.faces.len(),
+            two,
+            other,
+            t0.elapsed().as_secs_f64()
+        );
+    }
+    ExitCode::SUCCESS
+}
+
+/// `ppm eval FILE FACE λ μ ν`: one point of M (Sec. 6.1.4), with its chart, normal and
+/// curvatures.
+pub fn run_eval(file: &Path, face: u32, bary: [f64; 3], profile: &str) -> ExitCode {
+    let k = match load(file) {
+        Ok(k) => k,
+        Err(c) => return c,
+    };
+    let pps = match build(&k, profile) {
+        Ok(p) => p,
+        Err(c) => return c,
+    };
+    let cj = pps.consts(53);
+    match pps.eval_geometry(FaceId(face), bary, &cj) {
+        Ok((chart, v, g)) => {
+            println!(
+                "{{\"face\": {face}, \"bary\": {bary:?}, \"chart\": \"{chart:?}\", \"vertex\": {v}, \"point\": {:?}, \"normal\": {:?}, \"gaussian\": {}, \"mean\": {}}}",
+                g.point, g.normal, g.gaussian, g.mean
+            );
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(1)
+        }
+    }
+}

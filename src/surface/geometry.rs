@@ -1,0 +1,121 @@
+//! Differential geometry of M from the analytic derivatives of θ_v (via [`Jet`]): unit normal,
+//! Gaussian curvature K = (LN − M²)/(EG − F²) and mean curvature
+//! H = (EN − 2FM + GL)/(2(EG − F²)), with the normal n = θ_x × θ_y/‖θ_x × θ_y‖ (the chart
+//! orientation is the counterclockwise labelling s_v, i.e. the orientation of K).
+
+use super::consts::Consts;
+use super::eval::Chart;
+use super::jet::Jet;
+use super::pps::{Pps, SurfaceError};
+use crate::construction::P2;
+use crate::mesh::{FaceId, VertexId};
+
+/// Point, derivatives and curvature of θ_v at a point of its chart.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SurfacePoint {
+    pub point: [f64; 3],
+    /// θ_x, θ_y.
+    pub du: [f64; 3],
+    pub dv: [f64; 3],
+    /// Unit normal (zero if θ_x × θ_y vanishes: a singular point).
+    pub normal: [f64; 3],
+    /// ‖θ_x × θ_y‖ (regularity: rank-2 Jacobian iff > 0).
+    pub area_element: f64,
+    pub gaussian: f64,
+    pub mean: f64,
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// Normal and curvatures from an order-≥2 jet of a parametrization.
+pub fn from_jet(j: &[Jet<f64>; 3]) -> SurfacePoint {
+    let g = |a: usize, b: usize| -> [f64; 3] { std::array::from_fn(|d| j[d].derivative(a, b)) };
+    let (xu, xv) = (g(1, 0), g(0, 1));
+    let (xuu, xuv, xvv) = (g(2, 0), g(1, 1), g(0, 2));
+    let n = cross(xu, xv);
+    let len = dot(n, n).sqrt();
+    let normal = if len > 0.0 {
+        n.map(|x| x / len)
+    } else {
+        [0.0; 3]
+    };
+    let (e, f, gg) = (dot(xu, xu), dot(xu, xv), dot(xv, xv));
+    let (l, m, nn) = (dot(xuu, normal), dot(xuv, normal), dot(xvv, normal));
+    let det = e * gg - f * f;
+    let (gaussian, mean) = if det > 0.0 {
+        (
+            (l * nn - m * m) / det,
+            (e * nn - 2.0 * f * m + gg * l) / (2.0 * det),
+        )
+    } else {
+        (f64::NAN, f64::NAN)
+    };
+    SurfacePoint {
+        point: [*j[0].value(), *j[1].value(), *j[2].value()],
+        du: xu,
+        dv: xv,
+        normal,
+        area_element: len,
+        gaussian,
+        mean,
+    }
+}
+
+impl Pps {
+    /// The jet (derivatives to order 3) of θ_v at p.
+    pub fn theta_jet(
+        &self,
+        v: VertexId,
+        p: [f64; 2],
+        c: &Consts<Jet<f64>>,
+        only: Option<[VertexId; 2]>,
+    ) -> Result<[Jet<f64>; 3], SurfaceError> {
+        let (x, y) = Jet::variables(p[0], p[1]);
+        self.theta_only(v, &P2::new(x, y), c, only)
+    }
+
+    /// θ_v at p with normal and curvatures.
+    pub fn theta_geometry(
+        &self,
+        v: VertexId,
+        p: [f64; 2],
+        c: &Consts<Jet<f64>>,
+    ) -> Result<SurfacePoint, SurfaceError> {
+        Ok(from_jet(&self.theta_jet(v, p, c, None)?))
+    }
+
+    /// eval (Sec. 6.1.4) with normal and curvatures, from the chart eval chose.
+    pub fn eval_geometry(
+        &self,
+        f: FaceId,
+        bary: [f64; 3],
+        c: &Consts<Jet<f64>>,
+    ) -> Result<(Chart, VertexId, SurfacePoint), SurfaceError> {
+        let cf = self.consts_f64();
+        let qp = super::eval::canonical_point(&bary, cf);
+        let chart = self.choose_chart(&qp, cf);
+        let (v, q) = self.chart_point(f, chart, &qp, cf)?;
+        let only = match self.options.profile {
+            super::Profile::Paper => None,
+            super::Profile::AuthorsCode => {
+                let [u, w, x] = self.face(f)?;
+                Some(match chart {
+                    Chart::U => [w, x],
+                    Chart::X => [u, w],
+                    Chart::W => [u, x],
+                })
+            }
+        };
+        let j = self.theta_jet(v, [q.x, q.y], c, only)?;
+        Ok((chart, v, from_jet(&j)))
+    }
+}

@@ -1,0 +1,612 @@
+//! Defs. 5.4.1–5.4.2 and Eq. (5.1): the parametric pseudo-surface M = (G, (θ_v)_{v∈I}).
+//!
+//! θ_v(p) = Σ_u Γ_uv(p)·Ψ_uv(p) / Σ_u Γ_uv(p), with Γ_uv = γ_u∘φ_uv and Ψ_uv = ψ_u∘φ_uv on
+//! Ω_vu (0 elsewhere). Everything is generic over [`SurfaceScalar`]: `f64` (production),
+//! [`crate::construction::Mp`] (oracle), and [`super::jet::Jet`] (derivatives to order 3).
+//!
+//! Transition maps. θ_v needs φ_uv(p) for p ∈ Ω_vu. This module evaluates
+//! φ_uv = R_(u,v)⁻¹∘g_u⁻¹∘h∘g_v∘R_(v,u) (Def. 4.1.8) with per-degree constants, deciding
+//! p ∈ Ω_vu by: q = R_(v,u)(p) ≠ 0, |θ(q)| < min(π, 6π/m_v) (the branch on which g_v is
+//! injective) and g_v(q) in the canonical lens E. This is equivalent to the literal Def. 4.1.9
+//! (`PpmGluing::in_omega_uw`, which needs a round trip) — tested point by point in
+//! `tests/surface_theta.rs` — and ~10× cheaper. [`Membership::Lens`] drops the branch test: that
+//! is the Sec. 6.1.3 test, which differs for m_v ≥ 11 (SPEC `D4.1.9-lens`).
+//!
+//! Only the two spokes bounding p's sector of P_v can have p ∈ Ω_vu: g_v∘R_(v,u)(Ω_vu) ⊂ E and
+//! E lies in the open sector |β| < π/3 (the tangents from 0 to the circle D touch it at angle
+//! ±π/3), i.e. |θ(R_(v,u)p)| < 2π/m_v. With the literal membership only those two are tested.
+
+use super::consts::{Consts, DegreeConsts};
+use super::fit::{factor_degree, DegreeFit, DegreeFitInfo};
+use super::profile::Profile;
+use super::scalar_ext::SurfaceScalar;
+use super::target::TargetSurface;
+use super::weights::{xi_of_sq, XiConsts};
+use crate::construction::{MapError, P2};
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use rayon::prelude::*;
+use serde::Serialize;
+use std::cmp::Ordering;
+use std::sync::Arc;
+
+/// Errors of the parametrizations and of `eval`.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SurfaceError {
+    #[error("vertex {0} is not a vertex of K")]
+    NoSuchVertex(VertexId),
+    #[error("face {0} is not a face of K")]
+    NoSuchFace(FaceId),
+    #[error("[{0}, {1}] is not an edge of K")]
+    NoSuchEdge(VertexId, VertexId),
+    #[error("p = ({x}, {y}) is not in Ω_{v} (Def. 4.1.1)")]
+    NotInOmega { v: VertexId, x: f64, y: f64 },
+    #[error("no constants for degree {0} at this precision (build Consts with it)")]
+    MissingDegree(u32),
+    #[error("barycentric coordinates must be ≥ 0 and sum to 1, got {0:?}")]
+    BadBarycentric([f64; 3]),
+    #[error("Σ_u Γ_uv(p) = 0 at p in Ω_{0}: θ undefined")]
+    ZeroWeight(VertexId),
+    #[error("map: {0}")]
+    Map(#[from] MapError),
+}
+
+/// How p ∈ Ω_vu is decided (see the module doc).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+pub enum Membership {
+    /// Def. 4.1.9 (equivalent branch + lens test).
+    #[default]
+    Literal,
+    /// Sec. 6.1.3: the canonical-lens test alone, all neighbours tested.
+    Lens,
+}
+
+/// Planted faults, for the tests that show each check can fail.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum Fault {
+    /// Γ_uv of `vertex` multiplied by `factor` whenever it enters θ_v of *another* vertex v
+    /// (one control point's blending perturbed).
+    NeighbourWeight { vertex: VertexId, factor: f64 },
+    /// φ_uv (from `from`'s chart to `to`'s) followed by a rotation by `angle` about 0.
+    Transition {
+        from: VertexId,
+        to: VertexId,
+        angle: f64,
+    },
+    /// ω_uv computed with Σ Γ multiplied by `factor` (normalisation broken).
+    Denominator { factor: f64 },
+    /// ξ replaced by the C⁰ ramp (H₂ − t)/(H₂ − H₁) on (H₁, H₂).
+    RampWeight,
+    /// The support radius H₂ of γ_v multiplied by `factor`.
+    WeightRadius { factor: f64 },
+}
+
+/// Options of the construction.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
+pub struct PpsOptions {
+    pub profile: Profile,
+    pub membership: Membership,
+    pub fault: Option<Fault>,
+}
+
+/// One term of Eq. (5.1): u ∈ J_v(p), q = φ_uv(p), Γ_uv(p) = γ_u(q).
+#[derive(Debug, Clone)]
+pub struct Term<S> {
+    pub u: VertexId,
+    pub q: P2<S>,
+    pub gamma: S,
+}
+
+/// The parametric pseudo-surface built from K and S′ (Chapter 5).
+#[derive(Debug, Clone)]
+pub struct Pps {
+    pub options: PpsOptions,
+    target_name: String,
+    faces: Vec<[VertexId; 3]>,
+    positions: Vec<[f64; 3]>,
+    degree: Vec<u32>,
+    nbr_start: Vec<usize>,
+    /// nbr[nbr_start[v] + i] = s_v⁻¹(v′_i).
+    nbr: Vec<VertexId>,
+    /// back[nbr_start[v] + i] = s_u(v) for u = nbr[..].
+    back: Vec<u32>,
+    patch_off: Vec<usize>,
+    patch_l: Vec<usize>,
+    cps: Vec<[f64; 3]>,
+    half_by_degree: Vec<f64>,
+    fits: Vec<DegreeFitInfo>,
+    consts: Arc<Consts<f64>>,
+}
+
+impl Pps {
+    /// Build all ψ_v (Sec. 5.2) for K approximating S′ = `target`.
+    pub fn build(k: &SimplicialSurface, target: &dyn TargetSurface, options: PpsOptions) -> Pps {
+        let slots = k.vertex_slots();
+        let degree: Vec<u32> = (0..slots).map(|v| k.degree(VertexId(v as u32))).collect();
+        let mut nbr_start = vec![0usize; slots + 1];
+        for v in 0..slots {
+            nbr_start[v + 1] = nbr_start[v] + degree[v] as usize;
+        }
+        let mut nbr = vec![VertexId(0); nbr_start[slots]];
+        let mut back = vec![0u32; nbr_start[slots]];
+        for v in k.vertices() {
+            for (i, &h) in k.outgoing(v).iter().enumerate() {
+                let u = k.dest(h);
+                nbr[nbr_start[v.idx()] + i] = u;
+                back[nbr_start[v.idx()] + i] = k.label(k.twin(h));
+            }
+        }
+        let mut degs: Vec<u32> = k.vertices().map(|v| k.degree(v)).collect();
+        degs.sort_unstable();
+        degs.dedup();
+        let factored: Vec<DegreeFit> = degs
+            .par_iter()
+            .map(|&m| factor_degree(m, options.profile))
+            .collect();
+        let maxd = degs.last().copied().unwrap_or(3) as usize;
+        let mut by_degree: Vec<Option<&DegreeFit>> = vec![None; maxd + 1];
+        for f in &factored {
+            by_degree[f.info.m as usize] = Some(f);
+        }
+        let mut half_by_degree = vec![0.0; maxd + 1];
+        for f in &factored {
+            half_by_degree[f.info.m as usize] = f.info.half_side;
+        }
+        let mut patch_off = vec![0usize; slots + 1];
+        let mut patch_l = vec![0usize; slots];
+        for v in 0..slots {
+            let l = if degree[v] >= 3 {
+                options.profile.bezier_degree(degree[v])
+            } else {
+                0
+            };
+            patch_l[v] = l;
+            let size = if degree[v] >= 3 { (l + 1) * (l + 1) } else { 0 };
+            patch_off[v + 1] = patch_off[v] + size;
+        }
+        let mut cps = vec![[0.0; 3]; patch_off[slots]];
+        // Split the control-point array per vertex and fit in parallel.
+        let mut chunks: Vec<(usize, &mut [[f64; 3]])> = Vec::with_capacity(slots);
+        {
+            let mut rest: &mut [[f64; 3]] = &mut cps;
+            for v in 0..slots {
+                let (a, b) = rest.split_at_mut(patch_off[v + 1] - patch_off[v]);
+                chunks.push((v, a));
+                rest = b;
+            }
+        }
+        chunks.par_iter_mut().for_each(|(v, out)| {
+            let v = VertexId(*v as u32);
+            if out.is_empty() {
+                return;
+            }
+            if let Some(fit) = by_degree[degree[v.idx()] as usize] {
+                fit_vertex(k, target, v, fit, out);
+            }
+        });
+        Pps {
+            options,
+            target_name: target.name().to_string(),
+            faces: k.faces().map(|f| k.face(f)).collect(),
+            positions: (0..slots).map(|v| k.position(VertexId(v as u32))).collect(),
+            degree,
+            nbr_start,
+            nbr,
+            back,
+            patch_off,
+            patch_l,
+            cps,
+            half_by_degree,
+            fits: factored.into_iter().map(|f| f.info).collect(),
+            consts: Arc::new(Consts::new(degs.iter().copied(), 53)),
+        }
+    }
+
+    /// Replace the options (profile changes need a rebuild; this is for membership/fault).
+    pub fn with_options(mut self, membership: Membership, fault: Option<Fault>) -> Pps {
+        self.options.membership = membership;
+        self.options.fault = fault;
+        self
+    }
+
+    pub fn target_name(&self) -> &str {
+        &self.target_name
+    }
+    /// Per-degree least-squares summaries (rank, κ).
+    pub fn fit_info(&self) -> &[DegreeFitInfo] {
+        &self.fits
+    }
+    pub fn num_faces(&self) -> usize {
+        self.faces.len()
+    }
+    pub fn face(&self, f: FaceId) -> Result<[VertexId; 3], SurfaceError> {
+        self.faces
+            .get(f.idx())
+            .copied()
+            .ok_or(SurfaceError::NoSuchFace(f))
+    }
+    pub fn position(&self, v: VertexId) -> [f64; 3] {
+        self.positions[v.idx()]
+    }
+    pub fn contains(&self, v: VertexId) -> bool {
+        self.degree.get(v.idx()).is_some_and(|&m| m >= 3)
+    }
+    pub fn degree(&self, v: VertexId) -> u32 {
+        self.degree.get(v.idx()).copied().unwrap_or(0)
+    }
+    /// The vertices of K.
+    pub fn vertices(&self) -> impl Iterator<Item = VertexId> + '_ {
+        (0..self.degree.len())
+            .filter(|&v| self.degree[v] >= 3)
+            .map(|v| VertexId(v as u32))
+    }
+    /// s_v⁻¹(v′_i).
+    pub fn link(&self, v: VertexId, i: u32) -> VertexId {
+        self.nbr[self.nbr_start[v.idx()] + i as usize]
+    }
+    /// s_v(u), if u is in the link of v.
+    pub fn label(&self, v: VertexId, u: VertexId) -> Option<u32> {
+        let s = self.nbr_start.get(v.idx())?;
+        let e = self.nbr_start.get(v.idx() + 1)?;
+        self.nbr[*s..*e]
+            .iter()
+            .position(|&x| x == u)
+            .map(|i| i as u32)
+    }
+    /// The control points of ψ_v (index j·(l+1)+k) and l.
+    pub fn patch(&self, v: VertexId) -> (&[[f64; 3]], usize) {
+        let i = v.idx();
+        (
+            &self.cps[self.patch_off[i]..self.patch_off[i + 1]],
+            self.patch_l[i],
+        )
+    }
+    /// Mutable control points (for planted-fault tests).
+    pub fn patch_mut(&mut self, v: VertexId) -> &mut [[f64; 3]] {
+        let i = v.idx();
+        &mut self.cps[self.patch_off[i]..self.patch_off[i + 1]]
+    }
+    /// L = cos(π/m_v), the half side of □_v.
+    pub fn half_side(&self, v: VertexId) -> f64 {
+        self.half_by_degree[self.degree(v) as usize]
+    }
+    /// The f64 constants.
+    pub fn consts_f64(&self) -> &Consts<f64> {
+        &self.consts
+    }
+    /// Constants for another scalar at `prec` bits (all degrees of K).
+    pub fn consts<S: SurfaceScalar>(&self, prec: u32) -> Consts<S> {
+        let mut d: Vec<u32> = self.degree.iter().copied().filter(|&m| m >= 3).collect();
+        d.sort_unstable();
+        d.dedup();
+        Consts::new(d, prec)
+    }
+    /// Largest |control point coordinate| over all patches (scale for tolerances).
+    pub fn scale(&self) -> f64 {
+        self.cps
+            .iter()
+            .flat_map(|c| c.iter())
+            .fold(0.0f64, |a, &b| a.max(b.abs()))
+            .max(f64::MIN_POSITIVE)
+    }
+
+    fn dc<'c, S>(&self, c: &'c Consts<S>, v: VertexId) -> Result<&'c DegreeConsts<S>, SurfaceError>
+    where
+        S: SurfaceScalar,
+    {
+        let m = self.degree(v);
+        if m < 3 {
+            return Err(SurfaceError::NoSuchVertex(v));
+        }
+        c.degree(m).ok_or(SurfaceError::MissingDegree(m))
+    }
+
+    /// Def. 5.3.2 (with the planted faults): γ_v(p).
+    pub fn gamma<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+    ) -> Result<S, SurfaceError> {
+        let d = self.dc(c, v)?;
+        Ok(match self.options.fault {
+            Some(Fault::RampWeight) => ramp(&d.xi, &p.norm2()),
+            Some(Fault::WeightRadius { factor }) => {
+                let f = S::from_f64(factor, c.prec);
+                let k = XiConsts {
+                    h1: d.xi.h1.clone(),
+                    h2: d.xi.h2.mul(&f),
+                };
+                xi_of_sq(&k, &p.norm2())
+            }
+            _ => xi_of_sq(&d.xi, &p.norm2()),
+        })
+    }
+
+    /// Def. 5.2.1: ψ_v(p).
+    pub fn psi<S: SurfaceScalar>(&self, v: VertexId, p: &P2<S>) -> [S; 3] {
+        let (cp, l) = self.patch(v);
+        S::patch(cp, l, self.half_side(v), &p.x, &p.y)
+    }
+
+    /// p ∈ Ω_v (Def. 4.1.1).
+    pub fn in_omega<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+    ) -> Result<bool, SurfaceError> {
+        let d = self.dc(c, v)?;
+        Ok(p.norm2().lt(&d.radius.sqr()).is_true())
+    }
+
+    /// φ_uv(p) for u = s_v⁻¹(v′_i), if p ∈ Ω_vu (Defs. 4.1.8–4.1.10; see the module doc).
+    pub fn phi_label<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        i: u32,
+        p: &P2<S>,
+        c: &Consts<S>,
+    ) -> Result<Option<P2<S>>, SurfaceError> {
+        let dv = self.dc(c, v)?;
+        let slot = self.nbr_start[v.idx()] + i as usize;
+        let u = self.nbr[slot];
+        let j = self.back[slot];
+        let du = self.dc(c, u)?;
+        // q = R_(v,u)(p): rotation by −2πi/m_v.
+        let (co, si) = &dv.rot[i as usize];
+        let q = P2::new(p.x.mul(co).add(&p.y.mul(si)), p.y.mul(co).sub(&p.x.mul(si)));
+        if q.x.sign() == Some(Ordering::Equal) && q.y.sign() == Some(Ordering::Equal) {
+            return Ok(None);
+        }
+        let pol = crate::construction::maps::polar(&q)?;
+        if self.options.membership == Membership::Literal
+            && !pol.theta.abs().lt(&dv.branch).is_true()
+        {
+            return Ok(None);
+        }
+        // a = g_v(q).
+        let beta = pol.theta.mul(&dv.ang);
+        let rho = pol.r.mul(&dv.radial);
+        let a = P2::new(rho.mul(&beta.cos()), rho.mul(&beta.sin()));
+        // Canonical lens E: |a|² < 3/4, |a − (1,0)|² < 3/4, a ∉ {0, (1,0)}.
+        let one = S::from_i64(1, c.prec);
+        let b = P2::new(one.sub(&a.x), a.y.neg()); // h(a)
+        let in_lens = a.norm2().lt(&c.c_sq).is_true()
+            && b.norm2().lt(&c.c_sq).is_true()
+            && !(b.x.sign() == Some(Ordering::Equal) && b.y.sign() == Some(Ordering::Equal));
+        if !in_lens {
+            return Ok(None);
+        }
+        // g_u⁻¹(b), then R_(u,v)⁻¹: rotation by +2πj/m_u.
+        let pb = crate::construction::maps::polar(&b)?;
+        let th = pb.theta.mul(&du.ang_inv);
+        let r = pb.r.div(&du.radial);
+        let cq = P2::new(r.mul(&th.cos()), r.mul(&th.sin()));
+        let (co, si) = &du.rot[j as usize];
+        let mut d = P2::new(
+            cq.x.mul(co).sub(&cq.y.mul(si)),
+            cq.x.mul(si).add(&cq.y.mul(co)),
+        );
+        if let Some(Fault::Transition { from, to, angle }) = self.options.fault {
+            if from == v && to == u {
+                d = crate::construction::maps::rotate(&d, &S::from_f64(angle, c.prec));
+            }
+        }
+        Ok(Some(d))
+    }
+
+    /// φ_uv(p) if [v, u] is an edge and p ∈ Ω_vu; `Ok(None)` if p ∉ Ω_vu.
+    pub fn phi<S: SurfaceScalar>(
+        &self,
+        u: VertexId,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+    ) -> Result<Option<P2<S>>, SurfaceError> {
+        if u == v {
+            return Ok(if self.in_omega(v, p, c)? {
+                Some(p.clone())
+            } else {
+                None
+            });
+        }
+        let i = self.label(v, u).ok_or(SurfaceError::NoSuchEdge(v, u))?;
+        self.phi_label(v, i, p, c)
+    }
+
+    /// The labels i whose gluing domain Ω_v{s_v⁻¹(v′_i)} may contain p.
+    fn candidates(&self, v: VertexId, p: [f64; 2]) -> Vec<u32> {
+        let m = self.degree(v);
+        if self.options.membership == Membership::Lens {
+            return (0..m).collect();
+        }
+        if p == [0.0, 0.0] {
+            return vec![];
+        }
+        let mut a = p[1].atan2(p[0]);
+        if a < 0.0 {
+            a += 2.0 * std::f64::consts::PI;
+        }
+        let i0 = ((a * m as f64 / (2.0 * std::f64::consts::PI)).floor() as u32).min(m - 1);
+        vec![i0, (i0 + 1) % m]
+    }
+
+    /// J_v(p) with Γ_uv(p) and φ_uv(p) (Eq. 5.1, Def. 5.4.1). `only`: restrict the neighbours
+    /// (authors-code profile: the other two vertices of the evaluated triangle).
+    pub fn terms<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+        only: Option<[VertexId; 2]>,
+    ) -> Result<Vec<Term<S>>, SurfaceError> {
+        if !self.in_omega(v, p, c)? {
+            let [x, y] = p.to_f64();
+            return Err(SurfaceError::NotInOmega { v, x, y });
+        }
+        let mut out = Vec::with_capacity(3);
+        out.push(Term {
+            u: v,
+            q: p.clone(),
+            gamma: self.gamma(v, p, c)?,
+        });
+        for i in self.candidates(v, p.to_f64()) {
+            let u = self.link(v, i);
+            if let Some(o) = only {
+                if !o.contains(&u) {
+                    continue;
+                }
+            }
+            if let Some(q) = self.phi_label(v, i, p, c)? {
+                let mut g = self.gamma(u, &q, c)?;
+                if let Some(Fault::NeighbourWeight { vertex, factor }) = self.options.fault {
+                    if vertex == u {
+                        g = g.mul(&S::from_f64(factor, c.prec));
+                    }
+                }
+                out.push(Term { u, q, gamma: g });
+            }
+        }
+        Ok(out)
+    }
+
+    /// Eq. (5.1): the weights ω_uv(p), u ∈ J_v(p).
+    pub fn weights<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+    ) -> Result<Vec<(VertexId, S)>, SurfaceError> {
+        let t = self.terms(v, p, c, None)?;
+        let den = self.denominator(&t, c);
+        Ok(t.into_iter().map(|t| (t.u, t.gamma.div(&den))).collect())
+    }
+
+    fn denominator<S: SurfaceScalar>(&self, t: &[Term<S>], c: &Consts<S>) -> S {
+        let mut den = S::from_i64(0, c.prec);
+        for x in t {
+            den = den.add(&x.gamma);
+        }
+        if let Some(Fault::Denominator { factor }) = self.options.fault {
+            den = den.mul(&S::from_f64(factor, c.prec));
+        }
+        den
+    }
+
+    /// Def. 5.4.2: θ_v(p) = Σ_u Γ_uv(p)Ψ_uv(p) / Σ_u Γ_uv(p), p ∈ Ω_v.
+    pub fn theta<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+    ) -> Result<[S; 3], SurfaceError> {
+        self.theta_only(v, p, c, None)
+    }
+
+    /// θ_v with the neighbours restricted to `only` (authors-code eval).
+    pub fn theta_only<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+        only: Option<[VertexId; 2]>,
+    ) -> Result<[S; 3], SurfaceError> {
+        let t = self.terms(v, p, c, only)?;
+        let den = self.denominator(&t, c);
+        if den.sign() != Some(Ordering::Greater) {
+            return Err(SurfaceError::ZeroWeight(v));
+        }
+        let z = S::from_i64(0, c.prec);
+        let mut num = [z.clone(), z.clone(), z];
+        for x in &t {
+            if x.gamma.sign() == Some(Ordering::Equal) {
+                continue;
+            }
+            let psi = self.psi(x.u, &x.q);
+            for d in 0..3 {
+                num[d] = num[d].add(&x.gamma.mul(&psi[d]));
+            }
+        }
+        Ok(num.map(|n| n.div(&den)))
+    }
+
+    /// θ_v(p) in f64 with the built-in constants.
+    pub fn theta_f64(&self, v: VertexId, p: [f64; 2]) -> Result<[f64; 3], SurfaceError> {
+        self.theta(v, &P2::new(p[0], p[1]), &self.consts)
+    }
+}
+
+/// The planted C⁰ ramp replacing ξ (Fault::RampWeight).
+fn ramp<S: SurfaceScalar>(k: &XiConsts<S>, t2: &S) -> S {
+    let prec = t2.precision_bits();
+    if t2.le(&k.h1.sqr()).is_true() {
+        return S::from_i64(1, prec);
+    }
+    if k.h2.sqr().le(t2).is_true() {
+        return S::from_i64(0, prec);
+    }
+    k.h2.sub(&t2.sqrt()).div(&k.h2.sub(&k.h1))
+}
+
+/// Fit ψ_v: the control points minimising Σ‖ψ_v(q) − b_σ(r)‖² over the Sec. 5.2 samples.
+fn fit_vertex(
+    k: &SimplicialSurface,
+    target: &dyn TargetSurface,
+    v: VertexId,
+    fit: &DegreeFit,
+    out: &mut [[f64; 3]],
+) {
+    let m = k.degree(v);
+    let outgoing = k.outgoing(v);
+    let sector = |i: u32| -> (FaceId, [VertexId; 3]) {
+        let h = outgoing[i as usize];
+        let a = k.dest(h);
+        let b = k.dest(outgoing[((i + 1) % m) as usize]);
+        (k.face_of(h), [v, a, b])
+    };
+    let kk = out.len();
+    for o in out.iter_mut() {
+        *o = [0.0; 3];
+    }
+    // Fast path: cubic nets (PN triangles): X = Σ_i (A⁺W)_i · net_i.
+    let nets: Option<Vec<[[f64; 3]; 10]>> = (0..m)
+        .map(|i| {
+            let (f, c) = sector(i);
+            target.cubic_net(f, c)
+        })
+        .collect();
+    if let Some(nets) = nets {
+        let cols = m as usize * 10;
+        for (c, o) in out.iter_mut().enumerate() {
+            let row = &fit.net_map[c * cols..(c + 1) * cols];
+            let mut acc = [0.0; 3];
+            for (w, p) in row.iter().zip(nets.iter().flat_map(|n| n.iter())) {
+                acc[0] += w * p[0];
+                acc[1] += w * p[1];
+                acc[2] += w * p[2];
+            }
+            *o = acc;
+        }
+        return;
+    }
+    // General path: D = b_σ at the samples, X = A⁺ D.
+    let n = fit.samples.len();
+    let d: Vec<[f64; 3]> = fit
+        .samples
+        .iter()
+        .map(|s| {
+            let (f, c) = sector(s.sector);
+            target.eval(f, c, s.bary)
+        })
+        .collect();
+    for c in 0..kk {
+        let row = &fit.pinv[c * n..(c + 1) * n];
+        let mut acc = [0.0; 3];
+        for (w, p) in row.iter().zip(&d) {
+            acc[0] += w * p[0];
+            acc[1] += w * p[1];
+            acc[2] += w * p[2];
+        }
+        out[c] = acc;
+    }
+}

@@ -1,0 +1,34 @@
+//! The scalar types of Chapter 5: the Chapter 4 [`Scalar`] plus `exp`, which the weight
+//! function ξ of Def. 5.3.1 needs (1/(1 + e^{2s})).
+
+use crate::construction::{Mp, Scalar};
+
+/// A [`Scalar`] with the exponential: `f64`, [`Mp`], and the derivative jets
+/// [`super::jet::Jet`] over either.
+pub trait SurfaceScalar: Scalar {
+    fn exp(&self) -> Self;
+    /// ψ(x, y) of a bi-degree (l, l) patch (Def. 5.2.1); `f64` overrides this with an
+    /// allocation-free evaluator.
+    fn patch(cp: &[[f64; 3]], l: usize, half: f64, x: &Self, y: &Self) -> [Self; 3] {
+        super::bezier::eval_patch(cp, l, half, x, y)
+    }
+}
+
+impl SurfaceScalar for f64 {
+    fn exp(&self) -> Self {
+        f64::exp(*self)
+    }
+    fn patch(cp: &[[f64; 3]], l: usize, half: f64, x: &Self, y: &Self) -> [Self; 3] {
+        if l <= super::bezier::MAX_FAST_L {
+            super::bezier::eval_patch_f64(cp, l, half, *x, *y)
+        } else {
+            super::bezier::eval_patch(cp, l, half, x, y)
+        }
+    }
+}
+
+impl SurfaceScalar for Mp {
+    fn exp(&self) -> Self {
+        Mp(self.0.clone().exp())
+    }
+}

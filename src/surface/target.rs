@@ -1,0 +1,196 @@
+//! Sec. 5.1: the surface S′ = ∪_σ b_σ(Δ) that the parametrizations approximate.
+//!
+//! The construction only needs b_σ at barycentric coordinates of σ ([`TargetSurface::eval`]);
+//! S′ is pluggable (a Loop-surface evaluator, Sec. 6.2, implements the same trait). The one
+//! provided is the PN-triangle surface of Vlachos, Peters, Boyd and Mitchell (2001), the first
+//! choice of Sec. 6.2.
+//!
+//! Common affine frame Δ: barycentric coordinates. A point r = λa + νb + ηc of Δ = [a, b, c]
+//! is identified with (λ, ν, η), with a, b, c the images of the corners of σ in the order the
+//! caller names them; b_σ does not depend on that order.
+
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+
+/// Order of the 10 control points of a cubic Bézier triangle: exponents (i, j, k), i + j + k
+/// = 3, of the Bernstein polynomial 3!/(i!j!k!) λ^i ν^j η^k for corners (c₀, c₁, c₂).
+pub const CUBIC_ORDER: [[u8; 3]; 10] = [
+    [3, 0, 0],
+    [0, 3, 0],
+    [0, 0, 3],
+    [2, 1, 0],
+    [1, 2, 0],
+    [0, 2, 1],
+    [0, 1, 2],
+    [1, 0, 2],
+    [2, 0, 1],
+    [1, 1, 1],
+];
+
+/// The 10 cubic Bernstein polynomials at barycentric coordinates (λ, ν, η), in [`CUBIC_ORDER`].
+pub fn cubic_bernstein(b: [f64; 3]) -> [f64; 10] {
+    let [l, n, e] = b;
+    [
+        l * l * l,
+        n * n * n,
+        e * e * e,
+        3.0 * l * l * n,
+        3.0 * l * n * n,
+        3.0 * n * n * e,
+        3.0 * n * e * e,
+        3.0 * l * e * e,
+        3.0 * l * l * e,
+        6.0 * l * n * e,
+    ]
+}
+
+/// Sec. 5.1: S′ as a union of patches b_σ over the common frame Δ.
+pub trait TargetSurface: Sync {
+    /// Name for reports ("pn-triangles").
+    fn name(&self) -> &str;
+    /// b_σ(r) for σ = `f`, r with barycentric coordinates `bary` w.r.t. `corners`, which is
+    /// the corner list of `f` in any order.
+    fn eval(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> [f64; 3];
+    /// When b_σ is a cubic Bézier triangle: its control points w.r.t. `corners`, in
+    /// [`CUBIC_ORDER`]. The fit then uses the precomputed linear map from control nets to
+    /// shape-function control points (same result as sampling [`Self::eval`]).
+    fn cubic_net(&self, _f: FaceId, _corners: [VertexId; 3]) -> Option<[[f64; 3]; 10]> {
+        None
+    }
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+fn norm(a: [f64; 3]) -> f64 {
+    dot(a, a).sqrt()
+}
+
+/// PN triangles (Vlachos et al. 2001) from vertex normals.
+///
+/// **Normal rule**: the normal of vertex v is the angle-weighted average of the unit normals
+/// of the faces around v (Thürmer & Wüthrich 1998), face normals taken in the consistent
+/// orientation of K, normalised. (Angle weighting makes the normal independent of how a flat
+/// region is triangulated.) A vertex whose weighted sum vanishes gets the unweighted sum, and
+/// failing that (0, 0, 1); `degenerate_normals` counts them.
+///
+/// Control points for corners P₁, P₂, P₃ with normals N₁, N₂, N₃ (w_ij = (P_j − P_i)·N_i):
+/// b₃₀₀ = P₁, b₂₁₀ = (2P₁ + P₂ − w₁₂N₁)/3, …, E = mean of the six edge points,
+/// V = (P₁ + P₂ + P₃)/3, b₁₁₁ = E + (E − V)/2. Each boundary curve depends only on its
+/// edge's endpoints and normals, so S′ is C⁰ (Sec. 5.1 requires at least that).
+#[derive(Debug, Clone)]
+pub struct PnTriangles {
+    positions: Vec<[f64; 3]>,
+    normals: Vec<[f64; 3]>,
+    pub degenerate_normals: usize,
+}
+
+impl PnTriangles {
+    pub fn new(k: &SimplicialSurface) -> Self {
+        let n = k.vertex_slots();
+        let positions: Vec<[f64; 3]> = (0..n).map(|i| k.position(VertexId(i as u32))).collect();
+        let mut acc = vec![[0.0; 3]; n];
+        let mut plain = vec![[0.0; 3]; n];
+        for f in k.faces() {
+            let c = k.face(f);
+            let p = c.map(|v| positions[v.idx()]);
+            let nf = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+            let len = norm(nf);
+            if len == 0.0 || !len.is_finite() {
+                continue;
+            }
+            let nf = nf.map(|x| x / len);
+            for t in 0..3 {
+                let e1 = sub(p[(t + 1) % 3], p[t]);
+                let e2 = sub(p[(t + 2) % 3], p[t]);
+                let cosang = dot(e1, e2) / (norm(e1) * norm(e2));
+                let ang = cosang.clamp(-1.0, 1.0).acos();
+                let v = c[t].idx();
+                for d in 0..3 {
+                    acc[v][d] += ang * nf[d];
+                    plain[v][d] += nf[d];
+                }
+            }
+        }
+        let mut degenerate = 0;
+        let normals = (0..n)
+            .map(|v| {
+                for cand in [acc[v], plain[v]] {
+                    let l = norm(cand);
+                    if l > 0.0 && l.is_finite() {
+                        return cand.map(|x| x / l);
+                    }
+                }
+                if k.contains(VertexId(v as u32)) {
+                    degenerate += 1;
+                }
+                [0.0, 0.0, 1.0]
+            })
+            .collect();
+        PnTriangles {
+            positions,
+            normals,
+            degenerate_normals: degenerate,
+        }
+    }
+
+    /// The vertex normal of v (the rule above).
+    pub fn normal(&self, v: VertexId) -> [f64; 3] {
+        self.normals[v.idx()]
+    }
+
+    /// The PN control net for corners (c₀, c₁, c₂) in [`CUBIC_ORDER`].
+    pub fn net(&self, corners: [VertexId; 3]) -> [[f64; 3]; 10] {
+        let p = corners.map(|v| self.positions[v.idx()]);
+        let n = corners.map(|v| self.normals[v.idx()]);
+        let edge = |i: usize, j: usize| -> [f64; 3] {
+            let w = dot(sub(p[j], p[i]), n[i]);
+            std::array::from_fn(|d| (2.0 * p[i][d] + p[j][d] - w * n[i][d]) / 3.0)
+        };
+        let b210 = edge(0, 1);
+        let b120 = edge(1, 0);
+        let b021 = edge(1, 2);
+        let b012 = edge(2, 1);
+        let b102 = edge(2, 0);
+        let b201 = edge(0, 2);
+        let e: [f64; 3] = std::array::from_fn(|d| {
+            (b210[d] + b120[d] + b021[d] + b012[d] + b102[d] + b201[d]) / 6.0
+        });
+        let v: [f64; 3] = std::array::from_fn(|d| (p[0][d] + p[1][d] + p[2][d]) / 3.0);
+        let b111: [f64; 3] = std::array::from_fn(|d| e[d] + (e[d] - v[d]) / 2.0);
+        [p[0], p[1], p[2], b210, b120, b021, b012, b102, b201, b111]
+    }
+}
+
+/// Σ_j B_j(bary) c_j for a cubic net in [`CUBIC_ORDER`].
+pub fn eval_cubic(net: &[[f64; 3]; 10], bary: [f64; 3]) -> [f64; 3] {
+    let b = cubic_bernstein(bary);
+    let mut r = [0.0; 3];
+    for (bj, cj) in b.iter().zip(net) {
+        for d in 0..3 {
+            r[d] += bj * cj[d];
+        }
+    }
+    r
+}
+
+impl TargetSurface for PnTriangles {
+    fn name(&self) -> &str {
+        "pn-triangles"
+    }
+    fn eval(&self, _f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> [f64; 3] {
+        eval_cubic(&self.net(corners), bary)
+    }
+    fn cubic_net(&self, _f: FaceId, corners: [VertexId; 3]) -> Option<[[f64; 3]; 10]> {
+        Some(self.net(corners))
+    }
+}
