@@ -259,7 +259,10 @@ fn t4_2_1_random_surfaces_reach_degree_3_to_20_plus() {
         let deg = s.degrees();
         let max = deg.iter().copied().max().unwrap_or(0);
         let min = deg.iter().copied().filter(|&d| d > 0).min().unwrap_or(0);
-        assert!(max >= 20, "base {b}: max degree {max} after {kept} of 24 steps");
+        assert!(
+            max >= 20,
+            "base {b}: max degree {max} after {kept} of 24 steps"
+        );
         assert!(min >= 3, "base {b}: min degree {min}");
         if b == 0 {
             assert_eq!(min, 3, "the 1→3 splits leave degree-3 vertices");
