@@ -40,7 +40,10 @@ fuzz_target!(|inp: Input| {
         0 => generate::tetrahedron(),
         1 => generate::octahedron(),
         2 => generate::icosahedron(),
-        3 => generate::torus(3 + (inp.base as u32 / 5) % 3, 3 + (inp.base as u32 / 15) % 3),
+        3 => generate::torus(
+            3 + (inp.base as u32 / 5) % 3,
+            3 + (inp.base as u32 / 15) % 3,
+        ),
         _ => generate::torus(4, 4),
     };
     let ops: Vec<SurfaceOp> = inp
@@ -89,7 +92,9 @@ fuzz_target!(|inp: Input| {
             );
         }
         Expected::Reoriented => {
-            let surf = v.surface.expect("a reversed face is re-oriented, not rejected");
+            let surf = v
+                .surface
+                .expect("a reversed face is re-oriented, not rejected");
             let nf = surf.num_faces() as u64;
             assert!(surf.flipped_faces() == 1 || surf.flipped_faces() == nf - 1);
         }

@@ -29,7 +29,12 @@ fuzz_target!(|inp: Input| {
     }
     // Indices up to 255 with at most 64 vertices: out-of-range indices are part of the input
     // space on purpose.
-    let faces: Vec<[u32; 3]> = inp.faces.iter().take(256).map(|t| t.map(u32::from)).collect();
+    let faces: Vec<[u32; 3]> = inp
+        .faces
+        .iter()
+        .take(256)
+        .map(|t| t.map(u32::from))
+        .collect();
     let raw = RawMesh::from_arrays(positions, faces);
     pseudomanifold_fuzz::validate_checked(&raw);
 });

@@ -31,7 +31,10 @@ pub fn read_and_roundtrip(data: &[u8], format: MeshFormat) -> Option<RawMesh> {
             }
             Err(e) => {
                 let s = e.to_string();
-                assert!(s.starts_with("fuzz: "), "error does not name the input: {s}");
+                assert!(
+                    s.starts_with("fuzz: "),
+                    "error does not name the input: {s}"
+                );
             }
         }
     }
@@ -80,7 +83,11 @@ pub fn validate_checked(raw: &RawMesh) -> Option<SimplicialSurface> {
     let r = &v.report;
     assert_eq!(r.is_simplicial_surface, v.surface.is_some());
     if r.is_simplicial_surface {
-        assert!(r.error_classes.is_empty(), "surface with classes {:?}", r.error_classes);
+        assert!(
+            r.error_classes.is_empty(),
+            "surface with classes {:?}",
+            r.error_classes
+        );
     } else {
         assert!(
             r.checks.iter().any(|c| c.failed()),
@@ -95,13 +102,19 @@ pub fn validate_checked(raw: &RawMesh) -> Option<SimplicialSurface> {
         rev.faces.reverse();
         rev.face_origin.reverse();
         let vr = validate(&rev);
-        assert_eq!(vr.report.error_classes, r.error_classes, "face order changed classes");
+        assert_eq!(
+            vr.report.error_classes, r.error_classes,
+            "face order changed classes"
+        );
         let mut flipped = raw.clone();
         for t in &mut flipped.faces {
             t.swap(1, 2);
         }
         let vf = validate(&flipped);
-        assert_eq!(vf.report.error_classes, r.error_classes, "reorientation changed classes");
+        assert_eq!(
+            vf.report.error_classes, r.error_classes,
+            "reorientation changed classes"
+        );
     }
     let s = v.surface?;
     check_surface(&s);
@@ -122,7 +135,11 @@ pub fn check_surface(s: &SimplicialSurface) {
             assert_eq!(s.twin(s.twin(h)), h);
             assert_eq!(s.dest(s.twin(h)), v);
             let rot = s.twin(s.prev(h));
-            assert_eq!(s.label(rot), (i as u32 + 1) % m, "labels not counterclockwise");
+            assert_eq!(
+                s.label(rot),
+                (i as u32 + 1) % m,
+                "labels not counterclockwise"
+            );
         }
     }
     assert_eq!(deg_sum, 3 * s.num_faces() as u64);
@@ -154,7 +171,10 @@ pub fn edge_config(s: &SimplicialSurface, u: VertexId, w: VertexId) -> Option<Ed
 }
 
 /// Triangle configuration of face f (corners in the surface's orientation).
-pub fn triangle_config(s: &SimplicialSurface, f: pseudomanifold::mesh::FaceId) -> Option<TriangleConfig> {
+pub fn triangle_config(
+    s: &SimplicialSurface,
+    f: pseudomanifold::mesh::FaceId,
+) -> Option<TriangleConfig> {
     let [u, w, x] = s.face(f);
     TriangleConfig::ccw(
         s.degree(u),
