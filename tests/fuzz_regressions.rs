@@ -150,3 +150,58 @@ fn p4_1_1_random_surfaces_restricted_holds_for_high_degree() {
         }
     }
 }
+
+/// validate crash (metamorphic oracle "face order changes the classes"): two triangles sharing
+/// the edge v7–v35, one flat in z = 7/4, the other reaching down to z = −8.47e305. Shewchuk's
+/// adaptive predicates overflow there, and `SelfIntersection` was reported for one face order
+/// and not for the other. They meet exactly in their common edge (Def. 3.1.3(ii) holds); the
+/// predicates now switch to exact rationals outside [2⁻²⁰⁰, 2³⁰⁰]. Input minimised by
+/// `cargo fuzz tmin` (`tests/data/fuzz-regressions/validate-huge-coordinate-face-order.bin`).
+#[test]
+fn x_fuzz_validate_huge_coordinate_verdict_independent_of_face_order() {
+    let positions = vec![
+        [121.0 / 4.0, 0.25, -8.470353224121763e305],
+        [1.75, 1.75, 1.75],
+        [1.25, 5.075347906652035e-128, 1.75],
+        [1.75, -3.25, 1.75],
+    ];
+    for faces in [vec![[3, 2, 0], [1, 2, 3]], vec![[1, 2, 3], [3, 2, 0]]] {
+        let raw = pseudomanifold::mesh::RawMesh::from_arrays(positions.clone(), faces.clone());
+        let v = validate(&raw);
+        assert_eq!(
+            v.report.error_classes,
+            vec![ErrorClass::Boundary],
+            "faces {faces:?}"
+        );
+    }
+}
+
+/// The exact fallback agrees with the adaptive predicates where those are exact, and decides
+/// extreme inputs (overflow and underflow ranges) by exact rationals.
+#[test]
+fn x_fuzz_exact_orientation_fallback_agrees_with_adaptive_predicates() {
+    use pseudomanifold::mesh::validate::predicates::{orient3, orient3_exact};
+    use rand::{Rng, SeedableRng};
+    use std::cmp::Ordering;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(8);
+    for _ in 0..2000 {
+        let mut p = || [0; 3].map(|_| (rng.gen_range(-8i32..8) as f64) / 4.0);
+        let (a, b, c, d) = (p(), p(), p(), p());
+        assert_eq!(orient3(&a, &b, &c, &d), orient3_exact(&a, &b, &c, &d));
+    }
+    // Scaling every coordinate by 2^k keeps the sign; the adaptive predicate alone overflows
+    // (k = 340: products of three 2^340 values) or underflows (k = −340).
+    let (a, b, c, d) = (
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.0, 0.0, 0.0],
+    );
+    let base = orient3(&a, &b, &c, &d);
+    assert_ne!(base, Ordering::Equal);
+    for k in [-340, -200, 200, 340] {
+        let s = 2f64.powi(k);
+        let sc = |p: [f64; 3]| p.map(|x| x * s);
+        assert_eq!(orient3(&sc(a), &sc(b), &sc(c), &sc(d)), base, "2^{k}");
+    }
+}
