@@ -1,0 +1,49 @@
+#!/bin/sh
+# Builds the seed corpus fuzz/corpus/<target>/ from ../shared/meshes (good and bad), the
+# fixtures in tests/data (including tests/data/hostile) and the regression inputs in
+# tests/data/fuzz-regressions. Files over 64 KiB are cut to their first 16 KiB (a truncated
+# mesh is a useful bad input; a 3 MB seed would only slow every execution down).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(dirname "$here")
+shared=${SHARED_MESHES:-$root/../shared/meshes}
+[ -d "$shared" ] || shared=/work/shared/meshes
+c=$here/corpus
+add() { # target file
+    mkdir -p "$c/$1"
+    name=$(basename "$2")
+    size=$(wc -c < "$2")
+    if [ "$size" -gt 65536 ]; then head -c 16384 "$2" > "$c/$1/$name.head"; else cp "$2" "$c/$1/$name"; fi
+}
+add_sel() { # target selector-byte file : prepend one byte
+    mkdir -p "$c/$1"
+    name=$(basename "$3")
+    { printf "\\$(printf %03o "$2")"; head -c 16384 "$3"; } > "$c/$1/$2-$name"
+}
+for f in "$shared"/good/* "$shared"/bad/* "$root"/tests/data/*.* "$root"/tests/data/hostile/* "$root"/tests/data/fuzz-regressions/*; do
+    [ -f "$f" ] || continue
+    case "$f" in
+        *.off|*.OFF) add read_off "$f"; add_sel pipeline 0 "$f" ;;
+        *.obj) add read_obj "$f"; add_sel pipeline 1 "$f" ;;
+        *.ply) add read_ply_ascii "$f"; add_sel read_ply_binary 0 "$f"; add_sel pipeline 2 "$f" ;;
+        *) for t in read_off read_obj read_ply_ascii; do add $t "$f"; done ;;
+    esac
+done
+# Bodies of well-formed binary PLY files behind header 1 (4 float vertices, 4 faces).
+mkdir -p "$c/read_ply_binary" "$c/validate" "$c/surface_ops"
+python3 - "$c/read_ply_binary" <<'PY'
+import struct, sys, os
+d = sys.argv[1]
+verts = [(1,1,1),(1,-1,-1),(-1,1,-1),(-1,-1,1)]
+faces = [(0,1,2),(0,3,1),(0,2,3),(1,3,2)]
+le = b"".join(struct.pack("<fff", *v) for v in verts) + b"".join(struct.pack("<Biii", 3, *f) for f in faces)
+be = b"".join(struct.pack(">fff", *v) for v in verts) + b"".join(struct.pack(">Biii", 3, *f) for f in faces)
+open(os.path.join(d, "tet_le_body"), "wb").write(b"\x01" + le)
+open(os.path.join(d, "tet_be_body"), "wb").write(b"\x02" + be)
+PY
+# Structured targets start from a few random byte strings (libFuzzer grows them).
+for i in 1 2 3 4 5 6 7 8; do
+    head -c $((i * 64)) /dev/urandom > "$c/validate/rand$i"
+    head -c $((i * 32)) /dev/urandom > "$c/surface_ops/rand$i"
+done
+echo "seed corpus in $c:"; for d in "$c"/*; do echo "  $(basename "$d"): $(ls "$d" | wc -l) files"; done
