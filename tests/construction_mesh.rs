@@ -388,3 +388,110 @@ fn c4_2_nonadjacent_disjoint_on_mesh_stars_including_non_edge_triples() {
         "labels 0 and 3 are not adjacent"
     );
 }
+
+/// Minimal well-formedness check of an SVG document: one root `svg` element, every element
+/// closed, attribute values quoted, every coordinate a finite number.
+fn svg_well_formed(s: &str) -> Result<(), String> {
+    let mut stack: Vec<String> = Vec::new();
+    let mut rest = s;
+    let mut roots = 0;
+    while let Some(i) = rest.find('<') {
+        let j = rest[i..].find('>').ok_or("unterminated tag")? + i;
+        let tag = &rest[i + 1..j];
+        if let Some(name) = tag.strip_prefix('/') {
+            let open = stack.pop().ok_or("closing tag without opening")?;
+            if open != name.trim() {
+                return Err(format!("</{name}> closes <{open}>"));
+            }
+        } else if !tag.ends_with('/') {
+            let name = tag
+                .split_whitespace()
+                .next()
+                .ok_or("empty tag")?
+                .to_string();
+            if stack.is_empty() {
+                roots += 1;
+            }
+            stack.push(name);
+        }
+        if tag.matches('"').count() % 2 != 0 {
+            return Err(format!("unbalanced quotes in <{tag}>"));
+        }
+        rest = &rest[j + 1..];
+    }
+    if !stack.is_empty() || roots != 1 {
+        return Err(format!("unclosed {stack:?} or {roots} roots"));
+    }
+    if s.contains("NaN") || s.contains("inf") {
+        return Err("non-finite coordinate".into());
+    }
+    Ok(())
+}
+
+#[test]
+fn d4_1_9_figure_renders_valid_svg() {
+    use pseudomanifold::construction::figure::render_svg;
+    for (mu, mw) in [(5, 7), (3, 12), (6, 6)] {
+        let svg = render_svg(mu, mw).expect("valid degrees");
+        svg_well_formed(&svg).unwrap_or_else(|e| panic!("({mu},{mw}): {e}"));
+        assert!(svg.starts_with("<svg"));
+        // m_u gluing domains in u's copy plus Ω_wu, and grid lines in both panels.
+        assert!(svg.matches("<polygon").count() >= 2 + mu as usize + 1);
+        assert!(svg.matches("<polyline").count() > 2 * (mu + mw) as usize);
+    }
+    assert!(render_svg(2, 5).is_err(), "degree 2 is refused");
+    assert!(
+        svg_well_formed("<svg><g></svg>").is_err(),
+        "the checker can fail"
+    );
+    // The CLI writes it.
+    let out = std::env::temp_dir().join(format!("ppm-fig-{}.svg", std::process::id()));
+    let st = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
+        .args(["figure", "--degrees", "4,9", "-o"])
+        .arg(&out)
+        .status()
+        .expect("run");
+    assert!(st.success());
+    let svg = std::fs::read_to_string(&out).expect("written");
+    svg_well_formed(&svg).expect("well formed");
+    let _ = std::fs::remove_file(out);
+}
+
+#[test]
+fn c4_1_9_nonempty_iff_edge_on_the_icosahedron() {
+    // Ω_uw ≠ ∅ ⇔ u = w or [u, w] is an edge: K of Def. 4.1.10 as found by the samplers of
+    // the abstract view equals the diagonal plus the oriented edges of K.
+    use pseudomanifold::gluing::sampled::sampled_k;
+    let k = surface(&icosahedron());
+    let view = AbstractPpm::new(PpmGluing::new(&k), k.vertices().collect());
+    let mut found = sampled_k(&view, &SampleConfig { seed: 1, n: 8 });
+    found.sort_unstable();
+    let mut want: Vec<(u32, u32)> = k.vertices().map(|v| (v.0, v.0)).collect();
+    for (a, b) in k.edges() {
+        want.push((a.0, b.0));
+        want.push((b.0, a.0));
+    }
+    want.sort_unstable();
+    assert_eq!(found, want);
+}
+
+#[test]
+fn d3_4_1_3b_transition_perturbed_by_1e_9_is_caught_on_a_mesh() {
+    let k = surface(&icosahedron());
+    let (u, w) = k.edges().nth(3).expect("edge");
+    let g = PpmGluing::new(&k);
+    let view = AbstractPpm::new(g, k.vertices().collect()).with_phi_override(Box::new(
+        move |to, from, p| {
+            if (to, from) == (w, u) {
+                let r = g.phi::<f64>(to, from, &P2::new(p[0], p[1])).ok()?.to_f64();
+                Some([r[0], r[1] + 1e-9])
+            } else {
+                None
+            }
+        },
+    ));
+    let r = pseudomanifold::gluing::sampled::check_3b(&view, &SampleConfig { seed: 2, n: 16 });
+    assert_eq!(r.verdict, Verdict::Fails);
+    let t = r.tolerance.expect("tolerance printed");
+    assert!(t < 1e-12, "tolerance {t} must be far below the 1e-9 fault");
+}

@@ -77,6 +77,15 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Draw Ω_u, P_u, T_u, the gluing domains of all neighbours and the image of a grid under
+    /// φ_wu for an edge with degrees m_u, m_w (like Figs. 4.1–4.6), as SVG.
+    Figure {
+        /// `m_u,m_w`, e.g. `5,7`.
+        #[arg(long)]
+        degrees: String,
+        #[arg(short = 'o', long)]
+        output: PathBuf,
+    },
     /// Evaluate the transition map φ_wu(p) (Def. 4.1.10: from Ω_uw to Ω_wu) of a mesh in f64
     /// and in multi-precision, and print both with their difference (oracle use).
     EvalMap {
@@ -146,6 +155,30 @@ pub fn main() -> ExitCode {
             worst,
             json,
         } => oracle::run_diff(&mesh, &table, bits, tolerance, worst, json),
+        Command::Figure { degrees, output } => {
+            let parsed: Vec<Option<u32>> =
+                degrees.split(',').map(|x| x.trim().parse().ok()).collect();
+            let (mu, mw) = match parsed.as_slice() {
+                [Some(a), Some(b)] => (*a, *b),
+                _ => {
+                    eprintln!("error: --degrees {degrees}: expected m_u,m_w (integers ≥ 3)");
+                    return ExitCode::from(2);
+                }
+            };
+            match crate::construction::figure::render_svg(mu, mw) {
+                Ok(svg) => match std::fs::write(&output, svg) {
+                    Ok(()) => ExitCode::SUCCESS,
+                    Err(e) => {
+                        eprintln!("error: {}: {e}", output.display());
+                        ExitCode::from(2)
+                    }
+                },
+                Err(e) => {
+                    eprintln!("error: --degrees {degrees}: {e}");
+                    ExitCode::from(2)
+                }
+            }
+        }
         Command::Certify(a) => crate::certify::cli::run(a),
         Command::Gluing { file, json } => {
             match crate::gluing::cli::run_gluing_command(&file, json) {

@@ -9,6 +9,7 @@
 //! coverage line says so.
 
 use super::{aggregate, errata};
+use crate::construction::abstract_view::AbstractPpm;
 use crate::construction::checks::{
     check_star_overlaps, run_edge_checks, run_triangle_checks, StarConfig,
 };
@@ -248,6 +249,29 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
         })
         .collect();
     parts.extend(star_results);
+
+    // Def. 3.4.1 through the abstract interface (the general checkers, unchanged), on the
+    // closed star of one vertex of every degree present (Thm. 4.2.1).
+    let mut by_degree: BTreeMap<u32, VertexId> = BTreeMap::new();
+    for x in k.vertices() {
+        by_degree.entry(k.degree(x)).or_insert(x);
+    }
+    let cfg = crate::gluing::sampled::SampleConfig {
+        seed: opts.seed,
+        n: opts.samples.max(4),
+    };
+    let abstract_results: Vec<(String, CheckResult)> = by_degree
+        .par_iter()
+        .flat_map_iter(|(m, x)| {
+            let view = AbstractPpm::star_of(g, *x);
+            let ctx =
+                format!("closed star of vertex {x} (degree {m}), abstract Def. 3.4.1 checkers");
+            crate::gluing::sampled::check_all(&view, &cfg)
+                .into_iter()
+                .map(move |r| (ctx.clone(), r))
+        })
+        .collect();
+    parts.extend(abstract_results);
 
     let checks = aggregate(parts);
     let mut errata_confirmed = Vec::new();

@@ -7,6 +7,7 @@
 
 pub mod abstract_view;
 pub mod checks;
+pub mod figure;
 pub mod maps;
 pub mod mesh_gluing;
 pub mod sampling;
