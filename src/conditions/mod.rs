@@ -13,8 +13,8 @@ use crate::report::{CheckResult, Verdict, MAX_WITNESSES};
 pub fn aggregate(parts: impl IntoIterator<Item = (String, CheckResult)>) -> Vec<CheckResult> {
     let mut out: Vec<CheckResult> = Vec::new();
     for (ctx, r) in parts {
-        let slot = match out.iter_mut().position(|o| o.id == r.id) {
-            Some(i) => &mut out[i],
+        let idx = match out.iter().position(|o| o.id == r.id) {
+            Some(i) => i,
             None => {
                 let mut blank = CheckResult::new(r.id.clone(), generic_name(&r.name));
                 blank.verdict = r.verdict.clone();
@@ -23,9 +23,10 @@ pub fn aggregate(parts: impl IntoIterator<Item = (String, CheckResult)>) -> Vec<
                     blank.note = format!("first configuration: {}", r.note);
                 }
                 out.push(blank);
-                out.last_mut().expect("just pushed")
+                out.len() - 1
             }
         };
+        let slot = &mut out[idx];
         slot.examined += r.examined;
         slot.offenders += r.offenders;
         for w in r.witnesses {
