@@ -160,7 +160,7 @@ pub fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> ExitCod
     };
     let other = match read_mesh(surface, &ReadOptions::default()) {
         Ok(m) => m,
-        Err(e) => return fail(format!("{}: {e}", surface.display())),
+        Err(e) => return fail(e.to_string()),
     };
     let pps = match s.pps() {
         Ok(p) => p,
