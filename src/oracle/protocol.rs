@@ -43,53 +43,125 @@ pub enum MemberTest {
 #[serde(tag = "op", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Request {
     /// Load and validate a mesh; later queries refer to its vertex ids (file indices).
-    Load { path: PathBuf },
+    Load {
+        /// Mesh file (OFF, OBJ or PLY).
+        path: PathBuf,
+    },
     /// Set the MPFR precision of later answers (default 256).
-    SetPrecision { bits: u32 },
+    SetPrecision {
+        /// Precision in bits, 2..=[`MAX_BITS`].
+        bits: u32,
+    },
     /// m_v (Def. 4.1.1).
-    Degree { v: u32 },
+    Degree {
+        /// Vertex id (0-based file index).
+        v: u32,
+    },
     /// The labels s_v (Def. 4.1.4 / Sec. 6.1.2): `[[neighbour, i], …]` in label order.
-    Labels { v: u32 },
+    Labels {
+        /// Vertex id (0-based file index).
+        v: u32,
+    },
     /// p ∈ Ω_uw? (Def. 4.1.9 or the Sec. 6.1.3 lens test).
     Member {
+        /// First vertex of the edge [u, w]: the point lives in Ω_u.
         u: u32,
+        /// Second vertex of the edge [u, w].
         w: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
         p: [f64; 2],
+        /// The membership test (default: literal).
         #[serde(default)]
         test: MemberTest,
     },
     /// φ_wu(p), p ∈ Ω_uw (Def. 4.1.10: from Ω_uw to Ω_wu).
-    Phi { u: u32, w: u32, p: [f64; 2] },
+    Phi {
+        /// First vertex of the edge [u, w]: the point lives in Ω_u.
+        u: u32,
+        /// Second vertex of the edge [u, w].
+        w: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// g_v(p) (Def. 4.1.6).
-    G { v: u32, p: [f64; 2] },
+    G {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// g_v⁻¹(p) (Def. 4.1.6).
-    GInv { v: u32, p: [f64; 2] },
+    GInv {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// h(p) = (1 − x, −y) (Def. 4.1.7).
-    H { p: [f64; 2] },
+    H {
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// R_(u,w)(p): rotation by −2π·s_u(w)/m_u (Def. 4.1.8).
-    Rotate { u: u32, w: u32, p: [f64; 2] },
+    Rotate {
+        /// First vertex of the edge [u, w]: the point lives in Ω_u.
+        u: u32,
+        /// Second vertex of the edge [u, w].
+        w: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// Select the parameter profile of Chapter 5 (`"paper"` or `"authors-code"`, see
     /// [`Profile`]); the pseudo-surface is rebuilt on the next Chapter 5 request.
-    SetProfile { profile: String },
+    SetProfile {
+        /// `"paper"` or `"authors-code"`.
+        profile: String,
+    },
     /// γ_v(p) = ξ(‖p‖) (Defs. 5.3.1–5.3.2), as a one-element array; 0 outside Ω_v.
-    Gamma { v: u32, p: [f64; 2] },
+    Gamma {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// ψ_v(p), the shape function (Def. 5.2.1), for p in the square □_v = [−L, L]²,
     /// L = cos(π/m_v).
-    Psi { v: u32, p: [f64; 2] },
+    Psi {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// The control points of ψ_v (Sec. 5.2 least-squares fit; f64 only).
-    PsiControl { v: u32 },
+    PsiControl {
+        /// Vertex id (0-based file index).
+        v: u32,
+    },
     /// θ_v(p), p ∈ Ω_v (Def. 5.4.2, Eq. 5.1).
-    Theta { v: u32, p: [f64; 2] },
+    Theta {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// Every partial derivative ∂^{i+j}θ_v/∂x^i∂y^j at p ∈ Ω_v with i + j ≤ `order` (≤ 3,
     /// default 3), from order-3 jets (forward-mode differentiation, no finite differences).
     ThetaDerivatives {
+        /// Vertex id (0-based file index).
         v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
         p: [f64; 2],
+        /// Highest total order i + j, 0..=3 (default 3).
         #[serde(default)]
         order: Option<u32>,
     },
     /// eval(σ, λ, μ, ν) (Sec. 6.1.4): the point of M, with the chart and q ∈ Ω_vertex.
-    Eval { face: u32, bary: [f64; 3] },
+    Eval {
+        /// σ: face id (0-based file index).
+        face: u32,
+        /// (λ, μ, ν) at the corners of σ in file order (≥ 0, sum 1).
+        bary: [f64; 3],
+    },
 }
 
 /// Error kinds of the protocol (see [`OracleError::kind`] for the stable names).
