@@ -151,7 +151,7 @@ pub fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> ExitCod
             a.matching
         ));
     };
-    if a.tolerance.is_some_and(|t| !(t >= 0.0)) {
+    if a.tolerance.is_some_and(|t| t.is_nan() || t < 0.0) {
         return fail("--tolerance must be a non-negative number".into());
     }
     let mut s = match session(Some(mesh), a.bits, &a.profile) {
