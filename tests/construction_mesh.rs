@@ -246,6 +246,13 @@ fn l4_2_2_chapter4_on_every_good_corpus_mesh() {
 /// of its copy (a set with empty interior), sampler included.
 struct Collapsed<'a>(AbstractPpm<'a>);
 
+impl Collapsed<'_> {
+    /// The horizontal line through the centre of Ω_i's copy.
+    fn line(&self, i: u32) -> Option<f64> {
+        self.0.copy_centre(i).map(|c| c[1])
+    }
+}
+
 impl pseudomanifold::gluing::data::GluingData<2> for Collapsed<'_> {
     type S = f64;
     fn indices(&self) -> Vec<u32> {
@@ -255,7 +262,8 @@ impl pseudomanifold::gluing::data::GluingData<2> for Collapsed<'_> {
         self.0.in_p_domain(i, p)
     }
     fn in_gluing_domain(&self, i: u32, j: u32, p: &[f64; 2]) -> bool {
-        self.0.in_gluing_domain(i, j, p) && (i == j || i != self.0.indices()[0] || p[1] == 0.0)
+        self.0.in_gluing_domain(i, j, p)
+            && (i == j || i != self.0.indices()[0] || Some(p[1]) == self.line(i))
     }
     fn phi(&self, j: u32, i: u32, p: &[f64; 2]) -> Option<[f64; 2]> {
         self.0.phi(j, i, p)
@@ -279,8 +287,9 @@ impl pseudomanifold::gluing::data::GluingData<2> for Collapsed<'_> {
         if i == j || i != self.0.indices()[0] {
             return v;
         }
+        let y = self.line(i).unwrap_or(0.0);
         v.into_iter()
-            .map(|p| [p[0], 0.0])
+            .map(|p| [p[0], y])
             .filter(|p| self.in_gluing_domain(i, j, p))
             .collect()
     }

@@ -58,22 +58,44 @@ enum Command {
         /// MPFR precision of the reference values.
         #[arg(long, default_value_t = 256)]
         bits: u32,
+        /// Chapter 5 profile (paper | authors-code); also {"op":"set_profile",...}.
+        #[arg(long, default_value = "paper")]
+        profile: String,
     },
-    /// Compare another implementation's answers (JSON lines: a request plus "value") against
-    /// the reference; exit status 1 when a deviation exceeds --tolerance.
+    /// Compare another implementation's answers against the reference: a table of queries
+    /// (JSON lines: a request plus "value") or, with --surface, a sampled surface (OFF, PLY,
+    /// OBJ; Sec. 6.2); exit status 1 when a deviation exceeds --tolerance (docs/oracle.md).
     Diff {
         /// The mesh the answers refer to.
         #[arg(long)]
         mesh: PathBuf,
         /// The table of answers (JSON lines).
-        table: PathBuf,
-        #[arg(long, default_value_t = 1e-12)]
-        tolerance: f64,
+        #[arg(required_unless_present = "surface", conflicts_with = "surface")]
+        table: Option<PathBuf>,
+        /// The other implementation's sampled surface (OFF, PLY or OBJ), vertices in eval
+        /// order if known.
+        #[arg(long)]
+        surface: Option<PathBuf>,
+        /// Subdivision level of the sampled surface (default: inferred from its vertex count).
+        #[arg(long)]
+        level: Option<u32>,
+        /// order (vertex i ↔ reference vertex i, when the counts agree) | nearest (R*-tree).
+        #[arg(long = "match", default_value = "order")]
+        matching: String,
+        /// Chapter 5 profile of the reference surface: paper | authors-code.
+        #[arg(long, default_value = "paper")]
+        profile: String,
+        /// Largest accepted deviation (table default 1e-12; surface default: twice the
+        /// printed f64 bound).
+        #[arg(long)]
+        tolerance: Option<f64>,
+        /// MPFR precision of the reference / spot checks.
         #[arg(long, default_value_t = 256)]
         bits: u32,
         /// How many of the worst items to list.
         #[arg(long, default_value_t = 10)]
         worst: usize,
+        /// Print the report as JSON.
         #[arg(long)]
         json: bool,
     },
@@ -146,15 +168,44 @@ pub fn main() -> ExitCode {
             spec,
             ch4,
         } => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
-        Command::Oracle { mesh, bits } => oracle::run_oracle(mesh.as_deref(), bits),
+        Command::Oracle {
+            mesh,
+            bits,
+            profile,
+        } => oracle::run_oracle(mesh.as_deref(), bits, &profile),
         Command::Diff {
             mesh,
             table,
+            surface,
+            level,
+            matching,
+            profile,
             tolerance,
             bits,
             worst,
             json,
-        } => oracle::run_diff(&mesh, &table, bits, tolerance, worst, json),
+        } => match (table, surface) {
+            (_, Some(surface)) => oracle::run_diff_surface(
+                &mesh,
+                &surface,
+                &oracle::SurfaceArgs {
+                    level,
+                    matching,
+                    profile,
+                    tolerance,
+                    bits,
+                    worst,
+                    json,
+                },
+            ),
+            (Some(table), None) => {
+                oracle::run_diff(&mesh, &table, bits, tolerance.unwrap_or(1e-12), worst, json)
+            }
+            (None, None) => {
+                eprintln!("error: give a TABLE of answers or --surface FILE");
+                ExitCode::from(2)
+            }
+        },
         Command::Figure { degrees, output } => {
             let parsed: Vec<Option<u32>> =
                 degrees.split(',').map(|x| x.trim().parse().ok()).collect();

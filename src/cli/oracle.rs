@@ -1,6 +1,9 @@
-//! `ppm oracle` (JSON-lines protocol on stdin/stdout) and `ppm diff`.
+//! `ppm oracle` (JSON-lines protocol on stdin/stdout) and `ppm diff` (a table of answers, or
+//! with `--surface` a sampled surface). See `docs/oracle.md`.
 
+use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::oracle::diff::{diff_table, render};
+use crate::oracle::surface_diff::{diff_surface, render_surface, MatchMode, SurfaceDiffOptions};
 use crate::oracle::{Request, Session};
 use std::io::{BufRead, Read, Write};
 use std::path::Path;
@@ -9,10 +12,14 @@ use std::process::ExitCode;
 /// Longest accepted request line (bounded memory per request).
 const MAX_LINE: u64 = 1 << 20;
 
-fn session(mesh: Option<&Path>, bits: u32) -> Result<Session, String> {
+fn session(mesh: Option<&Path>, bits: u32, profile: &str) -> Result<Session, String> {
     let mut s = Session::new();
     s.handle(&Request::SetPrecision { bits })
         .map_err(|e| e.to_string())?;
+    s.handle(&Request::SetProfile {
+        profile: profile.to_string(),
+    })
+    .map_err(|e| e.to_string())?;
     if let Some(m) = mesh {
         s.handle(&Request::Load {
             path: m.to_path_buf(),
@@ -22,8 +29,11 @@ fn session(mesh: Option<&Path>, bits: u32) -> Result<Session, String> {
     Ok(s)
 }
 
-pub fn run_oracle(mesh: Option<&Path>, bits: u32) -> ExitCode {
-    let mut s = match session(mesh, bits) {
+/// `ppm oracle [--mesh M] [--bits B] [--profile P]`: answer one JSON request per stdin line
+/// with one JSON response per stdout line until end of input. Exit status 0, or 2 when the
+/// initial mesh/precision/profile is rejected or stdin cannot be read.
+pub fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str) -> ExitCode {
+    let mut s = match session(mesh, bits, profile) {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
@@ -69,6 +79,8 @@ pub fn run_oracle(mesh: Option<&Path>, bits: u32) -> ExitCode {
     }
 }
 
+/// `ppm diff --mesh M TABLE`: compare a JSON-lines table of answers against the reference.
+/// Exit status 0 within tolerance, 1 outside (or items not compared), 2 on a usage error.
 pub fn run_diff(
     mesh: &Path,
     table: &Path,
@@ -77,7 +89,7 @@ pub fn run_diff(
     worst: usize,
     json: bool,
 ) -> ExitCode {
-    let mut s = match session(Some(mesh), bits) {
+    let mut s = match session(Some(mesh), bits, "paper") {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
@@ -99,6 +111,80 @@ pub fn run_diff(
         );
     } else {
         print!("{}", render(&r));
+    }
+    if r.within_tolerance {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+/// The `ppm diff --surface` options (see `crate::cli`).
+pub struct SurfaceArgs {
+    /// Subdivision level (`None`: inferred from the vertex count).
+    pub level: Option<u32>,
+    /// `order` | `nearest`.
+    pub matching: String,
+    /// Chapter 5 profile name.
+    pub profile: String,
+    /// Largest accepted deviation (`None`: twice the f64 bound).
+    pub tolerance: Option<f64>,
+    /// MPFR precision of the spot checks.
+    pub bits: u32,
+    /// How many worst items to list.
+    pub worst: usize,
+    /// JSON output.
+    pub json: bool,
+}
+
+/// `ppm diff --surface OTHER --mesh M [--level N]`: compare a sampled surface against the
+/// reference sampling (Sec. 6.2). Exit status 0 within tolerance, 1 outside, 2 on a usage
+/// error (unreadable files, unknown level or option).
+pub fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> ExitCode {
+    let fail = |msg: String| {
+        eprintln!("error: {msg}");
+        ExitCode::from(2)
+    };
+    let Some(matching) = MatchMode::parse(&a.matching) else {
+        return fail(format!(
+            "--match {:?}: expected order or nearest",
+            a.matching
+        ));
+    };
+    if a.tolerance.is_some_and(|t| t.is_nan() || t < 0.0) {
+        return fail("--tolerance must be a non-negative number".into());
+    }
+    let mut s = match session(Some(mesh), a.bits, &a.profile) {
+        Ok(s) => s,
+        Err(e) => return fail(e),
+    };
+    let other = match read_mesh(surface, &ReadOptions::default()) {
+        Ok(m) => m,
+        Err(e) => return fail(e.to_string()),
+    };
+    let pps = match s.pps() {
+        Ok(p) => p,
+        Err(e) => return fail(e.to_string()),
+    };
+    let opts = SurfaceDiffOptions {
+        level: a.level,
+        tolerance: a.tolerance,
+        matching,
+        worst: a.worst,
+        bits: a.bits,
+        ..SurfaceDiffOptions::default()
+    };
+    let r = match diff_surface(pps, &other.positions, Some(&other.faces), &opts) {
+        Ok(r) => r,
+        Err(e) => return fail(e.to_string()),
+    };
+    if a.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&r).unwrap_or_else(|_| "{}".into())
+        );
+    } else {
+        print!("{}", render_surface(&r));
     }
     if r.within_tolerance {
         ExitCode::SUCCESS

@@ -3,7 +3,7 @@
 //!
 //! Sec. 4.1 puts every p-domain Ω_v in its own copy of R² ("we assume that Ω_u and Ω_w belong
 //! to distinct copies of R²"). The abstract interface has one R², so the copies are made
-//! literal: Ω_v is presented translated by `COPY_SPACING · (rank of v, 0)`, and every map
+//! literal: Ω_v is presented translated to its own cell of a square grid (spacing `COPY_SPACING`), and every map
 //! un-translates, evaluates, and translates into the target's copy. The abstract checkers'
 //! loops are over all pairs and triples of I, so a view is taken on a subset of vertices (the
 //! restriction of gluing data to a subset of I is again gluing data).
@@ -16,8 +16,10 @@ use crate::mesh::VertexId;
 use rand::RngCore;
 use rand_chacha::ChaCha8Rng;
 
-/// Distance between the centres of consecutive copies of R² (p-domains have radius < 1).
-pub const COPY_SPACING: f64 = 4.0;
+/// Distance between the centres of neighbouring copies of R² (p-domains have radius < 1, so
+/// copies 2.1 apart are disjoint). Copies are laid out on a square grid around the origin to
+/// keep coordinates small: the sampled checkers' tolerances scale with |value|.
+pub const COPY_SPACING: f64 = 2.1;
 
 /// A transition map to use instead of the paper's (for planted-fault tests):
 /// `(w, u, p) ↦ Some(φ_wu(p))` in local (un-translated) coordinates, or `None` for the paper's.
@@ -60,13 +62,27 @@ impl<'k> AbstractPpm<'k> {
     fn rank(&self, i: Idx) -> Option<usize> {
         self.ids.iter().position(|v| v.0 == i)
     }
+    /// Centre of the copy of R² holding Ω_i (where Ω_i's local origin is drawn).
+    pub fn copy_centre(&self, i: Idx) -> Option<[f64; 2]> {
+        self.offset(i)
+    }
+
+    fn offset(&self, i: Idx) -> Option<[f64; 2]> {
+        let r = self.rank(i)?;
+        let side = (self.ids.len() as f64).sqrt().ceil().max(1.0) as usize;
+        let half = (side / 2) as f64;
+        Some([
+            COPY_SPACING * ((r % side) as f64 - half),
+            COPY_SPACING * ((r / side) as f64 - half),
+        ])
+    }
     fn to_local(&self, i: Idx, p: &Point<f64, 2>) -> Option<[f64; 2]> {
-        let r = self.rank(i)? as f64;
-        Some([p[0] - COPY_SPACING * r, p[1]])
+        let o = self.offset(i)?;
+        Some([p[0] - o[0], p[1] - o[1]])
     }
     fn to_global(&self, i: Idx, p: [f64; 2]) -> Option<Point<f64, 2>> {
-        let r = self.rank(i)? as f64;
-        Some([p[0] + COPY_SPACING * r, p[1]])
+        let o = self.offset(i)?;
+        Some([p[0] + o[0], p[1] + o[1]])
     }
     fn edge(&self, i: Idx, j: Idx) -> Option<EdgeConfig> {
         match self.g.pair(VertexId(i), VertexId(j)).ok()? {
@@ -196,5 +212,23 @@ impl GluingData<2> for AbstractPpm<'_> {
 
     fn scale(&self) -> f64 {
         1.0
+    }
+
+    /// φ_wu = R⁻¹∘g_w⁻¹∘h∘g_u∘R scales angles by m_u/6 (g_u) and 6/m_w (g_w⁻¹); rotations and
+    /// h are isometries and the radial factors are ≤ 2. An angular rounding error is thus
+    /// amplified by at most a = max(1, m_max/6)·max(1, 6/m_min) per transition, and by a² for
+    /// the compositions the cocycle checks compare (also the factor the Chapter 4 checks use,
+    /// `construction::checks`).
+    fn amplification(&self) -> f64 {
+        let degrees: Vec<f64> = self
+            .ids
+            .iter()
+            .filter_map(|v| self.g.degree(*v).ok())
+            .map(f64::from)
+            .collect();
+        let hi = degrees.iter().copied().fold(6.0, f64::max);
+        let lo = degrees.iter().copied().fold(6.0, f64::min);
+        let a = (hi / 6.0).max(1.0) * (6.0 / lo).max(1.0);
+        a * a
     }
 }

@@ -61,6 +61,15 @@ pub trait GluingData<const N: usize> {
     fn scale(&self) -> f64 {
         1.0
     }
+
+    /// Error amplification of the transition maps: a bound on how much a composition of two
+    /// transitions (φ_ij∘φ_ji, φ_kj∘φ_ji) magnifies the rounding error of its input. The
+    /// equation checks of 3(a)–3(c) multiply their tolerance 64·ε·|value| by it. 1 for maps
+    /// that are (near-)isometries, as the 1-D affine data with |a| ≤ 1 and the stereographic
+    /// charts away from the poles.
+    fn amplification(&self) -> f64 {
+        1.0
+    }
 }
 
 /// Euclidean distance, in f64.

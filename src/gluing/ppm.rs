@@ -222,7 +222,7 @@ where
 }
 
 /// Prop. 3.5.1: the θ_i induce Θ : M_G → M with θ_i = Θ ∘ τ_i, i.e. θ is constant on every
-/// class [x] of M_G. Checked on the classes of a grid sample of exact 1-D data; a class with two
+/// class \[x\] of M_G. Checked on the classes of a grid sample of exact 1-D data; a class with two
 /// different θ-values is a witness that Θ is not well defined (which (C) excludes).
 pub fn check_p3_5_1(g: &Exact1d, theta: impl Fn(Idx, f64) -> Vec<f64>, m: u32) -> CheckResult {
     let mut r = CheckResult::new("P3.5.1", "Θ well defined on M_G, θ_i = Θ ∘ τ_i")

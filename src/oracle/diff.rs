@@ -1,7 +1,8 @@
 //! `ppm diff`: compare another implementation's answers against the reference.
 //!
 //! Input: JSON lines, each a protocol request (see [`super::Request`]) plus the other
-//! implementation's `"value"` (a number array, or a boolean for `member`). Each line is
+//! implementation's `"value"` (a number, a number array — nested arrays such as
+//! `psi_control`'s are flattened — or a boolean for `member`). Each line is
 //! answered by the reference at the session's precision and the deviation |value − reference|
 //! is measured in MPFR. The report gives per-op statistics (max, mean, percentiles), the worst
 //! items with their arguments, and whether every deviation is within the tolerance.
@@ -16,7 +17,9 @@ use serde_json::Value;
 pub struct Item {
     /// 1-based line of the input.
     pub line: usize,
+    /// The request of the line (without `"value"`).
     pub request: Value,
+    /// |value − reference| (Euclidean, in MPFR); ∞ for an item not compared.
     pub deviation: f64,
     /// Set when the reference or the input could not be evaluated/compared.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -26,15 +29,22 @@ pub struct Item {
 /// Summary statistics of the deviations.
 #[derive(Debug, Clone, Serialize, Default)]
 pub struct Stats {
+    /// Number of deviations.
     pub count: usize,
+    /// Largest deviation.
     pub max: f64,
+    /// Mean deviation.
     pub mean: f64,
+    /// Median (nearest-rank).
     pub p50: f64,
+    /// 90th percentile (nearest-rank).
     pub p90: f64,
+    /// 99th percentile (nearest-rank).
     pub p99: f64,
 }
 
 impl Stats {
+    /// Statistics of a list of deviations (all zero for an empty list).
     pub fn of(mut d: Vec<f64>) -> Stats {
         if d.is_empty() {
             return Stats::default();
@@ -55,13 +65,17 @@ impl Stats {
 /// The diff report.
 #[derive(Debug, Clone, Serialize)]
 pub struct DiffReport {
+    /// MPFR precision of the reference.
     pub mp_bits: u32,
+    /// The tolerance applied.
     pub tolerance: f64,
+    /// Statistics of the compared items' deviations.
     pub stats: Stats,
     /// Items that could not be compared (malformed line, reference error, missing value).
     pub problems: Vec<Item>,
     /// The worst items (largest deviation first).
     pub worst: Vec<Item>,
+    /// Every item compared and within the tolerance.
     pub within_tolerance: bool,
 }
 
@@ -148,10 +162,11 @@ fn compare(theirs: &Value, reference: Option<&Value>, bits: u32) -> Result<f64, 
     if let (Some(a), Some(b)) = (theirs.as_bool(), reference.as_bool()) {
         return Ok(if a == b { 0.0 } else { 1.0 });
     }
-    let ours = reference
-        .as_array()
-        .ok_or("reference value is not an array")?;
-    let th = theirs.as_array().ok_or("value is not an array")?;
+    let ours = flatten(reference);
+    let th = flatten(theirs);
+    if ours.is_empty() {
+        return Err("reference value is not numerical".into());
+    }
     if th.len() != ours.len() {
         return Err(format!(
             "value has {} components, expected {}",
@@ -160,14 +175,15 @@ fn compare(theirs: &Value, reference: Option<&Value>, bits: u32) -> Result<f64, 
         ));
     }
     let mut s = 0.0f64;
-    for (a, b) in th.iter().zip(ours) {
+    for (a, b) in th.iter().zip(&ours) {
         let a = a.as_f64().ok_or("value component is not a number")?;
-        let b = b
-            .as_str()
-            .ok_or("reference component is not a decimal string")?;
-        let rb = rug::Float::parse(b)
-            .map(|p| Mp(rug::Float::with_val(bits, p)))
-            .map_err(|e| e.to_string())?;
+        let rb = match (b.as_str(), b.as_f64()) {
+            (Some(b), _) => rug::Float::parse(b)
+                .map(|p| Mp(rug::Float::with_val(bits, p)))
+                .map_err(|e| e.to_string())?,
+            (None, Some(x)) => Mp::from_f64(x, bits),
+            _ => return Err("reference component is not a number".into()),
+        };
         let d = rb.sub(&Mp::from_f64(a, bits)).to_f64();
         s += d * d;
     }
@@ -210,4 +226,12 @@ pub fn render(r: &DiffReport) -> String {
         }
     );
     s
+}
+
+/// The leaves of a value (nested arrays flattened in order; a scalar is a one-element list).
+fn flatten(v: &Value) -> Vec<&Value> {
+    match v {
+        Value::Array(a) => a.iter().flat_map(flatten).collect(),
+        other => vec![other],
+    }
 }

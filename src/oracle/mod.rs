@@ -5,9 +5,12 @@
 //! * [`Session`] holds a validated mesh and answers [`Request`]s (the `ppm oracle` JSON-lines
 //!   protocol, documented in `docs/oracle.md`).
 //! * [`diff`] compares another implementation's answers against the reference (`ppm diff`).
+//! * [`surface_diff`] compares another implementation's sampled surface against the reference
+//!   sampling of Sec. 6.2 (`ppm diff --surface`).
 
 pub mod diff;
 pub mod protocol;
+pub mod surface_diff;
 
 pub use protocol::{OracleError, Request, Response, Session};
 

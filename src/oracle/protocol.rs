@@ -2,13 +2,23 @@
 //! on stdout. Every numerical answer carries the MPFR value (decimal strings, all digits), the
 //! f64 value, the MPFR precision and |f64 − MPFR|. Bad requests get a typed error, never a
 //! crash. See `docs/oracle.md` for the full list of operations with a worked example.
+//!
+//! Chapter 4 operations (`degree` … `rotate`) work on the validated mesh alone. Chapter 5
+//! operations (`gamma`, `psi`, `psi_control`, `theta`, `theta_derivatives`, `eval`) need the
+//! parametric pseudo-surface [`Pps`] (Defs. 5.4.1–5.4.2), which the session builds lazily on
+//! first use with the current profile (`set_profile`, default `paper`) and S′ = the PN
+//! triangles of the mesh (Sec. 5.1). The shape-function control points are fitted in f64
+//! (Sec. 5.2); the MPFR answers evaluate the construction with *those* control points, so the
+//! difference measures the rounding of the f64 evaluation, not of the fit.
 
 use super::{mp_decimal, mp_distance};
 use crate::construction::maps::{g_v, g_v_inv, h};
-use crate::construction::{GluingError, MapError, Mp, Paper, Ppm, PpmGluing, Trit, P2};
+use crate::construction::{GluingError, MapError, Mp, Paper, Ppm, PpmGluing, Scalar, Trit, P2};
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::mesh::validate::validate;
-use crate::mesh::{SimplicialSurface, VertexId};
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::surface::jet::{Jet, MONOMIALS};
+use crate::surface::{Consts, PnTriangles, Pps, PpsOptions, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -33,50 +43,155 @@ pub enum MemberTest {
 #[serde(tag = "op", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Request {
     /// Load and validate a mesh; later queries refer to its vertex ids (file indices).
-    Load { path: PathBuf },
+    Load {
+        /// Mesh file (OFF, OBJ or PLY).
+        path: PathBuf,
+    },
     /// Set the MPFR precision of later answers (default 256).
-    SetPrecision { bits: u32 },
+    SetPrecision {
+        /// Precision in bits, 2..=[`MAX_BITS`].
+        bits: u32,
+    },
     /// m_v (Def. 4.1.1).
-    Degree { v: u32 },
+    Degree {
+        /// Vertex id (0-based file index).
+        v: u32,
+    },
     /// The labels s_v (Def. 4.1.4 / Sec. 6.1.2): `[[neighbour, i], …]` in label order.
-    Labels { v: u32 },
+    Labels {
+        /// Vertex id (0-based file index).
+        v: u32,
+    },
     /// p ∈ Ω_uw? (Def. 4.1.9 or the Sec. 6.1.3 lens test).
     Member {
+        /// First vertex of the edge [u, w]: the point lives in Ω_u.
         u: u32,
+        /// Second vertex of the edge [u, w].
         w: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
         p: [f64; 2],
+        /// The membership test (default: literal).
         #[serde(default)]
         test: MemberTest,
     },
     /// φ_wu(p), p ∈ Ω_uw (Def. 4.1.10: from Ω_uw to Ω_wu).
-    Phi { u: u32, w: u32, p: [f64; 2] },
+    Phi {
+        /// First vertex of the edge [u, w]: the point lives in Ω_u.
+        u: u32,
+        /// Second vertex of the edge [u, w].
+        w: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// g_v(p) (Def. 4.1.6).
-    G { v: u32, p: [f64; 2] },
+    G {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// g_v⁻¹(p) (Def. 4.1.6).
-    GInv { v: u32, p: [f64; 2] },
+    GInv {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// h(p) = (1 − x, −y) (Def. 4.1.7).
-    H { p: [f64; 2] },
+    H {
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
     /// R_(u,w)(p): rotation by −2π·s_u(w)/m_u (Def. 4.1.8).
-    Rotate { u: u32, w: u32, p: [f64; 2] },
+    Rotate {
+        /// First vertex of the edge [u, w]: the point lives in Ω_u.
+        u: u32,
+        /// Second vertex of the edge [u, w].
+        w: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
+    /// Select the parameter profile of Chapter 5 (`"paper"` or `"authors-code"`, see
+    /// [`Profile`]); the pseudo-surface is rebuilt on the next Chapter 5 request.
+    SetProfile {
+        /// `"paper"` or `"authors-code"`.
+        profile: String,
+    },
+    /// γ_v(p) = ξ(‖p‖) (Defs. 5.3.1–5.3.2), as a one-element array; 0 outside Ω_v.
+    Gamma {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
+    /// ψ_v(p), the shape function (Def. 5.2.1), for p in the square □_v = [−L, L]²,
+    /// L = cos(π/m_v).
+    Psi {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
+    /// The control points of ψ_v (Sec. 5.2 least-squares fit; f64 only).
+    PsiControl {
+        /// Vertex id (0-based file index).
+        v: u32,
+    },
+    /// θ_v(p), p ∈ Ω_v (Def. 5.4.2, Eq. 5.1).
+    Theta {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+    },
+    /// Every partial derivative ∂^{i+j}θ_v/∂x^i∂y^j at p ∈ Ω_v with i + j ≤ `order` (≤ 3,
+    /// default 3), from order-3 jets (forward-mode differentiation, no finite differences).
+    ThetaDerivatives {
+        /// Vertex id (0-based file index).
+        v: u32,
+        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
+        p: [f64; 2],
+        /// Highest total order i + j, 0..=3 (default 3).
+        #[serde(default)]
+        order: Option<u32>,
+    },
+    /// eval(σ, λ, μ, ν) (Sec. 6.1.4): the point of M, with the chart and q ∈ Ω_vertex.
+    Eval {
+        /// σ: face id (0-based file index).
+        face: u32,
+        /// (λ, μ, ν) at the corners of σ in file order (≥ 0, sum 1).
+        bary: [f64; 3],
+    },
 }
 
-/// Error kinds of the protocol.
+/// Error kinds of the protocol (see [`OracleError::kind`] for the stable names).
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum OracleError {
+    /// The line is not JSON, or not a known request with the right fields.
     #[error("malformed request: {0}")]
     Malformed(String),
+    /// A query arrived before any mesh was loaded.
     #[error("no mesh loaded (send {{\"op\":\"load\",\"path\":...}} first)")]
     NoMesh,
+    /// The mesh could not be read, or is not a simplicial surface (Def. 3.1.6).
     #[error("cannot load mesh: {0}")]
     Load(String),
+    /// No such vertex, edge or face in the loaded mesh.
     #[error("{0}")]
     Mesh(String),
+    /// The point is outside the domain of the queried map (Ω_v, Ω_uw, □_v, or the
+    /// barycentric simplex).
     #[error("point not in the domain: {0}")]
     NotInDomain(String),
+    /// `set_precision` outside 2..=[`MAX_BITS`].
     #[error("precision {0} bits out of range 2..={MAX_BITS}")]
     Precision(u32),
+    /// NaN or ±∞ in the query.
     #[error("non-finite coordinate in the query point")]
     NonFinite,
+    /// The quantity is undefined at this point (Σ_u Γ_uv(p) = 0 in Eq. 5.1).
+    #[error("undefined: {0}")]
+    Undefined(String),
 }
 
 impl OracleError {
@@ -90,6 +205,7 @@ impl OracleError {
             OracleError::NotInDomain(_) => "not_in_domain",
             OracleError::Precision(_) => "bad_precision",
             OracleError::NonFinite => "non_finite",
+            OracleError::Undefined(_) => "undefined",
         }
     }
 }
@@ -109,12 +225,30 @@ impl From<MapError> for OracleError {
     }
 }
 
+impl From<SurfaceError> for OracleError {
+    fn from(e: SurfaceError) -> Self {
+        match e {
+            SurfaceError::NoSuchVertex(_)
+            | SurfaceError::NoSuchFace(_)
+            | SurfaceError::NoSuchEdge(..)
+            | SurfaceError::MissingDegree(_) => OracleError::Mesh(e.to_string()),
+            SurfaceError::NotInOmega { .. }
+            | SurfaceError::BadBarycentric(_)
+            | SurfaceError::Map(_) => OracleError::NotInDomain(e.to_string()),
+            SurfaceError::ZeroWeight(_) => OracleError::Undefined(e.to_string()),
+        }
+    }
+}
+
 /// One response line.
 #[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
 pub struct Response {
+    /// `true` for an answer, `false` for an error (then `error` is set).
     pub ok: bool,
+    /// The request's `id`, echoed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub id: Option<Value>,
+    /// The request's `op`, echoed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub op: Option<String>,
     /// The reference value (MPFR, decimal strings) or a non-numerical answer.
@@ -123,11 +257,17 @@ pub struct Response {
     /// The same quantity computed in f64.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub f64: Option<Value>,
+    /// The MPFR precision of `value`, in bits.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mp_bits: Option<u32>,
     /// |f64 − MPFR| (Euclidean, computed in MPFR): the error estimate of the f64 value.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub difference: Option<f64>,
+    /// Auxiliary, non-numerical facts of the answer (eval's chart and q, the layout of
+    /// `theta_derivatives`, notes such as "f64 only").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub info: Option<Value>,
+    /// `{"kind", "message"}` when `ok` is false (kinds: [`OracleError::kind`]).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<Value>,
 }
@@ -142,6 +282,7 @@ impl Response {
             f64: None,
             mp_bits: None,
             difference: None,
+            info: None,
             error: Some(json!({"kind": e.kind(), "message": e.to_string()})),
         }
     }
@@ -154,15 +295,27 @@ impl Response {
             f64: None,
             mp_bits: None,
             difference: None,
+            info: None,
             error: None,
         }
     }
 }
 
-/// A session: the loaded mesh and the precision.
+/// The Chapter 5 state of a session: the pseudo-surface and its constants per scalar.
+struct Ch5 {
+    pps: Pps,
+    jet: Consts<Jet<f64>>,
+    mp: Option<Consts<Mp>>,
+    jet_mp: Option<Consts<Jet<Mp>>>,
+}
+
+/// A session: the loaded mesh, the MPFR precision, the Chapter 5 profile and (built lazily)
+/// the pseudo-surface of Chapter 5.
 pub struct Session {
     surface: Option<SimplicialSurface>,
     bits: u32,
+    profile: Profile,
+    ch5: Option<Ch5>,
 }
 
 impl Default for Session {
@@ -170,6 +323,8 @@ impl Default for Session {
         Session {
             surface: None,
             bits: crate::construction::DEFAULT_MP_PREC,
+            profile: Profile::default(),
+            ch5: None,
         }
     }
 }
@@ -182,7 +337,17 @@ fn finite(p: &[f64; 2]) -> Result<(), OracleError> {
     }
 }
 
+fn vertex(pps: &Pps, v: u32) -> Result<VertexId, OracleError> {
+    let v = VertexId(v);
+    if pps.contains(v) {
+        Ok(v)
+    } else {
+        Err(SurfaceError::NoSuchVertex(v).into())
+    }
+}
+
 impl Session {
+    /// An empty session (no mesh; 256 bits; paper profile).
     pub fn new() -> Self {
         Self::default()
     }
@@ -195,8 +360,49 @@ impl Session {
         }
     }
 
+    /// The MPFR precision of the answers, in bits.
     pub fn bits(&self) -> u32 {
         self.bits
+    }
+
+    /// The Chapter 5 profile.
+    pub fn profile(&self) -> Profile {
+        self.profile
+    }
+
+    /// The parametric pseudo-surface of the loaded mesh (Chapter 5), built on first use with
+    /// the session's profile and S′ = PN triangles (Sec. 5.1).
+    pub fn pps(&mut self) -> Result<&Pps, OracleError> {
+        Ok(&self.ch5()?.pps)
+    }
+
+    fn ch5(&mut self) -> Result<&mut Ch5, OracleError> {
+        if self.ch5.is_none() {
+            let k = self.k()?;
+            let pn = PnTriangles::new(k);
+            let pps = Pps::build(
+                k,
+                &pn,
+                PpsOptions {
+                    profile: self.profile,
+                    ..PpsOptions::default()
+                },
+            );
+            let jet = pps.consts(53);
+            self.ch5 = Some(Ch5 {
+                pps,
+                jet,
+                mp: None,
+                jet_mp: None,
+            });
+        }
+        let bits = self.bits;
+        let c = self.ch5.as_mut().ok_or(OracleError::NoMesh)?;
+        if c.mp.as_ref().is_some_and(|m| m.prec != bits) {
+            c.mp = None;
+            c.jet_mp = None;
+        }
+        Ok(c)
     }
 
     /// Answer one line of the protocol (never panics on any input).
@@ -246,6 +452,7 @@ impl Session {
                 })?;
                 let out = json!({"vertices": k.num_vertices(), "faces": k.num_faces(), "edges": k.num_edges()});
                 self.surface = Some(k);
+                self.ch5 = None;
                 Ok(Response::plain(out))
             }
             Request::SetPrecision { bits } => {
@@ -254,6 +461,127 @@ impl Session {
                 }
                 self.bits = *bits;
                 Ok(Response::plain(json!({"bits": bits})))
+            }
+            Request::SetProfile { profile } => {
+                let p = Profile::parse(profile).ok_or_else(|| {
+                    OracleError::Malformed(format!(
+                        "unknown profile {profile:?} (expected \"paper\" or \"authors-code\")"
+                    ))
+                })?;
+                if p != self.profile {
+                    self.profile = p;
+                    self.ch5 = None;
+                }
+                Ok(Response::plain(json!({"profile": p.name()})))
+            }
+            Request::Gamma { v, p } => {
+                finite(p)?;
+                let (pps, cm) = self.ch5()?.with_mp(bits);
+                let v = vertex(pps, *v)?;
+                let a = pps.gamma(v, &P2::new(p[0], p[1]), pps.consts_f64());
+                let b = pps.gamma(v, &P2::<Mp>::from_f64(p[0], p[1], bits), cm)?;
+                Ok(both_or_note(a.map(|x| vec![x]), &[b], bits))
+            }
+            Request::Psi { v, p } => {
+                finite(p)?;
+                let c = self.ch5()?;
+                let v = vertex(&c.pps, *v)?;
+                let l = c.pps.half_side(v);
+                if p[0].abs() > l || p[1].abs() > l {
+                    return Err(OracleError::NotInDomain(format!(
+                        "ψ_{v} is defined on □_{v} = [−{l}, {l}]² (Def. 5.2.1)"
+                    )));
+                }
+                let a = c.pps.psi(v, &P2::new(p[0], p[1]));
+                let b = c.pps.psi(v, &P2::<Mp>::from_f64(p[0], p[1], bits));
+                Ok(both(&a, &b, bits))
+            }
+            Request::PsiControl { v } => {
+                let c = self.ch5()?;
+                let v = vertex(&c.pps, *v)?;
+                let (cp, l) = c.pps.patch(v);
+                let mut r = Response::plain(json!(cp));
+                r.f64 = Some(json!(cp));
+                r.info = Some(json!({
+                    "l": l,
+                    "half_side": c.pps.half_side(v),
+                    "index": "control point b_{j,k} at j·(l+1)+k",
+                    "f64_only": "the control points are fitted in f64 (Sec. 5.2); the MPFR answers of psi/theta/eval use exactly these"
+                }));
+                Ok(r)
+            }
+            Request::Theta { v, p } => {
+                finite(p)?;
+                let (pps, cm) = self.ch5()?.with_mp(bits);
+                let v = vertex(pps, *v)?;
+                let b = pps.theta(v, &P2::<Mp>::from_f64(p[0], p[1], bits), cm)?;
+                let a = pps.theta_f64(v, *p).map(Vec::from);
+                Ok(both_or_note(a, &b, bits))
+            }
+            Request::ThetaDerivatives { v, p, order } => {
+                finite(p)?;
+                let order = order.unwrap_or(3);
+                if order > 3 {
+                    return Err(OracleError::Malformed(format!(
+                        "order {order} > 3 (the jets are of order 3)"
+                    )));
+                }
+                let (pps, cj, cm) = self.ch5()?.with_jets(bits);
+                let v = vertex(pps, *v)?;
+                let partials: Vec<(usize, usize)> = MONOMIALS
+                    .iter()
+                    .copied()
+                    .filter(|&(i, j)| i + j <= order as usize)
+                    .collect();
+                let (x, y) = Jet::variables(Mp::from_f64(p[0], bits), Mp::from_f64(p[1], bits));
+                let jb = pps.theta(v, &P2::new(x, y), cm)?;
+                let b: Vec<Mp> = partials
+                    .iter()
+                    .flat_map(|&(i, j)| jb.iter().map(move |d| d.derivative(i, j)))
+                    .collect();
+                let a = pps.theta_jet(v, *p, cj, None).map(|ja| {
+                    partials
+                        .iter()
+                        .flat_map(|&(i, j)| ja.iter().map(move |d| d.derivative(i, j)))
+                        .collect::<Vec<f64>>()
+                });
+                let mut r = both_or_note(a, &b, bits);
+                let mut info = r.info.take().unwrap_or_else(|| json!({}));
+                info["partials"] = json!(partials);
+                info["layout"] = json!(
+                    "value[3k + d] = ∂^(i+j) θ_v,d / ∂x^i ∂y^j at p, for partials[k] = [i, j], d = 0, 1, 2"
+                );
+                r.info = Some(info);
+                Ok(r)
+            }
+            Request::Eval { face, bary } => {
+                if !bary.iter().all(|c| c.is_finite()) {
+                    return Err(OracleError::NonFinite);
+                }
+                let (pps, cm) = self.ch5()?.with_mp(bits);
+                let f = FaceId(*face);
+                let bm = bary.map(|x| Mp::from_f64(x, bits));
+                let b = pps.eval(f, &bm, cm)?;
+                let a = pps.eval(f, bary, pps.consts_f64());
+                let q: Vec<String> = [&b.q.x, &b.q.y].into_iter().map(mp_decimal).collect();
+                let mut info = json!({"chart": b.chart, "vertex": b.vertex.0, "q": q});
+                let mut r = match a {
+                    Ok(a) => {
+                        info["q_f64"] = json!([a.q.x, a.q.y]);
+                        if a.chart != b.chart {
+                            info["chart_f64"] = json!(a.chart);
+                        }
+                        both(&a.point, &b.point, bits)
+                    }
+                    Err(e) => both_or_note(Err(e), &b.point, bits),
+                };
+                if let Some(Value::Object(extra)) = r.info.take() {
+                    for (k, v) in extra {
+                        info[k] = v;
+                    }
+                }
+                r.info = Some(info);
+                Ok(r)
             }
             Request::Degree { v } => {
                 let g = PpmGluing::new(self.k()?);
@@ -336,6 +664,23 @@ impl Session {
     }
 }
 
+impl Ch5 {
+    /// The pseudo-surface with its MPFR constants at `bits` (built once, cached).
+    fn with_mp(&mut self, bits: u32) -> (&Pps, &Consts<Mp>) {
+        let Ch5 { pps, mp, .. } = self;
+        let m = mp.get_or_insert_with(|| pps.consts::<Mp>(bits));
+        (&*pps, &*m)
+    }
+    /// The pseudo-surface with the order-3 jet constants in f64 and in MPFR at `bits`.
+    fn with_jets(&mut self, bits: u32) -> (&Pps, &Consts<Jet<f64>>, &Consts<Jet<Mp>>) {
+        let Ch5 {
+            pps, jet, jet_mp, ..
+        } = self;
+        let m = jet_mp.get_or_insert_with(|| pps.consts::<Jet<Mp>>(bits));
+        (&*pps, &*jet, &*m)
+    }
+}
+
 /// A numerical answer: MPFR value, f64 value, difference.
 fn both(a: &[f64], b: &[Mp], bits: u32) -> Response {
     let value: Vec<String> = b.iter().map(mp_decimal).collect();
@@ -347,6 +692,22 @@ fn both(a: &[f64], b: &[Mp], bits: u32) -> Response {
         f64: Some(json!(a)),
         mp_bits: Some(bits),
         difference: Some(mp_distance(a, b)),
+        info: None,
         error: None,
+    }
+}
+
+/// A numerical answer whose f64 evaluation may have failed where MPFR succeeded (a point on
+/// the boundary of a domain, decided differently by the two roundings).
+fn both_or_note(a: Result<Vec<f64>, SurfaceError>, b: &[Mp], bits: u32) -> Response {
+    match a {
+        Ok(a) => both(&a, b, bits),
+        Err(e) => {
+            let mut r = both(&[], b, bits);
+            r.f64 = None;
+            r.difference = None;
+            r.info = Some(json!({"f64_failed": OracleError::from(e).to_string()}));
+            r
+        }
     }
 }

@@ -51,7 +51,7 @@ pub fn check_3a<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
     for i in g.indices() {
         for x in g.sample_p_domain(i, &mut rng, cfg.n) {
             r.examined += 1;
-            let t = tol::<G::S>(norm(&x));
+            let t = tol::<G::S>(norm(&x)) * g.amplification();
             match g.phi(i, i, &x) {
                 None => r.offend(|| {
                     Witness::new(
@@ -87,7 +87,7 @@ pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
         for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
             r.examined += 1;
             let Some(y) = g.phi(j, i, &x) else { continue }; // reported by D3.4.1(3)
-            let t = tol::<G::S>(norm(&x).max(norm(&y)));
+            let t = tol::<G::S>(norm(&x).max(norm(&y))) * g.amplification();
             match g.phi(i, j, &y) {
                 None => r.offend(|| {
                     Witness::new(
@@ -177,7 +177,7 @@ pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                         continue;
                     };
                     let d = dist(&z1, &z2);
-                    let t = tol::<G::S>(norm(&z1).max(norm(x)));
+                    let t = tol::<G::S>(norm(&z1).max(norm(x))) * g.amplification();
                     track(&mut r, d, t);
                     if d > t {
                         r.offend(|| {
@@ -237,7 +237,7 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
                     match (lhs, rhs) {
                         (Some(z1), Some(z2)) => {
                             let d = dist(&z1, &z2);
-                            let t = tol::<G::S>(norm(&z1).max(norm(x)));
+                            let t = tol::<G::S>(norm(&z1).max(norm(x))) * g.amplification();
                             track(&mut r, d, t);
                             if d > t {
                                 r.offend(|| {

@@ -2,7 +2,7 @@
 //! listed, all counted) in a [`CheckResult`] carrying the SPEC.md ID it decides.
 //!
 //! [`validate`] runs them all and is the only constructor of
-//! [`SimplicialSurface`](crate::mesh::SimplicialSurface).
+//! [`SimplicialSurface`].
 
 pub mod affine;
 pub mod basic;

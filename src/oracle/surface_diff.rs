@@ -1,0 +1,574 @@
+//! `ppm diff --surface`: compare another implementation's sampled surface (OFF, PLY, OBJ)
+//! against the reference sampling of Sec. 6.2.
+//!
+//! The reference samples M = (G, (θ_v)) "in a triangle midpoint subdivision manner": level N
+//! evaluates eval(σ, λ, μ, ν) (Sec. 6.1.4) at every barycentric grid point (i, j, k)/2^N of
+//! every triangle σ of K, sharing the points on edges and corners. The vertex order is that of
+//! [`crate::surface::output::sample_surface`] (and so of `ppm sample`): triangles in file order,
+//! within a triangle (i, j) row by row, each point numbered when first met — [`sample_points`]
+//! reproduces it with the (face, barycentric) argument of every vertex.
+//!
+//! Matching. When the other surface has exactly as many vertices as the reference at that
+//! level, vertex i is compared with reference vertex i ("eval order"). Otherwise, or with
+//! [`MatchMode::Nearest`], each of its vertices is matched to the nearest reference point
+//! through an R*-tree, and the report says so (and also gives the reverse distances, reference
+//! → other, which reveal missing parts of the surface).
+//!
+//! Deviations are Euclidean distances to the f64 reference. The worst items, and a spread of
+//! others, are re-evaluated in MPFR (spot checks): each then shows its distance to the MPFR
+//! value and the f64 reference's own error |f64 − MPFR|.
+
+use super::diff::Stats;
+use super::mp_distance;
+use super::protocol::OracleError;
+use crate::construction::{Mp, Scalar};
+use crate::mesh::FaceId;
+use crate::surface::{Consts, Pps};
+use rayon::prelude::*;
+use rstar::primitives::GeomWithData;
+use rstar::RTree;
+use serde::Serialize;
+use std::collections::{HashMap, HashSet};
+
+/// Largest accepted subdivision level (as `sample_surface`).
+pub const MAX_LEVEL: u32 = 12;
+
+/// The a-priori relative error bound of the f64 evaluation of eval (Sec. 6.1.4), in units of
+/// ε·scale (scale = the largest |coordinate| of the sampled surface): eval composes ~10² f64
+/// operations (chart maps, two transition maps, ξ with its exp, Bézier patches of degree ≤ 12
+/// in the paper profile for m ≤ 11, one division), each within ε/2 relative, and the patches
+/// sum (l+1)² terms of size ≤ scale. The MPFR spot checks print the observed error next to it.
+pub const F64_BOUND_ULPS: f64 = 4096.0;
+
+/// How the other surface's vertices are paired with the reference's.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum MatchMode {
+    /// Vertex i ↔ reference vertex i (eval order), when the counts agree; otherwise falls
+    /// back to nearest neighbours and says so.
+    #[default]
+    Order,
+    /// Each vertex ↔ the nearest reference point (R*-tree).
+    Nearest,
+}
+
+impl MatchMode {
+    /// Parse `order` / `nearest`.
+    pub fn parse(s: &str) -> Option<MatchMode> {
+        match s {
+            "order" => Some(MatchMode::Order),
+            "nearest" => Some(MatchMode::Nearest),
+            _ => None,
+        }
+    }
+}
+
+/// One point of the reference sampling: the argument of eval.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SamplePoint {
+    /// σ (a face index of K).
+    pub face: u32,
+    /// (λ, μ, ν) at the corners of σ in file order.
+    pub bary: [f64; 3],
+}
+
+/// The reference sampling pattern at one level: points in output order and the triangles.
+#[derive(Debug, Clone, Default)]
+pub struct SamplePattern {
+    /// The eval argument of every output vertex, in output order.
+    pub points: Vec<SamplePoint>,
+    /// The output triangles (vertex indices).
+    pub faces: Vec<[u32; 3]>,
+}
+
+#[derive(Hash, PartialEq, Eq, Clone, Copy)]
+enum Key {
+    Corner(u32),
+    Edge(u32, u32, u32),
+    Inner(u32, u32, u32),
+}
+
+/// The Sec. 6.2 sampling pattern at `level` (the vertex order and triangles of
+/// [`crate::surface::output::sample_surface`]; `tests/oracle_surface.rs` checks they agree).
+pub fn sample_points(pps: &Pps, level: u32) -> Result<SamplePattern, OracleError> {
+    if level > MAX_LEVEL {
+        return Err(OracleError::Malformed(format!(
+            "level {level} > {MAX_LEVEL}"
+        )));
+    }
+    let n = 1u32 << level;
+    let nf = pps.num_faces();
+    let mut index: HashMap<Key, u32> = HashMap::new();
+    let mut out = SamplePattern::default();
+    let mut row_start = vec![0usize; (n + 2) as usize];
+    for i in 0..=n {
+        row_start[i as usize + 1] = row_start[i as usize] + (n + 1 - i) as usize;
+    }
+    for fi in 0..nf {
+        let f = FaceId(fi as u32);
+        let c = pps.face(f)?;
+        let mut local = Vec::with_capacity(row_start[n as usize + 1]);
+        for i in 0..=n {
+            for j in 0..=(n - i) {
+                let k = n - i - j;
+                let w = [k, i, j];
+                let nz: Vec<usize> = (0..3).filter(|&t| w[t] != 0).collect();
+                let key = match nz.as_slice() {
+                    [a] => Key::Corner(c[*a].0),
+                    [a, b] => {
+                        let (a, b) = (*a, *b);
+                        if c[a].0 < c[b].0 {
+                            Key::Edge(c[a].0, c[b].0, w[a])
+                        } else {
+                            Key::Edge(c[b].0, c[a].0, w[b])
+                        }
+                    }
+                    _ => Key::Inner(fi as u32, i, j),
+                };
+                let next = index.len() as u32;
+                let id = *index.entry(key).or_insert_with(|| {
+                    let nn = f64::from(n);
+                    out.points.push(SamplePoint {
+                        face: fi as u32,
+                        bary: [f64::from(k) / nn, f64::from(i) / nn, f64::from(j) / nn],
+                    });
+                    next
+                });
+                local.push(id);
+            }
+        }
+        let at = |i: u32, j: u32| local[row_start[i as usize] + j as usize];
+        for i in 0..n {
+            for j in 0..(n - i) {
+                out.faces.push([at(i, j), at(i + 1, j), at(i, j + 1)]);
+                if i + j + 1 < n {
+                    out.faces
+                        .push([at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// Number of sampled vertices at `level` for a surface with `v` vertices, `e` edges and `f`
+/// faces: V + E(n − 1) + F(n − 1)(n − 2)/2 with n = 2^level.
+pub fn sample_count(v: u64, e: u64, f: u64, level: u32) -> u64 {
+    let n = 1u64 << level.min(MAX_LEVEL);
+    v + e * (n - 1) + f * (n - 1) * n.saturating_sub(2) / 2
+}
+
+/// The level whose sampling has exactly `count` vertices, if any.
+pub fn infer_level(pps: &Pps, count: usize) -> Option<u32> {
+    let nf = pps.num_faces() as u64;
+    let mut edges = HashSet::new();
+    let mut verts = HashSet::new();
+    for fi in 0..pps.num_faces() {
+        let c = pps.face(FaceId(fi as u32)).ok()?;
+        for t in 0..3 {
+            let (a, b) = (c[t].0, c[(t + 1) % 3].0);
+            edges.insert((a.min(b), a.max(b)));
+            verts.insert(a);
+        }
+    }
+    (0..=MAX_LEVEL)
+        .find(|&l| sample_count(verts.len() as u64, edges.len() as u64, nf, l) == count as u64)
+}
+
+/// Options of [`diff_surface`].
+#[derive(Debug, Clone)]
+pub struct SurfaceDiffOptions {
+    /// Subdivision level; `None`: inferred from the vertex count.
+    pub level: Option<u32>,
+    /// Largest accepted deviation; `None`: twice the printed f64 bound.
+    pub tolerance: Option<f64>,
+    /// Pairing of the vertices.
+    pub matching: MatchMode,
+    /// How many worst items to list (each re-evaluated in MPFR).
+    pub worst: usize,
+    /// How many further, evenly spread items to re-evaluate in MPFR.
+    pub spot_checks: usize,
+    /// MPFR precision of the spot checks.
+    pub bits: u32,
+}
+
+impl Default for SurfaceDiffOptions {
+    fn default() -> Self {
+        SurfaceDiffOptions {
+            level: None,
+            tolerance: None,
+            matching: MatchMode::Order,
+            worst: 10,
+            spot_checks: 32,
+            bits: crate::construction::DEFAULT_MP_PREC,
+        }
+    }
+}
+
+/// The MPFR re-evaluation of one item.
+#[derive(Debug, Clone, Serialize)]
+pub struct MpCheck {
+    /// |other − MPFR|.
+    pub deviation: f64,
+    /// |f64 reference − MPFR|: the f64 reference's own error.
+    pub reference_error: f64,
+}
+
+/// One compared vertex.
+#[derive(Debug, Clone, Serialize)]
+pub struct SurfaceItem {
+    /// Index of the vertex in the other file.
+    pub vertex: usize,
+    /// Index of the matched reference vertex (eval order).
+    pub reference_vertex: usize,
+    /// The eval argument of the reference vertex.
+    pub face: u32,
+    /// (λ, μ, ν).
+    pub bary: [f64; 3],
+    /// The other implementation's point.
+    pub theirs: [f64; 3],
+    /// The f64 reference point.
+    pub reference: [f64; 3],
+    /// |theirs − reference| (∞ for a non-finite coordinate).
+    pub deviation: f64,
+    /// The MPFR spot check, for the listed items.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mp: Option<MpCheck>,
+}
+
+/// The report of [`diff_surface`].
+#[derive(Debug, Clone, Serialize)]
+pub struct SurfaceDiffReport {
+    /// Subdivision level of the reference sampling.
+    pub level: u32,
+    /// Whether the level was inferred from the vertex count.
+    pub level_inferred: bool,
+    /// Vertices in the other file.
+    pub their_vertices: usize,
+    /// Vertices of the reference sampling at `level`.
+    pub reference_vertices: usize,
+    /// The pairing actually used.
+    pub matching: MatchMode,
+    /// Why / how (always printed).
+    pub matching_note: String,
+    /// In eval order: whether the other file's triangles are the reference's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub faces_identical: Option<bool>,
+    /// Deviations other → reference.
+    pub stats: Stats,
+    /// Nearest matching only: distances reference → other.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reverse: Option<Stats>,
+    /// Nearest matching only: reference vertices matched by more than one other vertex.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reference_matched_twice: Option<usize>,
+    /// Vertices with a non-finite coordinate (not compared; they fail the verdict).
+    pub non_finite: usize,
+    /// Largest |coordinate| of the reference sampling.
+    pub scale: f64,
+    /// The a-priori error bound of an f64 evaluation: [`F64_BOUND_ULPS`]·ε·scale.
+    pub f64_bound: f64,
+    /// MPFR precision of the spot checks.
+    pub mp_bits: u32,
+    /// Spot checks done (worst items + spread).
+    pub spot_checks: usize,
+    /// Largest |f64 reference − MPFR| over the spot checks.
+    pub reference_error_max: f64,
+    /// Largest |other − MPFR| over the spot checks.
+    pub mp_deviation_max: f64,
+    /// The tolerance applied.
+    pub tolerance: f64,
+    /// Where the tolerance came from.
+    pub tolerance_source: String,
+    /// The worst items, largest deviation first, with MPFR spot checks.
+    pub worst: Vec<SurfaceItem>,
+    /// Every deviation ≤ tolerance and every vertex finite.
+    pub within_tolerance: bool,
+}
+
+fn dist(a: &[f64; 3], b: &[f64; 3]) -> f64 {
+    let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+}
+
+type Tree = RTree<GeomWithData<[f64; 3], usize>>;
+
+fn tree(points: &[[f64; 3]]) -> Tree {
+    RTree::bulk_load(
+        points
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| p.iter().all(|c| c.is_finite()))
+            .map(|(i, p)| GeomWithData::new(*p, i))
+            .collect(),
+    )
+}
+
+/// Compare `theirs` (the other implementation's vertex positions, in its file order, and its
+/// triangles if known) against the reference sampling of `pps`.
+pub fn diff_surface(
+    pps: &Pps,
+    theirs: &[[f64; 3]],
+    their_faces: Option<&[[u32; 3]]>,
+    opts: &SurfaceDiffOptions,
+) -> Result<SurfaceDiffReport, OracleError> {
+    let (level, level_inferred) = match opts.level {
+        Some(l) => (l, false),
+        None => match infer_level(pps, theirs.len()) {
+            Some(l) => (l, true),
+            None => {
+                return Err(OracleError::Malformed(format!(
+                    "{} vertices is not the vertex count of any subdivision level 0..={MAX_LEVEL} of this mesh: give --level",
+                    theirs.len()
+                )))
+            }
+        },
+    };
+    let pattern = sample_points(pps, level)?;
+    let cf = pps.consts_f64();
+    let reference: Vec<[f64; 3]> = pattern
+        .points
+        .par_iter()
+        .map(|s| pps.eval(FaceId(s.face), &s.bary, cf).map(|e| e.point))
+        .collect::<Result<_, _>>()?;
+    let scale = reference
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |a, &b| a.max(b.abs()));
+    let f64_bound = F64_BOUND_ULPS * f64::EPSILON * scale.max(1.0);
+    let same_count = theirs.len() == reference.len();
+    let (matching, matching_note) = match (opts.matching, same_count) {
+        (MatchMode::Order, true) => (
+            MatchMode::Order,
+            format!(
+                "vertex counts agree ({}): compared vertex by vertex in eval order",
+                theirs.len()
+            ),
+        ),
+        (MatchMode::Order, false) => (
+            MatchMode::Nearest,
+            format!(
+                "vertex counts differ (theirs {}, reference {} at level {level}): vertex order unknown, matched each vertex to the NEAREST reference point (R*-tree)",
+                theirs.len(),
+                reference.len()
+            ),
+        ),
+        (MatchMode::Nearest, _) => (
+            MatchMode::Nearest,
+            "--match nearest: vertex order not used, matched each vertex to the NEAREST reference point (R*-tree)".to_string(),
+        ),
+    };
+    let non_finite = theirs
+        .iter()
+        .filter(|p| !p.iter().all(|c| c.is_finite()))
+        .count();
+    // Pair every finite vertex of theirs with a reference index.
+    let pairs: Vec<(usize, usize)> = match matching {
+        MatchMode::Order => (0..theirs.len()).map(|i| (i, i)).collect(),
+        MatchMode::Nearest => {
+            let t = tree(&reference);
+            theirs
+                .par_iter()
+                .enumerate()
+                .filter(|(_, p)| p.iter().all(|c| c.is_finite()))
+                .filter_map(|(i, p)| t.nearest_neighbor(p).map(|n| (i, n.data)))
+                .collect()
+        }
+    };
+    let mut items: Vec<SurfaceItem> = pairs
+        .iter()
+        .map(|&(i, r)| {
+            let d = dist(&theirs[i], &reference[r]);
+            SurfaceItem {
+                vertex: i,
+                reference_vertex: r,
+                face: pattern.points[r].face,
+                bary: pattern.points[r].bary,
+                theirs: theirs[i],
+                reference: reference[r],
+                deviation: if d.is_nan() { f64::INFINITY } else { d },
+                mp: None,
+            }
+        })
+        .collect();
+    let stats = Stats::of(
+        items
+            .iter()
+            .filter(|it| it.theirs.iter().all(|c| c.is_finite()))
+            .map(|it| it.deviation)
+            .collect(),
+    );
+    let (reverse, twice) = if matching == MatchMode::Nearest {
+        let t = tree(theirs);
+        let rev: Vec<f64> = reference
+            .par_iter()
+            .filter_map(|p| t.nearest_neighbor(p).map(|n| dist(p, n.geom())))
+            .collect();
+        let mut hits = vec![0u32; reference.len()];
+        for &(_, r) in &pairs {
+            hits[r] += 1;
+        }
+        (
+            Some(Stats::of(rev)),
+            Some(hits.iter().filter(|&&h| h > 1).count()),
+        )
+    } else {
+        (None, None)
+    };
+    let faces_identical = match (matching, their_faces) {
+        (MatchMode::Order, Some(f)) => Some(f == pattern.faces.as_slice()),
+        _ => None,
+    };
+    // Worst items first, then spot checks in MPFR.
+    let n_items = items.len();
+    items.sort_by(|a, b| b.deviation.total_cmp(&a.deviation));
+    let mut chosen: Vec<usize> = (0..opts.worst.min(n_items)).collect();
+    if opts.spot_checks > 0 && n_items > 0 {
+        let step = (n_items / opts.spot_checks).max(1);
+        chosen.extend((opts.worst.min(n_items)..n_items).step_by(step));
+    }
+    let cm: Consts<Mp> = pps.consts(opts.bits);
+    let checks: Vec<(usize, Result<MpCheck, OracleError>)> = chosen
+        .par_iter()
+        .map(|&k| {
+            let it = &items[k];
+            let bm = it.bary.map(|x| Mp::from_f64(x, opts.bits));
+            let r = pps
+                .eval(FaceId(it.face), &bm, &cm)
+                .map(|e| MpCheck {
+                    deviation: if it.theirs.iter().all(|c| c.is_finite()) {
+                        mp_distance(&it.theirs, &e.point)
+                    } else {
+                        f64::INFINITY
+                    },
+                    reference_error: mp_distance(&it.reference, &e.point),
+                })
+                .map_err(OracleError::from);
+            (k, r)
+        })
+        .collect();
+    let mut reference_error_max = 0.0f64;
+    let mut mp_deviation_max = 0.0f64;
+    for (k, r) in checks {
+        let c = r?;
+        reference_error_max = reference_error_max.max(c.reference_error);
+        mp_deviation_max = mp_deviation_max.max(c.deviation);
+        items[k].mp = Some(c);
+    }
+    let spot_checks = chosen.len();
+    items.truncate(opts.worst);
+    let (tolerance, tolerance_source) = match opts.tolerance {
+        Some(t) => (t, "--tolerance".to_string()),
+        None => (
+            2.0 * f64_bound,
+            "default: 2 × the f64 bound, as both f64 evaluations are within it of the exact value"
+                .to_string(),
+        ),
+    };
+    let within_tolerance = non_finite == 0 && !theirs.is_empty() && stats.max <= tolerance;
+    Ok(SurfaceDiffReport {
+        level,
+        level_inferred,
+        their_vertices: theirs.len(),
+        reference_vertices: reference.len(),
+        matching,
+        matching_note,
+        faces_identical,
+        stats,
+        reverse,
+        reference_matched_twice: twice,
+        non_finite,
+        scale,
+        f64_bound,
+        mp_bits: opts.bits,
+        spot_checks,
+        reference_error_max,
+        mp_deviation_max,
+        tolerance,
+        tolerance_source,
+        worst: items,
+        within_tolerance,
+    })
+}
+
+/// Text rendering of a [`SurfaceDiffReport`].
+pub fn render_surface(r: &SurfaceDiffReport) -> String {
+    use std::fmt::Write;
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "reference: midpoint subdivision level {}{} (Sec. 6.2), {} vertices in eval order; other surface: {} vertices",
+        r.level,
+        if r.level_inferred { " (inferred from the vertex count)" } else { "" },
+        r.reference_vertices,
+        r.their_vertices
+    );
+    let _ = writeln!(s, "matching: {}", r.matching_note);
+    if let Some(fi) = r.faces_identical {
+        let _ = writeln!(
+            s,
+            "triangles: {}",
+            if fi {
+                "identical to the reference's"
+            } else {
+                "differ from the reference's (positions compared anyway)"
+            }
+        );
+    }
+    let st = &r.stats;
+    let _ = writeln!(
+        s,
+        "deviation |theirs − reference| over {} vertices: max {:.3e}, mean {:.3e}, p50 {:.3e}, p90 {:.3e}, p99 {:.3e}",
+        st.count, st.max, st.mean, st.p50, st.p90, st.p99
+    );
+    if let Some(rev) = &r.reverse {
+        let _ = writeln!(
+            s,
+            "reverse (each reference point to the nearest of theirs): max {:.3e}, mean {:.3e}, p99 {:.3e}; {} reference points matched more than once",
+            rev.max,
+            rev.mean,
+            rev.p99,
+            r.reference_matched_twice.unwrap_or(0)
+        );
+    }
+    if r.non_finite > 0 {
+        let _ = writeln!(
+            s,
+            "{} vertices with non-finite coordinates (not compared)",
+            r.non_finite
+        );
+    }
+    let _ = writeln!(
+        s,
+        "f64 bound: {}·ε·scale = {:.3e} (scale = max |coordinate| = {:.3e}); MPFR {}-bit spot checks on {} vertices: reference f64 error max {:.3e}, theirs vs MPFR max {:.3e}",
+        F64_BOUND_ULPS, r.f64_bound, r.scale, r.mp_bits, r.spot_checks, r.reference_error_max, r.mp_deviation_max
+    );
+    let _ = writeln!(s, "tolerance {:.3e} ({})", r.tolerance, r.tolerance_source);
+    let _ = writeln!(s, "worst vertices (eval argument: face, (λ, μ, ν)):");
+    for w in &r.worst {
+        let mp =
+            w.mp.as_ref()
+                .map(|m| {
+                    format!(
+                        "  vs MPFR {:.3e} (reference error {:.3e})",
+                        m.deviation, m.reference_error
+                    )
+                })
+                .unwrap_or_default();
+        let _ = writeln!(
+            s,
+            "  vertex {:>7} ↔ ref {:>7}: deviation {:.3e}  face {} bary ({}, {}, {})  theirs {:?} reference {:?}{mp}",
+            w.vertex, w.reference_vertex, w.deviation, w.face, w.bary[0], w.bary[1], w.bary[2], w.theirs, w.reference
+        );
+    }
+    let _ = writeln!(
+        s,
+        "verdict: {}",
+        if r.within_tolerance {
+            "within tolerance"
+        } else {
+            "OUTSIDE tolerance"
+        }
+    );
+    s
+}
