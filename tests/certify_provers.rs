@@ -12,6 +12,7 @@ fn quick() -> Settings {
         max_depth: 20,
         budget: 200_000,
         fail_tol: 1e-9,
+        ..Settings::default()
     }
 }
 
