@@ -336,6 +336,49 @@ pub struct Certificate {
     pub results: Vec<PropertyResult>,
     pub wall_millis: u64,
     pub jobs: usize,
+    /// Statements shared by many results, by property: a result whose `statement` is empty
+    /// in the file has this one ([`Certificate::compact`], [`Certificate::expand`]).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub statements: std::collections::BTreeMap<String, String>,
+}
+
+impl Certificate {
+    /// Move each property's most common statement into `statements` and clear it in the
+    /// results that share it (the file format; statements are long, results many).
+    pub fn compact(&mut self) {
+        use std::collections::BTreeMap;
+        let mut counts: BTreeMap<(&str, &str), usize> = BTreeMap::new();
+        for r in &self.results {
+            *counts.entry((&r.property, &r.statement)).or_default() += 1;
+        }
+        let mut best: BTreeMap<String, (usize, String)> = BTreeMap::new();
+        for ((p, st), n) in counts {
+            let e = best.entry(p.to_string()).or_insert((0, String::new()));
+            if n > e.0 {
+                *e = (n, st.to_string());
+            }
+        }
+        for r in &mut self.results {
+            if best
+                .get(&r.property)
+                .is_some_and(|(_, st)| *st == r.statement)
+            {
+                r.statement.clear();
+            }
+        }
+        self.statements
+            .extend(best.into_iter().map(|(p, (_, st))| (p, st)));
+    }
+    /// Undo [`Certificate::compact`]: fill empty statements from `statements`.
+    pub fn expand(&mut self) {
+        for r in &mut self.results {
+            if r.statement.is_empty() {
+                if let Some(st) = self.statements.get(&r.property) {
+                    r.statement = st.clone();
+                }
+            }
+        }
+    }
 }
 
 /// Errors of the certificate tools.
@@ -1035,39 +1078,44 @@ pub fn prove_hausdorff(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Prope
 
 /// L4.2.1(cert) and L4.2.2(cert) for a triangle configuration, exactly and on the whole set.
 ///
-/// Let σ = +1 for a counterclockwise triangle [u, w, x] (s_u(x) = s_u(w) + 1) and −1 for a
-/// clockwise one. For p in u's chart let θ_x, θ_w be its principal angles relative to s_u(x)
-/// and s_u(w), r its radius, b = k_u r e^{iα}, α = m_uθ_x/6 (so b = g_u∘R_(u,x)(p)).
-/// By the closed form of Def. 4.1.9 (module `interval`):
-/// * p ∈ Ω_ux ⇔ 0 < r < r_u, winding(θ_x) = 0, |b − 1| < √3/2;
-/// * with c = h(b) = 1 − b, c_x > 0, Π(c) = (β, s): q = φ_xu(p) has principal angle 6β/m_x
-///   relative to s_x(u) and radius s/k_x; its angle θ' relative to s_x(w) is one principal
-///   piece of 6β/m_x + 2π(x_u − x_w)/m_x with wrap integer k'; when
-///   (x_u − x_w) − m_x k' = −σ, m_xθ'/6 = β − σπ/3 exactly, so (winding(θ') = 0 certified)
-///   q ∈ Ω_xw ⇔ s < √3/2 ∧ |e^{−iσπ/3}c − 1| < √3/2 ⇔ b ∈ D ∧ |b − e^{−iσπ/3}| < √3/2,
-///   using 1 − e^{iσπ/3} = e^{−iσπ/3};
-/// * when θ_w − θ_x = 2πσ/m_u exactly (integer identity of the wrap integers k_x, k_w:
-///   (u_x − u_w) + m_u(k_x − k_w) = σ), m_uθ_w/6 = α + σπ/3 and (winding(θ_w) = 0
-///   certified) p ∈ Ω_uw ⇔ 0 < r < r_u ∧ |e^{iσπ/3}b − 1| < √3/2 ⇔ … ∧ |b − e^{−iσπ/3}| < √3/2.
+/// Notation: for p in u's chart, θ_x and θ_w are its principal angles relative to s_u(x) and
+/// s_u(w), r its radius, b = k_u r e^{iα} with α = m_uθ_x/6 (so b = g_u∘R_(u,x)(p)), and
+/// c = h(b) = 1 − b. C, D are the open disks of radius √3/2 about 0 and 1 (the lens E = C ∩ D,
+/// Sec. 4.1). By the closed form of Def. 4.1.9 (module `interval`), p ∈ Ω_ux ⇔ 0 < r < r_u,
+/// winding(θ_x) = 0, b ∈ D (r < r_u ⇔ b ∈ C).
 ///
-/// So on every box where these branch conditions are certified, Ω_ux ∩ φ_xu⁻¹(Ω_xw) and
-/// Ω_ux ∩ Ω_uw are the *same* set {b ∈ C ∩ D ∩ G} with G the disk of radius √3/2 about
-/// e^{−iσπ/3} (App. A.1: the inclusion is an equality, which is why direct bisection of the two
-/// memberships can never separate them at the common boundary). For the cocycle, additionally
-/// c_w = h(e^{iσπ/3}b) and c'' = h(e^{−iσπ/3}c) must have positive real part (certified); then
-/// c'' = e^{iσπ/3}c_w exactly ((h∘M_{−σπ/3})³ = id), both arguments lie in (−π/2, π/2), so
-/// arg c'' = arg c_w + σπ/3, |c''| = |c_w|, and with w_u − w_x ≡ σ (mod m_w) (integer check)
-/// φ_wx(φ_xu(p)) = φ_wu(p) exactly.
+/// On a box where θ_x is one principal piece with winding 0 and c_x > 0 (so Π(c) = (β, s),
+/// |β| < π/2), q = φ_xu(p) has principal angle 6β/m_x relative to s_x(u) (|6β/m_x| < π
+/// certified) and radius s/k_x. If its angle θ' relative to s_x(w) is one principal piece with
+/// wrap integer k' (θ' = 6β/m_x + 2π(x_u − x_w)/m_x − 2πk'), then m_xθ'/6 = β + πn_x/3 with
+/// the *integer* n_x = (x_u − x_w) − m_x k', so g_x∘R_(x,w)(q) = e^{iπn_x/3}c exactly and (with
+/// winding(θ') = 0 certified; if it is certified false, q ∉ Ω_xw)
+///   q ∈ Ω_xw ⇔ b ∈ D ∧ |e^{iπn_x/3}(1 − b) − 1| < √3/2 ⇔ b ∈ D ∧ b ∈ disk(1 − e^{−iπn_x/3}).
+/// * n_x ≡ 2, 3, 4 (mod 6): |1 − e^{−iπn_x/3}| = 2|sin(πn_x/6)| ≥ √3, so this disk and C
+///   are disjoint: no point of the box is in Ω_ux ∩ φ_xu⁻¹(Ω_xw) (for m_x = 3 this is the
+///   wrapped branch, tangent to C at one point: why bisection alone cannot close it).
+/// * n_x ≡ ±1: 1 − e^{∓iπ/3} = e^{±iπ/3}. If θ_w is one principal piece with wrap integer k_w,
+///   m_uθ_w/6 = α + πn_u/3 with n_u = (u_x − u_w) + m_u(k_x − k_w), so g_u∘R_(u,w)(p) =
+///   e^{iπn_u/3}b and (winding(θ_w) = 0 certified) p ∈ Ω_uw ⇔ 0 < r < r_u ∧
+///   b ∈ disk(e^{−iπn_u/3}). With n_u ≡ −n_x (mod 6) the two disks coincide:
+///   Ω_ux ∩ φ_xu⁻¹(Ω_xw) = Ω_ux ∩ Ω_uw = {b ∈ C ∩ D ∩ G} on the box (App. A.1: the inclusion is
+///   an *equality*, which is why direct bisection of the two memberships never separates them).
+///   Cocycle: with c_w = h(e^{iγ}b), γ = ±π/3 = πn_u/3, and c'' = h(e^{−iγ}c) both in the right
+///   half-plane (certified), c'' = 1 − e^{−iγ} + e^{−iγ}b = e^{iγ}c_w exactly
+///   ((h∘M_{−π/3})³ = id), so |c''| = |c_w|, arg c'' = arg c_w + γ (both in (−π/2, π/2)),
+///   and with s_w(u) − s_w(x) ≡ ±1 matching the sign of γ (integer check) φ_wx(φ_xu(p)) =
+///   φ_wu(p) exactly.
 ///
 /// The branch and bound covers u's whole chart: a box is done when the closed form proves it
-/// disjoint from Ω_ux ∩ φ_xu⁻¹(Ω_xw), or when all branch conditions hold on the whole box (they
-/// hold with a margin on the closure of that set, so no box along its boundary is left
-/// unresolved). A box where the closed form proves p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw but p ∉ Ω_uw refutes.
-/// At every box centre in the set, the model's generic maps (`construction::maps`, on point
-/// intervals) are checked against the closed form: the literal membership tests must agree
-/// (otherwise the inclusion is refuted at that point if the model's own tests violate it, or
-/// the result is inconclusive), and the cocycle deviation enclosure is `centre_bound` (a value
-/// above `fail_tol` refutes).
+/// disjoint from Ω_ux ∩ φ_xu⁻¹(Ω_xw), or when the case analysis above applies to the whole box
+/// (the branch conditions hold with a margin on the closure of the set, so no box is left
+/// unresolved and there is no δ). A box where the closed form proves p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw
+/// but p ∉ Ω_uw refutes. Proven boxes are split down to `check_diam`, and at every centre in
+/// the set the model's generic maps (`construction::maps`, on point intervals) are checked
+/// against the closed form: its literal membership tests must all say "in" (if they show
+/// p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw, p ∉ Ω_uw the inclusion is refuted at that point; any other
+/// disagreement makes the result inconclusive), and the enclosure of the cocycle deviation is
+/// `centre_bound` (above `fail_tol` refutes).
 pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<PropertyResult> {
     let t0 = Instant::now();
     let Some(t) = key.triangle() else {
@@ -1289,8 +1337,8 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
     let mismatch_note = first_mismatch
         .map(|m| format!(" INCONCLUSIVE: the model disagrees with the closed form at {model_mismatch} of {centre_checks} centres, e.g. {m}"))
         .unwrap_or_default();
-    let incl_stmt = format!("φ_xu⁻¹(Ω_xu ∩ Ω_xw) = Ω_ux ∩ Ω_uw ⊆ Ω_uw for every point (literal Def. 4.1.9 via its closed form, u's chart; no δ): every box of the chart is proven disjoint from Ω_ux ∩ φ_xu⁻¹(Ω_xw), or all branch conditions (principal pieces with exact wrap identities, winding 0, c_x > 0) are certified on it, under which both sets are C ∩ D ∩ G in g_u∘R_(u,x) coordinates (exact identity 1 − e^{{iσπ/3}} = e^{{−iσπ/3}}, App. A.1; proof at `certify::prove_triangle`); the model's literal tests agree at all {centre_checks} box centres in the set{mismatch_note}");
-    let coc_stmt = format!("φ_wu = φ_wx∘φ_xu on all of φ_xu⁻¹(Ω_xu ∩ Ω_xw), exactly: under the certified branch conditions c'' = e^{{iσπ/3}}c_w ((h∘M_{{−π/3}})³ = id) gives equal points; `bound` = 0 is the proven whole-domain bound; `centre_bound` = max interval enclosure of |φ_wu(p) − φ_wx(φ_xu(p))| by the model's generic maps at the {centre_checks} box centres in the set (evaluator rounding; above fail_tol refutes)");
+    let incl_stmt = format!("φ_xu⁻¹(Ω_xu ∩ Ω_xw) = Ω_ux ∩ Ω_uw ⊆ Ω_uw at every point (literal Def. 4.1.9 via its closed form, u's chart; no δ): every box of the chart is proven disjoint from Ω_ux ∩ φ_xu⁻¹(Ω_xw) or the exact case analysis applies on it (principal pieces with integer wrap identities, winding 0, c_x > 0 certified; then both sets are C ∩ D ∩ G in g_u∘R_(u,x) coordinates, by 1 − e^{{∓iπ/3}} = e^{{±iπ/3}}, or the set is empty because two disks of radius √3/2 are ≥ √3 apart; proof at `certify::prove_triangle`); the model's literal tests agree with the closed form at every box centre in the set{mismatch_note}");
+    let coc_stmt = "φ_wu = φ_wx∘φ_xu on all of φ_xu⁻¹(Ω_xu ∩ Ω_xw), exactly: on every box meeting the set the branch conditions are certified, under which c'' = e^{±iπ/3}c_w ((h∘M_{−π/3})³ = id) gives equal points; `bound` = 0 is the proven whole-domain bound; `centre_bound` = max interval enclosure of |φ_wu(p) − φ_wx(φ_xu(p))| by the model's generic maps at every box centre in the set (evaluator rounding; above fail_tol refutes)".to_string();
     let mk = |prop: &str,
               stmt: String,
               refuted: Option<CertWitness>,
@@ -1394,6 +1442,7 @@ pub fn run(
         results,
         wall_millis: t0.elapsed().as_millis() as u64,
         jobs,
+        statements: Default::default(),
     })
 }
 
@@ -1435,6 +1484,7 @@ pub fn merge(parts: Vec<Certificate>) -> Result<Certificate, CertifyError> {
         results,
         wall_millis: wall,
         jobs: first.jobs,
+        statements: Default::default(),
     })
 }
 
@@ -1524,6 +1574,10 @@ pub fn summary_table(cert: &Certificate) -> String {
         cert.results.len(),
         cert.wall_millis as f64 / 1000.0,
         cert.jobs
+    ));
+    s.push_str(&format!(
+        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json --summary CERTIFICATE_SUMMARY_M{}.md` (release build). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements).\n\n",
+        cert.max_degree, cert.jobs, cert.max_degree, cert.max_degree
     ));
     s.push_str("| property | configurations | certified | certified outside δ | refuted | inconclusive | max bound | max centre bound | max δ | boxes | max depth | time (s, sum) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     let mut by: BTreeMap<&str, Vec<&PropertyResult>> = BTreeMap::new();
