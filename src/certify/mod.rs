@@ -1500,6 +1500,8 @@ pub struct Coverage {
     pub refuted: Vec<ConfigKey>,
     /// Configurations whose result is inconclusive.
     pub inconclusive: Vec<ConfigKey>,
+    /// Largest δ among the covering results (`None`: all certified on the whole set).
+    pub max_delta: Option<f64>,
 }
 
 /// Which properties a key kind carries.
@@ -1537,6 +1539,7 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Coverag
                 missing: vec![],
                 refuted: vec![],
                 inconclusive: vec![],
+                max_delta: None,
             };
             for k in configs_needed
                 .iter()
@@ -1549,7 +1552,10 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Coverag
                 {
                     None => cov.missing.push(*k),
                     Some(r) => match r.outcome {
-                        Outcome::Certified | Outcome::CertifiedOutsideDelta => {}
+                        Outcome::Certified => {}
+                        Outcome::CertifiedOutsideDelta => {
+                            cov.max_delta = omax(cov.max_delta, r.delta);
+                        }
                         Outcome::Refuted => cov.refuted.push(*k),
                         Outcome::Inconclusive => cov.inconclusive.push(*k),
                     },

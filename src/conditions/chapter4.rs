@@ -387,9 +387,13 @@ pub fn render(r: &Ch4Report) -> String {
         for p in &cc.properties {
             let id = cert_property_check_id(&p.property);
             if p.certified {
+                let scope = match p.max_delta {
+                    None => "on the whole stated sets".to_string(),
+                    Some(d) => format!("outside δ-boxes, δ ≤ {d:.1e}"),
+                };
                 let _ = writeln!(
                     s,
-                    "  {id}: CERTIFIED for this mesh ({} covers every configuration)",
+                    "  {id}: CERTIFIED for this mesh, {scope} ({} covers every configuration)",
                     p.property
                 );
             } else {
