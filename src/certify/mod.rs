@@ -1260,14 +1260,23 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
                 }
             }
             match cocycle(&p) {
-                Some(dv) if dv.inf() > s.fail_tol => {
-                    if cocycle_refuted.is_none() {
-                        cocycle_refuted =
-                            Some((*b, format!("|φ_wu(p) − φ_wx(φ_xu(p))| ≥ {:.3e}", dv.inf())));
+                Some(dv) if dv.inf() > s.fail_tol && cocycle_refuted.is_none() => {
+                    cocycle_refuted =
+                        Some((*b, format!("|φ_wu(p) − φ_wx(φ_xu(p))| ≥ {:.3e}", dv.inf())));
+                }
+                Some(dv) if dv.inf() > s.fail_tol => {}
+                Some(dv) => cb = omax(cb, Some(dv.sup())),
+                None => {
+                    // The model's maps fail to evaluate at a point of the set.
+                    model_mismatch += 1;
+                    if first_mismatch.is_none() {
+                        let p = b.centre_xy();
+                        first_mismatch = Some(format!(
+                            "at p = ({:.9}, {:.9}) the model's maps could not evaluate the cocycle",
+                            p[0], p[1]
+                        ));
                     }
                 }
-                Some(dv) => cb = Some(dv.sup()),
-                None => {}
             }
         }
         Leaf::Proven(Some(0.0), cb)
