@@ -12,6 +12,7 @@ fn quick() -> Settings {
         max_depth: 20,
         budget: 200_000,
         fail_tol: 1e-9,
+        ..Settings::default()
     }
 }
 
@@ -166,4 +167,97 @@ fn cert_shard_merge_and_coverage() {
     assert!(coverage(&m, &need4)
         .iter()
         .all(|c| !c.certified && !c.missing.is_empty()));
+}
+
+#[test]
+fn l4_2_1_cert_exact_no_delta_every_orientation_including_m_x_3_tangency() {
+    // m_x = 3: the wrapped branch of Ω_xw is tangent to Ω_ux at one point (two disks of
+    // radius √3/2 whose centres are √3 apart); the exact case analysis closes it, so no box is
+    // left unresolved. Large degrees exercise the winding conditions.
+    for (a, b, x) in [(3, 3, 3), (4, 9, 3), (7, 3, 5), (16, 11, 13)] {
+        for ccw in [true, false] {
+            let key = ConfigKey::Triangle {
+                m_u: a,
+                m_w: b,
+                m_x: x,
+                ccw,
+            };
+            let rs = prove_triangle(key, &Model::paper(), &quick());
+            for r in &rs {
+                assert_eq!(r.outcome, Outcome::Certified, "{r:?}");
+                assert_eq!(r.unresolved, 0);
+                assert_eq!(r.delta, None);
+            }
+            assert_eq!(rs[1].bound, Some(0.0), "{:?}", rs[1]);
+            assert!(rs[1].centre_bound.expect("centre checks ran") < 1e-12);
+        }
+    }
+}
+
+#[test]
+fn l4_2_1_cert_planted_rotation_not_certified() {
+    // With a wrong rotation label the model's literal domains no longer match the closed
+    // form: the inclusion prover must not certify (inconclusive or refuted).
+    let bad = Model {
+        lens_radius_offset: 0.0,
+        label_shift: 1,
+    };
+    let key = ConfigKey::Triangle {
+        m_u: 4,
+        m_w: 6,
+        m_x: 5,
+        ccw: false,
+    };
+    let rs = prove_triangle(key, &bad, &quick());
+    assert!(!ok(rs[0].outcome), "{:?}", rs[0]);
+    assert_eq!(rs[1].outcome, Outcome::Refuted, "{:?}", rs[1]);
+}
+
+#[test]
+fn p4_2_3_cert_exact_bound_zero() {
+    for (a, b) in [(3, 16), (12, 4), (7, 7)] {
+        let r = prove_inverse(a, b, &Model::paper(), &quick());
+        assert_eq!(r.outcome, Outcome::Certified, "{r:?}");
+        assert_eq!(r.bound, Some(0.0));
+        assert!(r.centre_bound.expect("centre checks ran") < 1e-12);
+    }
+}
+
+#[test]
+fn cert_file_compaction_round_trip() {
+    let all = all_configs(3);
+    let c = run(&all, 3, &Model::paper(), &quick(), 1, None).expect("run");
+    let mut f = c.clone();
+    f.compact();
+    assert!(!f.statements.is_empty());
+    assert!(f.results.iter().all(|r| r.statement.is_empty()));
+    let text = serde_json::to_string(&f).expect("ser");
+    let mut back: pseudomanifold::certify::Certificate = serde_json::from_str(&text).expect("de");
+    back.expand();
+    assert_eq!(back.results, c.results);
+}
+
+#[test]
+fn cert_check_spec_certificates_coverage_of_a_mesh() {
+    use pseudomanifold::conditions::chapter4::certificate_coverage;
+    use pseudomanifold::mesh::generate::octahedron;
+    use pseudomanifold::mesh::validate::validate;
+    let k = validate(&octahedron())
+        .surface
+        .expect("octahedron is a surface");
+    // A certificate for degrees 3 only misses the octahedron's degree-4 configurations.
+    let c3 = run(&all_configs(3), 3, &Model::paper(), &quick(), 1, None).expect("run");
+    let cov = certificate_coverage(&k, &c3, "c3");
+    assert!(cov.config_errors.is_empty());
+    assert!(cov
+        .properties
+        .iter()
+        .all(|p| !p.certified && !p.missing.is_empty()));
+    // Degrees up to 4 cover it.
+    let c4 = run(&all_configs(4), 4, &Model::paper(), &quick(), 1, None).expect("run");
+    let cov = certificate_coverage(&k, &c4, "c4");
+    assert!(!cov.properties.is_empty());
+    for p in &cov.properties {
+        assert!(p.certified, "{p:?}");
+    }
 }

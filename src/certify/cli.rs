@@ -61,17 +61,24 @@ pub fn read_certificate(path: &Path) -> Result<Certificate, CertifyError> {
         path: path.display().to_string(),
         source,
     })?;
-    serde_json::from_str(&s).map_err(|source| CertifyError::Json {
+    let mut c: Certificate = serde_json::from_str(&s).map_err(|source| CertifyError::Json {
         path: path.display().to_string(),
         source,
-    })
+    })?;
+    c.expand();
+    Ok(c)
 }
 
 fn emit(cert: &Certificate, out: &Path, summary: Option<&Path>) -> Result<(), CertifyError> {
-    let json = serde_json::to_string_pretty(cert).map_err(|source| CertifyError::Json {
+    let mut file = cert.clone();
+    file.compact();
+    // One result per line: small enough to keep in the repository, still diffable.
+    let mut json = serde_json::to_string(&file).map_err(|source| CertifyError::Json {
         path: out.display().to_string(),
         source,
     })?;
+    json = json.replace("},{\"key\"", "},\n{\"key\"");
+    json.push('\n');
     write(out, &json)?;
     let table = summary_table(cert);
     if let Some(p) = summary {

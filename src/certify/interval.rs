@@ -62,26 +62,39 @@ pub fn all_pieces(ts: &[Trit]) -> Trit {
 /// every angle in `th` (width < 2π). One piece, or two when `th` crosses the cut ±π: the
 /// interval version of "a box straddling the negative x-axis is handled as two boxes".
 pub fn principal_pieces(th: I) -> Vec<I> {
+    principal_pieces_k(th).into_iter().map(|(p, _)| p).collect()
+}
+
+/// [`principal_pieces`] with the wrap integer of each piece: every point of the piece is
+/// t − 2πk for a point t of `th` (exactly, as real numbers), with `k` the returned integer.
+/// The provers use `k` for exact identities between reduced angles (e.g. "θ_w − θ_x =
+/// 2π/m_u exactly on this box"), which intervals alone cannot certify.
+pub fn principal_pieces_k(th: I) -> Vec<(I, i64)> {
     let two_pi = I::PI * c(2.0);
-    let k = (th.mid() / (2.0 * std::f64::consts::PI)).round();
-    let t = th - two_pi * c(k);
+    let kf = (th.mid() / (2.0 * std::f64::consts::PI)).round();
+    let k = if kf.is_finite() && kf.abs() < 1e15 {
+        kf as i64
+    } else {
+        0
+    };
+    let t = th - two_pi * c(k as f64);
     let (pl, ph) = (I::PI.inf(), I::PI.sup());
     let range = iv(-ph, ph);
     let mut v = Vec::with_capacity(2);
     let main = t.intersection(range);
     if !main.is_empty() {
-        v.push(main);
+        v.push((main, k));
     }
     if t.sup() > pl {
         let p = (t.intersection(iv(pl, f64::INFINITY)) - two_pi).intersection(range);
         if !p.is_empty() {
-            v.push(p);
+            v.push((p, k + 1));
         }
     }
     if t.inf() < -pl {
         let p = (t.intersection(iv(f64::NEG_INFINITY, -pl)) + two_pi).intersection(range);
         if !p.is_empty() {
-            v.push(p);
+            v.push((p, k - 1));
         }
     }
     v

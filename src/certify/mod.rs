@@ -20,7 +20,7 @@ use crate::construction::maps::{self, cos_pi_6, is_nonzero, EdgeConfig, Ppm, Tri
 use crate::construction::scalar::{Iv, Mp, Scalar, Trit};
 use crate::report::{CheckResult, Verdict, Witness};
 use inari::Interval as I;
-use interval::{c, iv, member_any, phi_polar, polar_dist, two_pi_frac, Deg, Domain};
+use interval::{c, iv, member, member_any, phi_polar, two_pi_frac, Deg, Domain};
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
 
@@ -336,6 +336,49 @@ pub struct Certificate {
     pub results: Vec<PropertyResult>,
     pub wall_millis: u64,
     pub jobs: usize,
+    /// Statements shared by many results, by property: a result whose `statement` is empty
+    /// in the file has this one ([`Certificate::compact`], [`Certificate::expand`]).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub statements: std::collections::BTreeMap<String, String>,
+}
+
+impl Certificate {
+    /// Move each property's most common statement into `statements` and clear it in the
+    /// results that share it (the file format; statements are long, results many).
+    pub fn compact(&mut self) {
+        use std::collections::BTreeMap;
+        let mut counts: BTreeMap<(&str, &str), usize> = BTreeMap::new();
+        for r in &self.results {
+            *counts.entry((&r.property, &r.statement)).or_default() += 1;
+        }
+        let mut best: BTreeMap<String, (usize, String)> = BTreeMap::new();
+        for ((p, st), n) in counts {
+            let e = best.entry(p.to_string()).or_insert((0, String::new()));
+            if n > e.0 {
+                *e = (n, st.to_string());
+            }
+        }
+        for r in &mut self.results {
+            if best
+                .get(&r.property)
+                .is_some_and(|(_, st)| *st == r.statement)
+            {
+                r.statement.clear();
+            }
+        }
+        self.statements
+            .extend(best.into_iter().map(|(p, (_, st))| (p, st)));
+    }
+    /// Undo [`Certificate::compact`]: fill empty statements from `statements`.
+    pub fn expand(&mut self) {
+        for r in &mut self.results {
+            if r.statement.is_empty() {
+                if let Some(st) = self.statements.get(&r.property) {
+                    r.statement = st.clone();
+                }
+            }
+        }
+    }
 }
 
 /// Errors of the certificate tools.
@@ -413,6 +456,15 @@ impl PBox {
         let (t, r) = self.mid();
         [r * t.cos(), r * t.sin()]
     }
+}
+
+/// The exact case analysis of [`prove_triangle`] on a box.
+enum Exact {
+    /// No point of the box is in Ω_ux ∩ φ_xu⁻¹(Ω_xw).
+    Empty,
+    /// On the box, Ω_ux ∩ φ_xu⁻¹(Ω_xw) = Ω_ux ∩ Ω_uw and the cocycle identity is exact.
+    Equal,
+    Undecided,
 }
 
 /// What a classifier says about a box.
@@ -494,6 +546,15 @@ pub struct Settings {
     pub budget: u64,
     /// A composite deviating from the identity by more than this at a box centre refutes.
     pub fail_tol: f64,
+    /// Boxes on which an identity is proven exactly are still split down to this diameter,
+    /// so that the model's generic maps are cross-checked at a grid of centres of this
+    /// spacing (the link between the model and the closed forms; catches planted faults).
+    #[serde(default = "default_check_diam")]
+    pub check_diam: f64,
+}
+
+fn default_check_diam() -> f64 {
+    0.2
 }
 
 impl Default for Settings {
@@ -502,6 +563,7 @@ impl Default for Settings {
             max_depth: 26,
             budget: 400_000,
             fail_tol: 1e-9,
+            check_diam: default_check_diam(),
         }
     }
 }
@@ -828,33 +890,45 @@ pub fn prove_nonempty(m_u: u32, m_w: u32, model: &Model) -> PropertyResult {
     )
 }
 
-/// P4.2.3(cert): φ_uw∘φ_wu = id on Ω_uw (Def. 3.4.1(3b)).
+/// P4.2.3(cert): φ_uw∘φ_wu = id on Ω_uw (Def. 3.4.1(3b)), exactly, on all of Ω_uw.
+///
+/// Proof. Let p have principal angle θ (relative to s_u(w), after R_(u,w)) and radius r,
+/// b = g_u(R_(u,w)p) = ρe^{iα} (α = m_uθ/6, ρ = k_u r), c = h(b) = 1 − b. On a box where
+/// (i) θ lies in one principal piece, (ii) winding(θ) = 0, i.e. |α| < π, and (iii) c_x > 0,
+/// every point satisfies: Π(c) = (β, s) with |β| < π/2, so q = φ_wu(p) has principal angle
+/// 6β/m_w (|6β/m_w| < π) and radius s/k_w relative to s_w(u); q ∈ Ω_wu (closed form: |β| < π,
+/// s < √3/2 since b ∈ D, |c − 1| = |b| < √3/2); g_w∘R_(w,u)(q) = s e^{iβ} = c exactly (the
+/// scalings m_w/6·6/m_w and k_w/k_w cancel), h(c) = b, and Π(b) = (α, ρ) because |α| < π, so
+/// φ_uw(q) = R_(u,w)⁻¹Π⁻¹(6α/m_u, ρ/k_u) = p. The prover certifies (i)–(iii) by intervals on
+/// every box of u's chart that meets Ω_uw (closed form of Def. 4.1.9, module `interval`), so
+/// the deviation is exactly 0 on all of Ω_uw: `bound` = 0, no δ. `centre_bound` is the
+/// enclosure of |φ_uw∘φ_wu(p) − p| computed by the model's generic maps (`construction::maps`)
+/// at every box centre in Ω_uw; it ties the model to the closed form (a planted fault in the
+/// model is refuted there) and measures the evaluator's rounding, not the mathematics.
 pub fn prove_inverse(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> PropertyResult {
     let t0 = Instant::now();
     let (du, dw) = (Deg::new(m_u), Deg::new(m_w));
     let e = canon_edge(m_u, m_w);
-    let st = bnb(disk_box(m_u), s.max_depth.min(16), s.budget, |b| {
+    let st = bnb(disk_box(m_u), s.max_depth, s.budget, |b| {
         let (th, r) = (b.ith(), b.ir());
         if member_any(&du, th, r, Domain::Literal).is_false() {
             return Leaf::Proven(None, None);
         }
         let pieces = interval::principal_pieces(th);
-        if pieces.len() != 1 || !du.winding0(pieces[0]).is_true() {
+        if pieces.len() != 1
+            || !du.winding0(pieces[0]).is_true()
+            || phi_polar(&du, &dw, pieces[0], r).is_none()
+        {
             return Leaf::Split;
         }
-        let Some((tw, rw)) = phi_polar(&du, &dw, pieces[0], r) else {
+        // (i)–(iii) hold on the box: the identity is exact there.
+        if b.diam() > s.check_diam {
             return Leaf::Split;
-        };
-        let Some((tu, ru)) = phi_polar(&dw, &du, tw, rw) else {
-            return Leaf::Split;
-        };
-        let whole = polar_dist(tu, ru, th, r);
-        // Tight check at the centre with the generic maps (catches planted faults).
-        let p = b.centre_xy();
-        let inside = member_any(&du, c(b.mid().0), c(b.mid().1), Domain::Literal).is_true();
+        }
+        let (tm, rm) = b.mid();
         let mut cb = None;
-        if inside {
-            match roundtrip_dev(model, &e, &iv_point(p)) {
+        if member_any(&du, c(tm), c(rm), Domain::Literal).is_true() {
+            match roundtrip_dev(model, &e, &iv_point(b.centre_xy())) {
                 Some(dv) if dv.inf() > s.fail_tol => {
                     return Leaf::Refuted(format!("|φ_uw(φ_wu(p)) − p| ≥ {:.3e}", dv.inf()))
                 }
@@ -862,10 +936,7 @@ pub fn prove_inverse(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Propert
                 None => return Leaf::Split,
             }
         }
-        if whole > 0.05 && b.diam() > 1e-3 {
-            return Leaf::Split;
-        }
-        Leaf::Proven(Some(whole), cb)
+        Leaf::Proven(Some(0.0), cb)
     });
     let witness = st.refuted.as_ref().map(|(b, txt)| {
         let p = b.centre_xy();
@@ -888,7 +959,7 @@ pub fn prove_inverse(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Propert
     finish(
         ConfigKey::Edge { m_u, m_w },
         "P4.2.3(cert)",
-        "φ_uw∘φ_wu = id on Ω_uw: exact (each factor pair is an exact inverse on the certified branches: winding 0, c_x > 0, checked on every box meeting Ω_uw); `bound` = interval enclosure of |φ_uw∘φ_wu(p) − p| over the whole domain (natural extension), `centre_bound` = enclosure at all box centres by the generic maps".into(),
+        "φ_uw∘φ_wu = id on all of Ω_uw, exactly: on every box of u's chart meeting Ω_uw the branch conditions (one principal piece, winding 0, c_x > 0) are certified by intervals, and under them the round trip is the identity by exact cancellation (proof at `certify::prove_inverse`); `bound` = 0 is the proven whole-domain bound; `centre_bound` = max interval enclosure of |φ_uw∘φ_wu(p) − p| by the model's generic maps at every box centre in Ω_uw (evaluator rounding; a larger value refutes)".into(),
         st,
         witness,
         t0,
@@ -1005,92 +1076,213 @@ pub fn prove_hausdorff(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Prope
 // Triangle provers.
 // ---------------------------------------------------------------------------------------------
 
-/// L4.2.1(cert) and L4.2.2(cert) for a triangle configuration, by one branch and bound over
-/// u's chart: for every p with p ∈ Ω_ux and φ_xu(p) ∈ Ω_xw, p ∈ Ω_uw (inclusion), and there
-/// φ_wu(p) = φ_wx(φ_xu(p)) (cocycle).
+/// L4.2.1(cert) and L4.2.2(cert) for a triangle configuration, exactly and on the whole set.
+///
+/// Notation: for p in u's chart, θ_x and θ_w are its principal angles relative to s_u(x) and
+/// s_u(w), r its radius, b = k_u r e^{iα} with α = m_uθ_x/6 (so b = g_u∘R_(u,x)(p)), and
+/// c = h(b) = 1 − b. C, D are the open disks of radius √3/2 about 0 and 1 (the lens E = C ∩ D,
+/// Sec. 4.1). By the closed form of Def. 4.1.9 (module `interval`), p ∈ Ω_ux ⇔ 0 < r < r_u,
+/// winding(θ_x) = 0, b ∈ D (r < r_u ⇔ b ∈ C).
+///
+/// On a box where θ_x is one principal piece with winding 0 and c_x > 0 (so Π(c) = (β, s),
+/// |β| < π/2), q = φ_xu(p) has principal angle 6β/m_x relative to s_x(u) (|6β/m_x| < π
+/// certified) and radius s/k_x. If its angle θ' relative to s_x(w) is one principal piece with
+/// wrap integer k' (θ' = 6β/m_x + 2π(x_u − x_w)/m_x − 2πk'), then m_xθ'/6 = β + πn_x/3 with
+/// the *integer* n_x = (x_u − x_w) − m_x k', so g_x∘R_(x,w)(q) = e^{iπn_x/3}c exactly and (with
+/// winding(θ') = 0 certified; if it is certified false, q ∉ Ω_xw)
+///   q ∈ Ω_xw ⇔ b ∈ D ∧ |e^{iπn_x/3}(1 − b) − 1| < √3/2 ⇔ b ∈ D ∧ b ∈ disk(1 − e^{−iπn_x/3}).
+/// * n_x ≡ 2, 3, 4 (mod 6): |1 − e^{−iπn_x/3}| = 2|sin(πn_x/6)| ≥ √3, so this disk and C
+///   are disjoint: no point of the box is in Ω_ux ∩ φ_xu⁻¹(Ω_xw) (for m_x = 3 this is the
+///   wrapped branch, tangent to C at one point: why bisection alone cannot close it).
+/// * n_x ≡ ±1: 1 − e^{∓iπ/3} = e^{±iπ/3}. If θ_w is one principal piece with wrap integer k_w,
+///   m_uθ_w/6 = α + πn_u/3 with n_u = (u_x − u_w) + m_u(k_x − k_w), so g_u∘R_(u,w)(p) =
+///   e^{iπn_u/3}b and (winding(θ_w) = 0 certified) p ∈ Ω_uw ⇔ 0 < r < r_u ∧
+///   b ∈ disk(e^{−iπn_u/3}). With n_u ≡ −n_x (mod 6) the two disks coincide:
+///   Ω_ux ∩ φ_xu⁻¹(Ω_xw) = Ω_ux ∩ Ω_uw = {b ∈ C ∩ D ∩ G} on the box (App. A.1: the inclusion is
+///   an *equality*, which is why direct bisection of the two memberships never separates them).
+///   Cocycle: with c_w = h(e^{iγ}b), γ = ±π/3 = πn_u/3, and c'' = h(e^{−iγ}c) both in the right
+///   half-plane (certified), c'' = 1 − e^{−iγ} + e^{−iγ}b = e^{iγ}c_w exactly
+///   ((h∘M_{−π/3})³ = id), so |c''| = |c_w|, arg c'' = arg c_w + γ (both in (−π/2, π/2)),
+///   and with s_w(u) − s_w(x) ≡ ±1 matching the sign of γ (integer check) φ_wx(φ_xu(p)) =
+///   φ_wu(p) exactly.
+///
+/// The branch and bound covers u's whole chart: a box is done when the closed form proves it
+/// disjoint from Ω_ux ∩ φ_xu⁻¹(Ω_xw), or when the case analysis above applies to the whole box
+/// (the branch conditions hold with a margin on the closure of the set, so no box is left
+/// unresolved and there is no δ). A box where the closed form proves p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw
+/// but p ∉ Ω_uw refutes. Proven boxes are split down to `check_diam`, and at every centre in
+/// the set the model's generic maps (`construction::maps`, on point intervals) are checked
+/// against the closed form: its literal membership tests must all say "in" (if they show
+/// p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw, p ∉ Ω_uw the inclusion is refuted at that point; any other
+/// disagreement makes the result inconclusive), and the enclosure of the cocycle deviation is
+/// `centre_bound` (above `fail_tol` refutes).
 pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<PropertyResult> {
     let t0 = Instant::now();
     let Some(t) = key.triangle() else {
         return vec![];
     };
     let (du, dw, dx) = (Deg::new(t.m_u), Deg::new(t.m_w), Deg::new(t.m_x));
-    let sh_ux = two_pi_frac(t.u_x as i64, t.m_u as i64);
-    let sh_uw = two_pi_frac(t.u_w as i64, t.m_u as i64);
-    let sh_xuw = two_pi_frac(t.x_u as i64 - t.x_w as i64, t.m_x as i64);
-    let sh_wu = two_pi_frac(t.w_u as i64, t.m_w as i64);
-    let sh_wx = two_pi_frac(t.w_x as i64, t.m_w as i64);
+    let (mu, mw, mx) = (t.m_u as i64, t.m_w as i64, t.m_x as i64);
+    let sh_ux = two_pi_frac(t.u_x as i64, mu);
+    let sh_uw = two_pi_frac(t.u_w as i64, mu);
+    let sh_xuw = two_pi_frac(t.x_u as i64 - t.x_w as i64, mx);
     let (uw, ux, xw) = (t.uw(), t.ux(), t.xw());
     let mut cocycle_refuted: Option<(PBox, String)> = None;
+    let mut model_refuted: Option<(PBox, String)> = None;
+    let mut model_mismatch: u64 = 0;
+    let mut first_mismatch: Option<String> = None;
+    let mut centre_checks: u64 = 0;
     let cocycle = |p: &P2<Iv>| -> Option<Iv> {
         let lhs = model.g_uw_formula(&uw, p).ok()?;
         let mid = model.g_uw_formula(&ux, p).ok()?;
         let rhs = model.g_uw_formula(&xw, &mid).ok()?;
         Some(lhs.sub(&rhs).norm2().sqrt())
     };
-    let st = bnb(disk_box(t.m_u), s.max_depth.min(14), s.budget, |b| {
-        let (th, r) = (b.ith(), b.ir());
-        // A = p ∈ Ω_ux ∧ φ_xu(p) ∈ Ω_xw, piecewise over the principal angle w.r.t. x.
-        let mut a_pieces = Vec::new();
-        let mut images = Vec::new();
+    // Closed-form A = [p ∈ Ω_ux ∧ φ_xu(p) ∈ Ω_xw] on (θ, r), piecewise over principal angles.
+    let a_of = |th: I, r: I| -> Trit {
+        let mut v = Vec::with_capacity(2);
         for p in interval::principal_pieces(th - sh_ux) {
-            let a1 = member_any(&du, p, r, Domain::Literal);
+            let a1 = member(&du, p, r, Domain::Literal);
             if a1.is_false() {
-                a_pieces.push(Trit::False);
+                v.push(Trit::False);
                 continue;
             }
             match phi_polar(&du, &dx, p, r) {
-                Some((tx, rx)) => {
-                    let a2 = member_any(&dx, tx + sh_xuw, rx, Domain::Literal);
-                    a_pieces.push(a1.and(a2));
-                    images.push((tx, rx));
-                }
-                None => a_pieces.push(Trit::Unknown),
+                Some((tx, rx)) => v.push(a1.and(member_any(&dx, tx + sh_xuw, rx, Domain::Literal))),
+                None => v.push(Trit::Unknown),
             }
         }
-        let a = interval::all_pieces(&a_pieces);
+        interval::all_pieces(&v)
+    };
+    // The exact case analysis of the doc comment, on the whole box.
+    let exact = |th: I, r: I| -> Exact {
+        let px = interval::principal_pieces_k(th - sh_ux);
+        let [(tx, kx)] = px.as_slice() else {
+            return Exact::Undecided;
+        };
+        match du.winding0(*tx) {
+            Trit::False => return Exact::Empty,
+            Trit::Unknown => return Exact::Undecided,
+            Trit::True => {}
+        }
+        let Some((tq, rq)) = phi_polar(&du, &dx, *tx, r) else {
+            return Exact::Undecided;
+        };
+        if tq.abs().sup() >= I::PI.inf() {
+            return Exact::Undecided;
+        }
+        let pq = interval::principal_pieces_k(tq + sh_xuw);
+        let [(tqw, kq)] = pq.as_slice() else {
+            return Exact::Undecided;
+        };
+        match dx.winding0(*tqw) {
+            Trit::False => return Exact::Empty,
+            Trit::Unknown => return Exact::Undecided,
+            Trit::True => {}
+        }
+        // g_x∘R_(x,w)(q) = e^{iπ n_x/3}·c exactly.
+        let n_x = ((t.x_u as i64 - t.x_w as i64) - mx * kq).rem_euclid(6);
+        if matches!(n_x, 2..=4) {
+            // A ⊆ C ∩ disk(1 − e^{−iπn_x/3}): centres 2|sin(πn_x/6)| ≥ √3 apart, radii √3/2.
+            return Exact::Empty;
+        }
+        if n_x == 0 {
+            return Exact::Undecided;
+        }
+        let pw = interval::principal_pieces_k(th - sh_uw);
+        let [(tw, kw)] = pw.as_slice() else {
+            return Exact::Undecided;
+        };
+        // g_u∘R_(u,w)(p) = e^{iπ n_u/3}·b exactly.
+        let n_u = ((t.u_x as i64 - t.u_w as i64) + mu * (kx - kw)).rem_euclid(6);
+        if (n_x + n_u) % 6 != 0 || !du.winding0(*tw).is_true() {
+            return Exact::Undecided;
+        }
+        // Equal sets. Cocycle branch conditions: c_w, c'' in the right half-plane, and the
+        // angle offset ±π/3 (sign of n_u) matches the labels of u and x in w's star.
+        let sgn = if n_u == 1 { 1 } else { -1 };
+        let cocycle_ok = (sgn + t.w_x as i64 - t.w_u as i64).rem_euclid(mw) == 0
+            && phi_polar(&du, &dw, *tw, r).is_some()
+            && phi_polar(&dx, &dw, *tqw, rq).is_some();
+        if cocycle_ok {
+            Exact::Equal
+        } else {
+            Exact::Undecided
+        }
+    };
+    let st = bnb(disk_box(t.m_u), s.max_depth, s.budget, |b| {
+        let (th, r) = (b.ith(), b.ir());
+        let a = a_of(th, r);
         if a.is_false() {
             return Leaf::Proven(None, None);
         }
-        let bm = member_any(&du, th - sh_uw, r, Domain::Literal);
-        if a.is_true() && bm.is_false() {
-            return Leaf::Refuted("p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw, p ∉ Ω_uw".into());
+        if a.is_true() && member_any(&du, th - sh_uw, r, Domain::Literal).is_false() {
+            return Leaf::Refuted("p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw, p ∉ Ω_uw (closed form)".into());
         }
-        if !bm.is_true() {
-            return Leaf::Split;
-        }
-        // Inclusion holds on the box; cocycle bound on the box (natural extension).
-        let mut whole = None;
-        let pw = interval::principal_pieces(th - sh_uw);
-        if pw.len() == 1 && images.len() == 1 {
-            if let Some((tw, rw)) = phi_polar(&du, &dw, pw[0], r) {
-                let (tx, rx) = images[0];
-                let px = interval::principal_pieces(tx + sh_xuw);
-                if px.len() == 1 {
-                    if let Some((tw2, rw2)) = phi_polar(&dx, &dw, px[0], rx) {
-                        whole = Some(polar_dist(tw + sh_wu, rw, tw2 + sh_wx, rw2));
-                    }
+        match exact(th, r) {
+            Exact::Empty => return Leaf::Proven(None, None),
+            Exact::Undecided => {
+                if std::env::var("PPM_DBG").is_ok() && b.diam() < 1e-3 {
+                    eprintln!("DBG box {b:?} a={a:?}");
                 }
+                return Leaf::Split;
             }
+            Exact::Equal if b.diam() > s.check_diam => return Leaf::Split,
+            Exact::Equal => {}
         }
-        // Tight check at the centre when the centre lies in the domain.
+        // Proven exactly on the box. Model cross-check at the centre, if it lies in the set.
         let (tm, rm) = b.mid();
         let mut cb = None;
-        let centre_in = member_any(&du, c(tm) - sh_ux, c(rm), Domain::Literal).is_true()
-            && member_any(&du, c(tm) - sh_uw, c(rm), Domain::Literal).is_true();
-        if centre_in {
-            let p = b.centre_xy();
-            match cocycle(&iv_point(p)) {
+        if a_of(c(tm), c(rm)).is_true() {
+            centre_checks += 1;
+            let p = iv_point(b.centre_xy());
+            let m1 = model.in_omega_uw_literal(&ux, &p);
+            let m2 = model
+                .g_uw_formula(&ux, &p)
+                .map(|q| model.in_omega_uw_literal(&xw, &q))
+                .unwrap_or(Trit::Unknown);
+            let m3 = model.in_omega_uw_literal(&uw, &p);
+            if m1.is_true() && m2.is_true() && m3.is_false() {
+                if model_refuted.is_none() {
+                    model_refuted = Some((
+                        *b,
+                        "the model's literal tests: p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw, p ∉ Ω_uw".into(),
+                    ));
+                }
+            } else if m1.is_false() || m2.is_false() || m3.is_false() {
+                model_mismatch += 1;
+                if first_mismatch.is_none() {
+                    let p = b.centre_xy();
+                    first_mismatch = Some(format!(
+                        "at p = ({:.9}, {:.9}) the closed form gives p ∈ Ω_ux ∩ φ_xu⁻¹(Ω_xw) ∩ Ω_uw, the model's literal tests give {m1:?}, {m2:?}, {m3:?}",
+                        p[0], p[1]
+                    ));
+                }
+            }
+            match cocycle(&p) {
                 Some(dv) if dv.inf() > s.fail_tol && cocycle_refuted.is_none() => {
                     cocycle_refuted =
                         Some((*b, format!("|φ_wu(p) − φ_wx(φ_xu(p))| ≥ {:.3e}", dv.inf())));
                 }
-                Some(dv) => cb = Some(dv.sup()),
-                None => {}
+                Some(dv) if dv.inf() > s.fail_tol => {}
+                Some(dv) => cb = omax(cb, Some(dv.sup())),
+                None => {
+                    // The model's maps fail to evaluate at a point of the set.
+                    model_mismatch += 1;
+                    if first_mismatch.is_none() {
+                        let p = b.centre_xy();
+                        first_mismatch = Some(format!(
+                            "at p = ({:.9}, {:.9}) the model's maps could not evaluate the cocycle",
+                            p[0], p[1]
+                        ));
+                    }
+                }
             }
         }
-        Leaf::Proven(whole, cb)
+        Leaf::Proven(Some(0.0), cb)
     });
-    let wit_incl = st.refuted.as_ref().map(|(b, txt)| {
+    let incl_box = st.refuted.clone().or(model_refuted);
+    let wit_incl = incl_box.as_ref().map(|(b, txt)| {
         let p = b.centre_xy();
         let chk = |pf: P2<f64>| {
             model.in_omega_uw_literal(&ux, &pf).is_true()
@@ -1151,18 +1343,20 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
         }
     });
     let ms = t0.elapsed().as_millis() as u64;
-    let incl_stmt = "φ_xu⁻¹(Ω_xu ∩ Ω_xw) ⊆ Ω_uw (literal Def. 4.1.9, u's chart): every box of the chart is proven outside Ω_ux ∩ φ_xu⁻¹(Ω_xw) or inside Ω_uw, except the unresolved boxes (diameter ≤ δ) along the common boundary, where the inclusion is tight".to_string();
-    let coc_stmt = "φ_wu = φ_wx∘φ_xu on φ_xu⁻¹(Ω_xu ∩ Ω_xw) (outside the δ-boxes): `bound` = interval enclosure of the distance over every proven box (natural extension, polar form), `centre_bound` = enclosure at every box centre in the domain by the generic maps; exact identity by the proof of L4.2.2 on the certified branches".to_string();
+    let mismatch_note = first_mismatch
+        .map(|m| format!(" INCONCLUSIVE: the model disagrees with the closed form at {model_mismatch} of {centre_checks} centres, e.g. {m}"))
+        .unwrap_or_default();
+    let incl_stmt = format!("φ_xu⁻¹(Ω_xu ∩ Ω_xw) = Ω_ux ∩ Ω_uw ⊆ Ω_uw at every point (literal Def. 4.1.9 via its closed form, u's chart; no δ): every box of the chart is proven disjoint from Ω_ux ∩ φ_xu⁻¹(Ω_xw) or the exact case analysis applies on it (principal pieces with integer wrap identities, winding 0, c_x > 0 certified; then both sets are C ∩ D ∩ G in g_u∘R_(u,x) coordinates, by 1 − e^{{∓iπ/3}} = e^{{±iπ/3}}, or the set is empty because two disks of radius √3/2 are ≥ √3 apart; proof at `certify::prove_triangle`); the model's literal tests agree with the closed form at every box centre in the set{mismatch_note}");
+    let coc_stmt = "φ_wu = φ_wx∘φ_xu on all of φ_xu⁻¹(Ω_xu ∩ Ω_xw), exactly: on every box meeting the set the branch conditions are certified, under which c'' = e^{±iπ/3}c_w ((h∘M_{−π/3})³ = id) gives equal points; `bound` = 0 is the proven whole-domain bound; `centre_bound` = max interval enclosure of |φ_wu(p) − φ_wx(φ_xu(p))| by the model's generic maps at every box centre in the set (evaluator rounding; above fail_tol refutes)".to_string();
     let mk = |prop: &str,
               stmt: String,
               refuted: Option<CertWitness>,
+              inconclusive: bool,
               bound: Option<f64>,
               cb: Option<f64>| {
         let outcome = if refuted.is_some() {
             Outcome::Refuted
-        } else if st.refuted.is_some() {
-            Outcome::Inconclusive
-        } else if st.budget_hit {
+        } else if inconclusive || st.refuted.is_some() || st.budget_hit {
             Outcome::Inconclusive
         } else if st.unresolved == 0 {
             Outcome::Certified
@@ -1188,8 +1382,16 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
             millis: ms,
         }
     };
-    let incl_out = mk("L4.2.1(cert)", incl_stmt, wit_incl, None, None);
-    let coc_out = mk("L4.2.2(cert)", coc_stmt, wit_coc, st.bound, st.centre);
+    let mismatch = model_mismatch > 0;
+    let incl_out = mk("L4.2.1(cert)", incl_stmt, wit_incl, mismatch, None, None);
+    let coc_out = mk(
+        "L4.2.2(cert)",
+        coc_stmt,
+        wit_coc,
+        mismatch,
+        st.bound,
+        st.centre,
+    );
     vec![incl_out, coc_out]
 }
 
@@ -1249,6 +1451,7 @@ pub fn run(
         results,
         wall_millis: t0.elapsed().as_millis() as u64,
         jobs,
+        statements: Default::default(),
     })
 }
 
@@ -1290,6 +1493,7 @@ pub fn merge(parts: Vec<Certificate>) -> Result<Certificate, CertifyError> {
         results,
         wall_millis: wall,
         jobs: first.jobs,
+        statements: Default::default(),
     })
 }
 
@@ -1305,6 +1509,8 @@ pub struct Coverage {
     pub refuted: Vec<ConfigKey>,
     /// Configurations whose result is inconclusive.
     pub inconclusive: Vec<ConfigKey>,
+    /// Largest δ among the covering results (`None`: all certified on the whole set).
+    pub max_delta: Option<f64>,
 }
 
 /// Which properties a key kind carries.
@@ -1342,6 +1548,7 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Coverag
                 missing: vec![],
                 refuted: vec![],
                 inconclusive: vec![],
+                max_delta: None,
             };
             for k in configs_needed
                 .iter()
@@ -1354,7 +1561,10 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Coverag
                 {
                     None => cov.missing.push(*k),
                     Some(r) => match r.outcome {
-                        Outcome::Certified | Outcome::CertifiedOutsideDelta => {}
+                        Outcome::Certified => {}
+                        Outcome::CertifiedOutsideDelta => {
+                            cov.max_delta = omax(cov.max_delta, r.delta);
+                        }
                         Outcome::Refuted => cov.refuted.push(*k),
                         Outcome::Inconclusive => cov.inconclusive.push(*k),
                     },
@@ -1379,6 +1589,10 @@ pub fn summary_table(cert: &Certificate) -> String {
         cert.results.len(),
         cert.wall_millis as f64 / 1000.0,
         cert.jobs
+    ));
+    s.push_str(&format!(
+        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json --summary CERTIFICATE_SUMMARY_M{}.md` (release build). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements).\n\n",
+        cert.max_degree, cert.jobs, cert.max_degree, cert.max_degree
     ));
     s.push_str("| property | configurations | certified | certified outside δ | refuted | inconclusive | max bound | max centre bound | max δ | boxes | max depth | time (s, sum) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     let mut by: BTreeMap<&str, Vec<&PropertyResult>> = BTreeMap::new();

@@ -1,7 +1,7 @@
 //! `ppm check`: read, validate, report.
 
 use crate::conditions::chapter4::{
-    render as render_ch4, run_chapter4, Ch4Options, Ch4Report, Precision,
+    certificate_coverage, render as render_ch4, run_chapter4, Ch4Options, Ch4Report, Precision,
 };
 use crate::construction::{phi_wu_f64_vs_mp, PpmGluing};
 use crate::mesh::io::{read_mesh, ReadOptions};
@@ -32,6 +32,10 @@ pub struct Ch4Args {
     /// Check at most this many distinct configurations of each kind (seeded subset).
     #[arg(long)]
     pub max_configs: Option<usize>,
+    /// Certificate file of `ppm certify`: each Chapter 4 property is marked certified when
+    /// the certificate covers every configuration of the mesh (missing ones are listed).
+    #[arg(long)]
+    pub certificates: Option<std::path::PathBuf>,
 }
 
 impl Ch4Args {
@@ -113,7 +117,21 @@ pub fn run(
             if big {
                 eprintln!("ppm: running the Chapter 4 checks ...");
             }
-            ch4 = Some(run_chapter4(k, &opts));
+            let cert = match &a.certificates {
+                Some(path) => match crate::certify::cli::read_certificate(path) {
+                    Ok(c) => Some((path.display().to_string(), c)),
+                    Err(e) => {
+                        eprintln!("error: {e}");
+                        return ExitCode::from(2);
+                    }
+                },
+                None => None,
+            };
+            let mut rep = run_chapter4(k, &opts);
+            if let Some((file, c)) = &cert {
+                rep.certificates = Some(certificate_coverage(k, c, file));
+            }
+            ch4 = Some(rep);
             if big {
                 eprintln!("ppm: running the Chapter 5 checks ...");
             }

@@ -87,6 +87,73 @@ pub struct Ch4Report {
     pub errata_confirmed: Vec<String>,
     /// IDs that fail and are *not* documented errata: conformance failures.
     pub unexpected_failures: Vec<String>,
+    /// Coverage of the mesh by an interval-proof certificate (`--certificates FILE`), if given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub certificates: Option<CertCoverage>,
+}
+
+/// Which Chapter 4 properties of a mesh a certificate (issue 6, `ppm certify`) covers.
+#[derive(Debug, Clone, Serialize)]
+pub struct CertCoverage {
+    pub file: String,
+    pub max_degree: u32,
+    pub model: String,
+    /// Distinct configurations the mesh needs (vertex degrees, oriented edges, triangles
+    /// read from each of their vertices).
+    pub configs_needed: usize,
+    /// Configurations of the mesh that could not be keyed (invalid labels); none for a
+    /// validated mesh.
+    pub config_errors: Vec<String>,
+    /// Per certificate property: certified for this mesh, or what is missing.
+    pub properties: Vec<crate::certify::Coverage>,
+}
+
+/// The configurations of `k` (degrees, edge and triangle configurations) and their coverage
+/// by `cert`.
+pub fn certificate_coverage(
+    k: &SimplicialSurface,
+    cert: &crate::certify::Certificate,
+    file: &str,
+) -> CertCoverage {
+    let g = PpmGluing::new(k);
+    let mut errors = Vec::new();
+    let mut degrees: Vec<u32> = k.vertices().map(|v| k.degree(v)).collect();
+    degrees.sort_unstable();
+    degrees.dedup();
+    let mut edges = Vec::new();
+    for (a, b) in k.edges() {
+        match g.edge_config(a, b) {
+            Ok(e) => edges.push(e),
+            Err(e) => errors.push(format!("edge [{a}, {b}]: {e}")),
+        }
+    }
+    let mut tris = Vec::new();
+    for f in k.faces() {
+        match g.triangle_config(f) {
+            Ok((t, _)) => tris.push(t),
+            Err(e) => errors.push(format!("face {f}: {e}")),
+        }
+    }
+    let (needed, properties) = match crate::certify::ConfigKey::all_for(&degrees, &edges, &tris) {
+        Ok(keys) => (keys.len(), crate::certify::coverage(cert, &keys)),
+        Err(e) => {
+            errors.push(e.to_string());
+            (0, Vec::new())
+        }
+    };
+    CertCoverage {
+        file: file.to_string(),
+        max_degree: cert.max_degree,
+        model: cert.model.clone(),
+        configs_needed: needed,
+        config_errors: errors,
+        properties,
+    }
+}
+
+/// The Chapter 4 check ID a certificate property stands for (`L4.2.1(cert)` → `L4.2.1`).
+pub fn cert_property_check_id(prop: &str) -> &str {
+    prop.strip_suffix("(cert)").unwrap_or(prop)
 }
 
 fn subset<T: Clone>(all: Vec<T>, limit: Option<usize>, seed: u64) -> Vec<T> {
@@ -291,6 +358,7 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
         checks,
         errata_confirmed,
         unexpected_failures,
+        certificates: None,
     }
 }
 
@@ -324,6 +392,54 @@ pub fn render(r: &Ch4Report) -> String {
         }
     }
     s.push_str(&crate::report::render_text(&checks));
+    if let Some(cc) = &r.certificates {
+        let _ = writeln!(
+            s,
+            "certificates: {} (degrees 3..={}, model {}; {} configurations needed by this mesh)",
+            cc.file, cc.max_degree, cc.model, cc.configs_needed
+        );
+        for e in &cc.config_errors {
+            let _ = writeln!(s, "  configuration error: {e}");
+        }
+        let list = |v: &[crate::certify::ConfigKey]| -> String {
+            let mut t: Vec<String> = v.iter().take(8).map(|k| k.to_string()).collect();
+            if v.len() > 8 {
+                t.push(format!("… ({} in all)", v.len()));
+            }
+            t.join("; ")
+        };
+        for p in &cc.properties {
+            let id = cert_property_check_id(&p.property);
+            if p.certified {
+                let scope = match p.max_delta {
+                    None => "on the whole stated sets".to_string(),
+                    Some(d) => format!("outside δ-boxes, δ ≤ {d:.1e}"),
+                };
+                let _ = writeln!(
+                    s,
+                    "  {id}: CERTIFIED for this mesh, {scope} ({} covers every configuration)",
+                    p.property
+                );
+            } else {
+                let mut why = Vec::new();
+                if !p.missing.is_empty() {
+                    why.push(format!("missing {}", list(&p.missing)));
+                }
+                if !p.refuted.is_empty() {
+                    why.push(format!("refuted {}", list(&p.refuted)));
+                }
+                if !p.inconclusive.is_empty() {
+                    why.push(format!("inconclusive {}", list(&p.inconclusive)));
+                }
+                let _ = writeln!(
+                    s,
+                    "  {id}: not certified ({}): {}",
+                    p.property,
+                    why.join("; ")
+                );
+            }
+        }
+    }
     if r.unexpected_failures.is_empty() {
         let _ = writeln!(
             s,
