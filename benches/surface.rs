@@ -101,6 +101,9 @@ fn quick() {
                 }
             }
         }
+        if std::env::var("SURFACE_SKIP_EVAL").is_ok() {
+            continue;
+        }
         let pps = build(k, Profile::Paper);
         let pts = points(pps.num_faces());
         let t: Vec<f64> = (0..runs)
@@ -114,6 +117,21 @@ fn quick() {
             "eval f64 {name}: {:.3} M points/s (median of {runs})",
             pts.len() as f64 / median(t) / 1e6
         );
+        if std::env::var("SURFACE_SORTED").is_ok() {
+            let mut sorted = pts.clone();
+            sorted.sort_by_key(|p| p.0);
+            let t: Vec<f64> = (0..runs)
+                .map(|_| {
+                    let t0 = Instant::now();
+                    std::hint::black_box(eval_all(&pps, &sorted));
+                    t0.elapsed().as_secs_f64()
+                })
+                .collect();
+            println!(
+                "eval f64 {name}, points sorted by face: {:.3} M points/s",
+                pts.len() as f64 / median(t) / 1e6
+            );
+        }
     }
 }
 

@@ -18,8 +18,37 @@ pub fn binomial(n: usize, k: usize) -> f64 {
     r.round()
 }
 
+/// Row l of Pascal's triangle as [`binomial`] computes it, for l ≤ [`MAX_FAST_L`] (computed
+/// once: the evaluators of Def. 5.2.1 need it at every point).
+fn binomial_row(l: usize) -> Option<&'static [f64]> {
+    static TABLE: std::sync::OnceLock<Vec<Vec<f64>>> = std::sync::OnceLock::new();
+    TABLE
+        .get_or_init(|| {
+            (0..=MAX_FAST_L)
+                .map(|n| (0..=n).map(|k| binomial(n, k)).collect())
+                .collect()
+        })
+        .get(l)
+        .map(|r| r.as_slice())
+}
+
 /// Def. 5.2.1: B_i^l(t) = C(l,i) ((L−t)/2L)^{l−i} ((t+L)/2L)^i for i = 0..=l, in f64.
 pub fn bernstein_f64(l: usize, half: f64, t: f64, out: &mut [f64]) {
+    if let Some(row) = binomial_row(l) {
+        let u = (t + half) / (2.0 * half);
+        let w = (half - t) / (2.0 * half);
+        let mut pu = 1.0;
+        for o in out.iter_mut().take(l + 1) {
+            *o = pu;
+            pu *= u;
+        }
+        let mut pw = 1.0;
+        for i in (0..=l).rev() {
+            out[i] *= pw * row[i];
+            pw *= w;
+        }
+        return;
+    }
     let u = (t + half) / (2.0 * half);
     let w = (half - t) / (2.0 * half);
     // out[i] = u^i, then multiply by w^{l-i} from the right end.
@@ -48,8 +77,10 @@ pub fn bernstein<S: SurfaceScalar>(l: usize, half: &S, t: &S) -> Vec<S> {
         acc = acc.mul(&u);
     }
     let mut pw = S::from_i64(1, prec);
+    let row = binomial_row(l);
     for i in (0..=l).rev() {
-        pu[i] = pu[i].mul(&pw).mul(&S::from_f64(binomial(l, i), prec));
+        let c = row.map_or_else(|| binomial(l, i), |r| r[i]);
+        pu[i] = pu[i].mul(&pw).mul(&S::from_f64(c, prec));
         pw = pw.mul(&w);
     }
     pu

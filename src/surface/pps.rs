@@ -164,7 +164,34 @@ impl Pps {
             patch_off[v + 1] = patch_off[v] + size;
         }
         let mut cps = vec![[0.0; 3]; patch_off[slots]];
-        // Split the control-point array per vertex and fit in parallel.
+        // Cubic-net targets (PN triangles): the control points of every vertex of degree m are
+        // A⁺W·N (Sec. 5.2; A⁺W is the same for the whole degree), so the vertices of one
+        // degree are fitted together, in batches, by one matrix product each (3 columns per
+        // vertex: x, y, z of its m cubic nets). Vertices whose target gives no cubic net take
+        // the general path (sampling S′).
+        const BATCH: usize = 512;
+        let mut tasks: Vec<(&DegreeFit, Vec<VertexId>)> = Vec::new();
+        for f in &factored {
+            let vs: Vec<VertexId> = k
+                .vertices()
+                .filter(|&v| degree[v.idx()] == f.info.m)
+                .collect();
+            for chunk in vs.chunks(BATCH) {
+                tasks.push((f, chunk.to_vec()));
+            }
+        }
+        let batched: Vec<(Vec<VertexId>, Vec<[f64; 3]>)> = tasks
+            .par_iter()
+            .map(|(fit, vs)| fit_batch(k, target, fit, vs))
+            .collect();
+        // Where each vertex's fitted patch is: (batch, position in it).
+        let mut found: Vec<Option<(usize, usize)>> = vec![None; slots];
+        for (b, (vs, _)) in batched.iter().enumerate() {
+            for (i, v) in vs.iter().enumerate() {
+                found[v.idx()] = Some((b, i));
+            }
+        }
+        // Split the control-point array per vertex and fit (or copy) in parallel.
         let mut chunks: Vec<(usize, &mut [[f64; 3]])> = Vec::with_capacity(slots);
         {
             let mut rest: &mut [[f64; 3]] = &mut cps;
@@ -179,7 +206,10 @@ impl Pps {
             if out.is_empty() {
                 return;
             }
-            if let Some(fit) = by_degree[degree[v.idx()] as usize] {
+            if let Some((b, i)) = found[v.idx()] {
+                let len = out.len();
+                out.copy_from_slice(&batched[b].1[i * len..(i + 1) * len]);
+            } else if let Some(fit) = by_degree[degree[v.idx()] as usize] {
                 fit_vertex(k, target, v, fit, out);
             }
         });
@@ -414,21 +444,23 @@ impl Pps {
         self.phi_label(v, i, p, c)
     }
 
-    /// The labels i whose gluing domain Ω_v{s_v⁻¹(v′_i)} may contain p.
-    fn candidates(&self, v: VertexId, p: [f64; 2]) -> Vec<u32> {
+    /// The labels i whose gluing domain Ω_v{s_v⁻¹(v′_i)} may contain p (no allocation: this is
+    /// on the path of every eval).
+    fn candidates(&self, v: VertexId, p: [f64; 2]) -> impl Iterator<Item = u32> {
         let m = self.degree(v);
-        if self.options.membership == Membership::Lens {
-            return (0..m).collect();
-        }
-        if p == [0.0, 0.0] {
-            return vec![];
-        }
-        let mut a = p[1].atan2(p[0]);
-        if a < 0.0 {
-            a += 2.0 * std::f64::consts::PI;
-        }
-        let i0 = ((a * m as f64 / (2.0 * std::f64::consts::PI)).floor() as u32).min(m - 1);
-        vec![i0, (i0 + 1) % m]
+        let (all, pair, len) = if self.options.membership == Membership::Lens {
+            (m, [0, 0], 0)
+        } else if p == [0.0, 0.0] {
+            (0, [0, 0], 0)
+        } else {
+            let mut a = p[1].atan2(p[0]);
+            if a < 0.0 {
+                a += 2.0 * std::f64::consts::PI;
+            }
+            let i0 = ((a * m as f64 / (2.0 * std::f64::consts::PI)).floor() as u32).min(m - 1);
+            (0, [i0, (i0 + 1) % m], 2)
+        };
+        (0..all).chain(pair.into_iter().take(len))
     }
 
     /// J_v(p) with Γ_uv(p) and φ_uv(p) (Eq. 5.1, Def. 5.4.1). `only`: restrict the neighbours
@@ -440,12 +472,25 @@ impl Pps {
         c: &Consts<S>,
         only: Option<[VertexId; 2]>,
     ) -> Result<Vec<Term<S>>, SurfaceError> {
+        let mut out = Vec::with_capacity(3);
+        self.for_each_term(v, p, c, only, |t| out.push(t))?;
+        Ok(out)
+    }
+
+    /// [`Self::terms`] without collecting: `f` gets the terms of J_v(p) in order (v first).
+    fn for_each_term<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+        only: Option<[VertexId; 2]>,
+        mut f: impl FnMut(Term<S>),
+    ) -> Result<(), SurfaceError> {
         if !self.in_omega(v, p, c)? {
             let [x, y] = p.to_f64();
             return Err(SurfaceError::NotInOmega { v, x, y });
         }
-        let mut out = Vec::with_capacity(3);
-        out.push(Term {
+        f(Term {
             u: v,
             q: p.clone(),
             gamma: self.gamma(v, p, c)?,
@@ -464,10 +509,10 @@ impl Pps {
                         g = g.mul(&S::from_f64(factor, c.prec));
                     }
                 }
-                out.push(Term { u, q, gamma: g });
+                f(Term { u, q, gamma: g });
             }
         }
-        Ok(out)
+        Ok(())
     }
 
     /// Eq. (5.1): the weights ω_uv(p), u ∈ J_v(p).
@@ -511,21 +556,26 @@ impl Pps {
         c: &Consts<S>,
         only: Option<[VertexId; 2]>,
     ) -> Result<[S; 3], SurfaceError> {
-        let t = self.terms(v, p, c, only)?;
-        let den = self.denominator(&t, c);
-        if den.sign() != Some(Ordering::Greater) {
-            return Err(SurfaceError::ZeroWeight(v));
-        }
+        // One pass: Σ Γ_uv and Σ Γ_uv·Ψ_uv accumulated in the order of J_v(p) (the same
+        // operations as summing the collected terms).
         let z = S::from_i64(0, c.prec);
+        let mut den = z.clone();
         let mut num = [z.clone(), z.clone(), z];
-        for x in &t {
+        self.for_each_term(v, p, c, only, |x| {
+            den = den.add(&x.gamma);
             if x.gamma.sign() == Some(Ordering::Equal) {
-                continue;
+                return;
             }
             let psi = self.psi(x.u, &x.q);
             for d in 0..3 {
                 num[d] = num[d].add(&x.gamma.mul(&psi[d]));
             }
+        })?;
+        if let Some(Fault::Denominator { factor }) = self.options.fault {
+            den = den.mul(&S::from_f64(factor, c.prec));
+        }
+        if den.sign() != Some(Ordering::Greater) {
+            return Err(SurfaceError::ZeroWeight(v));
         }
         Ok(num.map(|n| n.div(&den)))
     }
@@ -546,6 +596,59 @@ fn ramp<S: SurfaceScalar>(k: &XiConsts<S>, t2: &S) -> S {
         return S::from_i64(0, prec);
     }
     k.h2.sub(&t2.sqrt()).div(&k.h2.sub(&k.h1))
+}
+
+/// Fit ψ_v for the vertices `vs` (all of degree `fit.info.m`) whose target gives cubic nets:
+/// X_v = (A⁺W)·N_v with N_v the m_v stacked nets (10·m_v × 3), all vertices in one product
+/// (A⁺W) · [N_v1 N_v2 …]. Returns the vertices done and their (l+1)² control points each.
+fn fit_batch(
+    k: &SimplicialSurface,
+    target: &dyn TargetSurface,
+    fit: &DegreeFit,
+    vs: &[VertexId],
+) -> (Vec<VertexId>, Vec<[f64; 3]>) {
+    let m = fit.info.m;
+    let rows = m as usize * 10;
+    let kk = fit.info.unknowns;
+    let mut done = Vec::with_capacity(vs.len());
+    // Column 3j + d of N: coordinate d of the nets of vertex done[j], sector-major.
+    let mut n = Vec::with_capacity(rows * 3 * vs.len());
+    let mut nets = Vec::with_capacity(m as usize);
+    for &v in vs {
+        let outgoing = k.outgoing(v);
+        nets.clear();
+        for i in 0..m as usize {
+            let h = outgoing[i];
+            let a = k.dest(h);
+            let b = k.dest(outgoing[(i + 1) % m as usize]);
+            match target.cubic_net(k.face_of(h), [v, a, b]) {
+                Some(net) => nets.push(net),
+                None => break,
+            }
+        }
+        if nets.len() != m as usize {
+            continue;
+        }
+        for d in 0..3 {
+            n.extend(nets.iter().flat_map(|net| net.iter().map(|p| p[d])));
+        }
+        done.push(v);
+    }
+    if done.is_empty() {
+        return (done, Vec::new());
+    }
+    let nmat = nalgebra::DMatrix::from_vec(rows, 3 * done.len(), n);
+    let map = nalgebra::DMatrix::from_row_slice(kk, rows, &fit.net_map);
+    let x = map * nmat; // kk × 3·|done|, column-major
+    let mut out = vec![[0.0; 3]; kk * done.len()];
+    for (j, o) in out.chunks_mut(kk).enumerate() {
+        for d in 0..3 {
+            for (c, slot) in o.iter_mut().enumerate() {
+                slot[d] = x[(c, 3 * j + d)];
+            }
+        }
+    }
+    (done, out)
 }
 
 /// Fit ψ_v: the control points minimising Σ‖ψ_v(q) − b_σ(r)‖² over the Sec. 5.2 samples.
