@@ -57,6 +57,13 @@ fn eval_all(pps: &Pps, pts: &[(FaceId, [f64; 3])]) -> f64 {
         .sum::<f64>()
 }
 
+fn eval_batch(pps: &Pps, pts: &[(FaceId, [f64; 3])]) -> f64 {
+    pps.eval_batch_f64(pts)
+        .iter()
+        .map(|r| r.as_ref().map(|p| p[0]).unwrap_or(0.0))
+        .sum::<f64>()
+}
+
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(|a, b| a.total_cmp(b));
     v[v.len() / 2]
@@ -117,6 +124,17 @@ fn quick() {
             "eval f64 {name}: {:.3} M points/s (median of {runs})",
             pts.len() as f64 / median(t) / 1e6
         );
+        let t: Vec<f64> = (0..runs)
+            .map(|_| {
+                let t0 = Instant::now();
+                std::hint::black_box(eval_batch(&pps, &pts));
+                t0.elapsed().as_secs_f64()
+            })
+            .collect();
+        println!(
+            "eval_batch_f64 {name}: {:.3} M points/s (median of {runs})",
+            pts.len() as f64 / median(t) / 1e6
+        );
         if std::env::var("SURFACE_SORTED").is_ok() {
             let mut sorted = pts.clone();
             sorted.sort_by_key(|p| p.0);
@@ -150,6 +168,10 @@ fn bench(c: &mut Criterion) {
         g.bench_function(format!("eval f64 {name} 1M points (2 threads)"), |b| {
             b.iter(|| eval_all(&pps, &pts))
         });
+        g.bench_function(
+            format!("eval_batch_f64 {name} 1M points (2 threads)"),
+            |b| b.iter(|| eval_batch(&pps, &pts)),
+        );
         g.throughput(Throughput::Elements(1));
     }
     g.finish();

@@ -164,6 +164,45 @@ impl Pps {
         })
     }
 
+    /// eval in f64 for many points at once, in parallel (rayon); `out[i]` is the result for
+    /// `points[i]`. The points are evaluated in the storage order of the patches (by the
+    /// breadth-first rank of the face's first corner), so that the ψ_u of neighbouring
+    /// evaluations are shared in cache: on meshes whose face or vertex numbering is not
+    /// spatially coherent, per-point evaluation in input order is bound by memory traffic.
+    pub fn eval_batch_f64(
+        &self,
+        points: &[(FaceId, [f64; 3])],
+    ) -> Vec<Result<[f64; 3], SurfaceError>> {
+        use rayon::prelude::*;
+        let key = |f: FaceId| match self.face(f) {
+            Ok(c) => c
+                .iter()
+                .map(|&v| self.storage_rank(v))
+                .min()
+                .unwrap_or(u32::MAX),
+            Err(_) => u32::MAX,
+        };
+        let mut order: Vec<(u32, u32)> = points
+            .par_iter()
+            .enumerate()
+            .map(|(i, (f, _))| (key(*f), i as u32))
+            .collect();
+        order.par_sort_unstable();
+        let done: Vec<Result<[f64; 3], SurfaceError>> = order
+            .par_iter()
+            .map(|&(_, i)| {
+                let (f, b) = points[i as usize];
+                self.eval_f64(f, b)
+            })
+            .collect();
+        // `order` is a permutation of 0..points.len(): invert it.
+        let mut pos = vec![0usize; points.len()];
+        for (j, &(_, i)) in order.iter().enumerate() {
+            pos[i as usize] = j;
+        }
+        pos.into_iter().map(|j| done[j].clone()).collect()
+    }
+
     /// eval in f64 with the built-in constants.
     pub fn eval_f64(&self, f: FaceId, bary: [f64; 3]) -> Result<[f64; 3], SurfaceError> {
         Ok(self.eval(f, &bary, self.consts_f64())?.point)

@@ -109,8 +109,12 @@ pub struct Pps {
     nbr: Vec<VertexId>,
     /// back[nbr_start[v] + i] = s_u(v) for u = nbr[..].
     back: Vec<u32>,
+    /// ψ_v's control points are cps[patch_off[v]..patch_end[v]] (stored in `rank` order).
     patch_off: Vec<usize>,
+    patch_end: Vec<usize>,
     patch_l: Vec<usize>,
+    /// Position of each vertex in the breadth-first storage order.
+    rank: Vec<u32>,
     cps: Vec<[f64; 3]>,
     half_by_degree: Vec<f64>,
     fits: Vec<DegreeFitInfo>,
@@ -151,9 +155,20 @@ impl Pps {
         for f in &factored {
             half_by_degree[f.info.m as usize] = f.info.half_side;
         }
-        let mut patch_off = vec![0usize; slots + 1];
+        // Storage order of the patches: breadth-first over the edges of K, so that the patches
+        // of neighbouring vertices (the ψ_u one θ_v needs) are close in memory whatever the
+        // vertex numbering of the input (`rank` also orders batch evaluation).
+        let order = bfs_order(&degree, &nbr_start, &nbr);
+        let mut rank = vec![u32::MAX; slots];
+        for (r, v) in order.iter().enumerate() {
+            rank[v.idx()] = r as u32;
+        }
+        let mut patch_off = vec![0usize; slots];
+        let mut patch_end = vec![0usize; slots];
         let mut patch_l = vec![0usize; slots];
-        for v in 0..slots {
+        let mut total = 0usize;
+        for &v in &order {
+            let v = v.idx();
             let l = if degree[v] >= 3 {
                 options.profile.bezier_degree(degree[v])
             } else {
@@ -161,9 +176,11 @@ impl Pps {
             };
             patch_l[v] = l;
             let size = if degree[v] >= 3 { (l + 1) * (l + 1) } else { 0 };
-            patch_off[v + 1] = patch_off[v] + size;
+            patch_off[v] = total;
+            total += size;
+            patch_end[v] = total;
         }
-        let mut cps = vec![[0.0; 3]; patch_off[slots]];
+        let mut cps = vec![[0.0; 3]; total];
         // Cubic-net targets (PN triangles): the control points of every vertex of degree m are
         // A⁺W·N (Sec. 5.2; A⁺W is the same for the whole degree), so the vertices of one
         // degree are fitted together, in batches, by one matrix product each (3 columns per
@@ -172,8 +189,9 @@ impl Pps {
         const BATCH: usize = 512;
         let mut tasks: Vec<(&DegreeFit, Vec<VertexId>)> = Vec::new();
         for f in &factored {
-            let vs: Vec<VertexId> = k
-                .vertices()
+            let vs: Vec<VertexId> = order
+                .iter()
+                .copied()
                 .filter(|&v| degree[v.idx()] == f.info.m)
                 .collect();
             for chunk in vs.chunks(BATCH) {
@@ -195,8 +213,9 @@ impl Pps {
         let mut chunks: Vec<(usize, &mut [[f64; 3]])> = Vec::with_capacity(slots);
         {
             let mut rest: &mut [[f64; 3]] = &mut cps;
-            for v in 0..slots {
-                let (a, b) = rest.split_at_mut(patch_off[v + 1] - patch_off[v]);
+            for &v in &order {
+                let v = v.idx();
+                let (a, b) = rest.split_at_mut(patch_end[v] - patch_off[v]);
                 chunks.push((v, a));
                 rest = b;
             }
@@ -223,7 +242,9 @@ impl Pps {
             nbr,
             back,
             patch_off,
+            patch_end,
             patch_l,
+            rank,
             cps,
             half_by_degree,
             fits: factored.into_iter().map(|f| f.info).collect(),
@@ -286,14 +307,19 @@ impl Pps {
     pub fn patch(&self, v: VertexId) -> (&[[f64; 3]], usize) {
         let i = v.idx();
         (
-            &self.cps[self.patch_off[i]..self.patch_off[i + 1]],
+            &self.cps[self.patch_off[i]..self.patch_end[i]],
             self.patch_l[i],
         )
+    }
+    /// Position of v in the storage order of the patches (breadth-first over K): vertices
+    /// close in this order have their ψ close in memory.
+    pub fn storage_rank(&self, v: VertexId) -> u32 {
+        self.rank.get(v.idx()).copied().unwrap_or(u32::MAX)
     }
     /// Mutable control points (for planted-fault tests).
     pub fn patch_mut(&mut self, v: VertexId) -> &mut [[f64; 3]] {
         let i = v.idx();
-        &mut self.cps[self.patch_off[i]..self.patch_off[i + 1]]
+        &mut self.cps[self.patch_off[i]..self.patch_end[i]]
     }
     /// L = cos(π/m_v), the half side of □_v.
     pub fn half_side(&self, v: VertexId) -> f64 {
@@ -584,6 +610,38 @@ impl Pps {
     pub fn theta_f64(&self, v: VertexId, p: [f64; 2]) -> Result<[f64; 3], SurfaceError> {
         self.theta(v, &P2::new(p[0], p[1]), &self.consts)
     }
+}
+
+/// The vertices of degree ≥ 3 in breadth-first order over the links (component by component,
+/// each from its smallest vertex id), followed by the other slots.
+fn bfs_order(degree: &[u32], nbr_start: &[usize], nbr: &[VertexId]) -> Vec<VertexId> {
+    let slots = degree.len();
+    let mut seen = vec![false; slots];
+    let mut order = Vec::with_capacity(slots);
+    for s in 0..slots {
+        if seen[s] || degree[s] < 3 {
+            continue;
+        }
+        seen[s] = true;
+        let mut head = order.len();
+        order.push(VertexId(s as u32));
+        while head < order.len() {
+            let v = order[head].idx();
+            head += 1;
+            for &u in &nbr[nbr_start[v]..nbr_start[v + 1]] {
+                if !seen[u.idx()] {
+                    seen[u.idx()] = true;
+                    order.push(u);
+                }
+            }
+        }
+    }
+    for (s, done) in seen.iter().enumerate() {
+        if !done {
+            order.push(VertexId(s as u32));
+        }
+    }
+    order
 }
 
 /// The planted C⁰ ramp replacing ξ (Fault::RampWeight).
