@@ -64,6 +64,32 @@ fn eval_batch(pps: &Pps, pts: &[(FaceId, [f64; 3])]) -> f64 {
         .sum::<f64>()
 }
 
+/// CPU seconds (user + system) of this process so far (Linux /proc; 0 elsewhere): on a
+/// shared machine, points per CPU-second is the load-independent figure.
+fn cpu_seconds() -> f64 {
+    let stat = std::fs::read_to_string("/proc/self/stat").unwrap_or_default();
+    let after = stat.rsplit(')').next().unwrap_or("");
+    let f: Vec<f64> = after
+        .split_whitespace()
+        .map(|x| x.parse().unwrap_or(0.0))
+        .collect();
+    // Fields 14 and 15 (utime, stime) in clock ticks; `after` starts at field 3.
+    (f.get(11).unwrap_or(&0.0) + f.get(12).unwrap_or(&0.0)) / 100.0
+}
+
+/// Runs `f` `runs` times: (median wall seconds, total CPU seconds / runs).
+fn timed(runs: usize, mut f: impl FnMut()) -> (f64, f64) {
+    let c0 = cpu_seconds();
+    let t: Vec<f64> = (0..runs)
+        .map(|_| {
+            let t0 = Instant::now();
+            f();
+            t0.elapsed().as_secs_f64()
+        })
+        .collect();
+    (median(t), (cpu_seconds() - c0) / runs as f64)
+}
+
 fn median(mut v: Vec<f64>) -> f64 {
     v.sort_by(|a, b| a.total_cmp(b));
     v[v.len() / 2]
@@ -113,27 +139,22 @@ fn quick() {
         }
         let pps = build(k, Profile::Paper);
         let pts = points(pps.num_faces());
-        let t: Vec<f64> = (0..runs)
-            .map(|_| {
-                let t0 = Instant::now();
-                std::hint::black_box(eval_all(&pps, &pts));
-                t0.elapsed().as_secs_f64()
-            })
-            .collect();
+        let np = pts.len() as f64 / 1e6;
+        let (wall, cpu) = timed(runs, || {
+            std::hint::black_box(eval_all(&pps, &pts));
+        });
         println!(
-            "eval f64 {name}: {:.3} M points/s (median of {runs})",
-            pts.len() as f64 / median(t) / 1e6
+            "eval f64 {name}: {:.3} M points/s (median of {runs}), {:.3} M points per CPU-s",
+            np / wall,
+            np / cpu
         );
-        let t: Vec<f64> = (0..runs)
-            .map(|_| {
-                let t0 = Instant::now();
-                std::hint::black_box(eval_batch(&pps, &pts));
-                t0.elapsed().as_secs_f64()
-            })
-            .collect();
+        let (wall, cpu) = timed(runs, || {
+            std::hint::black_box(eval_batch(&pps, &pts));
+        });
         println!(
-            "eval_batch_f64 {name}: {:.3} M points/s (median of {runs})",
-            pts.len() as f64 / median(t) / 1e6
+            "eval_batch_f64 {name}: {:.3} M points/s (median of {runs}), {:.3} M points per CPU-s",
+            np / wall,
+            np / cpu
         );
         if std::env::var("SURFACE_SORTED").is_ok() {
             let mut sorted = pts.clone();

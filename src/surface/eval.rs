@@ -173,34 +173,11 @@ impl Pps {
         &self,
         points: &[(FaceId, [f64; 3])],
     ) -> Vec<Result<[f64; 3], SurfaceError>> {
-        use rayon::prelude::*;
-        let key = |f: FaceId| match self.face(f) {
-            Ok(c) => c
-                .iter()
-                .map(|&v| self.storage_rank(v))
-                .min()
-                .unwrap_or(u32::MAX),
-            Err(_) => u32::MAX,
-        };
-        let mut order: Vec<(u32, u32)> = points
-            .par_iter()
-            .enumerate()
-            .map(|(i, (f, _))| (key(*f), i as u32))
-            .collect();
-        order.par_sort_unstable();
-        let done: Vec<Result<[f64; 3], SurfaceError>> = order
-            .par_iter()
-            .map(|&(_, i)| {
-                let (f, b) = points[i as usize];
-                self.eval_f64(f, b)
-            })
-            .collect();
-        // `order` is a permutation of 0..points.len(): invert it.
-        let mut pos = vec![0usize; points.len()];
-        for (j, &(_, i)) in order.iter().enumerate() {
-            pos[i as usize] = j;
-        }
-        pos.into_iter().map(|j| done[j].clone()).collect()
+        let keys: Vec<u32> = points.iter().map(|(f, _)| self.locality_key(*f)).collect();
+        super::pps::map_in_key_order(&keys, |i| {
+            let (f, b) = points[i];
+            self.eval_f64(f, b)
+        })
     }
 
     /// eval in f64 with the built-in constants.

@@ -316,6 +316,18 @@ impl Pps {
     pub fn storage_rank(&self, v: VertexId) -> u32 {
         self.rank.get(v.idx()).copied().unwrap_or(u32::MAX)
     }
+    /// Breadth-first storage rank of the first-stored corner of face f: sorting evaluation
+    /// points by it makes consecutive evaluations share their ψ_u in cache.
+    pub fn locality_key(&self, f: FaceId) -> u32 {
+        match self.faces.get(f.idx()) {
+            Some(c) => c
+                .iter()
+                .map(|&v| self.storage_rank(v))
+                .min()
+                .unwrap_or(u32::MAX),
+            None => u32::MAX,
+        }
+    }
     /// Mutable control points (for planted-fault tests).
     pub fn patch_mut(&mut self, v: VertexId) -> &mut [[f64; 3]] {
         let i = v.idx();
@@ -610,6 +622,27 @@ impl Pps {
     pub fn theta_f64(&self, v: VertexId, p: [f64; 2]) -> Result<[f64; 3], SurfaceError> {
         self.theta(v, &P2::new(p[0], p[1]), &self.consts)
     }
+}
+
+/// `f(i)` for i = 0..keys.len(), evaluated in parallel in the order of increasing `keys[i]`
+/// (locality), returned in index order.
+pub(crate) fn map_in_key_order<T: Send>(
+    keys: &[u32],
+    f: impl Fn(usize) -> T + Sync + Send,
+) -> Vec<T> {
+    let mut order: Vec<(u32, u32)> = keys
+        .iter()
+        .enumerate()
+        .map(|(i, &k)| (k, i as u32))
+        .collect();
+    order.par_sort_unstable();
+    let done: Vec<T> = order.par_iter().map(|&(_, i)| f(i as usize)).collect();
+    let mut slots: Vec<Option<T>> = (0..keys.len()).map(|_| None).collect();
+    for (&(_, i), r) in order.iter().zip(done) {
+        slots[i as usize] = Some(r);
+    }
+    // `order` is a permutation of 0..keys.len(): every slot is filled.
+    slots.into_iter().flatten().collect()
 }
 
 /// The vertices of degree ≥ 3 in breadth-first order over the links (component by component,
