@@ -316,6 +316,21 @@ impl Pps {
     pub fn storage_rank(&self, v: VertexId) -> u32 {
         self.rank.get(v.idx()).copied().unwrap_or(u32::MAX)
     }
+    /// A cache hint: prefetch the control points of ψ_v (no effect on any result).
+    #[inline]
+    fn prefetch_patch(&self, v: VertexId) {
+        if self.options.membership != Membership::Literal {
+            return; // Lens: all m_v neighbours are candidates
+        }
+        if let (Some(&a), Some(&b)) = (self.patch_off.get(v.idx()), self.patch_end.get(v.idx())) {
+            if let Some(cp) = self.cps.get(a..b) {
+                for line in cp.as_flattened().chunks(8) {
+                    prefetch(&line[0]);
+                }
+            }
+        }
+    }
+
     /// Breadth-first storage rank of the first-stored corner of face f: sorting evaluation
     /// points by it makes consecutive evaluations share their ψ_u in cache.
     pub fn locality_key(&self, f: FaceId) -> u32 {
@@ -484,7 +499,7 @@ impl Pps {
 
     /// The labels i whose gluing domain Ω_v{s_v⁻¹(v′_i)} may contain p (no allocation: this is
     /// on the path of every eval).
-    fn candidates(&self, v: VertexId, p: [f64; 2]) -> impl Iterator<Item = u32> {
+    fn candidates(&self, v: VertexId, p: [f64; 2]) -> impl Iterator<Item = u32> + Clone {
         let m = self.degree(v);
         let (all, pair, len) = if self.options.membership == Membership::Lens {
             (m, [0, 0], 0)
@@ -528,12 +543,19 @@ impl Pps {
             let [x, y] = p.to_f64();
             return Err(SurfaceError::NotInOmega { v, x, y });
         }
+        // ψ_v and the ψ_u of the candidate neighbours are needed below, after the transcendental
+        // work of γ and φ: start loading them now (memory latency dominates on large meshes).
+        let candidates = self.candidates(v, p.to_f64());
+        self.prefetch_patch(v);
+        for i in candidates.clone() {
+            self.prefetch_patch(self.link(v, i));
+        }
         f(Term {
             u: v,
             q: p.clone(),
             gamma: self.gamma(v, p, c)?,
         });
-        for i in self.candidates(v, p.to_f64()) {
+        for i in candidates {
             let u = self.link(v, i);
             if let Some(o) = only {
                 if !o.contains(&u) {
@@ -622,6 +644,20 @@ impl Pps {
     pub fn theta_f64(&self, v: VertexId, p: [f64; 2]) -> Result<[f64; 3], SurfaceError> {
         self.theta(v, &P2::new(p[0], p[1]), &self.consts)
     }
+}
+
+/// Prefetch the cache line holding `x` (x86-64 only; a hint without effect on results).
+#[inline(always)]
+fn prefetch(x: &f64) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: PREFETCHT0 is an SSE instruction (baseline on x86-64) that never faults and
+    // does not access memory architecturally; the pointer comes from a valid reference.
+    unsafe {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        _mm_prefetch::<_MM_HINT_T0>(x as *const f64 as *const i8);
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = x;
 }
 
 /// `f(i)` for i = 0..keys.len(), evaluated in parallel in the order of increasing `keys[i]`
