@@ -147,10 +147,6 @@ impl Pps {
             .map(|&m| factor_degree(m, options.profile))
             .collect();
         let maxd = degs.last().copied().unwrap_or(3) as usize;
-        let mut by_degree: Vec<Option<&DegreeFit>> = vec![None; maxd + 1];
-        for f in &factored {
-            by_degree[f.info.m as usize] = Some(f);
-        }
         let mut half_by_degree = vec![0.0; maxd + 1];
         for f in &factored {
             half_by_degree[f.info.m as usize] = f.info.half_side;
@@ -187,51 +183,41 @@ impl Pps {
         // vertex: x, y, z of its m cubic nets). Vertices whose target gives no cubic net take
         // the general path (sampling S′).
         const BATCH: usize = 512;
-        let mut tasks: Vec<(&DegreeFit, Vec<VertexId>)> = Vec::new();
-        for f in &factored {
-            let vs: Vec<VertexId> = order
-                .iter()
-                .copied()
-                .filter(|&v| degree[v.idx()] == f.info.m)
-                .collect();
-            for chunk in vs.chunks(BATCH) {
-                tasks.push((f, chunk.to_vec()));
-            }
-        }
-        let batched: Vec<(Vec<VertexId>, Vec<[f64; 3]>)> = tasks
-            .par_iter()
-            .map(|(fit, vs)| fit_batch(k, target, fit, vs))
-            .collect();
-        // Where each vertex's fitted patch is: (batch, position in it).
-        let mut found: Vec<Option<(usize, usize)>> = vec![None; slots];
-        for (b, (vs, _)) in batched.iter().enumerate() {
-            for (i, v) in vs.iter().enumerate() {
-                found[v.idx()] = Some((b, i));
-            }
-        }
-        // Split the control-point array per vertex and fit (or copy) in parallel.
-        let mut chunks: Vec<(usize, &mut [[f64; 3]])> = Vec::with_capacity(slots);
+        // Split the control-point array per vertex; each batch owns the slices of its vertices
+        // and writes them in place.
+        let mut slot: Vec<Option<&mut [[f64; 3]]>> = (0..slots).map(|_| None).collect();
         {
             let mut rest: &mut [[f64; 3]] = &mut cps;
             for &v in &order {
-                let v = v.idx();
-                let (a, b) = rest.split_at_mut(patch_end[v] - patch_off[v]);
-                chunks.push((v, a));
+                let (a, b) = rest.split_at_mut(patch_end[v.idx()] - patch_off[v.idx()]);
+                slot[v.idx()] = Some(a);
                 rest = b;
             }
         }
-        chunks.par_iter_mut().for_each(|(v, out)| {
-            let v = VertexId(*v as u32);
-            if out.is_empty() {
-                return;
+        type Batch<'a> = Vec<(VertexId, &'a mut [[f64; 3]])>;
+        let mut tasks: Vec<(&DegreeFit, Batch)> = Vec::new();
+        for f in &factored {
+            let mut cur: Batch = Vec::with_capacity(BATCH);
+            for &v in &order {
+                if degree[v.idx()] != f.info.m {
+                    continue;
+                }
+                if let Some(out) = slot[v.idx()].take() {
+                    if !out.is_empty() {
+                        cur.push((v, out));
+                    }
+                }
+                if cur.len() == BATCH {
+                    tasks.push((f, std::mem::take(&mut cur)));
+                }
             }
-            if let Some((b, i)) = found[v.idx()] {
-                let len = out.len();
-                out.copy_from_slice(&batched[b].1[i * len..(i + 1) * len]);
-            } else if let Some(fit) = by_degree[degree[v.idx()] as usize] {
-                fit_vertex(k, target, v, fit, out);
+            if !cur.is_empty() {
+                tasks.push((f, cur));
             }
-        });
+        }
+        tasks
+            .into_par_iter()
+            .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &mut vs));
         Pps {
             options,
             target_name: target.name().to_string(),
@@ -725,23 +711,25 @@ fn ramp<S: SurfaceScalar>(k: &XiConsts<S>, t2: &S) -> S {
     k.h2.sub(&t2.sqrt()).div(&k.h2.sub(&k.h1))
 }
 
-/// Fit ψ_v for the vertices `vs` (all of degree `fit.info.m`) whose target gives cubic nets:
-/// X_v = (A⁺W)·N_v with N_v the m_v stacked nets (10·m_v × 3), all vertices in one product
-/// (A⁺W) · [N_v1 N_v2 …]. Returns the vertices done and their (l+1)² control points each.
+/// Fit ψ_v for the vertices `vs` (all of degree `fit.info.m`), writing each one's (l+1)²
+/// control points in place. Where the target gives cubic nets: X_v = (A⁺W)·N_v with N_v the
+/// m_v stacked nets (10·m_v × 3), all such vertices in one product (A⁺W)·[N_v1 N_v2 …]; the
+/// others by [`fit_vertex`] (sampling S′).
 fn fit_batch(
     k: &SimplicialSurface,
     target: &dyn TargetSurface,
     fit: &DegreeFit,
-    vs: &[VertexId],
-) -> (Vec<VertexId>, Vec<[f64; 3]>) {
+    vs: &mut [(VertexId, &mut [[f64; 3]])],
+) {
     let m = fit.info.m;
     let rows = m as usize * 10;
     let kk = fit.info.unknowns;
     let mut done = Vec::with_capacity(vs.len());
-    // Column 3j + d of N: coordinate d of the nets of vertex done[j], sector-major.
+    // Column 3j + d of N: coordinate d of the nets of vertex vs[done[j]], sector-major.
     let mut n = Vec::with_capacity(rows * 3 * vs.len());
     let mut nets = Vec::with_capacity(m as usize);
-    for &v in vs {
+    for (idx, (v, out)) in vs.iter_mut().enumerate() {
+        let v = *v;
         let outgoing = k.outgoing(v);
         nets.clear();
         for i in 0..m as usize {
@@ -753,29 +741,29 @@ fn fit_batch(
                 None => break,
             }
         }
-        if nets.len() != m as usize {
+        if nets.len() != m as usize || out.len() != kk {
+            fit_vertex(k, target, v, fit, out);
             continue;
         }
         for d in 0..3 {
             n.extend(nets.iter().flat_map(|net| net.iter().map(|p| p[d])));
         }
-        done.push(v);
+        done.push(idx);
     }
     if done.is_empty() {
-        return (done, Vec::new());
+        return;
     }
     let nmat = nalgebra::DMatrix::from_vec(rows, 3 * done.len(), n);
     let map = nalgebra::DMatrix::from_row_slice(kk, rows, &fit.net_map);
     let x = map * nmat; // kk × 3·|done|, column-major
-    let mut out = vec![[0.0; 3]; kk * done.len()];
-    for (j, o) in out.chunks_mut(kk).enumerate() {
+    for (j, &idx) in done.iter().enumerate() {
+        let out = &mut *vs[idx].1;
         for d in 0..3 {
-            for (c, slot) in o.iter_mut().enumerate() {
+            for (c, slot) in out.iter_mut().enumerate() {
                 slot[d] = x[(c, 3 * j + d)];
             }
         }
     }
-    (done, out)
 }
 
 /// Fit ψ_v: the control points minimising Σ‖ψ_v(q) − b_σ(r)‖² over the Sec. 5.2 samples.
