@@ -6,6 +6,13 @@
 //! square that). Singular values below σ_max · max(RCOND, max(n, (l+1)²)·ε) are dropped (minimum-norm
 //! least-squares solution); the numerical rank and κ are reported per degree.
 //!
+//! Speed (issue 5): the SVD is block-diagonalised by the reflection symmetries of P_v and of
+//! the grid (y ↦ −y always, x ↦ −x for even m_v; see [`factor_degree`]): an orthogonal change
+//! of basis, so the singular values, rank, κ and A⁺ are those of A up to rounding, at 1/4
+//! (odd m_v) to 1/16 (even m_v) of the cost — degree 26 (2220 × 784) went from ~0.9 s to
+//! ~0.1 s. The per-vertex fit is then one matrix product per batch of vertices
+//! (`Pps::build`).
+//!
 //! The sample set of Sec. 5.2: a uniform grid on □_v = [−L, L]², L = cos(π/m_v), both ends
 //! included; points outside the closed P-polygon P_v are dropped; each kept point q lies in a
 //! triangle s_v(σ) = [v′, v′_i, v′_{i+1}] of T_v, whose barycentric coordinates (λ, ν, η) give
