@@ -18,8 +18,37 @@ pub fn binomial(n: usize, k: usize) -> f64 {
     r.round()
 }
 
+/// Row l of Pascal's triangle as [`binomial`] computes it, for l ≤ [`MAX_FAST_L`] (computed
+/// once: the evaluators of Def. 5.2.1 need it at every point).
+fn binomial_row(l: usize) -> Option<&'static [f64]> {
+    static TABLE: std::sync::OnceLock<Vec<Vec<f64>>> = std::sync::OnceLock::new();
+    TABLE
+        .get_or_init(|| {
+            (0..=MAX_FAST_L)
+                .map(|n| (0..=n).map(|k| binomial(n, k)).collect())
+                .collect()
+        })
+        .get(l)
+        .map(|r| r.as_slice())
+}
+
 /// Def. 5.2.1: B_i^l(t) = C(l,i) ((L−t)/2L)^{l−i} ((t+L)/2L)^i for i = 0..=l, in f64.
 pub fn bernstein_f64(l: usize, half: f64, t: f64, out: &mut [f64]) {
+    if let Some(row) = binomial_row(l) {
+        let u = (t + half) / (2.0 * half);
+        let w = (half - t) / (2.0 * half);
+        let mut pu = 1.0;
+        for o in out.iter_mut().take(l + 1) {
+            *o = pu;
+            pu *= u;
+        }
+        let mut pw = 1.0;
+        for i in (0..=l).rev() {
+            out[i] *= pw * row[i];
+            pw *= w;
+        }
+        return;
+    }
     let u = (t + half) / (2.0 * half);
     let w = (half - t) / (2.0 * half);
     // out[i] = u^i, then multiply by w^{l-i} from the right end.
@@ -48,8 +77,10 @@ pub fn bernstein<S: SurfaceScalar>(l: usize, half: &S, t: &S) -> Vec<S> {
         acc = acc.mul(&u);
     }
     let mut pw = S::from_i64(1, prec);
+    let row = binomial_row(l);
     for i in (0..=l).rev() {
-        pu[i] = pu[i].mul(&pw).mul(&S::from_f64(binomial(l, i), prec));
+        let c = row.map_or_else(|| binomial(l, i), |r| r[i]);
+        pu[i] = pu[i].mul(&pw).mul(&S::from_f64(c, prec));
         pw = pw.mul(&w);
     }
     pu
@@ -85,26 +116,28 @@ pub fn eval_patch<S: SurfaceScalar>(cp: &[[f64; 3]], l: usize, half: f64, x: &S,
 /// Largest l for the stack-allocated f64 evaluator.
 pub const MAX_FAST_L: usize = 63;
 
-/// ψ(x, y) in f64 without allocation (l ≤ [`MAX_FAST_L`]).
+/// ψ(x, y) in f64 without allocation (l ≤ [`MAX_FAST_L`]). Contracts x first:
+/// t_k = Σ_j B_j^l(x) b_{j,k} is one vectorisable axpy per j over the contiguous row
+/// (b_{j,0}, …, b_{j,l}) of 3(l+1) coordinates; then ψ = Σ_k B_k^l(y) t_k.
 pub fn eval_patch_f64(cp: &[[f64; 3]], l: usize, half: f64, x: f64, y: f64) -> [f64; 3] {
     let mut bx = [0.0f64; MAX_FAST_L + 1];
     let mut by = [0.0f64; MAX_FAST_L + 1];
     bernstein_f64(l, half, x, &mut bx);
     bernstein_f64(l, half, y, &mut by);
-    let mut out = [0.0; 3];
-    for j in 0..=l {
-        let mut row = [0.0; 3];
-        let base = j * (l + 1);
-        for k in 0..=l {
-            let c = cp[base + k];
-            let b = by[k];
-            row[0] += b * c[0];
-            row[1] += b * c[1];
-            row[2] += b * c[2];
+    let l1 = l + 1;
+    let mut t = [0.0f64; 3 * (MAX_FAST_L + 1)];
+    let t = &mut t[..3 * l1];
+    for (j, &b) in bx.iter().enumerate().take(l1) {
+        let row = cp[j * l1..(j + 1) * l1].as_flattened();
+        for (a, &c) in t.iter_mut().zip(row) {
+            *a += b * c;
         }
-        out[0] += bx[j] * row[0];
-        out[1] += bx[j] * row[1];
-        out[2] += bx[j] * row[2];
+    }
+    let mut out = [0.0; 3];
+    for (k, tk) in t.chunks_exact(3).enumerate() {
+        out[0] += by[k] * tk[0];
+        out[1] += by[k] * tk[1];
+        out[2] += by[k] * tk[2];
     }
     out
 }

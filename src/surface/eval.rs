@@ -164,6 +164,22 @@ impl Pps {
         })
     }
 
+    /// eval in f64 for many points at once, in parallel (rayon); `out[i]` is the result for
+    /// `points[i]`. The points are evaluated in the storage order of the patches (by the
+    /// breadth-first rank of the face's first corner), so that the ψ_u of neighbouring
+    /// evaluations are shared in cache: on meshes whose face or vertex numbering is not
+    /// spatially coherent, per-point evaluation in input order is bound by memory traffic.
+    pub fn eval_batch_f64(
+        &self,
+        points: &[(FaceId, [f64; 3])],
+    ) -> Vec<Result<[f64; 3], SurfaceError>> {
+        let keys: Vec<u32> = points.iter().map(|(f, _)| self.locality_key(*f)).collect();
+        super::pps::map_in_key_order(&keys, |i| {
+            let (f, b) = points[i];
+            self.eval_f64(f, b)
+        })
+    }
+
     /// eval in f64 with the built-in constants.
     pub fn eval_f64(&self, f: FaceId, bary: [f64; 3]) -> Result<[f64; 3], SurfaceError> {
         Ok(self.eval(f, &bary, self.consts_f64())?.point)

@@ -12,7 +12,6 @@ use super::consts::Consts;
 use super::jet::Jet;
 use super::pps::{Pps, SurfaceError};
 use crate::mesh::FaceId;
-use rayon::prelude::*;
 use std::collections::HashMap;
 use std::io::Write;
 use std::path::Path;
@@ -93,9 +92,11 @@ pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMe
     let done = AtomicUsize::new(0);
     let total = todo.len();
     let step = (total / 10).max(1);
-    let results: Vec<Result<super::geometry::SurfacePoint, SurfaceError>> = todo
-        .par_iter()
-        .map(|(f, b)| {
+    // Evaluated in the patches' storage order (cache locality), results in `todo` order.
+    let keys: Vec<u32> = todo.iter().map(|(f, _)| pps.locality_key(*f)).collect();
+    let results: Vec<Result<super::geometry::SurfacePoint, SurfaceError>> =
+        super::pps::map_in_key_order(&keys, |i| {
+            let (f, b) = &todo[i];
             let r = pps.eval_geometry(*f, *b, &cj).map(|x| x.2);
             if progress {
                 let d = done.fetch_add(1, Ordering::Relaxed) + 1;
@@ -107,8 +108,7 @@ pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMe
                 }
             }
             r
-        })
-        .collect();
+        });
     if progress {
         eprintln!();
     }

@@ -109,8 +109,12 @@ pub struct Pps {
     nbr: Vec<VertexId>,
     /// back[nbr_start[v] + i] = s_u(v) for u = nbr[..].
     back: Vec<u32>,
+    /// ψ_v's control points are cps[patch_off[v]..patch_end[v]] (stored in `rank` order).
     patch_off: Vec<usize>,
+    patch_end: Vec<usize>,
     patch_l: Vec<usize>,
+    /// Position of each vertex in the breadth-first storage order.
+    rank: Vec<u32>,
     cps: Vec<[f64; 3]>,
     half_by_degree: Vec<f64>,
     fits: Vec<DegreeFitInfo>,
@@ -143,17 +147,24 @@ impl Pps {
             .map(|&m| factor_degree(m, options.profile))
             .collect();
         let maxd = degs.last().copied().unwrap_or(3) as usize;
-        let mut by_degree: Vec<Option<&DegreeFit>> = vec![None; maxd + 1];
-        for f in &factored {
-            by_degree[f.info.m as usize] = Some(f);
-        }
         let mut half_by_degree = vec![0.0; maxd + 1];
         for f in &factored {
             half_by_degree[f.info.m as usize] = f.info.half_side;
         }
-        let mut patch_off = vec![0usize; slots + 1];
+        // Storage order of the patches: breadth-first over the edges of K, so that the patches
+        // of neighbouring vertices (the ψ_u one θ_v needs) are close in memory whatever the
+        // vertex numbering of the input (`rank` also orders batch evaluation).
+        let order = bfs_order(&degree, &nbr_start, &nbr);
+        let mut rank = vec![u32::MAX; slots];
+        for (r, v) in order.iter().enumerate() {
+            rank[v.idx()] = r as u32;
+        }
+        let mut patch_off = vec![0usize; slots];
+        let mut patch_end = vec![0usize; slots];
         let mut patch_l = vec![0usize; slots];
-        for v in 0..slots {
+        let mut total = 0usize;
+        for &v in &order {
+            let v = v.idx();
             let l = if degree[v] >= 3 {
                 options.profile.bezier_degree(degree[v])
             } else {
@@ -161,28 +172,52 @@ impl Pps {
             };
             patch_l[v] = l;
             let size = if degree[v] >= 3 { (l + 1) * (l + 1) } else { 0 };
-            patch_off[v + 1] = patch_off[v] + size;
+            patch_off[v] = total;
+            total += size;
+            patch_end[v] = total;
         }
-        let mut cps = vec![[0.0; 3]; patch_off[slots]];
-        // Split the control-point array per vertex and fit in parallel.
-        let mut chunks: Vec<(usize, &mut [[f64; 3]])> = Vec::with_capacity(slots);
+        let mut cps = vec![[0.0; 3]; total];
+        // Cubic-net targets (PN triangles): the control points of every vertex of degree m are
+        // A⁺W·N (Sec. 5.2; A⁺W is the same for the whole degree), so the vertices of one
+        // degree are fitted together, in batches, by one matrix product each (3 columns per
+        // vertex: x, y, z of its m cubic nets). Vertices whose target gives no cubic net take
+        // the general path (sampling S′).
+        const BATCH: usize = 512;
+        // Split the control-point array per vertex; each batch owns the slices of its vertices
+        // and writes them in place.
+        let mut slot: Vec<Option<&mut [[f64; 3]]>> = (0..slots).map(|_| None).collect();
         {
             let mut rest: &mut [[f64; 3]] = &mut cps;
-            for v in 0..slots {
-                let (a, b) = rest.split_at_mut(patch_off[v + 1] - patch_off[v]);
-                chunks.push((v, a));
+            for &v in &order {
+                let (a, b) = rest.split_at_mut(patch_end[v.idx()] - patch_off[v.idx()]);
+                slot[v.idx()] = Some(a);
                 rest = b;
             }
         }
-        chunks.par_iter_mut().for_each(|(v, out)| {
-            let v = VertexId(*v as u32);
-            if out.is_empty() {
-                return;
+        type Batch<'a> = Vec<(VertexId, &'a mut [[f64; 3]])>;
+        let mut tasks: Vec<(&DegreeFit, Batch)> = Vec::new();
+        for f in &factored {
+            let mut cur: Batch = Vec::with_capacity(BATCH);
+            for &v in &order {
+                if degree[v.idx()] != f.info.m {
+                    continue;
+                }
+                if let Some(out) = slot[v.idx()].take() {
+                    if !out.is_empty() {
+                        cur.push((v, out));
+                    }
+                }
+                if cur.len() == BATCH {
+                    tasks.push((f, std::mem::take(&mut cur)));
+                }
             }
-            if let Some(fit) = by_degree[degree[v.idx()] as usize] {
-                fit_vertex(k, target, v, fit, out);
+            if !cur.is_empty() {
+                tasks.push((f, cur));
             }
-        });
+        }
+        tasks
+            .into_par_iter()
+            .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &mut vs));
         Pps {
             options,
             target_name: target.name().to_string(),
@@ -193,7 +228,9 @@ impl Pps {
             nbr,
             back,
             patch_off,
+            patch_end,
             patch_l,
+            rank,
             cps,
             half_by_degree,
             fits: factored.into_iter().map(|f| f.info).collect(),
@@ -256,14 +293,46 @@ impl Pps {
     pub fn patch(&self, v: VertexId) -> (&[[f64; 3]], usize) {
         let i = v.idx();
         (
-            &self.cps[self.patch_off[i]..self.patch_off[i + 1]],
+            &self.cps[self.patch_off[i]..self.patch_end[i]],
             self.patch_l[i],
         )
+    }
+    /// Position of v in the storage order of the patches (breadth-first over K): vertices
+    /// close in this order have their ψ close in memory.
+    pub fn storage_rank(&self, v: VertexId) -> u32 {
+        self.rank.get(v.idx()).copied().unwrap_or(u32::MAX)
+    }
+    /// A cache hint: prefetch the control points of ψ_v (no effect on any result).
+    #[inline]
+    fn prefetch_patch(&self, v: VertexId) {
+        if self.options.membership != Membership::Literal {
+            return; // Lens: all m_v neighbours are candidates
+        }
+        if let (Some(&a), Some(&b)) = (self.patch_off.get(v.idx()), self.patch_end.get(v.idx())) {
+            if let Some(cp) = self.cps.get(a..b) {
+                for line in cp.as_flattened().chunks(8) {
+                    prefetch(&line[0]);
+                }
+            }
+        }
+    }
+
+    /// Breadth-first storage rank of the first-stored corner of face f: sorting evaluation
+    /// points by it makes consecutive evaluations share their ψ_u in cache.
+    pub fn locality_key(&self, f: FaceId) -> u32 {
+        match self.faces.get(f.idx()) {
+            Some(c) => c
+                .iter()
+                .map(|&v| self.storage_rank(v))
+                .min()
+                .unwrap_or(u32::MAX),
+            None => u32::MAX,
+        }
     }
     /// Mutable control points (for planted-fault tests).
     pub fn patch_mut(&mut self, v: VertexId) -> &mut [[f64; 3]] {
         let i = v.idx();
-        &mut self.cps[self.patch_off[i]..self.patch_off[i + 1]]
+        &mut self.cps[self.patch_off[i]..self.patch_end[i]]
     }
     /// L = cos(π/m_v), the half side of □_v.
     pub fn half_side(&self, v: VertexId) -> f64 {
@@ -414,21 +483,23 @@ impl Pps {
         self.phi_label(v, i, p, c)
     }
 
-    /// The labels i whose gluing domain Ω_v{s_v⁻¹(v′_i)} may contain p.
-    fn candidates(&self, v: VertexId, p: [f64; 2]) -> Vec<u32> {
+    /// The labels i whose gluing domain Ω_v{s_v⁻¹(v′_i)} may contain p (no allocation: this is
+    /// on the path of every eval).
+    fn candidates(&self, v: VertexId, p: [f64; 2]) -> impl Iterator<Item = u32> + Clone {
         let m = self.degree(v);
-        if self.options.membership == Membership::Lens {
-            return (0..m).collect();
-        }
-        if p == [0.0, 0.0] {
-            return vec![];
-        }
-        let mut a = p[1].atan2(p[0]);
-        if a < 0.0 {
-            a += 2.0 * std::f64::consts::PI;
-        }
-        let i0 = ((a * m as f64 / (2.0 * std::f64::consts::PI)).floor() as u32).min(m - 1);
-        vec![i0, (i0 + 1) % m]
+        let (all, pair, len) = if self.options.membership == Membership::Lens {
+            (m, [0, 0], 0)
+        } else if p == [0.0, 0.0] {
+            (0, [0, 0], 0)
+        } else {
+            let mut a = p[1].atan2(p[0]);
+            if a < 0.0 {
+                a += 2.0 * std::f64::consts::PI;
+            }
+            let i0 = ((a * m as f64 / (2.0 * std::f64::consts::PI)).floor() as u32).min(m - 1);
+            (0, [i0, (i0 + 1) % m], 2)
+        };
+        (0..all).chain(pair.into_iter().take(len))
     }
 
     /// J_v(p) with Γ_uv(p) and φ_uv(p) (Eq. 5.1, Def. 5.4.1). `only`: restrict the neighbours
@@ -440,17 +511,37 @@ impl Pps {
         c: &Consts<S>,
         only: Option<[VertexId; 2]>,
     ) -> Result<Vec<Term<S>>, SurfaceError> {
+        let mut out = Vec::with_capacity(3);
+        self.for_each_term(v, p, c, only, |t| out.push(t))?;
+        Ok(out)
+    }
+
+    /// [`Self::terms`] without collecting: `f` gets the terms of J_v(p) in order (v first).
+    fn for_each_term<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+        only: Option<[VertexId; 2]>,
+        mut f: impl FnMut(Term<S>),
+    ) -> Result<(), SurfaceError> {
         if !self.in_omega(v, p, c)? {
             let [x, y] = p.to_f64();
             return Err(SurfaceError::NotInOmega { v, x, y });
         }
-        let mut out = Vec::with_capacity(3);
-        out.push(Term {
+        // ψ_v and the ψ_u of the candidate neighbours are needed below, after the transcendental
+        // work of γ and φ: start loading them now (memory latency dominates on large meshes).
+        let candidates = self.candidates(v, p.to_f64());
+        self.prefetch_patch(v);
+        for i in candidates.clone() {
+            self.prefetch_patch(self.link(v, i));
+        }
+        f(Term {
             u: v,
             q: p.clone(),
             gamma: self.gamma(v, p, c)?,
         });
-        for i in self.candidates(v, p.to_f64()) {
+        for i in candidates {
             let u = self.link(v, i);
             if let Some(o) = only {
                 if !o.contains(&u) {
@@ -464,10 +555,10 @@ impl Pps {
                         g = g.mul(&S::from_f64(factor, c.prec));
                     }
                 }
-                out.push(Term { u, q, gamma: g });
+                f(Term { u, q, gamma: g });
             }
         }
-        Ok(out)
+        Ok(())
     }
 
     /// Eq. (5.1): the weights ω_uv(p), u ∈ J_v(p).
@@ -511,21 +602,26 @@ impl Pps {
         c: &Consts<S>,
         only: Option<[VertexId; 2]>,
     ) -> Result<[S; 3], SurfaceError> {
-        let t = self.terms(v, p, c, only)?;
-        let den = self.denominator(&t, c);
-        if den.sign() != Some(Ordering::Greater) {
-            return Err(SurfaceError::ZeroWeight(v));
-        }
+        // One pass: Σ Γ_uv and Σ Γ_uv·Ψ_uv accumulated in the order of J_v(p) (the same
+        // operations as summing the collected terms).
         let z = S::from_i64(0, c.prec);
+        let mut den = z.clone();
         let mut num = [z.clone(), z.clone(), z];
-        for x in &t {
+        self.for_each_term(v, p, c, only, |x| {
+            den = den.add(&x.gamma);
             if x.gamma.sign() == Some(Ordering::Equal) {
-                continue;
+                return;
             }
             let psi = self.psi(x.u, &x.q);
             for d in 0..3 {
                 num[d] = num[d].add(&x.gamma.mul(&psi[d]));
             }
+        })?;
+        if let Some(Fault::Denominator { factor }) = self.options.fault {
+            den = den.mul(&S::from_f64(factor, c.prec));
+        }
+        if den.sign() != Some(Ordering::Greater) {
+            return Err(SurfaceError::ZeroWeight(v));
         }
         Ok(num.map(|n| n.div(&den)))
     }
@@ -534,6 +630,73 @@ impl Pps {
     pub fn theta_f64(&self, v: VertexId, p: [f64; 2]) -> Result<[f64; 3], SurfaceError> {
         self.theta(v, &P2::new(p[0], p[1]), &self.consts)
     }
+}
+
+/// Prefetch the cache line holding `x` (x86-64 only; a hint without effect on results).
+#[inline(always)]
+fn prefetch(x: &f64) {
+    #[cfg(target_arch = "x86_64")]
+    // SAFETY: PREFETCHT0 is an SSE instruction (baseline on x86-64) that never faults and
+    // does not access memory architecturally; the pointer comes from a valid reference.
+    unsafe {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        _mm_prefetch::<_MM_HINT_T0>(x as *const f64 as *const i8);
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = x;
+}
+
+/// `f(i)` for i = 0..keys.len(), evaluated in parallel in the order of increasing `keys[i]`
+/// (locality), returned in index order.
+pub(crate) fn map_in_key_order<T: Send>(
+    keys: &[u32],
+    f: impl Fn(usize) -> T + Sync + Send,
+) -> Vec<T> {
+    let mut order: Vec<(u32, u32)> = keys
+        .iter()
+        .enumerate()
+        .map(|(i, &k)| (k, i as u32))
+        .collect();
+    order.par_sort_unstable();
+    let done: Vec<T> = order.par_iter().map(|&(_, i)| f(i as usize)).collect();
+    let mut slots: Vec<Option<T>> = (0..keys.len()).map(|_| None).collect();
+    for (&(_, i), r) in order.iter().zip(done) {
+        slots[i as usize] = Some(r);
+    }
+    // `order` is a permutation of 0..keys.len(): every slot is filled.
+    slots.into_iter().flatten().collect()
+}
+
+/// The vertices of degree ≥ 3 in breadth-first order over the links (component by component,
+/// each from its smallest vertex id), followed by the other slots.
+fn bfs_order(degree: &[u32], nbr_start: &[usize], nbr: &[VertexId]) -> Vec<VertexId> {
+    let slots = degree.len();
+    let mut seen = vec![false; slots];
+    let mut order = Vec::with_capacity(slots);
+    for s in 0..slots {
+        if seen[s] || degree[s] < 3 {
+            continue;
+        }
+        seen[s] = true;
+        let mut head = order.len();
+        order.push(VertexId(s as u32));
+        while head < order.len() {
+            let v = order[head].idx();
+            head += 1;
+            for &u in &nbr[nbr_start[v]..nbr_start[v + 1]] {
+                if !seen[u.idx()] {
+                    seen[u.idx()] = true;
+                    order.push(u);
+                }
+            }
+        }
+    }
+    for (s, done) in seen.iter().enumerate() {
+        if !done {
+            order.push(VertexId(s as u32));
+        }
+    }
+    order
 }
 
 /// The planted C⁰ ramp replacing ξ (Fault::RampWeight).
@@ -546,6 +709,61 @@ fn ramp<S: SurfaceScalar>(k: &XiConsts<S>, t2: &S) -> S {
         return S::from_i64(0, prec);
     }
     k.h2.sub(&t2.sqrt()).div(&k.h2.sub(&k.h1))
+}
+
+/// Fit ψ_v for the vertices `vs` (all of degree `fit.info.m`), writing each one's (l+1)²
+/// control points in place. Where the target gives cubic nets: X_v = (A⁺W)·N_v with N_v the
+/// m_v stacked nets (10·m_v × 3), all such vertices in one product (A⁺W)·[N_v1 N_v2 …]; the
+/// others by [`fit_vertex`] (sampling S′).
+fn fit_batch(
+    k: &SimplicialSurface,
+    target: &dyn TargetSurface,
+    fit: &DegreeFit,
+    vs: &mut [(VertexId, &mut [[f64; 3]])],
+) {
+    let m = fit.info.m;
+    let rows = m as usize * 10;
+    let kk = fit.info.unknowns;
+    let mut done = Vec::with_capacity(vs.len());
+    // Column 3j + d of N: coordinate d of the nets of vertex vs[done[j]], sector-major.
+    let mut n = Vec::with_capacity(rows * 3 * vs.len());
+    let mut nets = Vec::with_capacity(m as usize);
+    for (idx, (v, out)) in vs.iter_mut().enumerate() {
+        let v = *v;
+        let outgoing = k.outgoing(v);
+        nets.clear();
+        for i in 0..m as usize {
+            let h = outgoing[i];
+            let a = k.dest(h);
+            let b = k.dest(outgoing[(i + 1) % m as usize]);
+            match target.cubic_net(k.face_of(h), [v, a, b]) {
+                Some(net) => nets.push(net),
+                None => break,
+            }
+        }
+        if nets.len() != m as usize || out.len() != kk {
+            fit_vertex(k, target, v, fit, out);
+            continue;
+        }
+        for d in 0..3 {
+            n.extend(nets.iter().flat_map(|net| net.iter().map(|p| p[d])));
+        }
+        done.push(idx);
+    }
+    if done.is_empty() {
+        return;
+    }
+    let nmat = nalgebra::DMatrix::from_vec(rows, 3 * done.len(), n);
+    let map = nalgebra::DMatrix::from_row_slice(kk, rows, &fit.net_map);
+    let x = map * nmat; // kk × 3·|done|, column-major
+    for (j, &idx) in done.iter().enumerate() {
+        let out = &mut *vs[idx].1;
+        for d in 0..3 {
+            for (c, slot) in out.iter_mut().enumerate() {
+                slot[d] = x[(c, 3 * j + d)];
+            }
+        }
+    }
 }
 
 /// Fit ψ_v: the control points minimising Σ‖ψ_v(q) − b_σ(r)‖² over the Sec. 5.2 samples.
