@@ -36,6 +36,9 @@ pub struct Ch4Args {
     /// the certificate covers every configuration of the mesh (missing ones are listed).
     #[arg(long)]
     pub certificates: Option<std::path::PathBuf>,
+    /// Run only the Chapter 3.4–4 checks (skip building the surface of Chapter 5).
+    #[arg(long)]
+    pub no_surface: bool,
 }
 
 impl Ch4Args {
@@ -132,16 +135,18 @@ pub fn run(
                 rep.certificates = Some(certificate_coverage(k, c, file));
             }
             ch4 = Some(rep);
-            if big {
-                eprintln!("ppm: running the Chapter 5 checks ...");
+            if !a.no_surface {
+                if big {
+                    eprintln!("ppm: running the Chapter 5 checks ...");
+                }
+                let sopts = crate::surface::checks::SurfaceCheckOptions {
+                    seed: opts.seed,
+                    samples_per_vertex: opts.samples.max(1),
+                    max_vertices: opts.max_star_configs,
+                    ..Default::default()
+                };
+                ch5 = crate::surface::checks::run_surface_checks(k, &sopts);
             }
-            let sopts = crate::surface::checks::SurfaceCheckOptions {
-                seed: opts.seed,
-                samples_per_vertex: opts.samples.max(1),
-                max_vertices: opts.max_star_configs,
-                ..Default::default()
-            };
-            ch5 = crate::surface::checks::run_surface_checks(k, &sopts);
         }
     }
     if big {
