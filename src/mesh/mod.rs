@@ -13,6 +13,7 @@ pub mod io;
 pub mod raw;
 pub mod star;
 pub mod validate;
+pub mod vec3;
 
 pub use error::{Location, MeshError};
 pub use halfedge::SimplicialSurface;

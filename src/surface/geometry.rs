@@ -8,6 +8,7 @@ use super::eval::Chart;
 use super::jet::Jet;
 use super::pps::{Pps, SurfaceError};
 use crate::construction::P2;
+use crate::mesh::vec3::{cross, dot};
 use crate::mesh::{FaceId, VertexId};
 
 /// Point, derivatives and curvature of θ_v at a point of its chart.
@@ -23,17 +24,6 @@ pub struct SurfacePoint {
     pub area_element: f64,
     pub gaussian: f64,
     pub mean: f64,
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 /// Normal and curvatures from an order-≥2 jet of a parametrization.

@@ -9,6 +9,7 @@
 //! is identified with (λ, ν, η), with a, b, c the images of the corners of σ in the order the
 //! caller names them; b_σ does not depend on that order.
 
+use crate::mesh::vec3::{cross, dot, norm, sub};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 
 /// Order of the 10 control points of a cubic Bézier triangle: exponents (i, j, k), i + j + k
@@ -56,23 +57,6 @@ pub trait TargetSurface: Sync {
     fn cubic_net(&self, _f: FaceId, _corners: [VertexId; 3]) -> Option<[[f64; 3]; 10]> {
         None
     }
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
 }
 
 /// PN triangles (Vlachos et al. 2001) from vertex normals.

@@ -3,6 +3,7 @@
 
 use super::Ctx;
 use crate::mesh::error::{Location, MeshError};
+use crate::mesh::vec3::{cross, dot, norm, sub};
 
 /// Corners must lie within this fraction of the polygon's bounding-box diagonal from the
 /// plane through their centroid with the Newell normal.
@@ -135,26 +136,6 @@ impl FaceSink {
             triangulated_polygons: self.pending.len() as u64,
         })
     }
-}
-
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn norm(a: [f64; 3]) -> f64 {
-    dot(a, a).sqrt()
 }
 
 /// Whether the polygon `idx` can be fan-split from its first corner: distinct in-range
