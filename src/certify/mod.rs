@@ -856,6 +856,47 @@ where
     Some(back.sub(p).norm2().sqrt())
 }
 
+/// L4.2.1 violated at p (u's chart): p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw, but p ∉ Ω_uw. One generic
+/// evaluation, used to confirm a witness in f64 and in MPFR.
+fn inclusion_violated<S: Scalar>(
+    model: &Model,
+    uw: &EdgeConfig,
+    ux: &EdgeConfig,
+    xw: &EdgeConfig,
+    p: &P2<S>,
+) -> bool
+where
+    Model: Ppm<S>,
+{
+    model.in_omega_uw_literal(ux, p).is_true()
+        && model
+            .g_uw_formula(ux, p)
+            .map(|q| model.in_omega_uw_literal(xw, &q).is_true())
+            .unwrap_or(false)
+        && model.in_omega_uw_literal(uw, p).is_false()
+}
+
+/// |φ_wu(p) − φ_wx(φ_xu(p))| (L4.2.2) by the model's maps, ∞ where either side is undefined.
+fn cocycle_gap<S: Scalar>(
+    model: &Model,
+    uw: &EdgeConfig,
+    ux: &EdgeConfig,
+    xw: &EdgeConfig,
+    p: &P2<S>,
+) -> f64
+where
+    Model: Ppm<S>,
+{
+    let gap = || -> Option<f64> {
+        let l = model.g_uw_formula(uw, p).ok()?;
+        let r = model
+            .g_uw_formula(xw, &model.g_uw_formula(ux, p).ok()?)
+            .ok()?;
+        Some(l.dist_f64(&r))
+    };
+    gap().unwrap_or(f64::INFINITY)
+}
+
 /// P4.2.1(cert): Ω_uw ≠ ∅ and Ω_wu ≠ ∅ (Def. 3.4.1(2)), by a certified interior point of each.
 pub fn prove_nonempty(m_u: u32, m_w: u32, model: &Model) -> PropertyResult {
     let t0 = Instant::now();
@@ -1284,62 +1325,39 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
     let incl_box = st.refuted.clone().or(model_refuted);
     let wit_incl = incl_box.as_ref().map(|(b, txt)| {
         let p = b.centre_xy();
-        let chk = |pf: P2<f64>| {
-            model.in_omega_uw_literal(&ux, &pf).is_true()
-                && model
-                    .g_uw_formula(&ux, &pf)
-                    .map(|q| model.in_omega_uw_literal(&xw, &q).is_true())
-                    .unwrap_or(false)
-                && model.in_omega_uw_literal(&uw, &pf).is_false()
-        };
-        let chm = |pf: P2<Mp>| {
-            model.in_omega_uw_literal(&ux, &pf).is_true()
-                && model
-                    .g_uw_formula(&ux, &pf)
-                    .map(|q| model.in_omega_uw_literal(&xw, &q).is_true())
-                    .unwrap_or(false)
-                && model.in_omega_uw_literal(&uw, &pf).is_false()
-        };
         CertWitness {
             point: p,
             text: format!(
                 "p = ({:.9}, {:.9}) in u's chart, triangle {t:?}: {txt}",
                 p[0], p[1]
             ),
-            f64_confirms: chk(P2::new(p[0], p[1])),
-            mp_confirms: chm(P2::from_f64(p[0], p[1], MP_PREC)),
+            f64_confirms: inclusion_violated(model, &uw, &ux, &xw, &P2::<f64>::new(p[0], p[1])),
+            mp_confirms: inclusion_violated(
+                model,
+                &uw,
+                &ux,
+                &xw,
+                &P2::<Mp>::from_f64(p[0], p[1], MP_PREC),
+            ),
         }
     });
     let wit_coc = cocycle_refuted.as_ref().map(|(b, txt)| {
         let p = b.centre_xy();
-        let dev = |pf: &P2<f64>| -> f64 {
-            (|| -> Option<f64> {
-                let l = model.g_uw_formula(&uw, pf).ok()?;
-                let r = model
-                    .g_uw_formula(&xw, &model.g_uw_formula(&ux, pf).ok()?)
-                    .ok()?;
-                Some(l.dist_f64(&r))
-            })()
-            .unwrap_or(f64::INFINITY)
-        };
-        let devm = |pf: &P2<Mp>| -> f64 {
-            (|| -> Option<f64> {
-                let l = model.g_uw_formula(&uw, pf).ok()?;
-                let r = model
-                    .g_uw_formula(&xw, &model.g_uw_formula(&ux, pf).ok()?)
-                    .ok()?;
-                Some(l.dist_f64(&r))
-            })()
-            .unwrap_or(f64::INFINITY)
-        };
         CertWitness {
             point: p,
             text: format!(
                 "p = ({:.9}, {:.9}) in u's chart, triangle {t:?}: {txt}",
                 p[0], p[1]
             ),
-            f64_confirms: dev(&P2::new(p[0], p[1])) > s.fail_tol,
-            mp_confirms: devm(&P2::from_f64(p[0], p[1], MP_PREC)) > s.fail_tol,
+            f64_confirms: cocycle_gap(model, &uw, &ux, &xw, &P2::<f64>::new(p[0], p[1]))
+                > s.fail_tol,
+            mp_confirms: cocycle_gap(
+                model,
+                &uw,
+                &ux,
+                &xw,
+                &P2::<Mp>::from_f64(p[0], p[1], MP_PREC),
+            ) > s.fail_tol,
         }
     });
     let ms = t0.elapsed().as_millis() as u64;
