@@ -3,7 +3,7 @@
 //! after each step) give closed simplicial surfaces with degrees from 3 to 20+. On them:
 //! the validator accepts (Def. 3.1.6), χ is preserved, s_v is a simplicial isomorphism
 //! (Def. 4.1.4), every Chapter 4 statement gets the verdict recorded in
-//! `src/construction/SPEC_ROWS.md` (holds, or fails exactly for the degrees listed there), and
+//! `SPEC.md` (holds, or fails exactly for the degrees listed there), and
 //! random corruptions are rejected with the right error class. Both proptest and quickcheck.
 
 use proptest::prelude::*;
@@ -48,7 +48,7 @@ fn surface(raw: &RawMesh) -> SimplicialSurface {
     v.surface.expect("validated")
 }
 
-/// The verdict SPEC_ROWS.md records for `id` on an edge with m_u = `m` (`None`: not a
+/// The verdict SPEC.md records for `id` on an edge with m_u = `m` (`None`: not a
 /// degree-dependent statement of that table, or one that must simply hold).
 fn predicted_fails(id: &str, m: u32) -> Option<bool> {
     Some(match id {
@@ -56,9 +56,6 @@ fn predicted_fails(id: &str, m: u32) -> Option<bool> {
         "C4.1.6-gv-smooth" => m % 6 != 0,
         "C4.1.8-onto-intC" => m < 6,
         "C4.1.8-guw-bijective" => m > 6,
-        // Holds for 6 | m_u (checked up to m_u = 18: from 24 the jump test's Lipschitz
-        // bound is exceeded by ~5e−5 relative — open, see fuzz/README.md).
-        "P4.1.1" if m % 6 == 0 && m > 18 => return None,
         "P4.1.1" => m % 6 != 0,
         "P4.1.3-inverse" | "D4.1.9-lens" => m >= 11,
         "P4.1.2-proof-step" => true,
@@ -205,7 +202,7 @@ proptest! {
         }
     }
 
-    /// Def. 4.1.4 and the Chapter 4 verdicts of SPEC_ROWS.md on random surfaces.
+    /// Def. 4.1.4 and the Chapter 4 verdicts of SPEC.md on random surfaces.
     #[test]
     fn t4_2_1_random_surfaces_chapter4_verdicts_as_recorded(
         b in any::<u8>(),

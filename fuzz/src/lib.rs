@@ -147,7 +147,7 @@ pub fn check_surface(s: &SimplicialSurface) {
     assert!(!iso.failed(), "D4.1.4 fails: {:?}", iso.witnesses.first());
 }
 
-/// IDs of Chapter 4 statements that hold on every configuration (src/construction/SPEC_ROWS.md).
+/// IDs of Chapter 4 statements that hold on every configuration (SPEC.md).
 pub const ALWAYS_HOLD: &[&str] = &[
     "D4.1.5",
     "C4.1.7-h-identity",

@@ -2,7 +2,7 @@
 //!
 //! This module holds the pure mathematics of Sec. 4.1 (independent of meshes), generic over
 //! the scalar type ([`scalar::Scalar`]: `f64`, [`scalar::Mp`]), the seeded samplers, and the
-//! conformance checks of Secs. 4.1–4.2. See `SPEC_ROWS.md` for the statement-by-statement
+//! conformance checks of Secs. 4.1–4.2. See `SPEC.md` for the statement-by-statement
 //! verdicts.
 
 pub mod abstract_view;

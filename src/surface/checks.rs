@@ -1,4 +1,4 @@
-//! The Chapter 5 / Sec. 6.1.4 checks on a mesh (SPEC IDs in `SPEC_ROWS.md`).
+//! The Chapter 5 / Sec. 6.1.4 checks on a mesh (SPEC IDs in `SPEC.md`).
 //!
 //! [`run_surface_checks`] builds S′ (PN triangles) and the PPS and runs every check; each
 //! check is also a public function on a built [`Pps`] so tests can plant faults.

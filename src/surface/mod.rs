@@ -11,7 +11,7 @@
 //! * [`checks`] — condition (C) and the other Chapter 5 / Sec. 6.1.4 checks.
 //! * [`cli`] — `ppm sample`, `ppm eval`.
 //!
-//! See `SPEC_ROWS.md` for statement-by-statement verdicts.
+//! See `SPEC.md` for statement-by-statement verdicts.
 
 pub mod bezier;
 pub mod checks;
