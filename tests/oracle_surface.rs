@@ -81,7 +81,7 @@ fn sample_points_reproduce_the_order_of_sample_surface() {
             s.positions.len() as u64
         );
         for (sp, q) in pat.points.iter().zip(&s.positions) {
-            let e = p.eval_f64(FaceId(sp.face), sp.bary).expect("eval");
+            let e = p.eval_f64(sp.face, sp.bary).expect("eval");
             let d = (0..3).map(|i| (e[i] - q[i]).abs()).fold(0.0, f64::max);
             assert!(d < 1e-13, "{name}: {sp:?} {d}");
         }

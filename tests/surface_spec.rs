@@ -125,7 +125,8 @@ fn c5_2_unknowns_is_l_plus_1_squared() {
     // The paper counts l² unknowns and indexes j·l + k + 1; a bi-degree (l, l) patch has
     // (l+1)² control points and j·l + k + 1 collides, e.g. (j,k) = (0,l) and (1,0).
     let l = 7usize;
-    assert_eq!(0 * l + l + 1, 1 * l + 0 + 1);
+    let paper_index = |j: usize, k: usize| j * l + k + 1;
+    assert_eq!(paper_index(0, l), paper_index(1, 0));
     let f = factor_degree(6, Profile::Paper);
     assert_eq!(f.info.unknowns, (l + 1) * (l + 1));
     // Paper profile: 4·l² grid points before clipping to P_v.

@@ -28,7 +28,7 @@ use rayon::prelude::*;
 use rstar::primitives::GeomWithData;
 use rstar::RTree;
 use serde::Serialize;
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 /// Largest accepted subdivision level (as `sample_surface`).
 pub const MAX_LEVEL: u32 = 12;
@@ -63,92 +63,17 @@ impl MatchMode {
     }
 }
 
-/// One point of the reference sampling: the argument of eval.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct SamplePoint {
-    /// σ (a face index of K).
-    pub face: u32,
-    /// (λ, μ, ν) at the corners of σ in file order.
-    pub bary: [f64; 3],
-}
-
-/// The reference sampling pattern at one level: points in output order and the triangles.
-#[derive(Debug, Clone, Default)]
-pub struct SamplePattern {
-    /// The eval argument of every output vertex, in output order.
-    pub points: Vec<SamplePoint>,
-    /// The output triangles (vertex indices).
-    pub faces: Vec<[u32; 3]>,
-}
-
-#[derive(Hash, PartialEq, Eq, Clone, Copy)]
-enum Key {
-    Corner(u32),
-    Edge(u32, u32, u32),
-    Inner(u32, u32, u32),
-}
+pub use crate::surface::output::{SamplePattern, SamplePoint};
 
 /// The Sec. 6.2 sampling pattern at `level` (the vertex order and triangles of
-/// [`crate::surface::output::sample_surface`]; `tests/oracle_surface.rs` checks they agree).
+/// [`crate::surface::output::sample_surface`], which evaluates this same pattern).
 pub fn sample_points(pps: &Pps, level: u32) -> Result<SamplePattern, OracleError> {
     if level > MAX_LEVEL {
         return Err(OracleError::Malformed(format!(
             "level {level} > {MAX_LEVEL}"
         )));
     }
-    let n = 1u32 << level;
-    let nf = pps.num_faces();
-    let mut index: HashMap<Key, u32> = HashMap::new();
-    let mut out = SamplePattern::default();
-    let mut row_start = vec![0usize; (n + 2) as usize];
-    for i in 0..=n {
-        row_start[i as usize + 1] = row_start[i as usize] + (n + 1 - i) as usize;
-    }
-    for fi in 0..nf {
-        let f = FaceId(fi as u32);
-        let c = pps.face(f)?;
-        let mut local = Vec::with_capacity(row_start[n as usize + 1]);
-        for i in 0..=n {
-            for j in 0..=(n - i) {
-                let k = n - i - j;
-                let w = [k, i, j];
-                let nz: Vec<usize> = (0..3).filter(|&t| w[t] != 0).collect();
-                let key = match nz.as_slice() {
-                    [a] => Key::Corner(c[*a].0),
-                    [a, b] => {
-                        let (a, b) = (*a, *b);
-                        if c[a].0 < c[b].0 {
-                            Key::Edge(c[a].0, c[b].0, w[a])
-                        } else {
-                            Key::Edge(c[b].0, c[a].0, w[b])
-                        }
-                    }
-                    _ => Key::Inner(fi as u32, i, j),
-                };
-                let next = index.len() as u32;
-                let id = *index.entry(key).or_insert_with(|| {
-                    let nn = f64::from(n);
-                    out.points.push(SamplePoint {
-                        face: fi as u32,
-                        bary: [f64::from(k) / nn, f64::from(i) / nn, f64::from(j) / nn],
-                    });
-                    next
-                });
-                local.push(id);
-            }
-        }
-        let at = |i: u32, j: u32| local[row_start[i as usize] + j as usize];
-        for i in 0..n {
-            for j in 0..(n - i) {
-                out.faces.push([at(i, j), at(i + 1, j), at(i, j + 1)]);
-                if i + j + 1 < n {
-                    out.faces
-                        .push([at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
-                }
-            }
-        }
-    }
-    Ok(out)
+    Ok(crate::surface::output::sample_pattern(pps, level)?)
 }
 
 /// Number of sampled vertices at `level` for a surface with `v` vertices, `e` edges and `f`
@@ -329,7 +254,7 @@ pub fn diff_surface(
     let reference: Vec<[f64; 3]> = pattern
         .points
         .par_iter()
-        .map(|s| pps.eval(FaceId(s.face), &s.bary, cf).map(|e| e.point))
+        .map(|s| pps.eval(s.face, &s.bary, cf).map(|e| e.point))
         .collect::<Result<_, _>>()?;
     let scale = reference
         .iter()
@@ -382,7 +307,7 @@ pub fn diff_surface(
             SurfaceItem {
                 vertex: i,
                 reference_vertex: r,
-                face: pattern.points[r].face,
+                face: pattern.points[r].face.0,
                 bary: pattern.points[r].bary,
                 theirs: theirs[i],
                 reference: reference[r],

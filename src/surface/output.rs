@@ -34,28 +34,56 @@ enum Key {
     Inner(u32, u32, u32),
 }
 
-/// Sample M at subdivision level `level` (Sec. 6.2). `progress`: a progress line on stderr.
-pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMesh, SurfaceError> {
+/// One point of the Sec. 6.2 sampling: the arguments of eval(σ, λ, μ, ν).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct SamplePoint {
+    /// σ.
+    pub face: FaceId,
+    /// (λ, μ, ν) at the corners of σ in file order.
+    pub bary: [f64; 3],
+}
+
+/// The sampling pattern at one level: the eval argument of every output vertex (in output
+/// order) and the output triangles. [`sample_surface`] evaluates exactly this pattern, and the
+/// oracle's `diff --surface` compares a third-party sampling against it.
+#[derive(Debug, Clone, Default)]
+pub struct SamplePattern {
+    /// The eval argument of every output vertex, in output order.
+    pub points: Vec<SamplePoint>,
+    /// The output triangles (vertex indices).
+    pub faces: Vec<[u32; 3]>,
+}
+
+/// The midpoint-subdivision pattern of Sec. 6.2 at `level` (at most 12): the barycentric grid
+/// (k, i, j)/2^level of every face, a point on an edge or corner of K listed once (through the
+/// first face that reaches it), so the triangles close up.
+pub fn sample_pattern(pps: &Pps, level: u32) -> Result<SamplePattern, SurfaceError> {
     let n = 1u32 << level.min(12);
     let nf = pps.num_faces();
     let mut index: HashMap<Key, u32> = HashMap::new();
-    let mut todo: Vec<(FaceId, [f64; 3])> = Vec::new();
-    let mut faces = Vec::with_capacity(nf * (n * n) as usize);
-    let per_row = |i: u32| n + 1 - i; // points with first index i
+    let mut out = SamplePattern {
+        points: Vec::new(),
+        faces: Vec::with_capacity(nf * (n * n) as usize),
+    };
+    // local index of (i, j): Σ_{i' < i} (n + 1 − i') + j.
+    let mut row_start = vec![0usize; (n + 2) as usize];
+    for i in 0..=n {
+        row_start[i as usize + 1] = row_start[i as usize] + (n + 1 - i) as usize;
+    }
     for fi in 0..nf {
         let f = FaceId(fi as u32);
         let c = pps.face(f)?;
-        let mut local = Vec::with_capacity(((n + 1) * (n + 2) / 2) as usize);
+        let mut local = Vec::with_capacity(row_start[n as usize + 1]);
         for i in 0..=n {
             for j in 0..=(n - i) {
                 let k = n - i - j;
                 // weights: corner 0 ↦ k, corner 1 ↦ i, corner 2 ↦ j.
                 let w = [k, i, j];
                 let nz: Vec<usize> = (0..3).filter(|&t| w[t] != 0).collect();
-                let key = match nz.len() {
-                    1 => Key::Corner(c[nz[0]].0),
-                    2 => {
-                        let (a, b) = (nz[0], nz[1]);
+                let key = match nz.as_slice() {
+                    [a] => Key::Corner(c[*a].0),
+                    [a, b] => {
+                        let (a, b) = (*a, *b);
                         if c[a].0 < c[b].0 {
                             Key::Edge(c[a].0, c[b].0, w[a])
                         } else {
@@ -66,38 +94,46 @@ pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMe
                 };
                 let next = index.len() as u32;
                 let id = *index.entry(key).or_insert_with(|| {
-                    let nn = n as f64;
-                    todo.push((f, [k as f64 / nn, i as f64 / nn, j as f64 / nn]));
+                    let nn = f64::from(n);
+                    out.points.push(SamplePoint {
+                        face: f,
+                        bary: [f64::from(k) / nn, f64::from(i) / nn, f64::from(j) / nn],
+                    });
                     next
                 });
                 local.push(id);
             }
         }
-        // local index of (i, j): Σ_{i' < i} per_row(i') + j.
-        let mut row_start = vec![0usize; (n + 2) as usize];
-        for i in 0..=n {
-            row_start[i as usize + 1] = row_start[i as usize] + per_row(i) as usize;
-        }
         let at = |i: u32, j: u32| local[row_start[i as usize] + j as usize];
         for i in 0..n {
             for j in 0..(n - i) {
-                faces.push([at(i, j), at(i + 1, j), at(i, j + 1)]);
+                out.faces.push([at(i, j), at(i + 1, j), at(i, j + 1)]);
                 if i + j + 1 < n {
-                    faces.push([at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
+                    out.faces
+                        .push([at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
                 }
             }
         }
     }
+    Ok(out)
+}
+
+/// Sample M at subdivision level `level` (Sec. 6.2). `progress`: a progress line on stderr.
+pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMesh, SurfaceError> {
+    let SamplePattern {
+        points: todo,
+        faces,
+    } = sample_pattern(pps, level)?;
     let cj: Consts<Jet<f64>> = pps.consts(53);
     let done = AtomicUsize::new(0);
     let total = todo.len();
     let step = (total / 10).max(1);
     // Evaluated in the patches' storage order (cache locality), results in `todo` order.
-    let keys: Vec<u32> = todo.iter().map(|(f, _)| pps.locality_key(*f)).collect();
+    let keys: Vec<u32> = todo.iter().map(|s| pps.locality_key(s.face)).collect();
     let results: Vec<Result<super::geometry::SurfacePoint, SurfaceError>> =
         super::pps::map_in_key_order(&keys, |i| {
-            let (f, b) = &todo[i];
-            let r = pps.eval_geometry(*f, *b, &cj).map(|x| x.2);
+            let SamplePoint { face, bary } = todo[i];
+            let r = pps.eval_geometry(face, bary, &cj).map(|x| x.2);
             if progress {
                 let d = done.fetch_add(1, Ordering::Relaxed) + 1;
                 if d % step == 0 || d == total {
