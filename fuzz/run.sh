@@ -16,7 +16,13 @@ log="logs/$t-$(date +%Y%m%dT%H%M%S).log"
 # cargo-fuzz sets RUSTFLAGS itself, which overrides .cargo/config.toml, so inari's required
 # target CPU must come through the environment (cargo-fuzz appends to it).
 export RUSTFLAGS="${RUSTFLAGS:-} -Ctarget-cpu=haswell"
-if rustup toolchain list 2>/dev/null | grep -q '^nightly'; then tc="+nightly"; else tc=""; export RUSTC_BOOTSTRAP=1; fi
+# PPM_FUZZ_STABLE=1 forces the stable path (CI: it must not depend on nightly being present).
+if [ "${PPM_FUZZ_STABLE:-0}" != 1 ] && rustup toolchain list 2>/dev/null | grep -q '^nightly'; then
+    tc="+nightly"
+else
+    tc=""
+    export RUSTC_BOOTSTRAP=1
+fi
 dict=""
 case "$t" in read_off|read_obj|read_ply_ascii|pipeline) dict="-dict=dict/text.dict" ;; esac
 cargo $tc fuzz build -s none "$t" > "$log" 2>&1
