@@ -17,6 +17,8 @@
 //! * [`conditions`] — the conformance checkers and their reports.
 //! * [`cli`] — the `ppm` command line.
 
+#![warn(missing_docs)]
+
 pub mod certify;
 pub mod cli;
 pub mod conditions;

@@ -13,19 +13,27 @@ pub enum Verdict {
     /// The statement holds on the input (decided, certified or on every sample).
     Holds,
     /// The statement holds on the stated restricted domain only.
-    HoldsRestricted { domain: String },
+    HoldsRestricted {
+        /// The restricted domain on which it holds.
+        domain: String,
+    },
     /// The statement fails; witnesses are attached.
     Fails,
     /// Not a statement of the paper: an informational finding (e.g. unreferenced vertices).
     Warning,
     /// The check could not run because a precondition failed (named).
-    Skipped { reason: String },
+    Skipped {
+        /// The failed precondition.
+        reason: String,
+    },
 }
 
 impl Verdict {
+    /// Only `Fails` is a failure.
     pub fn is_failure(&self) -> bool {
         matches!(self, Verdict::Fails)
     }
+    /// Short label for text reports.
     pub fn label(&self) -> &'static str {
         match self {
             Verdict::Holds => "holds",
@@ -47,6 +55,7 @@ pub struct Witness {
 }
 
 impl Witness {
+    /// A witness from its description and machine-readable form.
     pub fn new(text: impl Into<String>, data: serde_json::Value) -> Self {
         Witness {
             text: text.into(),
@@ -62,6 +71,7 @@ pub struct CheckResult {
     pub id: String,
     /// Short name of the check.
     pub name: String,
+    /// The verdict; `Holds` until [`CheckResult::offend`] records an offender.
     pub verdict: Verdict,
     /// Number of offending elements found (all of them, not only the listed ones).
     pub offenders: u64,
@@ -84,6 +94,7 @@ pub struct CheckResult {
 }
 
 impl CheckResult {
+    /// A passing result with no offenders, nothing examined and no note.
     pub fn new(id: impl Into<String>, name: impl Into<String>) -> Self {
         CheckResult {
             id: id.into(),
@@ -111,11 +122,13 @@ impl CheckResult {
         }
     }
 
+    /// Sets the note.
     pub fn with_note(mut self, note: impl Into<String>) -> Self {
         self.note = note.into();
         self
     }
 
+    /// The verdict is `Fails`.
     pub fn failed(&self) -> bool {
         self.verdict.is_failure()
     }

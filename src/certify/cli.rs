@@ -11,6 +11,7 @@ use std::process::ExitCode;
 /// Arguments of `ppm certify`.
 #[derive(Args, Debug)]
 pub struct CertifyArgs {
+    /// `ppm certify merge …`: join shard certificates instead of proving.
     #[command(subcommand)]
     pub merge: Option<MergeCmd>,
     /// Largest vertex degree; all configurations with degrees 3..=M are proven.
@@ -36,13 +37,17 @@ pub struct CertifyArgs {
     pub planted_label_shift: i64,
 }
 
+/// The `merge` subcommand of `ppm certify`.
 #[derive(Subcommand, Debug)]
 pub enum MergeCmd {
     /// Join shard certificates into one.
     Merge {
+        /// Shard certificate files to join.
         files: Vec<PathBuf>,
+        /// Merged certificate JSON output.
         #[arg(long, default_value = "certificate.json")]
         out: PathBuf,
+        /// Readable summary output (Markdown); printed to stdout as well.
         #[arg(long)]
         summary: Option<PathBuf>,
     },

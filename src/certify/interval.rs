@@ -103,6 +103,7 @@ pub fn principal_pieces_k(th: I) -> Vec<(I, i64)> {
 /// Per-degree constants (enclosures).
 #[derive(Debug, Clone, Copy)]
 pub struct Deg {
+    /// The degree m.
     pub m: u32,
     /// r_v = cos(π/m) (Def. 4.1.1).
     pub rm: I,
@@ -117,6 +118,7 @@ pub struct Deg {
 }
 
 impl Deg {
+    /// Enclosures of the constants of degree m.
     pub fn new(m: u32) -> Deg {
         let rm = (I::PI / c(m as f64)).cos();
         let s3h = c(3.0).sqrt() / c(2.0);
@@ -151,7 +153,10 @@ pub enum Domain {
     /// The literal Def. 4.1.9 (closed form of the module docs).
     Literal,
     /// The Sec. 6.1.3 lens test with lens radius² `r2` (3/4 for the paper).
-    Lens { r2: I },
+    Lens {
+        /// Enclosure of the squared lens radius (3/4 for the paper).
+        r2: I,
+    },
 }
 
 /// Membership of the point with principal angle `th` (relative to the neighbour's label

@@ -38,15 +38,18 @@ pub struct Model {
 }
 
 impl Model {
+    /// The paper's construction, no fault planted.
     pub fn paper() -> Model {
         Model {
             lens_radius_offset: 0.0,
             label_shift: 0,
         }
     }
+    /// True when no fault is planted.
     pub fn is_paper(&self) -> bool {
         *self == Model::paper()
     }
+    /// `paper`, or `planted(…)` with the fault parameters; recorded in certificates.
     pub fn name(&self) -> String {
         if self.is_paper() {
             "paper".into()
@@ -98,14 +101,26 @@ impl<S: Scalar> Ppm<S> for Model {
 pub enum ConfigKey {
     /// A vertex (star) of degree m: lens agreement, at most two overlaps, non-adjacent
     /// disjointness.
-    Vertex { m: u32 },
+    Vertex {
+        /// m_x, the degree of the star's centre.
+        m: u32,
+    },
     /// An oriented edge [u, w] with degrees (m_u, m_w), any labels.
-    Edge { m_u: u32, m_w: u32 },
+    Edge {
+        /// m_u, the degree of u.
+        m_u: u32,
+        /// m_w, the degree of w.
+        m_w: u32,
+    },
     /// A triangle [u, w, x] with degrees and orientation of its labels.
     Triangle {
+        /// m_u, the degree of u.
         m_u: u32,
+        /// m_w, the degree of w.
         m_w: u32,
+        /// m_x, the degree of x.
         m_x: u32,
+        /// The labels step counterclockwise ([`maps::FanOrientation::Ccw`]).
         ccw: bool,
     },
 }
@@ -142,6 +157,7 @@ impl ConfigKey {
             ccw: o == maps::FanOrientation::Ccw,
         })
     }
+    /// Key of a vertex (star) of degree m.
     pub fn of_vertex(m: u32) -> ConfigKey {
         ConfigKey::Vertex { m }
     }
@@ -253,6 +269,7 @@ pub enum Outcome {
 pub struct CertWitness {
     /// The point, in the chart named by `text`.
     pub point: [f64; 2],
+    /// The point, its chart and what fails there.
     pub text: String,
     /// The f64 evaluator of `construction::maps` confirms the failure at `point`.
     pub f64_confirms: bool,
@@ -263,9 +280,11 @@ pub struct CertWitness {
 /// The result of one property for one configuration.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PropertyResult {
+    /// The configuration.
     pub key: ConfigKey,
     /// SPEC ID, e.g. `L4.2.2(cert)`.
     pub property: String,
+    /// How the proof ended (certified, possibly outside δ; refuted; inconclusive).
     pub outcome: Outcome,
     /// What exactly was proven (or refuted).
     pub statement: String,
@@ -275,10 +294,15 @@ pub struct PropertyResult {
     pub centre_bound: Option<f64>,
     /// δ: the largest diameter (in the chart) of an unresolved box.
     pub delta: Option<f64>,
+    /// Boxes evaluated by branch and bound.
     pub boxes: u64,
+    /// Deepest subdivision level reached.
     pub max_depth: u32,
+    /// Boxes left undecided: at the maximum depth, or pending when the box budget ran out.
     pub unresolved: u64,
+    /// The counterexample, when refuted.
     pub witness: Option<CertWitness>,
+    /// Time spent proving this result, in ms.
     pub millis: u64,
 }
 
@@ -327,14 +351,21 @@ impl PropertyResult {
 /// A certificate file: all results of one run (or a merge of shards).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Certificate {
+    /// File format tag, `pseudomanifold-certificate/1`.
     pub format: String,
+    /// M: every configuration with degrees 3..=M is in scope.
     pub max_degree: u32,
+    /// [`Model::name`] of the construction proven.
     pub model: String,
     /// `(k, n)` for a shard, `None` for a complete run or a merge.
     pub shard: Option<(usize, usize)>,
+    /// Number of configurations proven (summed over the shards of a merge).
     pub configs: usize,
+    /// One result per (configuration, property).
     pub results: Vec<PropertyResult>,
+    /// Wall-clock time of the run, in ms (the largest shard's for a merge).
     pub wall_millis: u64,
+    /// Worker threads used (the first shard's for a merge).
     pub jobs: usize,
     /// Statements shared by many results, by property: a result whose `statement` is empty
     /// in the file has this one ([`Certificate::compact`], [`Certificate::expand`]).
@@ -384,18 +415,26 @@ impl Certificate {
 /// Errors of the certificate tools.
 #[derive(Debug, thiserror::Error)]
 pub enum CertifyError {
+    /// A certificate or summary file could not be read or written.
     #[error("I/O error on {path}: {source}")]
     Io {
+        /// The file.
         path: String,
+        /// The underlying I/O error.
         source: std::io::Error,
     },
+    /// A certificate file is not valid certificate JSON (or a certificate could not be serialised).
     #[error("malformed certificate {path}: {source}")]
     Json {
+        /// The file.
         path: String,
+        /// The JSON error.
         source: serde_json::Error,
     },
+    /// Certificates to merge disagree (max degree, model), overlap, or none was given.
     #[error("certificates do not fit together: {0}")]
     Mismatch(String),
+    /// An invalid command-line value (`--shard`, `--max-degree`) or thread-pool setup failure.
     #[error("bad argument: {0}")]
     BadArg(String),
 }
@@ -407,7 +446,9 @@ pub enum CertifyError {
 /// A box [θ0, θ1] × [r0, r1] of polar coordinates in a chart.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PBox {
+    /// [θ0, θ1].
     pub th: (f64, f64),
+    /// [r0, r1].
     pub r: (f64, f64),
 }
 
@@ -1518,6 +1559,7 @@ pub fn merge(parts: Vec<Certificate>) -> Result<Certificate, CertifyError> {
 /// Coverage of one property for a mesh.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Coverage {
+    /// SPEC ID of the property, e.g. `L4.2.2(cert)`.
     pub property: String,
     /// Every needed configuration has a `Certified`/`CertifiedOutsideDelta` result.
     pub certified: bool,

@@ -35,14 +35,18 @@ pub enum Precision {
 /// Options of the mesh-wide Chapter 4 run.
 #[derive(Debug, Clone, Serialize)]
 pub struct Ch4Options {
+    /// Seed of the samplers and of the configuration subsets.
     pub seed: u64,
     /// Samples per category (uniform, near boundary, near origin, near cut, …) per
     /// configuration.
     pub samples: usize,
+    /// Arithmetic of the checks.
     pub precision: Precision,
     /// At most this many distinct edge / triangle / star configurations (seeded subset).
     pub max_edge_configs: Option<usize>,
+    /// At most this many distinct triangle configurations (seeded subset).
     pub max_triangle_configs: Option<usize>,
+    /// At most this many distinct star configurations (seeded subset).
     pub max_star_configs: Option<usize>,
 }
 
@@ -62,24 +66,38 @@ impl Default for Ch4Options {
 /// What the run covered.
 #[derive(Debug, Clone, Default, Serialize)]
 pub struct Coverage {
+    /// Oriented edges of K (two per edge).
     pub oriented_edges: u64,
+    /// Distinct edge configurations (m_u, i, m_w, j) among them.
     pub edge_configs: u64,
+    /// Edge configurations actually checked (after `max_edge_configs`).
     pub edge_configs_checked: u64,
+    /// Oriented edges whose configuration was checked.
     pub edges_covered: u64,
+    /// Triangles of K.
     pub triangles: u64,
+    /// Distinct triangle configurations among them.
     pub triangle_configs: u64,
+    /// Triangle configurations actually checked (after `max_triangle_configs`).
     pub triangle_configs_checked: u64,
+    /// Triangles whose configuration was checked.
     pub triangles_covered: u64,
+    /// Vertices of K.
     pub vertices: u64,
+    /// Distinct star configurations among them.
     pub star_configs: u64,
+    /// Star configurations actually checked (after `max_star_configs`).
     pub star_configs_checked: u64,
+    /// Vertices whose star configuration was checked.
     pub vertices_covered: u64,
 }
 
 /// The report of a mesh-wide run.
 #[derive(Debug, Clone, Serialize)]
 pub struct Ch4Report {
+    /// The options of the run.
     pub options: Ch4Options,
+    /// What the run covered.
     pub coverage: Coverage,
     /// One result per statement ID, aggregated over configurations.
     pub checks: Vec<CheckResult>,
@@ -95,8 +113,11 @@ pub struct Ch4Report {
 /// Which Chapter 4 properties of a mesh a certificate (issue 6, `ppm certify`) covers.
 #[derive(Debug, Clone, Serialize)]
 pub struct CertCoverage {
+    /// The certificate file, as given.
     pub file: String,
+    /// The certificate's max degree.
     pub max_degree: u32,
+    /// The certificate's model name (`paper` or a planted fault).
     pub model: String,
     /// Distinct configurations the mesh needs (vertex degrees, oriented edges, triangles
     /// read from each of their vertices).

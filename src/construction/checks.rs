@@ -1507,7 +1507,9 @@ pub fn check_p4_2_4<S: Scalar, M: Ppm<S>>(
 /// k = 0..m−1, the neighbour's degree and the label s_n(x) of x in the neighbour's star.
 #[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
 pub struct StarConfig {
+    /// m, the degree of x.
     pub m: u32,
+    /// For label k: (degree of the k-th neighbour n, label s_n(x)).
     pub nbrs: Vec<(u32, u32)>,
 }
 

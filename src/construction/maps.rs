@@ -16,35 +16,45 @@ use std::cmp::Ordering;
 /// A point of R² (one copy of R² per vertex; the copy is implicit).
 #[derive(Clone, Debug, PartialEq)]
 pub struct P2<S> {
+    /// First coordinate.
     pub x: S,
+    /// Second coordinate.
     pub y: S,
 }
 
 impl<S: Scalar> P2<S> {
+    /// The point (x, y).
     pub fn new(x: S, y: S) -> Self {
         P2 { x, y }
     }
+    /// (x, y) rounded to `prec` bits in `S`.
     pub fn from_f64(x: f64, y: f64, prec: u32) -> Self {
         P2 {
             x: S::from_f64(x, prec),
             y: S::from_f64(y, prec),
         }
     }
+    /// The coordinates as f64 (nearest, or midpoint for intervals).
     pub fn to_f64(&self) -> [f64; 2] {
         [self.x.to_f64(), self.y.to_f64()]
     }
+    /// The larger precision of the two coordinates, in bits.
     pub fn prec(&self) -> u32 {
         self.x.precision_bits().max(self.y.precision_bits())
     }
+    /// ‖p‖² = x² + y² (no square root, so membership tests stay exact where possible).
     pub fn norm2(&self) -> S {
         self.x.sqr().add(&self.y.sqr())
     }
+    /// p − o.
     pub fn sub(&self, o: &Self) -> Self {
         P2::new(self.x.sub(&o.x), self.y.sub(&o.y))
     }
+    /// p + o.
     pub fn add(&self, o: &Self) -> Self {
         P2::new(self.x.add(&o.x), self.y.add(&o.y))
     }
+    /// k·p.
     pub fn scale(&self, k: &S) -> Self {
         P2::new(self.x.mul(k), self.y.mul(k))
     }
@@ -62,7 +72,9 @@ impl<S: Scalar> P2<S> {
 /// Polar coordinates `(θ, r)` as in Def. 4.1.5.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Polar<S> {
+    /// θ, the angle: in (−π, π] when produced by Π; [`f_v`] may leave that range.
     pub theta: S,
+    /// r, the length.
     pub r: S,
 }
 
@@ -86,10 +98,22 @@ pub enum MapError {
 /// Why a configuration is invalid.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ConfigError {
+    /// A degree m < 3 ([`MIN_DEGREE`]); Chapter 4 assumes every vertex has degree at least three.
     #[error("degree {m} < 3 (Chapter 4 assumes every vertex has degree at least three)")]
-    DegreeTooSmall { m: u32 },
+    DegreeTooSmall {
+        /// The offending degree.
+        m: u32,
+    },
+    /// A label is not in 0..m.
     #[error("label {label} is not in 0..{m}")]
-    LabelOutOfRange { label: u32, m: u32 },
+    LabelOutOfRange {
+        /// The offending label.
+        label: u32,
+        /// The degree of the vertex whose star it labels.
+        m: u32,
+    },
+    /// The six labels of a triangle do not step by +1 everywhere or by −1 everywhere (see
+    /// [`TriangleConfig::orientation`]); the message gives the three steps.
     #[error("triangle labels are not consistent with one fan orientation: {0}")]
     NotAFan(String),
 }
@@ -154,14 +178,23 @@ impl EdgeConfig {
 /// Field `a_b` is the label `s_a(b)` of `b` in `a`'s star.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
 pub struct TriangleConfig {
+    /// m_u: degree of u.
     pub m_u: u32,
+    /// m_w: degree of w.
     pub m_w: u32,
+    /// m_x: degree of x.
     pub m_x: u32,
+    /// s_u(w).
     pub u_w: u32,
+    /// s_u(x).
     pub u_x: u32,
+    /// s_w(u).
     pub w_u: u32,
+    /// s_w(x).
     pub w_x: u32,
+    /// s_x(u).
     pub x_u: u32,
+    /// s_x(w).
     pub x_w: u32,
 }
 
@@ -233,6 +266,8 @@ impl TriangleConfig {
         )
     }
 
+    /// Validates degrees and label ranges, then the fan condition: in each star the other two
+    /// vertices are adjacent (labels differ by ±1), all three in the same direction.
     pub fn orientation(&self) -> Result<FanOrientation, ConfigError> {
         for (m, a, b) in [
             (self.m_u, self.u_w, self.u_x),
@@ -311,7 +346,10 @@ impl TriangleConfig {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 pub enum VertexPair {
     /// u = w, of degree m.
-    Same { m: u32 },
+    Same {
+        /// m_u, the degree of u.
+        m: u32,
+    },
     /// [u, w] is an edge.
     Edge(EdgeConfig),
     /// u ≠ w and [u, w] is not an edge: Ω_uw = ∅.

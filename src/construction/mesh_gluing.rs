@@ -10,20 +10,30 @@ use thiserror::Error;
 /// Errors naming the mesh elements involved.
 #[derive(Debug, Error, PartialEq)]
 pub enum GluingError {
+    /// The vertex is not a vertex of K (an unreferenced or out-of-range slot).
     #[error("vertex {0} is not a vertex of K")]
     NoSuchVertex(VertexId),
+    /// The pair is not an edge of K, where an edge configuration was needed.
     #[error("[{0}, {1}] is not an edge of K")]
     NoSuchEdge(VertexId, VertexId),
+    /// The configuration of an edge or triangle is invalid (degree < 3, bad label, not a fan).
     #[error("configuration of [{u}, {w}]: {err}")]
     Config {
+        /// First vertex of the oriented edge (for a triangle: its first corner).
         u: VertexId,
+        /// Second vertex of the oriented edge (for a triangle: its second corner).
         w: VertexId,
+        /// What is wrong with the configuration.
         err: ConfigError,
     },
+    /// φ_wu could not be evaluated at the given point.
     #[error("φ_{w}{u} at the given point: {err}")]
     Map {
+        /// Source vertex: the point is in Ω_u.
         u: VertexId,
+        /// Target vertex: the image is in Ω_w.
         w: VertexId,
+        /// Why the map failed.
         err: MapError,
     },
 }
@@ -35,10 +45,12 @@ pub struct PpmGluing<'k> {
 }
 
 impl<'k> PpmGluing<'k> {
+    /// The gluing data of K.
     pub fn new(k: &'k SimplicialSurface) -> Self {
         PpmGluing { k }
     }
 
+    /// The simplicial surface K.
     pub fn surface(&self) -> &'k SimplicialSurface {
         self.k
     }

@@ -35,11 +35,14 @@ pub enum Category {
 /// Sampled points with their categories.
 #[derive(Clone, Debug)]
 pub struct Samples<S> {
+    /// The seed the points were generated from.
     pub seed: u64,
+    /// The points, each with the region it was drawn from.
     pub points: Vec<(Category, P2<S>)>,
 }
 
 impl<S> Samples<S> {
+    /// Number of points per category.
     pub fn counts(&self) -> BTreeMap<Category, usize> {
         let mut m = BTreeMap::new();
         for (c, _) in &self.points {
@@ -55,12 +58,15 @@ impl<S> Samples<S> {
             .collect::<Vec<_>>()
             .join(", ")
     }
+    /// Number of points.
     pub fn len(&self) -> usize {
         self.points.len()
     }
+    /// True when there are no points.
     pub fn is_empty(&self) -> bool {
         self.points.is_empty()
     }
+    /// Appends the points of `o` (its seed is not kept).
     pub fn extend(&mut self, o: Samples<S>) {
         self.points.extend(o.points);
     }

@@ -24,12 +24,16 @@ pub const F64_PREC: u32 = 53;
 /// decide (intervals). Point types never produce `Unknown` except on NaN.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 pub enum Trit {
+    /// Decided: holds.
     True,
+    /// Decided: fails.
     False,
+    /// Could not be decided at the precision used.
     Unknown,
 }
 
 impl Trit {
+    /// `True` or `False`.
     pub fn from_bool(b: bool) -> Trit {
         if b {
             Trit::True
@@ -53,9 +57,11 @@ impl Trit {
             Trit::Unknown => Trit::Unknown,
         }
     }
+    /// Decided and true.
     pub fn is_true(self) -> bool {
         self == Trit::True
     }
+    /// Decided and false.
     pub fn is_false(self) -> bool {
         self == Trit::False
     }
@@ -70,6 +76,7 @@ pub trait Scalar: Clone + Debug + Send + Sync + 'static {
     fn type_name(&self) -> String;
     /// `x` rounded to `prec` bits (exact for `Mp` with `prec >= 53`).
     fn from_f64(x: f64, prec: u32) -> Self;
+    /// `x` rounded to `prec` bits.
     fn from_i64(x: i64, prec: u32) -> Self;
     /// `p/q` correctly rounded to `prec` bits. `q` must be non-zero (a zero `q` gives ±∞/NaN).
     fn from_ratio(p: i64, q: i64, prec: u32) -> Self;
@@ -84,14 +91,23 @@ pub trait Scalar: Clone + Debug + Send + Sync + 'static {
         (2.0f64).powi(-(self.precision_bits() as i32))
     }
 
+    /// self + o, rounded (for `Mp`: at the larger precision).
     fn add(&self, o: &Self) -> Self;
+    /// self − o, rounded.
     fn sub(&self, o: &Self) -> Self;
+    /// self · o, rounded.
     fn mul(&self, o: &Self) -> Self;
+    /// self / o, rounded.
     fn div(&self, o: &Self) -> Self;
+    /// −self (exact).
     fn neg(&self) -> Self;
+    /// √self, rounded.
     fn sqrt(&self) -> Self;
+    /// sin(self), rounded.
     fn sin(&self) -> Self;
+    /// cos(self), rounded.
     fn cos(&self) -> Self;
+    /// |self| (exact).
     fn abs(&self) -> Self;
     /// `atan2(self, x)`: the angle of the point `(x, self)` in `[-π, π]` (IEEE/MPFR semantics,
     /// including signed zeros). The maps never rely on the sign of zero: see `maps::polar`.
@@ -101,6 +117,7 @@ pub trait Scalar: Clone + Debug + Send + Sync + 'static {
     /// (NaN; an interval containing 0). Both zeros give `Some(Equal)`.
     fn sign(&self) -> Option<Ordering>;
 
+    /// self², as `self.mul(self)`.
     fn sqr(&self) -> Self {
         self.mul(self)
     }
@@ -128,6 +145,7 @@ pub trait Scalar: Clone + Debug + Send + Sync + 'static {
     fn like_f64(&self, x: f64) -> Self {
         Self::from_f64(x, self.precision_bits())
     }
+    /// `p/q` at the precision of `self`.
     fn like_ratio(&self, p: i64, q: i64) -> Self {
         Self::from_ratio(p, q, self.precision_bits())
     }
@@ -206,6 +224,7 @@ impl Mp {
     fn p2(&self, o: &Self) -> u32 {
         self.0.prec().max(o.0.prec())
     }
+    /// `x` rounded to `prec` bits (clamped to what MPFR accepts); same as [`Scalar::from_f64`].
     pub fn new(prec: u32, x: f64) -> Mp {
         Mp(rug::Float::with_val(Self::clamp(prec), x))
     }
@@ -300,12 +319,15 @@ impl Iv {
     pub fn new(lo: f64, hi: f64) -> Iv {
         Iv(inari::Interval::try_from((lo, hi)).unwrap_or(inari::Interval::ENTIRE))
     }
+    /// The degenerate interval [x, x].
     pub fn point(x: f64) -> Iv {
         Iv::new(x, x)
     }
+    /// Lower endpoint.
     pub fn inf(&self) -> f64 {
         self.0.inf()
     }
+    /// Upper endpoint.
     pub fn sup(&self) -> f64 {
         self.0.sup()
     }

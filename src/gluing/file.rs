@@ -32,7 +32,9 @@ use toml::Value;
 /// A parsed gluing file.
 #[derive(Clone, Debug)]
 pub struct GluingFile {
+    /// The optional top-level `name`.
     pub name: Option<String>,
+    /// The gluing data the file describes.
     pub data: Exact1d,
 }
 

@@ -17,6 +17,7 @@ pub type Tagged = (Idx, Q);
 /// under two rounds of transition functions so that chains x ∼ y ∼ z stay inside it.
 #[derive(Clone, Debug)]
 pub struct GridSample {
+    /// The sampled points, sorted and unique.
     pub points: Vec<Tagged>,
 }
 
@@ -51,6 +52,7 @@ impl GridSample {
             points: set.into_iter().collect(),
         }
     }
+    /// A sample of exactly the given points (not closed under transition functions).
     pub fn from_points(points: Vec<Tagged>) -> GridSample {
         GridSample { points }
     }

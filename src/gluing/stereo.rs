@@ -131,17 +131,21 @@ pub fn check_atlas(
 /// `glue_outer` < ρ shrinks the annulus to 1/g < ‖·‖ < g (a planted fault for (C′)).
 #[derive(Clone, Debug)]
 pub struct StereoSphere<const N: usize> {
+    /// Radius ρ of both p-domains (ρ > 1 for a non-empty annulus).
     pub rho: f64,
+    /// Outer radius g of the gluing annulus (ρ unless shrunk to plant a fault).
     pub glue_outer: f64,
 }
 
 impl<const N: usize> StereoSphere<N> {
+    /// The sphere with the full annulus, `glue_outer` = ρ.
     pub fn new(rho: f64) -> Self {
         StereoSphere {
             rho,
             glue_outer: rho,
         }
     }
+    /// Centre c_i of Ω_i: (−3ρ, 0, …) for i = 1, (3ρ, 0, …) otherwise, so the p-domains are disjoint.
     pub fn center(&self, i: Idx) -> [f64; N] {
         let mut c = [0.0; N];
         if N > 0 {

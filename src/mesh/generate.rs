@@ -130,13 +130,20 @@ pub enum SurfaceOp {
     /// Raise the degree of vertex v (mod #vertices) by one: flip the k-th edge opposite v in
     /// its star (mod its degree), falling back to a 1→3 split of the k-th face around v when
     /// that flip is not allowed.
-    Raise { v: usize, k: usize },
+    Raise {
+        /// Vertex index, taken modulo the number of vertices.
+        v: usize,
+        /// Which edge opposite v (or face around v) to use, modulo the degree of v.
+        k: usize,
+    },
 }
 
 /// A closed triangle list under surgery: positions and consistently oriented faces.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Surgery {
+    /// Vertex positions; surgery only appends.
     pub positions: Vec<[f64; 3]>,
+    /// Faces as 0-based vertex indices, consistently oriented.
     pub faces: Vec<[u32; 3]>,
 }
 

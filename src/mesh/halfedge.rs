@@ -153,6 +153,7 @@ impl SimplicialSurface {
             .map(VertexId)
             .filter(|v| self.referenced[v.idx()])
     }
+    /// Number of vertices of K (referenced vertex slots), i.e. |I|.
     pub fn num_vertices(&self) -> usize {
         self.referenced.iter().filter(|&&b| b).count()
     }
@@ -160,15 +161,19 @@ impl SimplicialSurface {
     pub fn contains(&self, v: VertexId) -> bool {
         self.referenced.get(v.idx()).copied().unwrap_or(false)
     }
+    /// Number of triangles of K.
     pub fn num_faces(&self) -> usize {
         self.faces.len()
     }
+    /// Number of half-edges: three per face.
     pub fn num_halfedges(&self) -> usize {
         self.twin.len()
     }
+    /// Number of edges of K: every edge has two half-edges, as K is closed.
     pub fn num_edges(&self) -> usize {
         self.twin.len() / 2
     }
+    /// All faces, in file order.
     pub fn faces(&self) -> impl Iterator<Item = FaceId> {
         (0..self.faces.len() as u32).map(FaceId)
     }
@@ -176,6 +181,7 @@ impl SimplicialSurface {
     pub fn face(&self, f: FaceId) -> [VertexId; 3] {
         self.faces[f.idx()]
     }
+    /// Position of vertex v in R³, as read from the file.
     pub fn position(&self, v: VertexId) -> [f64; 3] {
         self.positions[v.idx()]
     }
@@ -190,6 +196,7 @@ impl SimplicialSurface {
     pub fn flipped_faces(&self) -> u64 {
         self.flipped_faces
     }
+    /// The file the surface was read from, if any.
     pub fn source(&self) -> Option<&std::path::Path> {
         self.source.as_deref()
     }
@@ -208,21 +215,27 @@ impl SimplicialSurface {
             _ => &[],
         }
     }
+    /// The vertex half-edge h starts at.
     pub fn origin(&self, h: HalfedgeId) -> VertexId {
         self.faces[h.idx() / 3][h.idx() % 3]
     }
+    /// The vertex half-edge h points to.
     pub fn dest(&self, h: HalfedgeId) -> VertexId {
         self.faces[h.idx() / 3][(h.idx() + 1) % 3]
     }
+    /// The opposite half-edge of h (same edge, other face).
     pub fn twin(&self, h: HalfedgeId) -> HalfedgeId {
         self.twin[h.idx()]
     }
+    /// The next half-edge of h's face (counterclockwise in the consistent orientation).
     pub fn next(&self, h: HalfedgeId) -> HalfedgeId {
         HalfedgeId((h.0 / 3) * 3 + (h.0 % 3 + 1) % 3)
     }
+    /// The previous half-edge of h's face.
     pub fn prev(&self, h: HalfedgeId) -> HalfedgeId {
         HalfedgeId((h.0 / 3) * 3 + (h.0 % 3 + 2) % 3)
     }
+    /// The face h belongs to.
     pub fn face_of(&self, h: HalfedgeId) -> FaceId {
         FaceId(h.0 / 3)
     }

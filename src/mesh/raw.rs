@@ -7,10 +7,15 @@ use std::path::PathBuf;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum MeshFormat {
+    /// OFF (`.off`), ASCII.
     Off,
+    /// Wavefront OBJ (`.obj`); only vertex (`v`) and face (`f`, `fo`) records are used.
     Obj,
+    /// PLY, ASCII encoding.
     PlyAscii,
+    /// PLY, binary little-endian encoding.
     PlyBinaryLittleEndian,
+    /// PLY, binary big-endian encoding.
     PlyBinaryBigEndian,
 }
 
@@ -30,6 +35,7 @@ pub struct RawMesh {
     pub vertex_origin: Vec<u64>,
     /// Provenance.
     pub source: Option<PathBuf>,
+    /// The detected format, if read from a file.
     pub format: Option<MeshFormat>,
     /// Number of polygons with more than 3 sides that were fan-split (only with
     /// `--triangulate`; otherwise such polygons are an error).

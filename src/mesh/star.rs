@@ -12,19 +12,25 @@ use std::collections::BTreeSet;
 /// A vertex of T_v: the centre v′ or the polygon vertex v′_i.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum TVertex {
+    /// The centre v′ = (0, 0).
     Centre,
+    /// The polygon vertex v′_i of P_v (Def. 4.1.2), by its index i.
     Corner(u32),
 }
 
 /// The simplices of a complex, grouped by dimension (sorted vertex lists).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Complex<V: Ord> {
+    /// 0-simplices.
     pub vertices: BTreeSet<V>,
+    /// 1-simplices, each with its two vertices sorted.
     pub edges: BTreeSet<[V; 2]>,
+    /// 2-simplices, each with its three vertices sorted.
     pub triangles: BTreeSet<[V; 3]>,
 }
 
 impl<V: Ord> Complex<V> {
+    /// The empty complex.
     pub fn new() -> Self {
         Complex {
             vertices: BTreeSet::new(),

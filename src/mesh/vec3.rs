@@ -1,14 +1,17 @@
 //! Small f64 vector helpers in R³ (polygon convexity in the readers, PN triangles and surface
 //! normals/curvatures of Ch. 5). Exact predicates live in `validate::predicates`.
 
+/// a − b.
 pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
+/// The dot product a · b.
 pub fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
+/// The cross product a × b.
 pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [
         a[1] * b[2] - a[2] * b[1],
@@ -17,6 +20,7 @@ pub fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     ]
 }
 
+/// The Euclidean norm |a|.
 pub fn norm(a: [f64; 3]) -> f64 {
     dot(a, a).sqrt()
 }

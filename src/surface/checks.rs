@@ -29,6 +29,7 @@ pub const COND: f64 = 4096.0;
 /// Options of the surface checks.
 #[derive(Debug, Clone)]
 pub struct SurfaceCheckOptions {
+    /// Seed of the random samples (each check derives its own stream).
     pub seed: u64,
     /// Random points per examined vertex.
     pub samples_per_vertex: usize,
@@ -36,7 +37,9 @@ pub struct SurfaceCheckOptions {
     pub max_vertices: Option<usize>,
     /// Vertices re-checked with the multi-precision oracle.
     pub mp_vertices: usize,
+    /// Precision (bits) of the multi-precision re-check.
     pub mp_prec: u32,
+    /// The parameter profile of the surface under test.
     pub profile: Profile,
     /// Run the measured (C′)/(C″) patch-intersection search.
     pub intersections: bool,

@@ -8,6 +8,7 @@ use crate::construction::maps::{cos_pi_6, omega_radius};
 /// Constants for one degree m.
 #[derive(Clone, Debug)]
 pub struct DegreeConsts<S> {
+    /// The degree m.
     pub m: u32,
     /// cos(π/m): the radius of Ω_v (Def. 4.1.1).
     pub radius: S,
@@ -15,6 +16,7 @@ pub struct DegreeConsts<S> {
     pub radial: S,
     /// m/6 and 6/m: the angular factors of f_v and f_v⁻¹.
     pub ang: S,
+    /// 6/m: the angular factor of f_v⁻¹.
     pub ang_inv: S,
     /// 6π/m: g_v is injective on {|θ| < min(π, 6π/m)} (SPEC `C4.1.6-gv-bijective`).
     pub branch: S,
@@ -27,12 +29,15 @@ pub struct DegreeConsts<S> {
 /// Constants for every degree up to a maximum, plus the global ones.
 #[derive(Clone, Debug)]
 pub struct Consts<S> {
+    /// Precision (bits) the constants were computed at.
     pub prec: u32,
+    /// Indexed by degree; `None` for degrees not requested.
     pub by_degree: Vec<Option<DegreeConsts<S>>>,
     /// 3/4 = cos²(π/6): the squared radius of C, D, E (Sec. 6.1.4).
     pub c_sq: S,
     /// √3/2.
     pub s3h: S,
+    /// π.
     pub pi: S,
 }
 
@@ -80,6 +85,7 @@ impl<S: SurfaceScalar> Consts<S> {
         }
     }
 
+    /// The constants of degree m, if built.
     pub fn degree(&self, m: u32) -> Option<&DegreeConsts<S>> {
         self.by_degree.get(m as usize).and_then(|d| d.as_ref())
     }

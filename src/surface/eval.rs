@@ -35,9 +35,13 @@ pub enum Chart {
 /// The result of eval: the chart, the vertex i, q ∈ Ω_i, and θ_i(q).
 #[derive(Debug, Clone)]
 pub struct EvalPoint<S> {
+    /// Which of the three charts was chosen.
     pub chart: Chart,
+    /// The vertex i of that chart.
     pub vertex: VertexId,
+    /// q ∈ Ω_i, the point where θ_i is evaluated.
     pub q: P2<S>,
+    /// θ_i(q).
     pub point: [S; 3],
 }
 

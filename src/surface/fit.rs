@@ -43,7 +43,9 @@ pub struct Sample {
 /// Summary of the per-degree factorization (reported by `ppm sample`/checks).
 #[derive(Debug, Clone, Serialize)]
 pub struct DegreeFitInfo {
+    /// m, the vertex degree.
     pub m: u32,
+    /// l, the Bézier bi-degree (Sec. 5.2).
     pub l: usize,
     /// L = cos(π/m): □_v = [−L, L]².
     pub half_side: f64,
@@ -62,7 +64,9 @@ pub struct DegreeFitInfo {
 /// The factored least-squares problem for one degree.
 #[derive(Debug, Clone)]
 pub struct DegreeFit {
+    /// Summary of the factorization.
     pub info: DegreeFitInfo,
+    /// The grid points kept in P_v, in row order of A.
     pub samples: Vec<Sample>,
     /// A⁺, (l+1)² × rows, row-major.
     pub pinv: Vec<f64>,

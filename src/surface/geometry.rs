@@ -14,15 +14,19 @@ use crate::mesh::{FaceId, VertexId};
 /// Point, derivatives and curvature of θ_v at a point of its chart.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SurfacePoint {
+    /// θ_v(p).
     pub point: [f64; 3],
     /// θ_x, θ_y.
     pub du: [f64; 3],
+    /// θ_y.
     pub dv: [f64; 3],
     /// Unit normal (zero if θ_x × θ_y vanishes: a singular point).
     pub normal: [f64; 3],
     /// ‖θ_x × θ_y‖ (regularity: rank-2 Jacobian iff > 0).
     pub area_element: f64,
+    /// Gaussian curvature K = (LN − M²)/(EG − F²); NaN unless EG − F² > 0.
     pub gaussian: f64,
+    /// Mean curvature H = (EN − 2FM + GL)/(2(EG − F²)), signed by `normal`; NaN unless EG − F² > 0.
     pub mean: f64,
 }
 

@@ -65,6 +65,7 @@ const MUL: [(u8, u8, u8); 35] = mul_table();
 /// A jet of total order 3 in two variables over the scalar `S`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Jet<S> {
+    /// Taylor coefficients: `c[idx(i, j)]` multiplies xⁱyʲ (so `c[0]` is the value).
     pub c: [S; JET_LEN],
 }
 
@@ -86,6 +87,7 @@ impl<S: Scalar> Jet<S> {
         y.c[idx(0, 1)] = one;
         (x, y)
     }
+    /// The value at the base point.
     pub fn value(&self) -> &S {
         &self.c[0]
     }
@@ -131,6 +133,7 @@ impl<S: Scalar> Jet<S> {
         r.c[0] = d0;
         r
     }
+    /// k times the jet.
     pub fn scale(&self, k: &S) -> Self {
         self.map(|a| a.mul(k))
     }

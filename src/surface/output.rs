@@ -20,10 +20,15 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// The sampled surface.
 #[derive(Debug, Clone, Default)]
 pub struct SampledMesh {
+    /// Vertex positions θ_v(q) of the samples.
     pub positions: Vec<[f64; 3]>,
+    /// Unit normals (zero at a singular point).
     pub normals: Vec<[f64; 3]>,
+    /// Gaussian curvature K (NaN at a singular point).
     pub gaussian: Vec<f64>,
+    /// Mean curvature H, with the sign given by the normal (NaN at a singular point).
     pub mean: Vec<f64>,
+    /// Triangles as 0-based indices into the per-vertex arrays.
     pub faces: Vec<[u32; 3]>,
 }
 

@@ -32,20 +32,35 @@ use std::sync::Arc;
 /// Errors of the parametrizations and of `eval`.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SurfaceError {
+    /// The vertex is not a vertex of K (degree < 3 or out of range).
     #[error("vertex {0} is not a vertex of K")]
     NoSuchVertex(VertexId),
+    /// The face index is out of range.
     #[error("face {0} is not a face of K")]
     NoSuchFace(FaceId),
+    /// [v, u] is not an edge of K, where a label s_v(u) was needed.
     #[error("[{0}, {1}] is not an edge of K")]
     NoSuchEdge(VertexId, VertexId),
+    /// θ_v was asked at a point p ∉ Ω_v.
     #[error("p = ({x}, {y}) is not in Ω_{v} (Def. 4.1.1)")]
-    NotInOmega { v: VertexId, x: f64, y: f64 },
+    NotInOmega {
+        /// The chart's vertex.
+        v: VertexId,
+        /// p's first coordinate (as f64).
+        x: f64,
+        /// p's second coordinate (as f64).
+        y: f64,
+    },
+    /// The [`Consts`] in use were built without this degree.
     #[error("no constants for degree {0} at this precision (build Consts with it)")]
     MissingDegree(u32),
+    /// eval got barycentric coordinates below −1e-12 or whose sum is off 1 by more than 1e-9.
     #[error("barycentric coordinates must be ≥ 0 and sum to 1, got {0:?}")]
     BadBarycentric([f64; 3]),
+    /// The denominator Σ_u Γ_uv(p) of θ_v at p ∈ Ω_v is not decided positive (names v).
     #[error("Σ_u Γ_uv(p) = 0 at p in Ω_{0}: θ undefined")]
     ZeroWeight(VertexId),
+    /// A Chapter 4 map failed (Π at the origin, or undecided).
     #[error("map: {0}")]
     Map(#[from] MapError),
 }
@@ -65,40 +80,61 @@ pub enum Membership {
 pub enum Fault {
     /// Γ_uv of `vertex` multiplied by `factor` whenever it enters θ_v of *another* vertex v
     /// (one control point's blending perturbed).
-    NeighbourWeight { vertex: VertexId, factor: f64 },
+    NeighbourWeight {
+        /// The vertex u whose weight is perturbed.
+        vertex: VertexId,
+        /// The factor applied to Γ_uv.
+        factor: f64,
+    },
     /// φ_uv (from `from`'s chart to `to`'s) followed by a rotation by `angle` about 0.
     Transition {
+        /// Source chart: the perturbed map is φ_{to,from}, out of Ω_from.
         from: VertexId,
+        /// Target chart.
         to: VertexId,
+        /// Rotation angle (radians) applied after the map.
         angle: f64,
     },
     /// ω_uv computed with Σ Γ multiplied by `factor` (normalisation broken).
-    Denominator { factor: f64 },
+    Denominator {
+        /// The factor applied to the denominator.
+        factor: f64,
+    },
     /// ξ replaced by the C⁰ ramp (H₂ − t)/(H₂ − H₁) on (H₁, H₂).
     RampWeight,
     /// The support radius H₂ of γ_v multiplied by `factor`.
-    WeightRadius { factor: f64 },
+    WeightRadius {
+        /// The factor applied to H₂.
+        factor: f64,
+    },
 }
 
 /// Options of the construction.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
 pub struct PpsOptions {
+    /// The parameter profile (fixed when the surface is built).
     pub profile: Profile,
+    /// How p ∈ Ω_vu is decided.
     pub membership: Membership,
+    /// A planted fault, `None` in production.
     pub fault: Option<Fault>,
 }
 
 /// One term of Eq. (5.1): u ∈ J_v(p), q = φ_uv(p), Γ_uv(p) = γ_u(q).
 #[derive(Debug, Clone)]
 pub struct Term<S> {
+    /// u ∈ J_v(p).
     pub u: VertexId,
+    /// q = φ_uv(p) ∈ Ω_u (q = p for u = v).
     pub q: P2<S>,
+    /// Γ_uv(p) = γ_u(q).
     pub gamma: S,
 }
 
 /// The parametric pseudo-surface built from K and S′ (Chapter 5).
 #[derive(Debug, Clone)]
 pub struct Pps {
+    /// The options the surface evaluates with.
     pub options: PpsOptions,
     target_name: String,
     faces: Vec<[VertexId; 3]>,
@@ -245,6 +281,7 @@ impl Pps {
         self
     }
 
+    /// The name of the target surface S′ the shape functions were fitted to.
     pub fn target_name(&self) -> &str {
         &self.target_name
     }
@@ -252,21 +289,26 @@ impl Pps {
     pub fn fit_info(&self) -> &[DegreeFitInfo] {
         &self.fits
     }
+    /// Number of triangles of K.
     pub fn num_faces(&self) -> usize {
         self.faces.len()
     }
+    /// The corners of face f, or [`SurfaceError::NoSuchFace`].
     pub fn face(&self, f: FaceId) -> Result<[VertexId; 3], SurfaceError> {
         self.faces
             .get(f.idx())
             .copied()
             .ok_or(SurfaceError::NoSuchFace(f))
     }
+    /// Position of v in R³ (the mesh vertex); panics for an out-of-range slot.
     pub fn position(&self, v: VertexId) -> [f64; 3] {
         self.positions[v.idx()]
     }
+    /// Whether v is a vertex of K (degree ≥ 3).
     pub fn contains(&self, v: VertexId) -> bool {
         self.degree.get(v.idx()).is_some_and(|&m| m >= 3)
     }
+    /// m_v, or 0 if v is not a vertex of K.
     pub fn degree(&self, v: VertexId) -> u32 {
         self.degree.get(v.idx()).copied().unwrap_or(0)
     }

@@ -12,21 +12,26 @@
 
 use serde::Serialize;
 
+/// Parameter profile of the construction (see the module doc).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Profile {
+    /// The paper's text literally (default).
     #[default]
     Paper,
+    /// The parameters of the authors' published implementation.
     AuthorsCode,
 }
 
 impl Profile {
+    /// The name used on the command line and in reports: `paper`, `authors-code`.
     pub fn name(self) -> &'static str {
         match self {
             Profile::Paper => "paper",
             Profile::AuthorsCode => "authors-code",
         }
     }
+    /// Inverse of [`Profile::name`].
     pub fn parse(s: &str) -> Option<Profile> {
         match s {
             "paper" => Some(Profile::Paper),

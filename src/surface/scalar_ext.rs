@@ -6,6 +6,7 @@ use crate::construction::{Mp, Scalar};
 /// A [`Scalar`] with the exponential: `f64`, [`Mp`], and the derivative jets
 /// [`super::jet::Jet`] over either.
 pub trait SurfaceScalar: Scalar {
+    /// e^self, rounded.
     fn exp(&self) -> Self;
     /// ψ(x, y) of a bi-degree (l, l) patch (Def. 5.2.1); `f64` overrides this with an
     /// allocation-free evaluator.

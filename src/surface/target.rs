@@ -75,10 +75,13 @@ pub trait TargetSurface: Sync {
 pub struct PnTriangles {
     positions: Vec<[f64; 3]>,
     normals: Vec<[f64; 3]>,
+    /// Vertices of K with no usable normal (every incident face degenerate); they get (0, 0, 1).
     pub degenerate_normals: usize,
 }
 
 impl PnTriangles {
+    /// The PN-triangle surface of K: vertex normals are angle-weighted face normals (plain
+    /// face-normal sums as a fallback).
     pub fn new(k: &SimplicialSurface) -> Self {
         let n = k.vertex_slots();
         let positions: Vec<[f64; 3]> = (0..n).map(|i| k.position(VertexId(i as u32))).collect();

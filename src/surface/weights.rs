@@ -7,7 +7,9 @@ use crate::construction::P2;
 /// Ω_v) and H₁ = 0.25·H₂, in the scalar `S` at precision `prec`.
 #[derive(Clone, Debug)]
 pub struct XiConsts<S> {
+    /// H₁ = H₂/4: ξ = 1 for t ≤ H₁.
     pub h1: S,
+    /// H₂ = cos(π/m_v): ξ = 0 for t ≥ H₂.
     pub h2: S,
 }
 

@@ -11,12 +11,16 @@ use std::collections::BTreeMap;
 /// One affine piece of φ_ji: on the open interval `dom` ⊆ Ω_ij, φ_ji(x) = a·x + b.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Piece {
+    /// The open interval of Ω_ij on which this piece applies.
     pub dom: Interval,
+    /// Slope a (a ≠ 0 for the piece to be injective; not enforced here).
     pub a: Q,
+    /// Offset b.
     pub b: Q,
 }
 
 impl Piece {
+    /// φ_ji(x) = a·x + b (no check that x ∈ `dom`).
     pub fn eval(&self, x: &Q) -> Q {
         &self.a * x + &self.b
     }
@@ -27,6 +31,7 @@ impl Piece {
         }
         OpenSet::from_interval(self.dom.clone()).affine_image(&self.a, &self.b)
     }
+    /// The piece as text: `x ↦ a·x + b on (lo, hi)`.
     pub fn describe(&self) -> String {
         format!("x ↦ {} on {}", affine_str(&self.a, &self.b), self.dom)
     }
@@ -47,6 +52,7 @@ impl Exact1d {
     pub fn ids(&self) -> Vec<Idx> {
         self.domains.keys().copied().collect()
     }
+    /// Ω_i; empty if i ∉ I.
     pub fn omega(&self, i: Idx) -> OpenSet {
         self.domains.get(&i).cloned().unwrap_or_default()
     }

@@ -33,8 +33,11 @@ pub fn preimage(pieces: &[Piece], set: &OpenSet) -> OpenSet {
 /// One cell of a composition: on `cell`, the composite is x ↦ a·x + b.
 #[derive(Clone, Debug)]
 pub struct Cell {
+    /// The interval on which the composite is affine.
     pub cell: Interval,
+    /// Slope of the composite on `cell`.
     pub a: Q,
+    /// Offset of the composite on `cell`.
     pub b: Q,
 }
 
@@ -479,11 +482,17 @@ pub fn check_grimm_hughes(g: &Exact1d, strict: bool) -> CheckResult {
 /// Separating balls for one pair (x, y) of Def. 3.4.1(4), exact.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Separation {
+    /// First chart index of the pair (i, j) ∈ K.
     pub i: Idx,
+    /// Second chart index.
     pub j: Idx,
+    /// x ∈ ∂Ω_ij ∩ Ω_i.
     pub x: Q,
+    /// y ∈ ∂Ω_ji ∩ Ω_j.
     pub y: Q,
+    /// Radius of V_x: min(d / (2A), δ).
     pub r_x: Q,
+    /// Radius of V_y: d / 2.
     pub r_y: Q,
 }
 

@@ -55,7 +55,9 @@ pub fn mid(a: &Q, b: &Q) -> Q {
 /// A non-empty open interval (lo, hi), lo < hi.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
 pub struct Interval {
+    /// Left endpoint (excluded).
     pub lo: Q,
+    /// Right endpoint (excluded).
     pub hi: Q,
 }
 
@@ -64,12 +66,15 @@ impl Interval {
     pub fn new(lo: Q, hi: Q) -> Option<Interval> {
         (lo < hi).then_some(Interval { lo, hi })
     }
+    /// lo < x < hi.
     pub fn contains(&self, x: &Q) -> bool {
         &self.lo < x && x < &self.hi
     }
+    /// (lo + hi) / 2.
     pub fn midpoint(&self) -> Q {
         mid(&self.lo, &self.hi)
     }
+    /// The intersection, `None` if empty.
     pub fn intersect(&self, o: &Interval) -> Option<Interval> {
         Interval::new(
             self.lo.clone().max(o.lo.clone()),
@@ -96,9 +101,11 @@ pub struct OpenSet {
 }
 
 impl OpenSet {
+    /// The empty set.
     pub fn empty() -> OpenSet {
         OpenSet { parts: Vec::new() }
     }
+    /// The set consisting of one interval.
     pub fn from_interval(iv: Interval) -> OpenSet {
         OpenSet { parts: vec![iv] }
     }
@@ -120,15 +127,19 @@ impl OpenSet {
         }
         OpenSet { parts }
     }
+    /// The disjoint intervals, sorted.
     pub fn parts(&self) -> &[Interval] {
         &self.parts
     }
+    /// True when the set has no interval.
     pub fn is_empty(&self) -> bool {
         self.parts.is_empty()
     }
+    /// x lies in some interval of the set.
     pub fn contains(&self, x: &Q) -> bool {
         self.parts.iter().any(|p| p.contains(x))
     }
+    /// The intersection, normalised.
     pub fn intersect(&self, o: &OpenSet) -> OpenSet {
         let mut v = Vec::new();
         for a in &self.parts {
@@ -140,6 +151,7 @@ impl OpenSet {
         }
         OpenSet::from_intervals(v)
     }
+    /// The union, normalised (touching intervals stay separate).
     pub fn union(&self, o: &OpenSet) -> OpenSet {
         OpenSet::from_intervals(self.parts.iter().chain(o.parts.iter()).cloned())
     }

@@ -24,11 +24,17 @@ pub const SEPARATION_FACTOR: f64 = 1e-6;
 /// Radii found for one separated pair (x, y).
 #[derive(Clone, Debug)]
 pub struct SampledSeparation {
+    /// First chart index of the pair (i, j) ∈ K.
     pub i: Idx,
+    /// Second chart index.
     pub j: Idx,
+    /// x ∈ ∂Ω_ij ∩ Ω_i.
     pub x: Vec<f64>,
+    /// y ∈ ∂Ω_ji ∩ Ω_j.
     pub y: Vec<f64>,
+    /// Radius of V_x found.
     pub r_x: f64,
+    /// Radius of V_y found.
     pub r_y: f64,
 }
 

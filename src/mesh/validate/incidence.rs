@@ -13,15 +13,18 @@ pub struct Incidence {
     pub edges: Vec<(u32, u32)>,
     /// CSR: faces of edge e are `edge_faces[edge_start[e]..edge_start[e+1]]`.
     pub edge_start: Vec<u32>,
+    /// Face indices, grouped by edge (see `edge_start`).
     pub edge_faces: Vec<u32>,
     /// CSR: faces of vertex v are `vertex_faces[vertex_start[v]..vertex_start[v+1]]`.
     pub vertex_start: Vec<u32>,
+    /// Face indices, grouped by vertex (see `vertex_start`).
     pub vertex_faces: Vec<u32>,
     /// Faces sorted by their sorted vertex triple (for duplicate detection).
     sorted_keys: Vec<([u32; 3], u32)>,
 }
 
 impl Incidence {
+    /// Builds the tables from the faces with `active[f]` set.
     pub fn build(raw: &RawMesh, active: Vec<bool>) -> Incidence {
         let nv = raw.positions.len();
         let mut half: Vec<(u32, u32, u32)> = Vec::with_capacity(raw.faces.len() * 3);
@@ -85,10 +88,12 @@ impl Incidence {
         }
     }
 
+    /// The faces containing edge `e` (an index into `edges`); panics if `e` is out of range.
     pub fn faces_of_edge(&self, e: usize) -> &[u32] {
         &self.edge_faces[self.edge_start[e] as usize..self.edge_start[e + 1] as usize]
     }
 
+    /// The active faces having `v` as a corner; empty for an out-of-range `v`.
     pub fn faces_of_vertex(&self, v: usize) -> &[u32] {
         match (self.vertex_start.get(v), self.vertex_start.get(v + 1)) {
             (Some(&a), Some(&b)) => &self.vertex_faces[a as usize..b as usize],

@@ -24,15 +24,25 @@ use std::collections::BTreeMap;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ErrorClass {
+    /// An edge in only one face, or a vertex whose link is a path (K has a boundary).
     Boundary,
+    /// An edge in more than two faces (Def. 3.1.6).
     NonmanifoldEdge,
+    /// A vertex whose link is not one cycle nor a path (Def. 3.1.6).
     NonmanifoldVertex,
+    /// Two faces with the same vertex set.
     DuplicateFace,
+    /// A face with a repeated corner, or three collinear corners (Def. 3.1.1).
     DegenerateFace,
+    /// Two triangles meeting in more than a common face (Def. 3.1.3(ii)).
     SelfIntersection,
+    /// Two distinct referenced vertices at the same position.
     CoincidentVertices,
+    /// No consistent orientation of the faces exists.
     NonOrientable,
+    /// A face index refers to a vertex that does not exist (Def. 3.1.3(i)).
     IndexOutOfRange,
+    /// A vertex coordinate is NaN or infinite.
     NonFinite,
 }
 
@@ -57,14 +67,19 @@ impl ErrorClass {
 /// Everything the validator found.
 #[derive(Debug, Clone, Serialize)]
 pub struct ValidationReport {
+    /// The file the mesh was read from, if any.
     pub source: Option<String>,
+    /// Number of vertex records in the file.
     pub vertices_in_file: u64,
+    /// Number of triangles after reading (fan-split polygons count once per triangle).
     pub faces_in_file: u64,
     /// Polygons fan-split by `--triangulate` (the report says so).
     pub triangulated_polygons: u64,
+    /// Every check run, in order, with its verdict and witnesses.
     pub checks: Vec<CheckResult>,
     /// Defect classes found (sorted, unique).
     pub error_classes: Vec<ErrorClass>,
+    /// Connected components of the well-formed faces.
     pub components: Vec<topology::Component>,
     /// degree → number of vertices.
     pub degree_histogram: BTreeMap<u32, u64>,
@@ -74,7 +89,9 @@ pub struct ValidationReport {
 
 /// Result of validation: the report, and the validated surface when every check passed.
 pub struct Validation {
+    /// The validator's findings.
     pub report: ValidationReport,
+    /// The validated surface; `None` unless every check passed.
     pub surface: Option<SimplicialSurface>,
 }
 

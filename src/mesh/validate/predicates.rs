@@ -11,6 +11,7 @@ use num_bigint::BigInt;
 use robust::{orient2d, orient3d, Coord, Coord3D};
 use std::cmp::Ordering;
 
+/// A point of R³.
 pub type P3 = [f64; 3];
 
 fn c3(p: &P3) -> Coord3D<f64> {
@@ -109,10 +110,12 @@ pub fn orient3(a: &P3, b: &P3, c: &P3, d: &P3) -> Ordering {
 /// A projection R³ → R² that drops coordinate `drop`.
 #[derive(Debug, Clone, Copy)]
 pub struct Proj {
+    /// Index (0, 1 or 2) of the dropped coordinate.
     pub drop: usize,
 }
 
 impl Proj {
+    /// Projects `p` to R² by dropping coordinate `drop` (keeping the remaining two in cyclic order).
     pub fn apply(&self, p: &P3) -> Coord<f64> {
         match self.drop {
             0 => Coord { x: p[1], y: p[2] },
@@ -120,6 +123,7 @@ impl Proj {
             _ => Coord { x: p[0], y: p[1] },
         }
     }
+    /// Exact sign of the 2D orientation of the projected points a, b, c.
     pub fn orient(&self, a: &P3, b: &P3, c: &P3) -> Ordering {
         let (a, b, c) = (self.apply(a), self.apply(b), self.apply(c));
         if ![a, b, c].iter().all(|p| safe(p.x) && safe(p.y)) {

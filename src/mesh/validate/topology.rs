@@ -11,13 +11,18 @@ use std::collections::BTreeMap;
 /// Per-component invariants.
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct Component {
+    /// Vertices in the component (those in some well-formed face).
     pub vertices: u64,
+    /// Undirected edges in the component.
     pub edges: u64,
+    /// Well-formed faces in the component.
     pub faces: u64,
     /// χ = V − E + F.
     pub euler_characteristic: i64,
     /// g = (2 − χ)/2 for a closed orientable surface; `None` otherwise.
     pub genus: Option<i64>,
+    /// Whether the *whole* triangle list is orientable: the same value for every component,
+    /// always `Some`.
     pub orientable: Option<bool>,
 }
 
@@ -26,6 +31,7 @@ pub struct Component {
 pub struct Orientation {
     /// `flip[f]`: reverse face f to make the orientation consistent.
     pub flip: Vec<bool>,
+    /// Whether a consistent orientation exists.
     pub orientable: bool,
 }
 
