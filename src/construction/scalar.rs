@@ -3,8 +3,8 @@
 //! The maps of Sec. 4.1 are written once, generic over [`Scalar`]. Every decision that the
 //! maps take (a sign, a comparison deciding membership in a set, the branch of Π) goes through
 //! [`Scalar::sign`], which may answer `None` ("cannot decide"). Point types (`f64`, [`Mp`])
-//! answer `None` only for NaN; a future interval type (issue 6: `inari::Interval` or an MPFR
-//! interval) answers `None` when the enclosure contains zero, and the maps propagate that as
+//! answer `None` only for NaN; the interval type [`Iv`] (`inari`) answers `None` when the
+//! enclosure contains zero, and the maps propagate that as
 //! [`Trit::Unknown`] / [`super::maps::MapError::Undecided`] without any change to the maps.
 //!
 //! Precision is carried by the values: constants are built with [`Scalar::from_ratio`] etc. at

@@ -55,10 +55,12 @@ pub enum SurfaceError {
     #[error("no constants for degree {0} at this precision (build Consts with it)")]
     MissingDegree(u32),
     /// eval got barycentric coordinates below −1e-12 or whose sum is off 1 by more than 1e-9.
-    #[error("barycentric coordinates must be ≥ 0 and sum to 1, got {0:?}")]
+    #[error(
+        "barycentric coordinates must be ≥ 0 (−1e−12 tolerated) and sum to 1 (±1e−9), got {0:?}"
+    )]
     BadBarycentric([f64; 3]),
     /// The denominator Σ_u Γ_uv(p) of θ_v at p ∈ Ω_v is not decided positive (names v).
-    #[error("Σ_u Γ_uv(p) = 0 at p in Ω_{0}: θ undefined")]
+    #[error("Σ_u Γ_uv(p) is not decided positive (zero, negative, NaN or an enclosure containing 0) at p in Ω_{0}: θ undefined")]
     ZeroWeight(VertexId),
     /// A Chapter 4 map failed (Π at the origin, or undecided).
     #[error("map: {0}")]
