@@ -41,6 +41,21 @@ be = b"".join(struct.pack(">fff", *v) for v in verts) + b"".join(struct.pack(">B
 open(os.path.join(d, "tet_le_body"), "wb").write(b"\x01" + le)
 open(os.path.join(d, "tet_be_body"), "wb").write(b"\x02" + be)
 PY
+# Oracle protocol: one request of every op (docs/oracle.md), and one session of several.
+mkdir -p "$c/oracle_protocol" "$c/gluing_file"
+o=$c/oracle_protocol
+printf '%s\n' '{"op":"degree","v":0}' > "$o/degree"
+printf '%s\n' '{"op":"labels","v":0,"id":1}' > "$o/labels"
+printf '%s\n' '{"op":"member","u":0,"w":1,"p":[0.3,0.1],"test":"lens"}' > "$o/member"
+printf '%s\n' '{"op":"phi","u":0,"w":1,"p":[0.3,0.1],"id":"a"}' > "$o/phi"
+printf '%s\n' '{"op":"g","v":0,"p":[0.3,0.1]}' '{"op":"g_inv","v":0,"p":[0.3,0.1]}' > "$o/g"
+printf '%s\n' '{"op":"h","p":[0.3,0.1]}' '{"op":"rotate","u":0,"w":1,"p":[0.3,0.1]}' > "$o/h"
+printf '%s\n' '{"op":"set_precision","bits":64}' '{"op":"eval","face":3,"bary":[0.25,0.25,0.5]}' > "$o/eval"
+printf '%s\n' '{"op":"set_profile","profile":"authors-code"}' '{"op":"theta","v":0,"p":[0.3,0.1]}' > "$o/theta"
+printf '%s\n' '{"op":"theta_derivatives","v":0,"p":[0.3,0.1],"order":2}' '{"op":"gamma","v":0,"p":[0.5,0.1]}' > "$o/derivatives"
+printf '%s\n' '{"op":"psi","v":0,"p":[3.0,0.1]}' '{"op":"psi_control","v":1}' > "$o/psi"
+# Gluing files: the bundled examples.
+for f in "$root"/examples/gluing/*.toml; do [ -f "$f" ] && cp "$f" "$c/gluing_file/"; done
 # Structured targets start from a few random byte strings (libFuzzer grows them).
 for i in 1 2 3 4 5 6 7 8; do
     head -c $((i * 64)) /dev/urandom > "$c/validate/rand$i"

@@ -235,3 +235,86 @@ fn assert_verdict(id: &str, v: &Verdict, cfg: &str, r: &pseudomanifold::report::
         );
     }
 }
+
+/// The bundled icosahedron the oracle target's session is opened on.
+static ICOSAHEDRON: &[u8] = include_bytes!("../../tests/data/icosahedron_binary_le.ply");
+
+/// Oracle protocol (issue 9): at most 16 lines of `data` go through one session on the
+/// icosahedron. Every line must get exactly one response that serializes to one line of JSON
+/// with `ok`, echoing a well-formed request's `id`; an error response must carry a message.
+/// Not sent: `load` (it reads the file system) and `set_precision` above 1024 bits (the cost
+/// of MPFR constants grows with the precision; the library bounds it by `MAX_BITS`).
+pub fn oracle_lines(data: &[u8]) {
+    use pseudomanifold::oracle::protocol::Session;
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let Ok(raw) = read_mesh_from_bytes(
+        ICOSAHEDRON,
+        MeshFormat::PlyBinaryLittleEndian,
+        "icosahedron",
+        &ReadOptions::default(),
+    ) else {
+        panic!("bundled icosahedron does not read");
+    };
+    let Some(k) = validate(&raw).surface else {
+        panic!("bundled icosahedron is not a simplicial surface");
+    };
+    let mut session = Session::with_surface(k);
+    for line in text.lines().take(16) {
+        if let Ok(v) = serde_json::from_str::<serde_json::Value>(line) {
+            let op = v.get("op").and_then(|o| o.as_str());
+            let bits = v.get("bits").and_then(|b| b.as_u64()).unwrap_or(0);
+            if op == Some("load") || (op == Some("set_precision") && bits > 1024) {
+                continue;
+            }
+        }
+        let r = session.handle_line(line);
+        let out = serde_json::to_string(&r).unwrap_or_else(|e| panic!("unserializable: {e}"));
+        assert!(!out.contains('\n'), "response spans lines: {out}");
+        let back: serde_json::Value =
+            serde_json::from_str(&out).unwrap_or_else(|e| panic!("not JSON: {e}: {out}"));
+        assert!(back.get("ok").is_some_and(|o| o.is_boolean()), "{out}");
+        if !r.ok {
+            assert!(
+                back.get("error").is_some_and(|m| !m.is_null()),
+                "error without message: {out}"
+            );
+        }
+    }
+}
+
+/// Gluing files (`ppm gluing`, Sec. 3.4 in 1-D): any text of at most 4 KiB parses to gluing
+/// data or to an error naming the file; parsed data goes through every exact check of Def.
+/// 3.4.1 and the relation checks, as the command runs them; a failing check has a witness.
+pub fn gluing_file(data: &[u8]) {
+    use pseudomanifold::gluing::exact1d::decide;
+    use pseudomanifold::gluing::file::parse_gluing_str;
+    use pseudomanifold::gluing::relation;
+    if data.len() > 4096 {
+        return;
+    }
+    let Ok(text) = std::str::from_utf8(data) else {
+        return;
+    };
+    let path = std::path::Path::new("fuzz.toml");
+    match parse_gluing_str(text, path) {
+        Err(e) => {
+            let s = e.to_string();
+            assert!(s.starts_with("fuzz.toml: "), "error does not name the file: {s}");
+        }
+        Ok(f) => {
+            let mut results = decide::check_all(&f.data);
+            let sample = relation::GridSample::new(&f.data, 24);
+            results.push(relation::check_equivalence(&f.data, &sample));
+            results.push(relation::check_claim(&f.data, &sample));
+            for r in &results {
+                assert!(
+                    !r.failed() || (r.offenders > 0 && !r.witnesses.is_empty()),
+                    "{}: fails without a witness",
+                    r.id
+                );
+            }
+        }
+    }
+}
