@@ -26,6 +26,7 @@ for f in "$shared"/good/* "$shared"/bad/* "$root"/tests/data/*.* "$root"/tests/d
         *.off|*.OFF) add read_off "$f"; add_sel pipeline 0 "$f" ;;
         *.obj) add read_obj "$f"; add_sel pipeline 1 "$f" ;;
         *.ply) add read_ply_ascii "$f"; add_sel read_ply_binary 0 "$f"; add_sel pipeline 2 "$f" ;;
+        */gluing_file-*|*.toml) add gluing_file "$f" ;;
         *) for t in read_off read_obj read_ply_ascii; do add $t "$f"; done ;;
     esac
 done

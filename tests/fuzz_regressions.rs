@@ -4,9 +4,13 @@
 
 use pseudomanifold::construction::checks::{check_l4_2_4, check_p4_1_1_guw_smooth};
 use pseudomanifold::construction::{EdgeConfig, Paper};
+use pseudomanifold::gluing::exact1d::{decide, Exact1d};
+use pseudomanifold::gluing::file::parse_gluing_str;
+use pseudomanifold::gluing::relation;
 use pseudomanifold::mesh::io::{read_mesh_from_bytes, ReadOptions};
 use pseudomanifold::mesh::validate::{validate, ErrorClass};
 use pseudomanifold::mesh::MeshFormat;
+use pseudomanifold::report::CheckResult;
 use pseudomanifold::report::Verdict;
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -124,6 +128,15 @@ fn x_fuzz_all_regression_inputs_replay_without_panic() {
             vec![(MeshFormat::Obj, &data[..])]
         } else if name.starts_with("read_ply") {
             vec![(MeshFormat::PlyAscii, &data[..])]
+        } else if name.starts_with("gluing_file-") {
+            let text = String::from_utf8_lossy(&data);
+            if let Ok(f) = parse_gluing_str(&text, Path::new(&name)) {
+                for r in gluing_checks(&f.data) {
+                    assert!(!r.failed() || !r.witnesses.is_empty(), "{name}: {}", r.id);
+                }
+            }
+            n += 1;
+            continue;
         } else {
             continue;
         };
@@ -257,4 +270,114 @@ fn x_fuzz_exact_orientation_fallback_agrees_with_adaptive_predicates() {
         let sc = |p: [f64; 3]| p.map(|x| x * s);
         assert_eq!(orient3(&sc(a), &sc(b), &sc(c), &sc(d)), base, "2^{k}");
     }
+}
+
+/// What the `gluing_file` target and `ppm gluing` run on parsed data.
+fn gluing_checks(g: &Exact1d) -> Vec<CheckResult> {
+    let mut results = decide::check_all(g);
+    let sample = relation::GridSample::new(g, 24);
+    results.push(relation::check_equivalence(g, &sample));
+    results.push(relation::check_claim(g, &sample));
+    results
+}
+
+/// gluing_file timeouts (> 1 s on a 4 KiB file; 5.7 s and 5.9 s in the fuzz build before the
+/// fix), built while reproducing the campaign's timeout: 150 disjoint p-domains, and 50 + 50
+/// pieces glued each way. The cocycle checks looped over I³ (3.4 million triples for 150
+/// charts, each building Ω_ij), and every sampled point scanned all of I for successors. Now
+/// the triples come from K's adjacency, successors from the listed pairs, and the grid keeps to
+/// a point budget; both files are decided, failures with witnesses.
+#[test]
+fn x_fuzz_gluing_file_timeout_inputs_are_decided() {
+    let f = parse_gluing_str(
+        &String::from_utf8_lossy(&regression("gluing_file-timeout-150-domains.toml")),
+        Path::new("150-domains"),
+    )
+    .expect("parses");
+    assert_eq!(f.data.ids().len(), 150);
+    let adj = f.data.adjacency();
+    for i in f.data.ids() {
+        assert_eq!(adj.outgoing(i), &[i], "K has only the diagonal");
+        assert_eq!(adj.incoming(i), &[i]);
+    }
+    let results = gluing_checks(&f.data);
+    for r in &results {
+        // The 150 p-domains are all (0, 1): only (1), pairwise disjointness, fails.
+        let expect_fail = r.id == "D3.4.1(1)";
+        assert_eq!(
+            r.failed(),
+            expect_fail,
+            "{}: {:?}",
+            r.id,
+            r.witnesses.first()
+        );
+        assert!(!r.failed() || !r.witnesses.is_empty(), "{}", r.id);
+    }
+    let c3 = results
+        .iter()
+        .find(|r| r.id == "D3.4.1(3c)")
+        .expect("3c runs");
+    assert!(c3.examined >= 150, "every (i, i, i) is examined");
+
+    let f = parse_gluing_str(
+        &String::from_utf8_lossy(&regression("gluing_file-timeout-50-pieces-each-way.toml")),
+        Path::new("50-pieces"),
+    )
+    .expect("parses");
+    let sample = relation::GridSample::new(&f.data, 24);
+    assert!(
+        sample.cells >= 2 && sample.cells < 24,
+        "the point budget lowers the grid: {} cells",
+        sample.cells
+    );
+    for r in gluing_checks(&f.data) {
+        assert!(!r.failed() || !r.witnesses.is_empty(), "{}", r.id);
+    }
+}
+
+/// The cocycle loops range over K's adjacency instead of I³: exhaustively over random gluing
+/// data, every triple (i, j, k) whose cocycle or Grimm–Hughes domain is non-empty is one the
+/// adjacency visits, so no triple is skipped that the literal I³ loop would examine.
+#[test]
+fn x_fuzz_gluing_adjacency_covers_every_triple_with_a_nonempty_domain() {
+    use pseudomanifold::gluing::exact1d::random::random_gluing;
+    let mut nonempty = 0;
+    for seed in 0..60 {
+        for n in [2, 3] {
+            let g = random_gluing(seed, n, seed % 3 == 0);
+            let adj = g.adjacency();
+            let ids = g.ids();
+            for &i in &ids {
+                for &j in &ids {
+                    for &k in &ids {
+                        if !g.omega_ij(j, i).intersect(&g.omega_ij(j, k)).is_empty() {
+                            nonempty += 1;
+                            assert!(
+                                adj.incoming(i).contains(&j),
+                                "seed {seed}: 3c ({i},{j},{k})"
+                            );
+                            assert!(
+                                adj.outgoing(j).contains(&k),
+                                "seed {seed}: 3c ({i},{j},{k})"
+                            );
+                        }
+                        if !g.omega_ij(i, j).intersect(&g.omega_ij(i, k)).is_empty() {
+                            assert!(
+                                adj.outgoing(i).contains(&j),
+                                "seed {seed}: GH ({i},{j},{k})"
+                            );
+                            assert!(
+                                adj.outgoing(i).contains(&k),
+                                "seed {seed}: GH ({i},{j},{k})"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        nonempty > 100,
+        "only {nonempty} non-empty triples: the data is too sparse"
+    );
 }

@@ -89,3 +89,54 @@ fn d3_4_1_file_accepts_fractions_decimals_and_integers() {
     // Default diagonal: Ω_ii = Ω_i, φ_ii = id.
     assert_eq!(f.data.omega_ij(2, 2), f.data.omega(2));
 }
+
+/// Resource bounds of the format (`gluing::file::MAX_*`): past each, a typed error naming the
+/// file and the field, before any check runs.
+#[test]
+fn d3_4_1_file_limits_are_typed_errors() {
+    use pseudomanifold::gluing::file::{
+        MAX_DOMAIN_ENTRIES, MAX_FILE_BYTES, MAX_GLUE_ENTRIES, MAX_RATIONAL_CHARS,
+    };
+    let many_domains: String = (0..=MAX_DOMAIN_ENTRIES)
+        .map(|n| format!("[[domain]]\nid = {n}\ninterval = [0, 1]\n"))
+        .collect();
+    let (field, message) = field_err(&many_domains);
+    assert_eq!(field, "domain");
+    assert!(
+        message.contains(&MAX_DOMAIN_ENTRIES.to_string()),
+        "{message}"
+    );
+    let ok_domains: String = (0..MAX_DOMAIN_ENTRIES)
+        .map(|n| format!("[[domain]]\nid = {n}\ninterval = [0, 1]\n"))
+        .collect();
+    assert!(parse_gluing_str(&ok_domains, Path::new("ok.toml")).is_ok());
+
+    let glue = "[[glue]]\ni = 1\nj = 1\nomega_ij = [0, 1]\na = 1\nb = 0\n";
+    let many_glue = format!("{DOM}{}", glue.repeat(MAX_GLUE_ENTRIES + 1));
+    assert_eq!(field_err(&many_glue).0, "glue");
+    let ok_glue = format!("{DOM}{}", glue.repeat(MAX_GLUE_ENTRIES));
+    assert!(parse_gluing_str(&ok_glue, Path::new("ok.toml")).is_ok());
+
+    let long = "1".repeat(MAX_RATIONAL_CHARS + 1);
+    let (field, message) = field_err(&format!(
+        "[[domain]]\nid = 1\ninterval = [\"0\", \"{long}\"]\n"
+    ));
+    assert_eq!(field, "domain[0].interval[1]");
+    assert!(message.contains("characters"), "{message}");
+    let fits = "1".repeat(MAX_RATIONAL_CHARS);
+    assert!(parse_gluing_str(
+        &format!("[[domain]]\nid = 1\ninterval = [\"0\", \"{fits}\"]\n"),
+        Path::new("ok.toml")
+    )
+    .is_ok());
+
+    let dir = std::env::temp_dir().join(format!("ppm-gluing-limit-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let big = dir.join("big.toml");
+    let padding = "#".repeat(usize::try_from(MAX_FILE_BYTES).expect("fits"));
+    std::fs::write(&big, format!("{DOM}{padding}\n")).expect("write");
+    let e = read_gluing_file(&big).unwrap_err();
+    assert!(matches!(e, GluingError::TooLarge { .. }), "{e:?}");
+    assert!(e.to_string().contains("big.toml"), "{e}");
+    std::fs::remove_dir_all(&dir).ok();
+}

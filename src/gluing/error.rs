@@ -14,6 +14,16 @@ pub enum GluingError {
         #[source]
         source: std::io::Error,
     },
+    /// The file is larger than [`crate::gluing::file::MAX_FILE_BYTES`].
+    #[error("{file}: {bytes} bytes, more than the {limit} a gluing file may have")]
+    TooLarge {
+        /// The gluing file.
+        file: PathBuf,
+        /// Its size.
+        bytes: u64,
+        /// The limit.
+        limit: u64,
+    },
     /// The file is not valid TOML.
     #[error("{file}: not valid TOML: {message}")]
     Syntax {

@@ -21,13 +21,28 @@
 //! φ_21 — the checker decides 3(b). Several `[[glue]]` entries with the same (i, j) form a
 //! gluing domain with several pieces. A pair with no entry has Ω_ij = ∅, except the diagonal:
 //! without an (i, i) entry, Ω_ii = Ω_i and φ_ii = id (list (i, i) explicitly to override).
+//!
+//! Limits: [`MAX_FILE_BYTES`], [`MAX_DOMAIN_ENTRIES`], [`MAX_GLUE_ENTRIES`],
+//! [`MAX_RATIONAL_CHARS`]; past each, a [`GluingError`] naming the file and field.
 
 use super::error::GluingError;
 use super::exact1d::interval::{parse_q, Interval, Q};
 use super::exact1d::Exact1d;
 use super::Idx;
+use std::io::Read;
 use std::path::Path;
 use toml::Value;
+
+/// Largest gluing file read, in bytes.
+pub const MAX_FILE_BYTES: u64 = 1 << 20;
+/// Most `[[domain]]` entries in a file.
+pub const MAX_DOMAIN_ENTRIES: usize = 256;
+/// Most `[[glue]]` entries in a file. The exact checks are polynomial in the number of pieces
+/// (the cocycle checks compose every pair of pieces; about 1 s for 128 + 128 pieces on one pair,
+/// release build), so these limits bound the time a file can take, as they bound its memory.
+pub const MAX_GLUE_ENTRIES: usize = 256;
+/// Longest rational, in characters (decimal parsing of big integers is quadratic).
+pub const MAX_RATIONAL_CHARS: usize = 512;
 
 /// A parsed gluing file.
 #[derive(Clone, Debug)]
@@ -40,10 +55,24 @@ pub struct GluingFile {
 
 /// Read and parse a gluing file.
 pub fn read_gluing_file(path: &Path) -> Result<GluingFile, GluingError> {
-    let text = std::fs::read_to_string(path).map_err(|source| GluingError::Io {
+    let io = |source| GluingError::Io {
         file: path.to_path_buf(),
         source,
-    })?;
+    };
+    let f = std::fs::File::open(path).map_err(io)?;
+    let mut text = String::new();
+    // Read one byte past the limit, so a larger file is refused without reading it whole.
+    f.take(MAX_FILE_BYTES + 1)
+        .read_to_string(&mut text)
+        .map_err(io)?;
+    let bytes = text.len() as u64;
+    if bytes > MAX_FILE_BYTES {
+        return Err(GluingError::TooLarge {
+            file: path.to_path_buf(),
+            bytes,
+            limit: MAX_FILE_BYTES,
+        });
+    }
     parse_gluing_str(&text, path)
 }
 
@@ -62,6 +91,13 @@ impl Ctx<'_> {
     fn rational(&self, field: &str, v: Option<&Value>) -> Result<Q, GluingError> {
         match v {
             None => Err(self.err(field, "missing")),
+            Some(Value::String(s)) if s.len() > MAX_RATIONAL_CHARS => Err(self.err(
+                field,
+                format!(
+                    "a rational of {} characters; at most {MAX_RATIONAL_CHARS} are read",
+                    s.len()
+                ),
+            )),
             Some(Value::String(s)) => parse_q(s)
                 .ok_or_else(|| self.err(field, format!("\"{s}\" is not a rational like \"1/3\""))),
             Some(Value::Integer(n)) => Ok(Q::from_integer((*n).into())),
@@ -158,6 +194,15 @@ pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingErr
             "no [[domain]] given: the index set I must be non-empty",
         ));
     }
+    if domains.len() > MAX_DOMAIN_ENTRIES {
+        return Err(ctx.err(
+            "domain",
+            format!(
+                "{} entries; at most {MAX_DOMAIN_ENTRIES} are read",
+                domains.len()
+            ),
+        ));
+    }
     for (n, t) in domains.iter().enumerate() {
         let f = format!("domain[{n}]");
         ctx.check_keys(&f, t, &["id", "interval"])?;
@@ -167,7 +212,17 @@ pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingErr
             None => data.add_empty_domain(id),
         }
     }
-    for (n, t) in tables(&ctx, &root, "glue")?.iter().enumerate() {
+    let glue = tables(&ctx, &root, "glue")?;
+    if glue.len() > MAX_GLUE_ENTRIES {
+        return Err(ctx.err(
+            "glue",
+            format!(
+                "{} entries; at most {MAX_GLUE_ENTRIES} are read",
+                glue.len()
+            ),
+        ));
+    }
+    for (n, t) in glue.iter().enumerate() {
         let f = format!("glue[{n}]");
         ctx.check_keys(&f, t, &["i", "j", "omega_ij", "a", "b"])?;
         let i = ctx.index(&format!("{f}.i"), t.get("i"))?;

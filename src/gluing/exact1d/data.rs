@@ -37,6 +37,24 @@ impl Piece {
     }
 }
 
+/// The pairs of K (Def. 3.4.1(3)) by first and by second index; see [`Exact1d::adjacency`].
+#[derive(Clone, Debug, Default)]
+pub struct Adjacency {
+    out: BTreeMap<Idx, Vec<Idx>>,
+    into: BTreeMap<Idx, Vec<Idx>>,
+}
+
+impl Adjacency {
+    /// {j : (i, j) ∈ K}, increasing.
+    pub fn outgoing(&self, i: Idx) -> &[Idx] {
+        self.out.get(&i).map(|v| v.as_slice()).unwrap_or(&[])
+    }
+    /// {j : (j, i) ∈ K}, increasing.
+    pub fn incoming(&self, i: Idx) -> &[Idx] {
+        self.into.get(&i).map(|v| v.as_slice()).unwrap_or(&[])
+    }
+}
+
 /// A set of gluing data in ℝ¹ (Def. 3.4.1) with exact rational data.
 #[derive(Clone, Debug, Default)]
 pub struct Exact1d {
@@ -64,18 +82,34 @@ impl Exact1d {
     pub fn pieces(&self, i: Idx, j: Idx) -> &[Piece] {
         self.glue.get(&(i, j)).map(|v| v.as_slice()).unwrap_or(&[])
     }
-    /// K of Def. 3.4.1(3).
+    /// K of Def. 3.4.1(3): the pairs (i, j) ∈ I × I with Ω_ij ≠ ∅, in lexicographic order.
+    /// Read from the listed pieces (a pair without pieces has Ω_ij = ∅), so its cost is the
+    /// number of listed pairs, not |I|².
     pub fn k(&self) -> Vec<(Idx, Idx)> {
-        let ids = self.ids();
-        let mut k = Vec::new();
-        for &i in &ids {
-            for &j in &ids {
-                if !self.omega_ij(i, j).is_empty() {
-                    k.push((i, j));
-                }
-            }
+        self.glue
+            .iter()
+            .filter(|((i, j), ps)| {
+                !ps.is_empty() && self.domains.contains_key(i) && self.domains.contains_key(j)
+            })
+            .map(|(&ij, _)| ij)
+            .filter(|&(i, j)| !self.omega_ij(i, j).is_empty())
+            .collect()
+    }
+    /// The adjacency of K: `outgoing(i)` = {j : (i, j) ∈ K} and `incoming(i)` = {j : (j, i) ∈ K}, each
+    /// increasing. The cocycle checks range over these instead of all of I³: a triple outside
+    /// them has an empty domain, and |I|³ is too slow for a few hundred p-domains.
+    pub fn adjacency(&self) -> Adjacency {
+        let mut adj = Adjacency::default();
+        for (i, j) in self.k() {
+            adj.out.entry(i).or_default().push(j);
+            adj.into.entry(j).or_default().push(i);
         }
-        k
+        adj
+    }
+    /// x ∈ Ω_ij, without building Ω_ij (a point lies in a union of open intervals iff it lies
+    /// in one of them).
+    pub fn in_omega_ij(&self, i: Idx, j: Idx, x: &Q) -> bool {
+        self.pieces(i, j).iter().any(|p| p.dom.contains(x))
     }
     /// φ_ji(x) for x ∈ Ω_ij (first piece containing x); `None` outside Ω_ij.
     pub fn phi(&self, j: Idx, i: Idx, x: &Q) -> Option<Q> {

@@ -19,7 +19,11 @@ pub fn piece_preimage(p: &Piece, set: &OpenSet) -> OpenSet {
             OpenSet::empty()
         };
     }
-    set.affine_preimage(&p.a, &p.b)
+    // Cut the set down to φ(dom) first: the preimage of a many-piece set is then built only
+    // from the parts this piece can reach.
+    let image = OpenSet::from_interval(p.dom.clone()).affine_image(&p.a, &p.b);
+    set.intersect(&image)
+        .affine_preimage(&p.a, &p.b)
         .intersect(&OpenSet::from_interval(p.dom.clone()))
 }
 
@@ -370,10 +374,11 @@ pub fn check_3c(g: &Exact1d) -> CheckResult {
         "D3.4.1(3c)",
         "cocycle: domain inclusion and φ_ki = φ_kj∘φ_ji",
     );
-    let ids = g.ids();
-    for &i in &ids {
-        for &j in &ids {
-            for &k in &ids {
+    // Ω_ji ∩ Ω_jk ≠ ∅ needs (j, i) ∈ K and (j, k) ∈ K; same order as i, j, k over I³.
+    let adj = g.adjacency();
+    for i in g.ids() {
+        for &j in adj.incoming(i) {
+            for &k in adj.outgoing(j) {
                 if g.omega_ij(j, i).intersect(&g.omega_ij(j, k)).is_empty() {
                     continue;
                 }
@@ -434,10 +439,11 @@ pub fn check_grimm_hughes(g: &Exact1d, strict: bool) -> CheckResult {
         ("CA.2-GH", "Grimm–Hughes cocycle (where both sides defined)")
     };
     let mut r = CheckResult::new(id, name);
-    let ids = g.ids();
-    for &i in &ids {
-        for &j in &ids {
-            for &k in &ids {
+    // Ω_ij ∩ Ω_ik ≠ ∅ needs (i, j) ∈ K and (i, k) ∈ K; same order as i, j, k over I³.
+    let adj = g.adjacency();
+    for i in g.ids() {
+        for &j in adj.outgoing(i) {
+            for &k in adj.outgoing(i) {
                 let e = g.omega_ij(i, j).intersect(&g.omega_ij(i, k));
                 if e.is_empty() {
                     continue;
@@ -526,6 +532,17 @@ pub fn check_4_with_radii(g: &Exact1d) -> (CheckResult, Vec<Separation>) {
                 .pieces(i, j)
                 .iter()
                 .partition(|p| p.dom.closure_contains(&x));
+            // δ: distance from x to the pieces whose closure misses x (independent of y).
+            let delta = other
+                .iter()
+                .map(|o| {
+                    if x <= o.dom.lo {
+                        &o.dom.lo - &x
+                    } else {
+                        &x - &o.dom.hi
+                    }
+                })
+                .min();
             for y in &ys {
                 r.examined += 1;
                 if let Some(p) = touch.iter().find(|p| &p.eval(&x) == y) {
@@ -554,13 +571,8 @@ pub fn check_4_with_radii(g: &Exact1d) -> (CheckResult, Vec<Separation>) {
                     .unwrap_or_else(Q::one);
                 let two = Q::from_integer(2.into());
                 let mut r_x = &d / (&two * amax);
-                for o in &other {
-                    let dist = if x <= o.dom.lo {
-                        &o.dom.lo - &x
-                    } else {
-                        &x - &o.dom.hi
-                    };
-                    r_x = r_x.min(dist);
+                if let Some(delta) = &delta {
+                    r_x = r_x.min(delta.clone());
                 }
                 seps.push(Separation {
                     i,

@@ -7,5 +7,5 @@ pub mod interval;
 pub mod random;
 pub mod sampled_view;
 
-pub use data::{Exact1d, Piece};
+pub use data::{Adjacency, Exact1d, Piece};
 pub use interval::{Interval, OpenSet, Q};
