@@ -3,7 +3,7 @@
 //! over interval pieces, so each verdict is decided, not sampled.
 
 use super::data::{Exact1d, Piece};
-use super::interval::{fmt_q, q_to_f64, Interval, OpenSet, Q};
+use super::interval::{fmt_q, mid, q_to_f64, Interval, OpenSet, Q};
 use crate::gluing::data::Idx;
 use crate::report::{CheckResult, Witness};
 use num_traits::{One, Signed, Zero};
@@ -65,28 +65,86 @@ pub fn compose(first: &[Piece], second: &[Piece]) -> Vec<Cell> {
 }
 
 /// Compare composite cells with the pieces of `target` on `restrict`; every disagreement is
-/// reported through `bad(x, lhs, rhs)` at the midpoint x of a maximal disagreeing cell.
-/// Returns the number of cells compared.
+/// reported through `bad(x, lhs, rhs)` at the midpoint x of an elementary interval (between
+/// consecutive endpoints of cells, pieces and `restrict`) where some cell and some piece cover
+/// x with different coefficients. Returns the number of elementary intervals compared.
+///
+/// A sweep over the sorted endpoints with the covering coefficients counted, not the
+/// |cells| × |target| pairs: `compose` yields up to |P|² cells, so pairing them with P pieces was
+/// cubic and a 4 KiB file of overlapping pieces took seconds.
 fn compare_cells(
     cells: &[Cell],
     target: &[Piece],
     restrict: &OpenSet,
     mut bad: impl FnMut(&Q, &Q, &Q),
 ) -> u64 {
-    let mut n = 0;
+    type Coef = (Q, Q);
+    // (endpoint, opens?, which: 0 = cell, 1 = target piece, 2 = restrict, coefficients)
+    let mut events: Vec<(Q, bool, u8, Option<Coef>)> = Vec::new();
     for c in cells {
-        for t in target {
-            let Some(common) = c.cell.intersect(&t.dom) else {
-                continue;
-            };
-            for part in OpenSet::from_interval(common).intersect(restrict).parts() {
-                n += 1;
-                // Two affine maps agree on an open interval iff their coefficients agree.
-                if c.a != t.a || c.b != t.b {
-                    let x = part.midpoint();
-                    bad(&x, &t.eval(&x), &(&c.a * &x + &c.b));
+        let k = Some((c.a.clone(), c.b.clone()));
+        events.push((c.cell.lo.clone(), true, 0, k.clone()));
+        events.push((c.cell.hi.clone(), false, 0, k));
+    }
+    for t in target {
+        let k = Some((t.a.clone(), t.b.clone()));
+        events.push((t.dom.lo.clone(), true, 1, k.clone()));
+        events.push((t.dom.hi.clone(), false, 1, k));
+    }
+    for r in restrict.parts() {
+        events.push((r.lo.clone(), true, 2, None));
+        events.push((r.hi.clone(), false, 2, None));
+    }
+    events.sort_by(|x, y| x.0.cmp(&y.0));
+    let mut active: [std::collections::BTreeMap<Coef, usize>; 2] = Default::default();
+    let mut in_restrict = 0usize;
+    let mut n = 0;
+    let mut e = 0;
+    while e < events.len() {
+        let at = events[e].0.clone();
+        // Apply every event at this endpoint; open intervals do not contain it.
+        while e < events.len() && events[e].0 == at {
+            let (_, opens, which, k) = &events[e];
+            match (which, k) {
+                (2, _) => {
+                    if *opens {
+                        in_restrict += 1;
+                    } else {
+                        in_restrict = in_restrict.saturating_sub(1);
+                    }
                 }
+                (w, Some(k)) => {
+                    let m = &mut active[usize::from(*w)];
+                    if *opens {
+                        *m.entry(k.clone()).or_insert(0) += 1;
+                    } else if let Some(c) = m.get_mut(k) {
+                        *c -= 1;
+                        if *c == 0 {
+                            m.remove(k);
+                        }
+                    }
+                }
+                _ => {}
             }
+            e += 1;
+        }
+        let Some(next) = events.get(e).map(|x| &x.0) else {
+            break;
+        };
+        if in_restrict == 0 || active[0].is_empty() || active[1].is_empty() {
+            continue;
+        }
+        n += 1;
+        // Two affine maps agree on an open interval iff their coefficients agree.
+        let pair = active[0].keys().find_map(|c| {
+            active[1]
+                .keys()
+                .find(|t| *t != c)
+                .map(|t| (c.clone(), t.clone()))
+        });
+        if let Some(((ca, cb), (ta, tb))) = pair {
+            let x = mid(&at, next);
+            bad(&x, &(&ta * &x + &tb), &(&ca * &x + &cb));
         }
     }
     n
