@@ -16,7 +16,7 @@ pub type Tagged = (Idx, Q);
 /// Grid points (before the closure under φ) a [`GridSample`] aims at: with more interval
 /// pieces than `GRID_POINT_BUDGET / m`, each piece gets fewer cells (at least 2), because every
 /// sampled point's successors scan the listed pieces and a 4 KiB file can list a hundred.
-pub const GRID_POINT_BUDGET: u32 = 1024;
+pub const GRID_POINT_BUDGET: u32 = 512;
 
 /// A finite sample of ⊔Ω_i: a rational grid in every Ω_i and every gluing domain, closed
 /// under two rounds of transition functions so that chains x ∼ y ∼ z stay inside it.
