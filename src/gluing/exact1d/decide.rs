@@ -9,29 +9,57 @@ use crate::report::{CheckResult, Witness};
 use num_traits::{One, Signed, Zero};
 use serde_json::json;
 
-/// The exact preimage of `set` under one affine piece, inside the piece's domain.
-pub fn piece_preimage(p: &Piece, set: &OpenSet) -> OpenSet {
+/// {x ∈ p.dom : a·x + b ∈ iv} for one piece p and one open interval: an open interval or
+/// empty. `ainv` is 1/a (ignored for a constant piece).
+fn piece_preimage_interval(p: &Piece, ainv: &Q, iv: &Interval) -> Option<Interval> {
     if p.a.is_zero() {
         // A constant piece: everything or nothing (only reachable on ill-formed data).
-        return if set.contains(&p.b) {
-            OpenSet::from_interval(p.dom.clone())
-        } else {
-            OpenSet::empty()
-        };
+        return iv.contains(&p.b).then(|| p.dom.clone());
     }
-    // Cut the set down to φ(dom) first: the preimage of a many-piece set is then built only
-    // from the parts this piece can reach.
-    let image = OpenSet::from_interval(p.dom.clone()).affine_image(&p.a, &p.b);
-    set.intersect(&image)
-        .affine_preimage(&p.a, &p.b)
-        .intersect(&OpenSet::from_interval(p.dom.clone()))
+    let u = (&iv.lo - &p.b) * ainv;
+    let w = (&iv.hi - &p.b) * ainv;
+    let (lo, hi) = if u < w { (u, w) } else { (w, u) };
+    Interval::new(lo, hi)?.intersect(&p.dom)
+}
+
+fn inverse_slope(p: &Piece) -> Q {
+    if p.a.is_zero() {
+        Q::zero()
+    } else {
+        Q::one() / &p.a
+    }
+}
+
+/// The exact preimage of `set` under one affine piece, inside the piece's domain.
+pub fn piece_preimage(p: &Piece, set: &OpenSet) -> OpenSet {
+    let ainv = inverse_slope(p);
+    let parts = set.parts();
+    // The parts are sorted and disjoint: only a contiguous run of them meets the image
+    // p(dom), found by bisection (a file can list a hundred pieces).
+    let run = if p.a.is_zero() {
+        parts
+    } else {
+        let u = p.eval(&p.dom.lo);
+        let w = p.eval(&p.dom.hi);
+        let (lo, hi) = if u < w { (u, w) } else { (w, u) };
+        let first = parts.partition_point(|iv| iv.hi <= lo);
+        let end = parts.partition_point(|iv| iv.lo < hi).max(first);
+        &parts[first..end]
+    };
+    OpenSet::from_intervals(
+        run.iter()
+            .filter_map(|iv| piece_preimage_interval(p, &ainv, iv)),
+    )
 }
 
 /// φ_ji⁻¹(set) = {x ∈ Ω_ij : φ_ji(x) ∈ set}, with φ_ji given by `pieces` (key (i, j)).
 pub fn preimage(pieces: &[Piece], set: &OpenSet) -> OpenSet {
-    pieces.iter().fold(OpenSet::empty(), |acc, p| {
-        acc.union(&piece_preimage(p, set))
-    })
+    // One normalisation of all the parts, not a union per piece (quadratic in the pieces).
+    OpenSet::from_intervals(
+        pieces
+            .iter()
+            .flat_map(|p| piece_preimage(p, set).parts().to_vec()),
+    )
 }
 
 /// One cell of a composition: on `cell`, the composite is x ↦ a·x + b.
@@ -50,11 +78,11 @@ pub struct Cell {
 pub fn compose(first: &[Piece], second: &[Piece]) -> Vec<Cell> {
     let mut out = Vec::new();
     for p in first {
+        let ainv = inverse_slope(p);
         for r in second {
-            let pre = piece_preimage(p, &OpenSet::from_interval(r.dom.clone()));
-            for c in pre.parts() {
+            if let Some(cell) = piece_preimage_interval(p, &ainv, &r.dom) {
                 out.push(Cell {
-                    cell: c.clone(),
+                    cell,
                     a: &r.a * &p.a,
                     b: &r.a * &p.b + &r.b,
                 });
