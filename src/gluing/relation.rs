@@ -58,9 +58,18 @@ impl GridSample {
                 }
             }
         }
+        // Two rounds; a round only needs the successors of the points the previous one added.
+        let mut frontier: Vec<Tagged> = set.iter().cloned().collect();
         for _ in 0..2 {
-            let new: Vec<Tagged> = set.iter().flat_map(|p| successors(g, p)).collect();
-            set.extend(new);
+            let mut new: Vec<Tagged> = frontier
+                .iter()
+                .flat_map(|p| successors(g, p))
+                .filter(|p| !set.contains(p))
+                .collect();
+            new.sort();
+            new.dedup();
+            set.extend(new.iter().cloned());
+            frontier = new;
         }
         GridSample {
             points: set.into_iter().collect(),
@@ -91,7 +100,9 @@ pub fn successors(g: &Exact1d, x: &Tagged) -> Vec<Tagged> {
         .filter(|j| g.domains.contains_key(j))
         .filter_map(|j| {
             let y = (j, g.phi(j, x.0, &x.1)?);
-            related(g, x, &y).then_some(y)
+            // y = φ_j(x.0)(x) found a piece containing x, so x ∈ Ω_(x.0)j and the value
+            // matches: of `related`, only y ∈ Ω_j(x.0) is left to test.
+            g.in_omega_ij(j, x.0, &y.1).then_some(y)
         })
         .collect()
 }
@@ -105,6 +116,7 @@ pub fn check_equivalence(g: &Exact1d, s: &GridSample) -> CheckResult {
             s.cells,
             s.points.len()
         ));
+    let mut memo: BTreeMap<Tagged, Vec<Tagged>> = BTreeMap::new();
     for x in &s.points {
         r.examined += 1;
         if !related(g, x, x) {
@@ -124,12 +136,13 @@ pub fn check_equivalence(g: &Exact1d, s: &GridSample) -> CheckResult {
                     )
                 });
             }
-            for z in successors(g, &y) {
+            let zs = memo.entry(y.clone()).or_insert_with(|| successors(g, &y));
+            for z in zs.iter() {
                 r.examined += 1;
-                if !related(g, x, &z) {
+                if !related(g, x, z) {
                     r.offend(|| {
                         Witness::new(
-                            format!("not transitive: {} ∼ {} ∼ {} but {} ≁ {}", fmt_t(x), fmt_t(&y), fmt_t(&z), fmt_q(&x.1), fmt_q(&z.1)),
+                            format!("not transitive: {} ∼ {} ∼ {} but {} ≁ {}", fmt_t(x), fmt_t(&y), fmt_t(z), fmt_q(&x.1), fmt_q(&z.1)),
                             json!({"kind": "transitivity", "x": [x.0, fmt_q(&x.1)], "y": [y.0, fmt_q(&y.1)], "z": [z.0, fmt_q(&z.1)]}),
                         )
                     });

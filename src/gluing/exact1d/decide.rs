@@ -92,6 +92,26 @@ pub fn compose(first: &[Piece], second: &[Piece]) -> Vec<Cell> {
     out
 }
 
+/// φ_kj ∘ φ_ji as cells, per (i, j, k), computed once for the cocycle checks that share them
+/// (3(c) and both readings of Grimm–Hughes compose the same pairs).
+#[derive(Default)]
+pub struct Compositions {
+    cells: std::cell::RefCell<CellCache>,
+}
+
+type CellCache = std::collections::BTreeMap<(Idx, Idx, Idx), std::rc::Rc<Vec<Cell>>>;
+
+impl Compositions {
+    /// The cells of φ_kj ∘ φ_ji (see [`compose`]).
+    pub fn get(&self, g: &Exact1d, i: Idx, j: Idx, k: Idx) -> std::rc::Rc<Vec<Cell>> {
+        self.cells
+            .borrow_mut()
+            .entry((i, j, k))
+            .or_insert_with(|| std::rc::Rc::new(compose(g.pieces(i, j), g.pieces(j, k))))
+            .clone()
+    }
+}
+
 /// Compare composite cells with the pieces of `target` on `restrict`; every disagreement is
 /// reported through `bad(x, lhs, rhs)` at the midpoint x of an elementary interval (between
 /// consecutive endpoints of cells, pieces and `restrict`) where some cell and some piece cover
@@ -456,6 +476,11 @@ pub fn cocycle_domain(g: &Exact1d, i: Idx, j: Idx, k: Idx) -> OpenSet {
 /// (exact inclusion of interval unions) and φ_ki = φ_kj ∘ φ_ji on D (coefficients compared on
 /// every cell of the piecewise-affine composition).
 pub fn check_3c(g: &Exact1d) -> CheckResult {
+    check_3c_with(g, &Compositions::default())
+}
+
+/// [`check_3c`] with shared compositions.
+pub fn check_3c_with(g: &Exact1d, comp: &Compositions) -> CheckResult {
     let mut r = CheckResult::new(
         "D3.4.1(3c)",
         "cocycle: domain inclusion and φ_ki = φ_kj∘φ_ji",
@@ -485,7 +510,7 @@ pub fn check_3c(g: &Exact1d) -> CheckResult {
                         )
                     });
                 }
-                let cells = compose(g.pieces(i, j), g.pieces(j, k));
+                let cells = comp.get(g, i, j, k);
                 let mut found = Vec::new();
                 r.examined += compare_cells(&cells, g.pieces(i, k), &d, |x, l, rr| {
                     found.push((x.clone(), l.clone(), rr.clone()))
@@ -516,6 +541,11 @@ pub fn check_3c(g: &Exact1d) -> CheckResult {
 /// reading under which App. A.2 calls it "too weak"); `strict = true`: the right side must
 /// also be defined on all of Ω_ij ∩ Ω_ik.
 pub fn check_grimm_hughes(g: &Exact1d, strict: bool) -> CheckResult {
+    check_grimm_hughes_with(g, strict, &Compositions::default())
+}
+
+/// [`check_grimm_hughes`] with shared compositions.
+pub fn check_grimm_hughes_with(g: &Exact1d, strict: bool, comp: &Compositions) -> CheckResult {
     let (id, name) = if strict {
         (
             "CA.2-GH-strict",
@@ -551,7 +581,7 @@ pub fn check_grimm_hughes(g: &Exact1d, strict: bool) -> CheckResult {
                         });
                     }
                 }
-                let cells = compose(g.pieces(i, j), g.pieces(j, k));
+                let cells = comp.get(g, i, j, k);
                 let mut found = Vec::new();
                 r.examined += compare_cells(&cells, g.pieces(i, k), &e, |x, l, rr| {
                     found.push((x.clone(), l.clone(), rr.clone()))
@@ -702,15 +732,16 @@ pub fn check_4(g: &Exact1d) -> CheckResult {
 
 /// Every exact check of Def. 3.4.1 and App. A.2, in the order of the definition.
 pub fn check_all(g: &Exact1d) -> Vec<CheckResult> {
+    let comp = Compositions::default();
     vec![
         check_1(g),
         check_2(g),
         check_bijection(g),
         check_3a(g),
         check_3b(g),
-        check_3c(g),
-        check_grimm_hughes(g, false),
-        check_grimm_hughes(g, true),
+        check_3c_with(g, &comp),
+        check_grimm_hughes_with(g, false, &comp),
+        check_grimm_hughes_with(g, true, &comp),
         check_4(g),
     ]
 }

@@ -47,6 +47,17 @@ pub fn q_to_f64(q: &Q) -> f64 {
     q.to_f64().unwrap_or(f64::NAN)
 }
 
+/// a < b by cross-multiplication (denominators are positive once normalised). Same answer as
+/// `Ord`, which num-rational computes by a continued-fraction expansion with a big-integer
+/// division per step; membership tests are the inner loop of the gluing checks.
+pub fn q_lt(a: &Q, b: &Q) -> bool {
+    if a.denom() == b.denom() {
+        a.numer() < b.numer()
+    } else {
+        a.numer() * b.denom() < b.numer() * a.denom()
+    }
+}
+
 /// Midpoint of two rationals.
 pub fn mid(a: &Q, b: &Q) -> Q {
     (a + b) / Q::from_integer(2.into())
@@ -64,11 +75,11 @@ pub struct Interval {
 impl Interval {
     /// `None` when lo ≥ hi (the empty interval).
     pub fn new(lo: Q, hi: Q) -> Option<Interval> {
-        (lo < hi).then_some(Interval { lo, hi })
+        q_lt(&lo, &hi).then_some(Interval { lo, hi })
     }
     /// lo < x < hi.
     pub fn contains(&self, x: &Q) -> bool {
-        &self.lo < x && x < &self.hi
+        q_lt(&self.lo, x) && q_lt(x, &self.hi)
     }
     /// (lo + hi) / 2.
     pub fn midpoint(&self) -> Q {
@@ -83,7 +94,7 @@ impl Interval {
     }
     /// x lies in the closure [lo, hi].
     pub fn closure_contains(&self, x: &Q) -> bool {
-        &self.lo <= x && x <= &self.hi
+        !q_lt(x, &self.lo) && !q_lt(&self.hi, x)
     }
 }
 
