@@ -333,6 +333,24 @@ fn x_fuzz_gluing_file_timeout_inputs_are_decided() {
     for r in gluing_checks(&f.data) {
         assert!(!r.failed() || !r.witnesses.is_empty(), "{}", r.id);
     }
+
+    // 45 + 45 overlapping pieces with distinct offsets: φ_10 is not well defined and the
+    // cocycle equation fails; the sweep over the composite cells must find it.
+    let f = parse_gluing_str(
+        &String::from_utf8_lossy(&regression(
+            "gluing_file-slow-overlapping-pieces-distinct-offsets.toml",
+        )),
+        Path::new("overlapping"),
+    )
+    .expect("parses");
+    let results = gluing_checks(&f.data);
+    for id in ["D3.4.1(3)", "D3.4.1(3c)"] {
+        let r = results.iter().find(|r| r.id == id).expect("runs");
+        assert!(
+            r.failed() && !r.witnesses.is_empty(),
+            "{id} must fail with a witness"
+        );
+    }
 }
 
 /// The cocycle loops range over K's adjacency instead of I³: exhaustively over random gluing

@@ -60,19 +60,21 @@ pub fn read_gluing_file(path: &Path) -> Result<GluingFile, GluingError> {
         source,
     };
     let f = std::fs::File::open(path).map_err(io)?;
-    let mut text = String::new();
+    let mut bytes = Vec::new();
     // Read one byte past the limit, so a larger file is refused without reading it whole.
     f.take(MAX_FILE_BYTES + 1)
-        .read_to_string(&mut text)
+        .read_to_end(&mut bytes)
         .map_err(io)?;
-    let bytes = text.len() as u64;
-    if bytes > MAX_FILE_BYTES {
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        let size = std::fs::metadata(path).map_or(bytes.len() as u64, |m| m.len());
         return Err(GluingError::TooLarge {
             file: path.to_path_buf(),
-            bytes,
+            bytes: size,
             limit: MAX_FILE_BYTES,
         });
     }
+    let text = String::from_utf8(bytes)
+        .map_err(|e| io(std::io::Error::new(std::io::ErrorKind::InvalidData, e)))?;
     parse_gluing_str(&text, path)
 }
 
