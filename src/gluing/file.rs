@@ -135,6 +135,13 @@ impl Ctx<'_> {
         let hi = self.rational(&format!("{field}[1]"), arr.get(1))?;
         Ok(Interval::new(lo, hi))
     }
+    /// A typed error when a table array has more than `max` entries.
+    fn at_most(&self, field: &str, len: usize, max: usize) -> Result<(), GluingError> {
+        if len > max {
+            return Err(self.err(field, format!("{len} entries; at most {max} are read")));
+        }
+        Ok(())
+    }
     fn check_keys(
         &self,
         field: &str,
@@ -196,15 +203,7 @@ pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingErr
             "no [[domain]] given: the index set I must be non-empty",
         ));
     }
-    if domains.len() > MAX_DOMAIN_ENTRIES {
-        return Err(ctx.err(
-            "domain",
-            format!(
-                "{} entries; at most {MAX_DOMAIN_ENTRIES} are read",
-                domains.len()
-            ),
-        ));
-    }
+    ctx.at_most("domain", domains.len(), MAX_DOMAIN_ENTRIES)?;
     for (n, t) in domains.iter().enumerate() {
         let f = format!("domain[{n}]");
         ctx.check_keys(&f, t, &["id", "interval"])?;
@@ -215,15 +214,7 @@ pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingErr
         }
     }
     let glue = tables(&ctx, &root, "glue")?;
-    if glue.len() > MAX_GLUE_ENTRIES {
-        return Err(ctx.err(
-            "glue",
-            format!(
-                "{} entries; at most {MAX_GLUE_ENTRIES} are read",
-                glue.len()
-            ),
-        ));
-    }
+    ctx.at_most("glue", glue.len(), MAX_GLUE_ENTRIES)?;
     for (n, t) in glue.iter().enumerate() {
         let f = format!("glue[{n}]");
         ctx.check_keys(&f, t, &["i", "j", "omega_ij", "a", "b"])?;
