@@ -46,14 +46,8 @@ impl GridSample {
             g.ids().into_iter().map(|i| (i, g.omega(i))).collect();
         sets.extend(g.k().into_iter().map(|(i, j)| (i, g.omega_ij(i, j))));
         let parts: usize = sets.iter().map(|(_, s)| s.parts().len()).sum();
-        let per_part = usize::try_from(GRID_POINT_BUDGET).unwrap_or(usize::MAX) / parts.max(1);
-        let m = m
-            .min(
-                u32::try_from(per_part)
-                    .unwrap_or(u32::MAX)
-                    .saturating_add(1),
-            )
-            .max(2);
+        let parts = u32::try_from(parts).unwrap_or(u32::MAX).max(1);
+        let m = m.min(GRID_POINT_BUDGET / parts + 1).max(2);
         for (i, set_) in &sets {
             for p in set_.parts() {
                 for t in 1..m {

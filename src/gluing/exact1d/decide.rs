@@ -16,10 +16,7 @@ fn piece_preimage_interval(p: &Piece, ainv: &Q, iv: &Interval) -> Option<Interva
         // A constant piece: everything or nothing (only reachable on ill-formed data).
         return iv.contains(&p.b).then(|| p.dom.clone());
     }
-    let u = (&iv.lo - &p.b) * ainv;
-    let w = (&iv.hi - &p.b) * ainv;
-    let (lo, hi) = if u < w { (u, w) } else { (w, u) };
-    Interval::new(lo, hi)?.intersect(&p.dom)
+    Interval::between((&iv.lo - &p.b) * ainv, (&iv.hi - &p.b) * ainv)?.intersect(&p.dom)
 }
 
 fn inverse_slope(p: &Piece) -> Q {
@@ -35,16 +32,15 @@ pub fn piece_preimage(p: &Piece, set: &OpenSet) -> OpenSet {
     let ainv = inverse_slope(p);
     let parts = set.parts();
     // The parts are sorted and disjoint: only a contiguous run of them meets the image
-    // p(dom), found by bisection (a file can list a hundred pieces).
-    let run = if p.a.is_zero() {
-        parts
-    } else {
-        let u = p.eval(&p.dom.lo);
-        let w = p.eval(&p.dom.hi);
-        let (lo, hi) = if u < w { (u, w) } else { (w, u) };
-        let first = parts.partition_point(|iv| iv.hi <= lo);
-        let end = parts.partition_point(|iv| iv.lo < hi).max(first);
-        &parts[first..end]
+    // p(dom), found by bisection (a file can list a hundred pieces). A constant piece has no
+    // image interval and is tested against every part.
+    let run = match Interval::between(p.eval(&p.dom.lo), p.eval(&p.dom.hi)) {
+        None => parts,
+        Some(image) => {
+            let first = parts.partition_point(|iv| iv.hi <= image.lo);
+            let end = parts.partition_point(|iv| iv.lo < image.hi).max(first);
+            &parts[first..end]
+        }
     };
     OpenSet::from_intervals(
         run.iter()
@@ -96,19 +92,15 @@ pub fn compose(first: &[Piece], second: &[Piece]) -> Vec<Cell> {
 /// (3(c) and both readings of Grimm–Hughes compose the same pairs).
 #[derive(Default)]
 pub struct Compositions {
-    cells: std::cell::RefCell<CellCache>,
+    cells: std::collections::BTreeMap<(Idx, Idx, Idx), Vec<Cell>>,
 }
-
-type CellCache = std::collections::BTreeMap<(Idx, Idx, Idx), std::rc::Rc<Vec<Cell>>>;
 
 impl Compositions {
     /// The cells of φ_kj ∘ φ_ji (see [`compose`]).
-    pub fn get(&self, g: &Exact1d, i: Idx, j: Idx, k: Idx) -> std::rc::Rc<Vec<Cell>> {
+    pub fn get(&mut self, g: &Exact1d, i: Idx, j: Idx, k: Idx) -> &[Cell] {
         self.cells
-            .borrow_mut()
             .entry((i, j, k))
-            .or_insert_with(|| std::rc::Rc::new(compose(g.pieces(i, j), g.pieces(j, k))))
-            .clone()
+            .or_insert_with(|| compose(g.pieces(i, j), g.pieces(j, k)))
     }
 }
 
@@ -127,23 +119,29 @@ fn compare_cells(
     mut bad: impl FnMut(&Q, &Q, &Q),
 ) -> u64 {
     type Coef = (Q, Q);
-    // (endpoint, opens?, which: 0 = cell, 1 = target piece, 2 = restrict, coefficients)
-    let mut events: Vec<(Q, bool, u8, Option<Coef>)> = Vec::new();
+    /// What opens or closes at an endpoint.
+    enum Side {
+        Cell(Coef),
+        Target(Coef),
+        Restrict,
+    }
+    let mut events: Vec<(Q, bool, Side)> = Vec::new();
     for c in cells {
-        let k = Some((c.a.clone(), c.b.clone()));
-        events.push((c.cell.lo.clone(), true, 0, k.clone()));
-        events.push((c.cell.hi.clone(), false, 0, k));
+        let k = (c.a.clone(), c.b.clone());
+        events.push((c.cell.lo.clone(), true, Side::Cell(k.clone())));
+        events.push((c.cell.hi.clone(), false, Side::Cell(k)));
     }
     for t in target {
-        let k = Some((t.a.clone(), t.b.clone()));
-        events.push((t.dom.lo.clone(), true, 1, k.clone()));
-        events.push((t.dom.hi.clone(), false, 1, k));
+        let k = (t.a.clone(), t.b.clone());
+        events.push((t.dom.lo.clone(), true, Side::Target(k.clone())));
+        events.push((t.dom.hi.clone(), false, Side::Target(k)));
     }
     for r in restrict.parts() {
-        events.push((r.lo.clone(), true, 2, None));
-        events.push((r.hi.clone(), false, 2, None));
+        events.push((r.lo.clone(), true, Side::Restrict));
+        events.push((r.hi.clone(), false, Side::Restrict));
     }
     events.sort_by(|x, y| x.0.cmp(&y.0));
+    // Coefficients covering the current elementary interval, with multiplicity: [cells, target].
     let mut active: [std::collections::BTreeMap<Coef, usize>; 2] = Default::default();
     let mut in_restrict = 0usize;
     let mut n = 0;
@@ -152,27 +150,27 @@ fn compare_cells(
         let at = events[e].0.clone();
         // Apply every event at this endpoint; open intervals do not contain it.
         while e < events.len() && events[e].0 == at {
-            let (_, opens, which, k) = &events[e];
-            match (which, k) {
-                (2, _) => {
+            let (_, opens, side) = &events[e];
+            let (m, k) = match side {
+                Side::Restrict => {
                     if *opens {
                         in_restrict += 1;
                     } else {
                         in_restrict = in_restrict.saturating_sub(1);
                     }
+                    e += 1;
+                    continue;
                 }
-                (w, Some(k)) => {
-                    let m = &mut active[usize::from(*w)];
-                    if *opens {
-                        *m.entry(k.clone()).or_insert(0) += 1;
-                    } else if let Some(c) = m.get_mut(k) {
-                        *c -= 1;
-                        if *c == 0 {
-                            m.remove(k);
-                        }
-                    }
+                Side::Cell(k) => (&mut active[0], k),
+                Side::Target(k) => (&mut active[1], k),
+            };
+            if *opens {
+                *m.entry(k.clone()).or_insert(0) += 1;
+            } else if let Some(c) = m.get_mut(k) {
+                *c -= 1;
+                if *c == 0 {
+                    m.remove(k);
                 }
-                _ => {}
             }
             e += 1;
         }
@@ -476,11 +474,11 @@ pub fn cocycle_domain(g: &Exact1d, i: Idx, j: Idx, k: Idx) -> OpenSet {
 /// (exact inclusion of interval unions) and φ_ki = φ_kj ∘ φ_ji on D (coefficients compared on
 /// every cell of the piecewise-affine composition).
 pub fn check_3c(g: &Exact1d) -> CheckResult {
-    check_3c_with(g, &Compositions::default())
+    check_3c_with(g, &mut Compositions::default())
 }
 
 /// [`check_3c`] with shared compositions.
-pub fn check_3c_with(g: &Exact1d, comp: &Compositions) -> CheckResult {
+pub fn check_3c_with(g: &Exact1d, comp: &mut Compositions) -> CheckResult {
     let mut r = CheckResult::new(
         "D3.4.1(3c)",
         "cocycle: domain inclusion and φ_ki = φ_kj∘φ_ji",
@@ -512,7 +510,7 @@ pub fn check_3c_with(g: &Exact1d, comp: &Compositions) -> CheckResult {
                 }
                 let cells = comp.get(g, i, j, k);
                 let mut found = Vec::new();
-                r.examined += compare_cells(&cells, g.pieces(i, k), &d, |x, l, rr| {
+                r.examined += compare_cells(cells, g.pieces(i, k), &d, |x, l, rr| {
                     found.push((x.clone(), l.clone(), rr.clone()))
                 });
                 for (x, lhs, rhs) in found {
@@ -541,11 +539,11 @@ pub fn check_3c_with(g: &Exact1d, comp: &Compositions) -> CheckResult {
 /// reading under which App. A.2 calls it "too weak"); `strict = true`: the right side must
 /// also be defined on all of Ω_ij ∩ Ω_ik.
 pub fn check_grimm_hughes(g: &Exact1d, strict: bool) -> CheckResult {
-    check_grimm_hughes_with(g, strict, &Compositions::default())
+    check_grimm_hughes_with(g, strict, &mut Compositions::default())
 }
 
 /// [`check_grimm_hughes`] with shared compositions.
-pub fn check_grimm_hughes_with(g: &Exact1d, strict: bool, comp: &Compositions) -> CheckResult {
+pub fn check_grimm_hughes_with(g: &Exact1d, strict: bool, comp: &mut Compositions) -> CheckResult {
     let (id, name) = if strict {
         (
             "CA.2-GH-strict",
@@ -583,7 +581,7 @@ pub fn check_grimm_hughes_with(g: &Exact1d, strict: bool, comp: &Compositions) -
                 }
                 let cells = comp.get(g, i, j, k);
                 let mut found = Vec::new();
-                r.examined += compare_cells(&cells, g.pieces(i, k), &e, |x, l, rr| {
+                r.examined += compare_cells(cells, g.pieces(i, k), &e, |x, l, rr| {
                     found.push((x.clone(), l.clone(), rr.clone()))
                 });
                 for (x, lhs, rhs) in found {
@@ -732,16 +730,16 @@ pub fn check_4(g: &Exact1d) -> CheckResult {
 
 /// Every exact check of Def. 3.4.1 and App. A.2, in the order of the definition.
 pub fn check_all(g: &Exact1d) -> Vec<CheckResult> {
-    let comp = Compositions::default();
+    let mut comp = Compositions::default();
     vec![
         check_1(g),
         check_2(g),
         check_bijection(g),
         check_3a(g),
         check_3b(g),
-        check_3c_with(g, &comp),
-        check_grimm_hughes_with(g, false, &comp),
-        check_grimm_hughes_with(g, true, &comp),
+        check_3c_with(g, &mut comp),
+        check_grimm_hughes_with(g, false, &mut comp),
+        check_grimm_hughes_with(g, true, &mut comp),
         check_4(g),
     ]
 }

@@ -77,6 +77,14 @@ impl Interval {
     pub fn new(lo: Q, hi: Q) -> Option<Interval> {
         q_lt(&lo, &hi).then_some(Interval { lo, hi })
     }
+    /// The open interval between u and w, in either order; `None` when u = w.
+    pub fn between(u: Q, w: Q) -> Option<Interval> {
+        if q_lt(&u, &w) {
+            Interval::new(u, w)
+        } else {
+            Interval::new(w, u)
+        }
+    }
     /// lo < x < hi.
     pub fn contains(&self, x: &Q) -> bool {
         q_lt(&self.lo, x) && q_lt(x, &self.hi)
@@ -218,15 +226,11 @@ impl OpenSet {
     }
     /// Image under x ↦ a·x + b (a ≠ 0).
     pub fn affine_image(&self, a: &Q, b: &Q) -> OpenSet {
-        OpenSet::from_intervals(self.parts.iter().filter_map(|p| {
-            let u = a * &p.lo + b;
-            let w = a * &p.hi + b;
-            if u < w {
-                Interval::new(u, w)
-            } else {
-                Interval::new(w, u)
-            }
-        }))
+        OpenSet::from_intervals(
+            self.parts
+                .iter()
+                .filter_map(|p| Interval::between(a * &p.lo + b, a * &p.hi + b)),
+        )
     }
     /// Preimage under x ↦ a·x + b (a ≠ 0): the image under the inverse map.
     pub fn affine_preimage(&self, a: &Q, b: &Q) -> OpenSet {
