@@ -123,7 +123,7 @@ fn sd_k_validator_accepts_a_complex_with_boundary_and_rejects_planted_faults() {
 // ---- checks on maps of a complex -------------------------------------------------------
 
 #[test]
-fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_hold_for_the_bundled_maps() {
+fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_sd_l101_inverse_hold_for_the_bundled_maps() {
     for name in ["quadratic.toml", "rational.toml", "monotonic.toml"] {
         let r = run(name);
         for c in &r {
@@ -139,7 +139,7 @@ fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_hold_for_the_bundled_maps() {
 }
 
 #[test]
-fn sd_d1_faces_planted_control_point_off_its_edge_is_caught() {
+fn sd_d1_faces_sd_l137_adjusted_planted_control_point_off_its_edge_is_caught() {
     let r = run("planted_off_face.toml");
     let c = by_id(&r, "SD-D1(faces)");
     assert!(c.failed());
@@ -157,7 +157,7 @@ fn sd_l99_planted_disagreement_on_a_shared_edge_is_caught() {
 }
 
 #[test]
-fn sd_l101_det_planted_fold_is_refuted_exactly_and_the_interval_route_does_not_certify_it() {
+fn sd_l101_det_sd_l101_edges_planted_fold_is_refuted_exactly_and_the_interval_route_does_not_certify_it() {
     let r = run("planted_fold.toml");
     let det = by_id(&r, "SD-L101(det)");
     assert!(det.failed(), "{det:?}");
