@@ -14,7 +14,7 @@
 use super::maps::*;
 use super::sampling::*;
 use super::scalar::{Scalar, Trit};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{dev_max, Check, CheckResult, OnError, Restricted, Verdict, Witness};
 use serde_json::json;
 
 /// Condition factor of simple identities (Π round trip, the h-identity): a few dozen
@@ -32,61 +32,6 @@ pub const JUMP_COND: f64 = 64.0;
 /// Condition factor of compositions of several g_(u,w) (P4.2.3, L4.2.2, L4.2.3, P4.2.4):
 /// 2^14 · max(1, m/6) over the degrees involved.
 pub const COMPOSITE_COND: f64 = 16384.0;
-
-/// Accumulates one check's result.
-struct Meter {
-    r: CheckResult,
-    worst: f64,
-}
-
-impl Meter {
-    fn new(id: &str, name: &str, seed: u64, tol: f64) -> Self {
-        let mut r = CheckResult::new(id, name);
-        r.seed = Some(seed);
-        r.tolerance = Some(tol);
-        Meter { r, worst: 0.0 }
-    }
-    fn tol(&self) -> f64 {
-        self.r.tolerance.unwrap_or(0.0)
-    }
-    /// Examine one deviation against the tolerance; NaN counts as a failure.
-    fn dev(&mut self, dev: f64, w: impl FnOnce() -> Witness) {
-        self.r.examined += 1;
-        if dev.is_nan() || dev > self.worst {
-            self.worst = if dev.is_nan() { f64::INFINITY } else { dev };
-        }
-        if !(dev <= self.tol()) {
-            self.r.offend(w);
-        }
-    }
-    /// Examine one boolean condition.
-    fn ok(&mut self, ok: bool, w: impl FnOnce() -> Witness) {
-        self.r.examined += 1;
-        if !ok {
-            self.r.offend(w);
-        }
-    }
-    fn offend(&mut self, w: impl FnOnce() -> Witness) {
-        self.r.offend(w);
-    }
-    fn finish(mut self, note: String) -> CheckResult {
-        self.r.worst_deviation = Some(self.worst);
-        self.r.note = note;
-        if self.r.examined == 0 && !self.r.failed() {
-            self.r.verdict = Verdict::Skipped {
-                reason: "no sample fell in the domain of the statement".into(),
-            };
-        }
-        self.r
-    }
-    fn finish_restricted(self, note: String, domain: String, restricted: bool) -> CheckResult {
-        let mut r = self.finish(note);
-        if restricted && r.verdict == Verdict::Holds {
-            r.verdict = Verdict::HoldsRestricted { domain };
-        }
-        r
-    }
-}
 
 fn pt<S: Scalar>(p: &P2<S>) -> serde_json::Value {
     json!([p.x.to_f64(), p.y.to_f64()])
@@ -173,7 +118,7 @@ pub fn check_d4_1_5_polar<S: Scalar, M: Ppm<S>>(
 ) -> CheckResult {
     let eps = unit_eps::<S>(prec);
     let tol = IDENTITY_COND * eps;
-    let mut m = Meter::new(
+    let mut m = Check::sampled(
         "D4.1.5",
         "Π⁻¹∘Π = id, θ ∈ (−π, π], θ = π on the negative x-axis",
         seed,
@@ -208,9 +153,9 @@ pub fn check_d4_1_5_polar<S: Scalar, M: Ppm<S>>(
                 let dev = if in_range.is_false() {
                     f64::INFINITY
                 } else {
-                    d.max(axis_dev)
+                    dev_max(d, axis_dev)
                 };
-                m.dev(dev, || {
+                m.deviation(dev, || {
                     Witness::new(
                         format!("p = {} (y sign negative: {}): θ = {:.17e}, relative round-trip error {d:.3e}", fmt(p), p.y.to_f64().is_sign_negative(), pol.theta.to_f64()),
                         json!({"p": pt(p), "theta": pol.theta.to_f64()}),
@@ -246,8 +191,7 @@ pub fn check_c4_1_6_gv_bijective<S: Scalar, M: Ppm<S>>(
     let eps = unit_eps::<S>(prec);
     let tol = GV_COND * amp(&[mdeg]) * eps;
     let name = format!("g_v (m_v = {mdeg}) bijective with the stated inverse on R² − {{0}}");
-    let mut all = Meter::new("C4.1.6-gv-bijective", &name, seed, tol);
-    let mut res = Meter::new("C4.1.6-gv-bijective[restricted]", &name, seed, tol);
+    let mut pair = Restricted::sampled("C4.1.6-gv-bijective", &name, seed, tol);
     let s = sample_disk::<S>(seed, n, &S::from_i64(1, prec), &scalar_pi::<S>(prec), prec);
     let bound_a = (6.0 * std::f64::consts::PI / mdeg as f64).min(std::f64::consts::PI);
     let bound_b = (mdeg as f64 * std::f64::consts::PI / 6.0).min(std::f64::consts::PI);
@@ -272,10 +216,7 @@ pub fn check_c4_1_6_gv_bijective<S: Scalar, M: Ppm<S>>(
                     json!({"map": which, "p": pt(p), "image": r.as_ref().map(pt).ok(), "dev": dev}),
                 )
             };
-            all.dev(dev, w);
-            if th < bound - margin {
-                res.dev(dev, w);
-            }
+            pair.deviation(dev, th < bound - margin, w);
         }
     }
     let note = format!(
@@ -283,10 +224,7 @@ pub fn check_c4_1_6_gv_bijective<S: Scalar, M: Ppm<S>>(
         s.counts_string()
     );
     let domain = format!("g_v⁻¹∘g_v = id on {{0 < r, |θ| < {bound_a:.6}}} (= min(π, 6π/m_v)); g_v∘g_v⁻¹ = id on {{0 < r, |θ| < {bound_b:.6}}} (= min(π, m_vπ/6)); both on all of R² − {{0}} iff m_v = 6");
-    vec![
-        all.finish(note.clone()),
-        res.finish_restricted(note, domain, mdeg != 6),
-    ]
+    pair.finish(note, domain, mdeg != 6)
 }
 
 /// Generic smoothness test of a map F on sampled points: (a) the analytic Jacobian `jac`
@@ -307,7 +245,7 @@ struct SmoothSpec<'a, S> {
 }
 
 fn smooth_test<S: Scalar>(
-    m: &mut Meter,
+    m: &mut Check,
     spec: &SmoothSpec<S>,
     pts: &[P2<S>],
     partners: &[(P2<S>, P2<S>)],
@@ -326,9 +264,17 @@ fn smooth_test<S: Scalar>(
         let z = S::from_i64(0, prec);
         let two_h = hs.add(&hs);
         let dirs = [P2::new(hs.clone(), z.clone()), P2::new(z, hs.clone())];
+        let skip_w = || Witness::new(format!("p = {}", fmt(p)), json!({"p": pt(p)}));
         let jac = match (spec.jac)(p) {
             Ok(j) => j,
-            Err(_) => continue,
+            Err(err) => {
+                m.error(
+                    OnError::Skip,
+                    format_args!("Jacobian at {}: {err}", fmt(p)),
+                    skip_w,
+                );
+                continue;
+            }
         };
         let mut col = Vec::new();
         for d in &dirs {
@@ -337,17 +283,25 @@ fn smooth_test<S: Scalar>(
                     a.x.sub(&b.x).div(&two_h),
                     a.y.sub(&b.y).div(&two_h),
                 )),
-                _ => break,
+                (Err(err), _) | (_, Err(err)) => {
+                    // The stencil leaves the domain of F: no Jacobian test at p.
+                    m.error(
+                        OnError::Skip,
+                        format_args!("stencil at {}: {err}", fmt(p)),
+                        skip_w,
+                    );
+                    break;
+                }
             }
         }
         if col.len() < 2 {
-            continue; // stencil leaves the domain of F
+            continue;
         }
         fd_n += 1;
         let mut dev = 0.0f64;
         for c in 0..2 {
-            dev = dev.max(jac[0][c].sub(&col[c].x).abs().to_f64());
-            dev = dev.max(jac[1][c].sub(&col[c].y).abs().to_f64());
+            dev = dev_max(dev, jac[0][c].sub(&col[c].x).abs().to_f64());
+            dev = dev_max(dev, jac[1][c].sub(&col[c].y).abs().to_f64());
         }
         let k3 = spec.kmax.max(1.0).powi(2);
         let rho = spec.inner_radius.and_then(|g| g(p)).map_or(r, |q| q.min(r));
@@ -357,7 +311,7 @@ fn smooth_test<S: Scalar>(
         let tol = FD_COND
             * (hh * hh * spec.lip * k3 / (6.0 * rho * rho) + eps * (fp + spec.lip * r) / hh);
         let rel = dev / tol * m.tol();
-        m.dev(rel, || {
+        m.deviation(rel, || {
             Witness::new(
                 format!("Jacobian at p = {} (|p| = {r:.3e}): analytic vs central difference (step {hh:.2e}) differ by {dev:.3e} (> {tol:.3e})", fmt(p)),
                 json!({"p": pt(p), "fd_step": hh, "diff": dev, "fd_tol": tol}),
@@ -367,7 +321,20 @@ fn smooth_test<S: Scalar>(
     for (a, b) in partners {
         let (fa, fb) = match ((spec.f)(a), (spec.f)(b)) {
             (Ok(x), Ok(y)) => (x, y),
-            _ => continue,
+            (Err(err), _) | (_, Err(err)) => {
+                let w = || {
+                    Witness::new(
+                        format!("a = {}, b = {}", fmt(a), fmt(b)),
+                        json!({"a": pt(a), "b": pt(b)}),
+                    )
+                };
+                m.error(
+                    OnError::Skip,
+                    format_args!("jump pair at {}: {err}", fmt(a)),
+                    w,
+                );
+                continue;
+            }
         };
         let dab = a.dist_f64(b);
         if dab == 0.0 {
@@ -383,14 +350,15 @@ fn smooth_test<S: Scalar>(
             + spec.lip * a.norm2().sqrt().to_f64().max(b.norm2().sqrt().to_f64());
         // L is evaluated in f64 and the ratio is formed in f64: allow 4 f64 ulps for that.
         let allowed = spec.lip * (1.0 + 4.0 * f64::EPSILON) + JUMP_COND * eps * scale / dab;
-        let rel = (ratio - allowed).max(0.0) + 0.0;
-        // Express as "deviation over tolerance" on the meter's scale.
-        let dev = if rel > 0.0 {
+        // Express as "deviation over tolerance" on the meter's scale; a NaN ratio stays NaN.
+        let dev = if ratio.is_nan() {
+            f64::NAN
+        } else if ratio > allowed {
             m.tol() * (1.0 + ratio / allowed)
         } else {
             0.0
         };
-        m.dev(dev, || {
+        m.deviation(dev, || {
             Witness::new(
                 format!(
                     "jump across the cut: a = {}, b = {} (|a − b| = {dab:.3e}) have images {} and {} (|F(a) − F(b)| = {:.3e}); ratio {ratio:.3e} > Lipschitz bound {allowed:.3e}",
@@ -418,8 +386,7 @@ pub fn check_c4_1_6_gv_smooth<S: Scalar, M: Ppm<S>>(
     let c = f_v_radial_factor::<f64>(mdeg, 53);
     let lip = c * k.max(1.0);
     let name = format!("g_v (m_v = {mdeg}) is C^∞ on R² − {{0}}");
-    let mut all = Meter::new("C4.1.6-gv-smooth", &name, seed, 1.0);
-    let mut res = Meter::new("C4.1.6-gv-smooth[restricted]", &name, seed, 1.0);
+    let mut pair = Restricted::sampled("C4.1.6-gv-smooth", &name, seed, 1.0);
     let pi = scalar_pi::<S>(prec);
     let s = sample_disk::<S>(seed, n, &S::from_i64(1, prec), &pi, prec);
     let f = |p: &P2<S>| model.g_v(mdeg, p);
@@ -438,7 +405,7 @@ pub fn check_c4_1_6_gv_smooth<S: Scalar, M: Ppm<S>>(
         .filter(|(c, _)| matches!(c, Category::NearCutCcw | Category::NearCutCw))
         .map(|(_, p)| (p.clone(), reflect(p, &S::from_i64(0, prec))))
         .collect();
-    let (a1, a2) = smooth_test(&mut all, &spec, &pts, &partners, prec);
+    let (a1, a2) = smooth_test(&mut pair.all, &spec, &pts, &partners, prec);
     // Restricted: stencils must stay off the cut: angular distance from π at least 4·ε^{1/3}.
     let cb = eps.cbrt();
     let pts_r: Vec<P2<S>> = pts
@@ -450,16 +417,13 @@ pub fn check_c4_1_6_gv_smooth<S: Scalar, M: Ppm<S>>(
         })
         .cloned()
         .collect();
-    let (b1, _) = smooth_test(&mut res, &spec, &pts_r, &[], prec);
+    let (b1, _) = smooth_test(&mut pair.restricted, &spec, &pts_r, &[], prec);
     let note = format!(
         "samples {} ; Jacobian tests {a1}, jump pairs across the cut {a2}; Lipschitz bound L = cos(π/6)/cos(π/m)·max(1, m/6) = {lip:.6}; FD tolerance = {FD_COND}·(h²·L·max(1,k)²/(6r²) + ε(|F(p)| + L r)/h), h = ε^(1/3)·r (deviations reported relative to it, tolerance 1); restricted run: {b1} Jacobian tests",
         s.counts_string()
     );
     let domain = "R² − {(x, 0) : x ≤ 0} (g_v is C^∞ across the cut iff 6 | m_v)".to_string();
-    vec![
-        all.finish(note.clone()),
-        res.finish_restricted(note, domain, mdeg % 6 != 0),
-    ]
+    pair.finish(note, domain, mdeg % 6 != 0)
 }
 
 // =============================================================================================
@@ -476,7 +440,7 @@ pub fn check_c4_1_7_h_identity<S: Scalar, M: Ppm<S>>(
 ) -> CheckResult {
     let eps = unit_eps::<S>(prec);
     let tol = IDENTITY_COND * eps * 3.0;
-    let mut m = Meter::new(
+    let mut m = Check::sampled(
         "C4.1.7-h-identity",
         "(h∘M_{−π/3})³ = id and h∘h = id on R²",
         seed,
@@ -490,7 +454,7 @@ pub fn check_c4_1_7_h_identity<S: Scalar, M: Ppm<S>>(
         }
         let d1 = q.dist_f64(p);
         let d2 = model.h(&model.h(p)).dist_f64(p);
-        m.dev(d1.max(d2), || {
+        m.deviation(dev_max(d1, d2), || {
             Witness::new(
                 format!(
                     "p = {}: (h∘M)³(p) = {}, |h∘h(p) − p| = {d2:.3e}",
@@ -528,8 +492,7 @@ pub fn check_c4_1_8_onto_int_c<S: Scalar, M: Ppm<S>>(
         "g_u∘R_(u,w) maps Ω_u − {{0}} onto int(C) − {{0}} (m_u = {})",
         e.m_u
     );
-    let mut all = Meter::new("C4.1.8-onto-intC", &name, seed, tol);
-    let mut res = Meter::new("C4.1.8-onto-intC[restricted]", &name, seed, tol);
+    let mut pair = Restricted::sampled("C4.1.8-onto-intC", &name, seed, tol);
     let su = omega_u_samples::<S>(e, seed, n, prec);
     for (_, p) in &su.points {
         if !in_omega_v_punctured(e.m_u, p).is_true() {
@@ -550,8 +513,7 @@ pub fn check_c4_1_8_onto_int_c<S: Scalar, M: Ppm<S>>(
                 json!({"p": pt(p)}),
             )
         };
-        all.ok(ok, w);
-        res.ok(ok, w);
+        pair.holds(ok, true, w);
     }
     let sc = sample_disk::<S>(
         seed ^ 0x5eed,
@@ -584,10 +546,7 @@ pub fn check_c4_1_8_onto_int_c<S: Scalar, M: Ppm<S>>(
                 json!({"q": pt(q), "beta": beta, "residual": best}),
             )
         };
-        all.dev(best, w);
-        if beta < bound - 1e3 * eps {
-            res.dev(best, w);
-        }
+        pair.deviation(best, beta < bound - 1e3 * eps, w);
     }
     let note = format!(
         "Ω_u samples: {}; int(C) samples: {}; tolerance = {GV_COND}·max(1,m/6,6/m)·ε",
@@ -595,10 +554,7 @@ pub fn check_c4_1_8_onto_int_c<S: Scalar, M: Ppm<S>>(
         sc.counts_string()
     );
     let domain = format!("onto the sector {{|β| < min(π, m_uπ/6) = {bound:.6}}} of int(C) − {{0}} (onto int(C) − {{0}} iff m_u ≥ 6)");
-    vec![
-        all.finish(note.clone()),
-        res.finish_restricted(note, domain, e.m_u < 6),
-    ]
+    pair.finish(note, domain, e.m_u < 6)
 }
 
 /// C4.1.8-lens-in-Q: the canonical lens E is contained in the quadrilateral Q with vertices
@@ -610,7 +566,7 @@ pub fn check_c4_1_8_lens_in_q<S: Scalar, M: Ppm<S>>(
     n: usize,
     prec: u32,
 ) -> CheckResult {
-    let mut m = Meter::new(
+    let mut m = Check::sampled(
         "C4.1.8-lens-in-Q",
         "canonical lens E ⊂ quadrilateral Q",
         seed,
@@ -638,7 +594,7 @@ pub fn check_c4_1_8_lens_in_q<S: Scalar, M: Ppm<S>>(
         }
         in_e += 1;
         let ok = in_quad_q(q).is_true();
-        m.ok(ok, || {
+        m.holds(ok, || {
             Witness::new(
                 format!("q = {} is in E but not in Q", fmt(q)),
                 json!({"q": pt(q)}),
@@ -661,8 +617,7 @@ pub fn check_c4_1_8_guw_bijective<S: Scalar, M: Ppm<S>>(
     let eps = unit_eps::<S>(prec);
     let tol = ROUNDTRIP_COND * amp(&[e.m_u, e.m_w]) * eps;
     let name = format!("g_(u,w) bijective with the stated inverse on Ω_u − {{0}} ({e:?})");
-    let mut all = Meter::new("C4.1.8-guw-bijective", &name, seed, tol);
-    let mut res = Meter::new("C4.1.8-guw-bijective[restricted]", &name, seed, tol);
+    let mut pair = Restricted::sampled("C4.1.8-guw-bijective", &name, seed, tol);
     let s = omega_u_samples::<S>(e, seed, n, prec);
     let bound = (6.0 * std::f64::consts::PI / e.m_u as f64).min(std::f64::consts::PI);
     for (_, p) in &s.points {
@@ -682,20 +637,14 @@ pub fn check_c4_1_8_guw_bijective<S: Scalar, M: Ppm<S>>(
                 json!({"p": pt(p), "back": r.as_ref().map(pt).ok(), "dev": dev}),
             )
         };
-        all.dev(dev, w);
-        if th < bound - 1e3 * eps * e.m_u as f64 {
-            res.dev(dev, w);
-        }
+        pair.deviation(dev, th < bound - 1e3 * eps * e.m_u as f64, w);
     }
     let note = format!(
         "samples of Ω_u: {}; tolerance = ROUNDTRIP_COND({ROUNDTRIP_COND})·max(1,m/6,6/m)·ε",
         s.counts_string()
     );
     let domain = format!("{{p ∈ Ω_u − {{0}} : |θ(R_(u,w)p)| < {bound:.6}}} (= min(π, 6π/m_u)); all of Ω_u − {{0}} iff m_u ≤ 6");
-    vec![
-        all.finish(note.clone()),
-        res.finish_restricted(note, domain, e.m_u > 6),
-    ]
+    pair.finish(note, domain, e.m_u > 6)
 }
 
 // =============================================================================================
@@ -730,8 +679,7 @@ pub fn check_p4_1_1_guw_smooth<S: Scalar, M: Ppm<S>>(
     let eps = unit_eps::<S>(prec);
     let (lip, kmax) = guw_lipschitz(e);
     let name = format!("g_(u,w) is C^∞ on Ω_u − {{0}} ({e:?})");
-    let mut all = Meter::new("P4.1.1", &name, seed, 1.0);
-    let mut res = Meter::new("P4.1.1[restricted]", &name, seed, 1.0);
+    let mut pair = Restricted::sampled("P4.1.1", &name, seed, 1.0);
     let s = omega_u_samples::<S>(e, seed, n, prec);
     let cut = scalar_pi::<S>(prec).mul(&S::from_ratio(
         e.m_u as i64 + 2 * e.i as i64,
@@ -760,7 +708,7 @@ pub fn check_p4_1_1_guw_smooth<S: Scalar, M: Ppm<S>>(
         .filter(|(c, _)| matches!(c, Category::NearCutCcw | Category::NearCutCw))
         .map(|(_, p)| (p.clone(), reflect(p, &cut)))
         .collect();
-    let (a1, a2) = smooth_test(&mut all, &spec, &pts, &partners, prec);
+    let (a1, a2) = smooth_test(&mut pair.all, &spec, &pts, &partners, prec);
     let cb = eps.cbrt();
     let pts_r: Vec<P2<S>> = pts
         .iter()
@@ -771,13 +719,10 @@ pub fn check_p4_1_1_guw_smooth<S: Scalar, M: Ppm<S>>(
         })
         .cloned()
         .collect();
-    let (b1, _) = smooth_test(&mut res, &spec, &pts_r, &[], prec);
+    let (b1, _) = smooth_test(&mut pair.restricted, &spec, &pts_r, &[], prec);
     let note = format!("samples {}; Jacobian tests {a1}, jump pairs across the ray at angle π + 2πi/m_u: {a2}; L = {lip:.6}; FD tolerance as in C4.1.6-gv-smooth (relative, tolerance 1); restricted run: {b1} Jacobian tests", s.counts_string());
     let domain = "Ω_u − ({0} ∪ {t·(−cos 2πi/m_u, −sin 2πi/m_u) : t > 0}) (the ray opposite s_u(w)); all of Ω_u − {0} iff 6 | m_u".to_string();
-    vec![
-        all.finish(note.clone()),
-        res.finish_restricted(note, domain, e.m_u % 6 != 0),
-    ]
+    pair.finish(note, domain, e.m_u % 6 != 0)
 }
 
 /// P4.1.2: (0,0) ∉ g_(u,w)(Ω_u − {0}). Quantitative form checked: |h(q)| ≥ 1 − cos(π/6) for
@@ -793,13 +738,13 @@ pub fn check_p4_1_2<S: Scalar, M: Ppm<S>>(
     let eps = unit_eps::<S>(prec);
     let tol = GV_COND * amp(&[e.m_u, e.m_w]) * eps;
     let delta = (1.0 - (3.0f64).sqrt() / 2.0) / f_v_radial_factor::<f64>(e.m_w, 53);
-    let mut m = Meter::new(
+    let mut m = Check::sampled(
         "P4.1.2",
         &format!("(0,0) ∉ g_(u,w)(Ω_u − {{0}}) ({e:?})"),
         seed,
         tol,
     );
-    let mut step = Meter::new(
+    let mut step = Check::sampled(
         "P4.1.2-proof-step",
         &format!("proof step: θ(g_u∘R_(u,w)(p)) ∈ (−π/3, π/3) on Ω_u − {{0}} ({e:?})"),
         seed,
@@ -817,8 +762,9 @@ pub fn check_p4_1_2<S: Scalar, M: Ppm<S>>(
             .map(|q| q.norm2().sqrt().to_f64())
             .unwrap_or(0.0);
         min_norm = min_norm.min(nrm);
-        let dev = (delta - nrm).max(0.0);
-        m.dev(dev, || {
+        // NaN-propagating: a non-finite |g_(u,w)(p)| is an offence, not "≥ δ".
+        let dev = dev_max(delta - nrm, 0.0);
+        m.deviation(dev, || {
             Witness::new(
                 format!(
                     "p = {}: |g_(u,w)(p)| = {nrm:.3e} < δ = {delta:.6} (image {})",
@@ -828,10 +774,23 @@ pub fn check_p4_1_2<S: Scalar, M: Ppm<S>>(
                 json!({"p": pt(p), "norm": nrm}),
             )
         });
-        if let Ok(q) = model.g_v(e.m_u, &model.r_uw(e, p)) {
+        let q = match model.g_v(e.m_u, &model.r_uw(e, p)) {
+            Ok(q) => q,
+            Err(err) => {
+                // g_u is defined on R² − {0}: an error here is an offence of the proof step.
+                step.error(OnError::Offence, &err, || {
+                    Witness::new(
+                        format!("p = {}: g_u∘R_(u,w)(p) failed: {err}", fmt(p)),
+                        json!({"p": pt(p)}),
+                    )
+                });
+                continue;
+            }
+        };
+        {
             let th = angle_of(&q).unwrap_or(0.0);
             let ok = th.abs() < std::f64::consts::PI / 3.0;
-            step.ok(ok, || {
+            step.holds(ok, || {
                 Witness::new(
                     format!(
                         "p = {}: q = g_u∘R_(u,w)(p) = {} has θ = {th:.6} ∉ (−π/3, π/3)",
@@ -862,15 +821,14 @@ pub fn check_p4_1_3<S: Scalar, M: Ppm<S>>(
 ) -> Vec<CheckResult> {
     let eps = unit_eps::<S>(prec);
     let tol = ROUNDTRIP_COND * amp(&[e.m_u, e.m_w]) * eps;
-    let mut ne = Meter::new(
+    let mut ne = Check::sampled(
         "P4.1.3",
         &format!("g_(u,w)(Ω_u − {{0}}) ∩ (Ω_w − {{0}}) ≠ ∅ ({e:?})"),
         seed,
         0.0,
     );
     let name = format!("g_(u,w)⁻¹ = g_(w,u) on g_(u,w)(Ω_u − {{0}}) ∩ Ω_w ({e:?})");
-    let mut inv = Meter::new("P4.1.3-inverse", &name, seed, tol);
-    let mut res = Meter::new("P4.1.3-inverse[restricted]", &name, seed, tol);
+    let mut pair = Restricted::sampled("P4.1.3-inverse", &name, seed, tol);
     let s = omega_u_samples::<S>(e, seed, n, prec);
     let mut hits = 0u64;
     let mut uniform_examined = 0u64;
@@ -887,7 +845,14 @@ pub fn check_p4_1_3<S: Scalar, M: Ppm<S>>(
         }
         let t = match model.g_uw(e, p) {
             Ok(t) => t,
-            Err(_) => continue,
+            Err(err) => {
+                // g_(u,w) failing on Ω_u − {0} is C4.1.8-guw-bijective's offence; here the
+                // sample is outside what can be examined, and counted.
+                pair.all.error(OnError::Skip, &err, || {
+                    Witness::new(format!("p = {}", fmt(p)), json!({"p": pt(p)}))
+                });
+                continue;
+            }
         };
         uniform_examined += 1;
         if !in_omega_v_punctured(e.m_w, &t).is_true() {
@@ -906,7 +871,7 @@ pub fn check_p4_1_3<S: Scalar, M: Ppm<S>>(
             (Ok(a), Ok(b)) => a.dist_f64(b),
             _ => f64::INFINITY,
         };
-        let dev = d1.max(d2);
+        let dev = dev_max(d1, d2);
         let th = angle_of(&model.r_uw(e, p)).unwrap_or(0.0).abs();
         let w = || {
             Witness::new(
@@ -914,22 +879,18 @@ pub fn check_p4_1_3<S: Scalar, M: Ppm<S>>(
                 json!({"p": pt(p), "t": pt(&t), "back": back.as_ref().map(pt).ok(), "dev": dev}),
             )
         };
-        inv.dev(dev, w);
-        if th < bound - 1e3 * eps * e.m_u as f64 {
-            res.dev(dev, w);
-        }
+        pair.deviation(dev, th < bound - 1e3 * eps * e.m_u as f64, w);
     }
-    ne.r.examined = uniform_examined;
+    ne.examined(uniform_examined);
     if hits == 0 {
         ne.offend(|| Witness::new(format!("none of {uniform_examined} samples (disk and lens pull-backs) of Ω_u − {{0}} has g_(u,w)(p) ∈ Ω_w − {{0}}"), json!({"examined": uniform_examined})));
     }
     let note = format!("Ω_u samples: {} (+ {} lens pull-backs for the inverse part); {hits} samples (disk and lens pull-backs) map into Ω_w − {{0}}; tolerance = ROUNDTRIP_COND·amp·ε", s.counts_string(), n);
     let domain = format!("p with |θ(R_(u,w)p)| < {bound:.6} (= min(π, 6π/m_u)); for m_u ≤ 10 this is all of g_(u,w)⁻¹(Ω_w)");
-    vec![
-        ne.finish(note.clone()),
-        inv.finish(note.clone()),
-        res.finish_restricted(note, domain, e.m_u > 10),
-    ]
+    vec![ne.finish(note.clone())]
+        .into_iter()
+        .chain(pair.finish(note, domain, e.m_u > 10))
+        .collect()
 }
 
 // =============================================================================================
@@ -966,7 +927,7 @@ pub fn check_d4_1_9_lens_agreement<S: Scalar, M: Ppm<S>>(
 ) -> CheckResult {
     let eps = unit_eps::<S>(prec);
     let tol = ROUNDTRIP_COND * amp(&[e.m_u, e.m_w]) * eps;
-    let mut m = Meter::new(
+    let mut m = Check::sampled(
         "D4.1.9-lens",
         &format!("Def. 4.1.9 (literal) ⇔ Sec. 6.1.3 lens test ({e:?})"),
         seed,
@@ -994,11 +955,11 @@ pub fn check_d4_1_9_lens_agreement<S: Scalar, M: Ppm<S>>(
             .unwrap_or(0.0);
         if a != b && margin <= tol {
             ambiguous += 1;
-            m.r.examined += 1;
+            m.examined(1);
             continue;
         }
         let th = angle_of(&model.r_uw(e, p)).unwrap_or(0.0);
-        m.ok(a == b, || {
+        m.holds(a == b, || {
             Witness::new(
                 format!("p = {} (θ(R_(u,w)p) = {th:.6}): literal Def. 4.1.9 says {a:?}, lens test says {b:?}; g_u∘R_(u,w)(p) = {}", fmt(p), q.as_ref().map(fmt).unwrap_or_default()),
                 json!({"p": pt(p), "literal": format!("{a:?}"), "lens": format!("{b:?}"), "q": q.as_ref().map(pt)}),
@@ -1030,10 +991,10 @@ pub fn check_p4_2_1<S: Scalar, M: Ppm<S>>(
     n: usize,
     prec: u32,
 ) -> CheckResult {
-    let mut m = Meter::new("P4.2.1", &format!("Ω_uw ≠ ∅ ⇔ Ω_wu ≠ ∅ ({e:?})"), seed, 0.0);
+    let mut m = Check::sampled("P4.2.1", &format!("Ω_uw ≠ ∅ ⇔ Ω_wu ≠ ∅ ({e:?})"), seed, 0.0);
     let a = omega_uw_points(model, e, seed, n, prec).len();
     let b = omega_uw_points(model, &e.reversed(), seed ^ 0x77, n, prec).len();
-    m.r.examined = 2 * n as u64;
+    m.examined(2 * n as u64);
     if (a == 0) != (b == 0) {
         m.offend(|| {
             Witness::new(
@@ -1060,13 +1021,13 @@ pub fn check_p4_2_3<S: Scalar, M: Ppm<S>>(
 ) -> Vec<CheckResult> {
     let eps = unit_eps::<S>(prec);
     let tol = COMPOSITE_COND * amp(&[e.m_u, e.m_w]) * eps;
-    let mut m = Meter::new(
+    let mut m = Check::sampled(
         "P4.2.3",
         &format!("φ_uw∘φ_wu = id on Ω_uw ({e:?})"),
         seed,
         tol,
     );
-    let mut d = Meter::new(
+    let mut d = Check::sampled(
         "D4.1.10",
         &format!("φ_wu maps Ω_uw into Ω_wu ({e:?})"),
         seed,
@@ -1090,7 +1051,7 @@ pub fn check_p4_2_3<S: Scalar, M: Ppm<S>>(
             }
         };
         let in_wu = model.in_omega_uw_literal(&e.reversed(), &t);
-        d.ok(!in_wu.is_false(), || {
+        d.holds(!in_wu.is_false(), || {
             Witness::new(
                 format!("p = {} ∈ Ω_uw but φ_wu(p) = {} ∉ Ω_wu", fmt(p), fmt(&t)),
                 json!({"p": pt(p), "t": pt(&t)}),
@@ -1101,7 +1062,7 @@ pub fn check_p4_2_3<S: Scalar, M: Ppm<S>>(
             .as_ref()
             .map(|b| b.dist_f64(p))
             .unwrap_or(f64::INFINITY);
-        m.dev(dev, || {
+        m.deviation(dev, || {
             Witness::new(
                 format!(
                     "p = {}: φ_wu(p) = {}, φ_uw(φ_wu(p)) = {} (error {dev:.3e})",
@@ -1130,7 +1091,7 @@ pub fn check_l4_2_4<S: Scalar, M: Ppm<S>>(
     prec: u32,
 ) -> CheckResult {
     let (lip, kmax) = guw_lipschitz(e);
-    let mut m = Meter::new("L4.2.4", &format!("φ_wu is C^∞ on Ω_uw ({e:?})"), seed, 1.0);
+    let mut m = Check::sampled("L4.2.4", &format!("φ_wu is C^∞ on Ω_uw ({e:?})"), seed, 1.0);
     let pair = VertexPair::Edge(*e);
     let f = |p: &P2<S>| model.phi_wu(&pair, p);
     let jac = |p: &P2<S>| model.g_uw_jacobian(e, p);
@@ -1175,7 +1136,7 @@ pub fn check_l4_2_3<S: Scalar, M: Ppm<S>>(
 ) -> CheckResult {
     let eps = unit_eps::<S>(prec);
     let tol = COMPOSITE_COND * amp(&[e.m_u, e.m_w]) * eps;
-    let mut m = Meter::new(
+    let mut m = Check::sampled(
         "L4.2.3",
         &format!("Hausdorff separation of ∂Ω_uw ∩ Ω_u and ∂Ω_wu ∩ Ω_w ({e:?})"),
         seed,
@@ -1187,7 +1148,16 @@ pub fn check_l4_2_3<S: Scalar, M: Ppm<S>>(
         for (_, q) in &arc.points {
             let x = match model.g_v_inv(edge.m_u, q) {
                 Ok(a) => model.r_uw_inv(&edge, &a),
-                Err(_) => continue,
+                Err(err) => {
+                    // g_u⁻¹ is defined on R² − {0} and the arc avoids 0: an offence.
+                    m.error(OnError::Offence, &err, || {
+                        Witness::new(
+                            format!("arc point q = {}: g_u⁻¹(q) failed: {err}", fmt(q)),
+                            json!({"q": pt(q)}),
+                        )
+                    });
+                    continue;
+                }
             };
             if !in_omega_v_punctured(edge.m_u, &x).is_true() {
                 m.offend(|| {
@@ -1203,7 +1173,7 @@ pub fn check_l4_2_3<S: Scalar, M: Ppm<S>>(
                 .as_ref()
                 .map(|y| y.norm2().sqrt().sub(&rw).abs().to_f64())
                 .unwrap_or(f64::INFINITY);
-            m.dev(dev, || Witness::new(format!("x = {} ∈ ∂Ω_uw ∩ Ω_u ({edge:?}): g_(u,w)(x) = {} is at distance {dev:.3e} from ∂Ω_w", fmt(&x), y.as_ref().map(fmt).unwrap_or_default()), json!({"x": pt(&x), "dev": dev})));
+            m.deviation(dev, || Witness::new(format!("x = {} ∈ ∂Ω_uw ∩ Ω_u ({edge:?}): g_(u,w)(x) = {} is at distance {dev:.3e} from ∂Ω_w", fmt(&x), y.as_ref().map(fmt).unwrap_or_default()), json!({"x": pt(&x), "dev": dev})));
         }
     }
     m.finish(format!("{} arc points per orientation (exactly on ∂D ∩ int C, pulled back); tolerance = {COMPOSITE_COND}·amp·ε", arc.len()))
@@ -1296,19 +1266,19 @@ pub fn check_l4_2_1_l4_2_2<S: Scalar, M: Ppm<S>>(
 ) -> Vec<CheckResult> {
     let eps = unit_eps::<S>(prec);
     let tol = COMPOSITE_COND * amp(&[t.m_u, t.m_w, t.m_x]) * eps;
-    let mut l1 = Meter::new(
+    let mut l1 = Check::sampled(
         "L4.2.1",
         &format!("φ_xu⁻¹(Ω_xu ∩ Ω_xw) ⊆ Ω_uw ({t:?})"),
         seed,
         tol,
     );
-    let mut l2 = Meter::new(
+    let mut l2 = Check::sampled(
         "L4.2.2",
         &format!("φ_wu = φ_wx∘φ_xu on φ_xu⁻¹(Ω_xu ∩ Ω_xw) ({t:?})"),
         seed,
         tol,
     );
-    let mut eq = Meter::new(
+    let mut eq = Check::sampled(
         "L4.2.1-proof-equality",
         &format!("Ω_ux ∩ Ω_uw ⊆ φ_xu⁻¹(Ω_xu ∩ Ω_xw) ({t:?})"),
         seed,
@@ -1343,7 +1313,7 @@ pub fn check_l4_2_1_l4_2_2<S: Scalar, M: Ppm<S>>(
         let t2 = model.phi_wu(&p_ux, &p);
         let dt = t2.as_ref().map(|a| a.dist_f64(tt)).unwrap_or(f64::INFINITY);
         let in_uw = model.in_omega_uw_literal(&uw, &p);
-        l1.dev(if in_uw.is_false() { f64::INFINITY } else { dt }, || {
+        l1.deviation(if in_uw.is_false() { f64::INFINITY } else { dt }, || {
             Witness::new(format!("t = {} ∈ Ω_xu ∩ Ω_xw, p = φ_xu⁻¹(t) = {}: p ∈ Ω_uw is {in_uw:?}; |φ_xu(p) − t| = {dt:.3e}", fmt(tt), fmt(&p)), json!({"t": pt(tt), "p": pt(&p), "in_uw": format!("{in_uw:?}")}))
         });
         if !in_uw.is_true() {
@@ -1355,7 +1325,7 @@ pub fn check_l4_2_1_l4_2_2<S: Scalar, M: Ppm<S>>(
             (Ok(a), Ok(b)) => a.dist_f64(b),
             _ => f64::INFINITY,
         };
-        l2.dev(dev, || {
+        l2.deviation(dev, || {
             Witness::new(
                 format!("p = {}: φ_wu(p) = {}, φ_wx(φ_xu(p)) = {} (difference {dev:.3e})", fmt(&p), lhs.as_ref().map(fmt).unwrap_or_else(|e| e.to_string()), rhs.as_ref().map(fmt).unwrap_or_else(|e| e.to_string())),
                 json!({"p": pt(&p), "lhs": lhs.as_ref().map(pt).ok(), "rhs": rhs.as_ref().map(pt).ok(), "dev": dev}),
@@ -1375,7 +1345,7 @@ pub fn check_l4_2_1_l4_2_2<S: Scalar, M: Ppm<S>>(
             .as_ref()
             .map(|a| !model.in_omega_uw_literal(&xw, a).is_false())
             .unwrap_or(false);
-        eq.ok(ok, || {
+        eq.holds(ok, || {
             Witness::new(
                 format!(
                     "p = {} ∈ Ω_ux ∩ Ω_uw but φ_xu(p) = {} ∉ Ω_xw",
@@ -1412,13 +1382,13 @@ pub fn check_p4_2_4<S: Scalar, M: Ppm<S>>(
 ) -> Vec<CheckResult> {
     let eps = unit_eps::<S>(prec);
     let tol = COMPOSITE_COND * amp(&[e_uw.m_u]) * eps;
-    let mut a = Meter::new(
+    let mut a = Check::sampled(
         "P4.2.4(i,ii)",
         &format!("M_∓π/3∘g_u∘R(Ω_uw/uz) = g_u∘R(Ω_uz/uw) ({e_uw:?}, {e_uz:?})"),
         seed,
         tol,
     );
-    let mut b = Meter::new(
+    let mut b = Check::sampled(
         "P4.2.4(iii,iv)",
         &format!("Ω_uz = M_{{−2π/m_u}}(Ω_uw), Ω_uw = M_{{2π/m_u}}(Ω_uz) ({e_uw:?}, {e_uz:?})"),
         seed,
@@ -1453,24 +1423,40 @@ pub fn check_p4_2_4<S: Scalar, M: Ppm<S>>(
         (e_uz, 1i64, &dom_z, &dom_w, e_uz, e_uw, "(ii)"),
     ] {
         for (_, p) in from.iter() {
-            if let Ok(q) = model.g_v(mu, &model.r_uw(frame, p)) {
-                let y = rotate_frac(&q, rot, 6);
-                let ok = in_image(&y, frame, to_e);
-                a.ok(ok, || Witness::new(format!("{label} ⊆: p = {} ∈ Ω of {from_e:?}; M(g_u∘R(p)) = {} is not in g_u∘R(Ω of {to_e:?})", fmt(p), fmt(&y)), json!({"p": pt(p), "y": pt(&y)})));
+            match model.g_v(mu, &model.r_uw(frame, p)) {
+                Err(err) => a.error(OnError::Offence, &err, || {
+                    Witness::new(
+                        format!("{label}: g_u∘R({}) failed: {err}", fmt(p)),
+                        json!({"p": pt(p)}),
+                    )
+                }),
+                Ok(q) => {
+                    let y = rotate_frac(&q, rot, 6);
+                    let ok = in_image(&y, frame, to_e);
+                    a.holds(ok, || Witness::new(format!("{label} ⊆: p = {} ∈ Ω of {from_e:?}; M(g_u∘R(p)) = {} is not in g_u∘R(Ω of {to_e:?})", fmt(p), fmt(&y)), json!({"p": pt(p), "y": pt(&y)})));
+                }
             }
         }
         for (_, p) in to.iter() {
-            if let Ok(y) = model.g_v(mu, &model.r_uw(frame, p)) {
-                let y0 = rotate_frac(&y, -rot, 6);
-                let ok = in_image(&y0, frame, from_e);
-                a.ok(ok, || Witness::new(format!("{label} ⊇: p' = {} ∈ Ω of {to_e:?} has g_u∘R(p') = {} (θ = {:.6}) not in M(g_u∘R(Ω of {from_e:?}))", fmt(p), fmt(&y), angle_of(&y).unwrap_or(0.0)), json!({"p": pt(p), "y": pt(&y)})));
+            match model.g_v(mu, &model.r_uw(frame, p)) {
+                Err(err) => a.error(OnError::Offence, &err, || {
+                    Witness::new(
+                        format!("{label}: g_u∘R({}) failed: {err}", fmt(p)),
+                        json!({"p": pt(p)}),
+                    )
+                }),
+                Ok(y) => {
+                    let y0 = rotate_frac(&y, -rot, 6);
+                    let ok = in_image(&y0, frame, from_e);
+                    a.holds(ok, || Witness::new(format!("{label} ⊇: p' = {} ∈ Ω of {to_e:?} has g_u∘R(p') = {} (θ = {:.6}) not in M(g_u∘R(Ω of {from_e:?}))", fmt(p), fmt(&y), angle_of(&y).unwrap_or(0.0)), json!({"p": pt(p), "y": pt(&y)})));
+                }
             }
         }
     }
     for (_, p) in &dom_w {
         let q = rotate_frac(p, -1, mu as i64);
         let ok = !model.in_omega_uw_literal(e_uz, &q).is_false();
-        b.ok(ok, || {
+        b.holds(ok, || {
             Witness::new(
                 format!(
                     "(iii): p = {} ∈ Ω_uw but M_{{−2π/m}}(p) = {} ∉ Ω_uz",
@@ -1484,7 +1470,7 @@ pub fn check_p4_2_4<S: Scalar, M: Ppm<S>>(
     for (_, p) in &dom_z {
         let q = rotate_frac(p, 1, mu as i64);
         let ok = !model.in_omega_uw_literal(e_uw, &q).is_false();
-        b.ok(ok, || {
+        b.holds(ok, || {
             Witness::new(
                 format!(
                     "(iv): p = {} ∈ Ω_uz but M_{{2π/m}}(p) = {} ∉ Ω_uw",
@@ -1551,7 +1537,7 @@ pub fn check_star_overlaps<S: Scalar, M: Ppm<S>>(
     prec: u32,
 ) -> Vec<CheckResult> {
     let suffix = if use_lens { "[sec6.1.3]" } else { "" };
-    let mut a = Meter::new(
+    let mut a = Check::sampled(
         &format!("C5.4-at-most-two{suffix}"),
         &format!(
             "at most two Ω_xn contain any point of Ω_x (m_x = {})",
@@ -1560,7 +1546,7 @@ pub fn check_star_overlaps<S: Scalar, M: Ppm<S>>(
         seed,
         0.0,
     );
-    let mut b = Meter::new(
+    let mut b = Check::sampled(
         &format!("C4.2-nonadjacent-disjoint{suffix}"),
         &format!("Ω_xa ∩ Ω_xb = ∅ for non-adjacent a, b (m_x = {})", star.m),
         seed,
@@ -1588,7 +1574,7 @@ pub fn check_star_overlaps<S: Scalar, M: Ppm<S>>(
             })
             .map(|e| e.i)
             .collect();
-        a.ok(inside.len() <= 2, || {
+        a.holds(inside.len() <= 2, || {
             Witness::new(
                 format!("p = {} lies in Ω_xn for labels {inside:?}", fmt(p)),
                 json!({"p": pt(p), "labels": inside}),
@@ -1598,11 +1584,11 @@ pub fn check_star_overlaps<S: Scalar, M: Ppm<S>>(
             for lb in &inside[ka + 1..] {
                 let d = (*la as i64 - *lb as i64).rem_euclid(mm);
                 let adjacent = d == 1 || d == mm - 1;
-                b.ok(adjacent, || Witness::new(format!("p = {} lies in Ω_xa ∩ Ω_xb for non-adjacent labels {la}, {lb} (θ = {:.6})", fmt(p), angle_of(p).unwrap_or(0.0)), json!({"p": pt(p), "a": la, "b": lb})));
+                b.holds(adjacent, || Witness::new(format!("p = {} lies in Ω_xa ∩ Ω_xb for non-adjacent labels {la}, {lb} (θ = {:.6})", fmt(p), angle_of(p).unwrap_or(0.0)), json!({"p": pt(p), "a": la, "b": lb})));
             }
         }
         if inside.len() < 2 {
-            b.r.examined += 1;
+            b.examined(1);
         }
     }
     let note = format!(

@@ -18,7 +18,7 @@ use super::scalar_ext::SurfaceScalar;
 use super::target::PnTriangles;
 use crate::construction::{Mp, PpmGluing, Scalar, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{dev_max, Check, CheckResult, OnError, Verdict, Witness};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;
@@ -144,8 +144,15 @@ fn random_in_omega(rng: &mut ChaCha8Rng, radius: f64, frac: f64) -> [f64; 2] {
     }
 }
 
-/// Random points of Ω_v lying in some gluing domain Ω_vu, u ≠ v, with their terms.
-fn overlap_points(pps: &Pps, v: VertexId, rng: &mut ChaCha8Rng, n: usize) -> Vec<[f64; 2]> {
+/// Random points of Ω_v lying in some gluing domain Ω_vu, u ≠ v. A failed J_v(p) is an
+/// evaluation error of `chk` (an offence: p ∈ Ω_v is in the domain of Eq. 5.1).
+fn overlap_points(
+    pps: &Pps,
+    v: VertexId,
+    rng: &mut ChaCha8Rng,
+    n: usize,
+    chk: &mut Check,
+) -> Vec<[f64; 2]> {
     let c = pps.consts_f64();
     let r = c.degree(pps.degree(v)).map(|d| d.radius).unwrap_or(0.5);
     let mut out = Vec::with_capacity(n);
@@ -153,10 +160,15 @@ fn overlap_points(pps: &Pps, v: VertexId, rng: &mut ChaCha8Rng, n: usize) -> Vec
     while out.len() < n && tries < 50 * n {
         tries += 1;
         let p = random_in_omega(rng, r, 0.999);
-        if let Ok(t) = pps.terms(v, &P2::new(p[0], p[1]), c, None) {
-            if t.len() > 1 {
-                out.push(p);
-            }
+        match pps.terms(v, &P2::new(p[0], p[1]), c, None) {
+            Ok(t) if t.len() > 1 => out.push(p),
+            Ok(_) => {}
+            Err(e) => chk.error(OnError::Offence, &e, || {
+                Witness::new(
+                    format!("v={v} p={p:?}: J_v(p) failed: {e}"),
+                    json!({"v": v, "p": p}),
+                )
+            }),
         }
     }
     out
@@ -165,21 +177,24 @@ fn overlap_points(pps: &Pps, v: VertexId, rng: &mut ChaCha8Rng, n: usize) -> Vec
 /// Sec. 5.2: per-degree least-squares summary (informational; always holds unless a degree
 /// could not be factored).
 pub fn check_fit(pps: &Pps) -> CheckResult {
-    let mut r = CheckResult::new("D5.2.1", "shape functions fitted (rank, κ per degree)");
+    let mut r = Check::new("D5.2.1", "shape functions fitted (rank, κ per degree)");
     let mut notes = Vec::new();
+    let mut deficient = false;
     for f in pps.fit_info() {
-        r.examined += 1;
+        r.examined(1);
         notes.push(format!(
             "m={} l={} rows={} unknowns={} rank={} κ={:.2e} κ_eff={:.2e}",
             f.m, f.l, f.rows, f.unknowns, f.rank, f.condition, f.effective_condition
         ));
-        if f.rank < f.unknowns {
-            r.verdict = Verdict::HoldsRestricted {
-                domain: "rank-deficient degrees solved in the minimum-norm sense".into(),
-            };
-        }
+        deficient |= f.rank < f.unknowns;
     }
-    r.with_note(notes.join("; "))
+    let mut r = r.finish(notes.join("; "));
+    if deficient && r.verdict == Verdict::Holds {
+        r.verdict = Verdict::HoldsRestricted {
+            domain: "rank-deficient degrees solved in the minimum-norm sense".into(),
+        };
+    }
+    r
 }
 
 /// D5.4.1: the production membership test / transition (branch + lens) agrees with the
@@ -189,47 +204,45 @@ pub fn check_membership_literal(
     g: &PpmGluing,
     opts: &SurfaceCheckOptions,
 ) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         "D5.4.1",
         "Γ_uv, Ψ_uv domains: p ∈ Ω_vu and φ_uv(p) agree with literal Def. 4.1.9/4.1.10",
-    );
+    )
+    .with_seed(opts.seed ^ 0x51);
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x51);
     let c = pps.consts_f64();
-    let mut worst = 0.0f64;
-    let mut tol_max = 0.0f64;
     for v in examined_vertices(pps, opts.max_vertices.map(|n| n.min(200)).or(Some(200))) {
         let m = pps.degree(v);
         let rad = c.degree(m).map(|d| d.radius).unwrap_or(0.5);
         let tol = COND * (m as f64 / 6.0).max(1.0) * f64::EPSILON;
-        tol_max = tol_max.max(tol);
         for _ in 0..opts.samples_per_vertex {
             let p = random_in_omega(&mut rng, rad, 1.0);
             let pp = P2::new(p[0], p[1]);
             for i in 0..m {
                 let u = pps.link(v, i);
-                r.examined += 1;
-                let lit = g
-                    .in_omega_uw(v, u, &pp)
-                    .map(|t| t.is_true())
-                    .unwrap_or(false);
-                let ours = pps.phi_label(v, i, &pp, c).ok().flatten();
+                let lit = g.in_omega_uw(v, u, &pp).map(|t| t.is_true());
+                let ours = pps.phi_label(v, i, &pp, c);
+                let fail = |what: &str, e: &dyn std::fmt::Display| {
+                    let text = format!("v={v} u={u} p={p:?}: {what} failed: {e}");
+                    move || Witness::new(text, json!({"v": v, "u": u, "p": p}))
+                };
                 match (lit, ours) {
-                    (true, Some(q)) => {
-                        if let Ok(ql) = g.phi(u, v, &pp) {
+                    (Err(e), _) => r.error(OnError::Offence, &e, fail("literal Def. 4.1.9", &e)),
+                    (_, Err(e)) => r.error(OnError::Offence, &e, fail("production φ", &e)),
+                    (Ok(true), Ok(Some(q))) => match g.phi(u, v, &pp) {
+                        Ok(ql) => {
                             let d = ql.dist_f64(&q);
-                            worst = worst.max(d);
-                            if d > tol {
-                                r.offend(|| {
-                                    Witness::new(
-                                        format!("v={v} u={u} p={p:?}: φ differs by {d:.3e}"),
-                                        json!({"v": v, "u": u, "p": p, "dev": d}),
-                                    )
-                                });
-                            }
+                            r.deviation_within(d, tol, || {
+                                Witness::new(
+                                    format!("v={v} u={u} p={p:?}: φ differs by {d:.3e}"),
+                                    json!({"v": v, "u": u, "p": p, "dev": d}),
+                                )
+                            });
                         }
-                    }
-                    (false, None) => {}
-                    (a, b) => r.offend(|| {
+                        Err(e) => r.error(OnError::Offence, &e, fail("literal Def. 4.1.10", &e)),
+                    },
+                    (Ok(false), Ok(None)) => r.examined(1),
+                    (Ok(a), Ok(b)) => r.holds(false, || {
                         Witness::new(
                             format!(
                                 "v={v} (m={m}) u={u} p={p:?}: literal {a}, production {}",
@@ -242,10 +255,7 @@ pub fn check_membership_literal(
             }
         }
     }
-    r.seed = Some(opts.seed ^ 0x51);
-    r.worst_deviation = Some(worst);
-    r.tolerance = Some(tol_max);
-    r
+    r.finish("")
 }
 
 /// T5.4.1 / condition (C) of Def. 3.5.1: θ_v(p) = θ_u(φ_uv(p)) for p ∈ Ω_vu, in f64.
@@ -283,144 +293,136 @@ fn check_c_generic<S: SurfaceScalar>(
     per_vertex: usize,
 ) -> CheckResult {
     let eps = S::from_i64(1, c.prec).epsilon();
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         id,
         format!(
             "condition (C): θ_v = θ_u∘φ_uv on Ω_vu ({})",
             S::from_i64(0, c.prec).type_name()
         ),
-    );
+    )
+    .with_seed(opts.seed);
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed);
-    let mut worst = 0.0f64;
     let mut worst_rel = 0.0f64;
-    let mut tol_max = 0.0f64;
     for v in vs {
         let tol = tolerance(pps, v, eps);
-        tol_max = tol_max.max(tol);
-        for p in overlap_points(pps, v, &mut rng, per_vertex) {
+        for p in overlap_points(pps, v, &mut rng, per_vertex, &mut r) {
             let pp = P2::new(S::from_f64(p[0], c.prec), S::from_f64(p[1], c.prec));
             let (tv, terms) = match (pps.theta(v, &pp, c), pps.terms(v, &pp, c, None)) {
                 (Ok(a), Ok(b)) => (a, b),
                 (Err(e), _) | (_, Err(e)) => {
-                    r.offend(|| {
+                    r.error(OnError::Offence, &e, || {
                         Witness::new(format!("v={v} p={p:?}: {e}"), json!({"v": v, "p": p}))
                     });
                     continue;
                 }
             };
             for t in terms.iter().filter(|t| t.u != v) {
-                r.examined += 1;
-                match pps.theta(t.u, &t.q, c) {
+                let u = t.u;
+                match pps.theta(u, &t.q, c) {
                     Ok(tu) => {
                         let d = dist3(&tv, &tu);
-                        worst = worst.max(d);
-                        worst_rel = worst_rel.max(d / tol);
-                        if d > tol {
-                            let (u, q) = (t.u, t.q.to_f64());
-                            r.offend(|| {
-                                Witness::new(
-                                    format!("v={v} u={u} p={p:?} φ_uv(p)={q:?}: |θ_v − θ_u∘φ_uv| = {d:.3e} > {tol:.3e}"),
-                                    json!({"v": v, "u": u, "p": p, "q": q, "dev": d, "tol": tol}),
-                                )
-                            });
-                        }
-                    }
-                    Err(e) => {
-                        let u = t.u;
-                        r.offend(|| {
+                        worst_rel = dev_max(worst_rel, d / tol);
+                        let q = t.q.to_f64();
+                        r.deviation_within(d, tol, || {
                             Witness::new(
-                                format!("v={v} u={u}: θ_u(φ_uv(p)) failed: {e}"),
-                                json!({"v": v, "u": u, "p": p}),
+                                format!("v={v} u={u} p={p:?} φ_uv(p)={q:?}: |θ_v − θ_u∘φ_uv| = {d:.3e} > {tol:.3e}"),
+                                json!({"v": v, "u": u, "p": p, "q": q, "dev": d, "tol": tol}),
                             )
                         });
                     }
+                    Err(e) => r.error(OnError::Offence, &e, || {
+                        Witness::new(
+                            format!("v={v} u={u}: θ_u(φ_uv(p)) failed: {e}"),
+                            json!({"v": v, "u": u, "p": p}),
+                        )
+                    }),
                 }
             }
         }
     }
-    r.seed = Some(opts.seed);
-    r.worst_deviation = Some(worst);
-    r.tolerance = Some(tol_max);
-    r.with_note(format!(
+    r.finish(format!(
         "ε = {eps:.3e}; tolerance = {COND}·max(1,m/6)·l·ε·S (S = max |control point| of the patches involved); worst deviation/tolerance = {worst_rel:.3e}"
     ))
 }
 
 /// C5.4-weights-sum-1: ω_uv(p) ≥ 0 and Σ_u ω_uv(p) = 1.
 pub fn check_weights(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
-    let mut r = CheckResult::new("C5.4-weights-sum-1", "ω_uv ≥ 0 and Σ_u ω_uv = 1 (Eq. 5.1)");
+    let tol = 8.0 * f64::EPSILON;
+    let mut r = Check::sampled(
+        "C5.4-weights-sum-1",
+        "ω_uv ≥ 0 and Σ_u ω_uv = 1 (Eq. 5.1)",
+        opts.seed ^ 0x77,
+        tol,
+    );
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x77);
     let c = pps.consts_f64();
-    let tol = 8.0 * f64::EPSILON;
-    let mut worst = 0.0f64;
     for v in examined_vertices(pps, opts.max_vertices) {
         let rad = c.degree(pps.degree(v)).map(|d| d.radius).unwrap_or(0.5);
         for _ in 0..opts.samples_per_vertex {
             let p = random_in_omega(&mut rng, rad, 1.0);
-            r.examined += 1;
             match pps.weights(v, &P2::new(p[0], p[1]), c) {
                 Ok(w) => {
                     let s: f64 = w.iter().map(|x| x.1).sum();
-                    let neg = w.iter().any(|x| x.1 < 0.0 || !x.1.is_finite());
-                    let d = (s - 1.0).abs();
-                    worst = worst.max(if d.is_finite() { d } else { f64::INFINITY });
-                    if neg || !(d <= tol) {
-                        r.offend(|| {
-                            Witness::new(
-                                format!("v={v} p={p:?}: weights {w:?}, sum {s}"),
-                                json!({"v": v, "p": p, "sum": s}),
-                            )
-                        });
+                    let neg = w.iter().any(|x| !(x.1 >= 0.0 && x.1.is_finite()));
+                    let wit = || {
+                        Witness::new(
+                            format!("v={v} p={p:?}: weights {w:?}, sum {s}"),
+                            json!({"v": v, "p": p, "sum": s}),
+                        )
+                    };
+                    if neg {
+                        r.holds(false, wit);
+                    } else {
+                        r.deviation((s - 1.0).abs(), wit);
                     }
                 }
-                Err(e) => r.offend(|| {
+                Err(e) => r.error(OnError::Offence, &e, || {
                     Witness::new(format!("v={v} p={p:?}: {e}"), json!({"v": v, "p": p}))
                 }),
             }
         }
     }
-    r.seed = Some(opts.seed ^ 0x77);
-    r.worst_deviation = Some(worst);
-    r.tolerance = Some(tol);
-    r
+    r.finish("")
 }
 
 /// C5.4-J-le-3: |J_v(p)| ≤ 3 ("at most two p-domains overlap with Ω_v at any p").
 pub fn check_j_le_3(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
-    let mut r = CheckResult::new("C5.4-J-le-3", "|J_v(p)| ≤ 3 for p ∈ Ω_v (Sec. 5.4)");
+    let mut r = Check::sampled(
+        "C5.4-J-le-3",
+        "|J_v(p)| ≤ 3 for p ∈ Ω_v (Sec. 5.4)",
+        opts.seed ^ 0x33,
+        3.0,
+    );
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x33);
     let c = pps.consts_f64();
-    let mut worst = 0usize;
     for v in examined_vertices(pps, opts.max_vertices) {
         let m = pps.degree(v);
         let rad = c.degree(m).map(|d| d.radius).unwrap_or(0.5);
-        // Also the known worst region for the lens test: near the ray opposite each spoke.
         for _ in 0..opts.samples_per_vertex {
             let p = random_in_omega(&mut rng, rad, 1.0);
-            r.examined += 1;
-            if let Ok(t) = pps.terms(v, &P2::new(p[0], p[1]), c, None) {
-                worst = worst.max(t.len());
-                if t.len() > 3 {
+            match pps.terms(v, &P2::new(p[0], p[1]), c, None) {
+                Ok(t) => r.deviation(t.len() as f64, || {
                     let us: Vec<u32> = t.iter().map(|t| t.u.0).collect();
-                    r.offend(|| {
-                        Witness::new(
-                            format!("v={v} (m={m}) p={p:?}: J_v(p) = {us:?}"),
-                            json!({"v": v, "m": m, "p": p, "J": us}),
-                        )
-                    });
-                }
+                    Witness::new(
+                        format!("v={v} (m={m}) p={p:?}: J_v(p) = {us:?}"),
+                        json!({"v": v, "m": m, "p": p, "J": us}),
+                    )
+                }),
+                Err(e) => r.error(OnError::Offence, &e, || {
+                    Witness::new(
+                        format!("v={v} p={p:?}: J_v(p) failed: {e}"),
+                        json!({"v": v, "p": p}),
+                    )
+                }),
             }
         }
     }
-    r.seed = Some(opts.seed ^ 0x33);
-    r.worst_deviation = Some(worst as f64);
-    r.tolerance = Some(3.0);
-    r.with_note(format!("membership: {:?}", pps.options.membership))
+    r.finish(format!("membership: {:?}", pps.options.membership))
 }
 
 /// C5.3-support: supp γ_v = closure of Ω_v: γ_v > 0 on Ω_v, = 0 outside (f64 and Mp).
 pub fn check_support(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         "C5.3-support",
         "γ_v > 0 exactly on Ω_v (supp γ_v = closure of Ω_v)",
     );
@@ -441,27 +443,34 @@ pub fn check_support(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
                 let t = rad * (1.0 + sgn * 10f64.powi(-k - 1));
                 for a in [0.1f64, 1.3, 2.9] {
                     let p = [t * a.cos(), t * a.sin()];
-                    r.examined += 1;
-                    let inside = pps.in_omega(v, &P2::new(p[0], p[1]), c).unwrap_or(false);
-                    let gm = pps
-                        .gamma(
-                            v,
-                            &P2::new(Mp::new(opts.mp_prec, p[0]), Mp::new(opts.mp_prec, p[1])),
-                            &cm,
+                    let fail = |what: &str, e: &dyn std::fmt::Display| {
+                        let text = format!("m={m} p={p:?}: {what} failed: {e}");
+                        move || Witness::new(text, json!({"m": m, "p": p}))
+                    };
+                    let inside = match pps.in_omega(v, &P2::new(p[0], p[1]), c) {
+                        Ok(x) => x,
+                        Err(e) => {
+                            r.error(OnError::Offence, &e, fail("p ∈ Ω_v", &e));
+                            continue;
+                        }
+                    };
+                    let mp = P2::new(Mp::new(opts.mp_prec, p[0]), Mp::new(opts.mp_prec, p[1]));
+                    let gm = match pps.gamma(v, &mp, &cm) {
+                        Ok(g) => g.0.is_sign_positive() && !g.0.is_zero(),
+                        Err(e) => {
+                            r.error(OnError::Offence, &e, fail("γ_v (Mp)", &e));
+                            continue;
+                        }
+                    };
+                    r.holds(inside == gm, || {
+                        Witness::new(
+                            format!("m={m} p={p:?}: p ∈ Ω_v is {inside}, γ_v(p) > 0 (mp) is {gm}"),
+                            json!({"m": m, "p": p}),
                         )
-                        .map(|g| g.0.is_sign_positive() && !g.0.is_zero())
-                        .unwrap_or(false);
+                    });
+                    // The f64 underflow gap is a measurement; an f64 error there is not a
+                    // statement about supp γ_v (the Mp evaluation above decides it).
                     let gf = pps.gamma(v, &P2::new(p[0], p[1]), c).unwrap_or(0.0);
-                    if inside != gm {
-                        r.offend(|| {
-                            Witness::new(
-                                format!(
-                                    "m={m} p={p:?}: p ∈ Ω_v is {inside}, γ_v(p) > 0 (mp) is {gm}"
-                                ),
-                                json!({"m": m, "p": p}),
-                            )
-                        });
-                    }
                     if inside && gf == 0.0 {
                         f64_gap = f64_gap.max(rad - (p[0] * p[0] + p[1] * p[1]).sqrt());
                     }
@@ -469,7 +478,8 @@ pub fn check_support(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
             }
         }
     }
-    if !r.failed() && f64_gap > 0.0 {
+    let mut r = r.finish("");
+    if r.verdict == Verdict::Holds && f64_gap > 0.0 {
         r.verdict = Verdict::HoldsRestricted {
             domain: format!("in f64, γ_v underflows to 0 on the rim annulus of width ≤ {f64_gap:.1e} inside Ω_v (e^(2s) overflows); holds in Mp"),
         };
@@ -479,90 +489,118 @@ pub fn check_support(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
 }
 
 /// C5.4-smooth: derivatives of order ≤ 3 of θ_v and of θ_u∘φ_uv agree on Ω_vu (two charts).
+/// Each pair (p, u) is one sample; its deviation is the largest coefficient difference relative
+/// to that coefficient's tolerance (so the tolerance is 1).
 pub fn check_smooth_charts(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::sampled(
         "C5.4-smooth",
         "∂^k θ_v = ∂^k (θ_u∘φ_uv) for k ≤ 3 on Ω_vu (jets)",
+        opts.seed ^ 0x99,
+        1.0,
     );
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x99);
     let cj: Consts<Jet<f64>> = pps.consts(53);
-    let mut worst_rel = 0.0f64;
     let per = (opts.samples_per_vertex / 4).max(2);
     for v in examined_vertices(pps, opts.max_vertices.map(|n| n.min(100)).or(Some(100))) {
         let tol0 = tolerance(pps, v, f64::EPSILON);
-        for p in overlap_points(pps, v, &mut rng, per) {
+        for p in overlap_points(pps, v, &mut rng, per, &mut r) {
             let (x, y) = Jet::variables(p[0], p[1]);
             let pj = P2::new(x, y);
-            let Ok(tv) = pps.theta(v, &pj, &cj) else {
-                continue;
+            let fail = |what: &str, e: &dyn std::fmt::Display| {
+                let text = format!("v={v} p={p:?}: {what} failed: {e}");
+                move || Witness::new(text, json!({"v": v, "p": p}))
             };
-            let Ok(terms) = pps.terms(v, &pj, &cj, None) else {
-                continue;
+            let tv = match pps.theta(v, &pj, &cj) {
+                Ok(t) => t,
+                Err(e) => {
+                    r.error(OnError::Offence, &e, fail("θ_v (jet)", &e));
+                    continue;
+                }
+            };
+            let terms = match pps.terms(v, &pj, &cj, None) {
+                Ok(t) => t,
+                Err(e) => {
+                    r.error(OnError::Offence, &e, fail("J_v (jet)", &e));
+                    continue;
+                }
             };
             for t in terms.iter().filter(|t| t.u != v) {
-                r.examined += 1;
-                let Ok(tu) = pps.theta(t.u, &t.q, &cj) else {
-                    continue;
+                let u = t.u;
+                let tu = match pps.theta(u, &t.q, &cj) {
+                    Ok(x) => x,
+                    Err(e) => {
+                        r.error(OnError::Offence, &e, fail("θ_u∘φ_uv (jet)", &e));
+                        continue;
+                    }
                 };
                 // Compare every coefficient, scaled by the order (derivatives of order k of a
                 // polynomial of degree l on [−L, L] are bounded by (l/L)^k · S).
-                let l = pps.patch(v).1.max(pps.patch(t.u).1) as f64;
+                let l = pps.patch(v).1.max(pps.patch(u).1) as f64;
+                let mut rel = 0.0f64;
+                let mut at = (0, 0, 0.0, 0.0);
                 for (kidx, &(i, j)) in super::jet::MONOMIALS.iter().enumerate().take(JET_LEN) {
-                    let ord = (i + j) as i32;
-                    let tol = tol0 * (4.0 * l).powi(ord);
+                    let tol = tol0 * (4.0 * l).powi((i + j) as i32);
                     let mut d = 0.0f64;
                     for dd in 0..3 {
-                        d = d.max((tv[dd].c[kidx] - tu[dd].c[kidx]).abs());
+                        d = dev_max(d, (tv[dd].c[kidx] - tu[dd].c[kidx]).abs());
                     }
-                    worst_rel = worst_rel.max(d / tol);
-                    if !(d <= tol) {
-                        let u = t.u;
-                        r.offend(|| Witness::new(format!("v={v} u={u} p={p:?}: Taylor coefficient x^{i}y^{j} differs by {d:.3e} > {tol:.3e}"), json!({"v": v, "u": u, "p": p, "i": i, "j": j, "dev": d})));
+                    let q = d / tol;
+                    if q.is_nan() || (!rel.is_nan() && q > rel) {
+                        rel = q;
+                        at = (i, j, d, tol);
                     }
                 }
+                let (i, j, d, tol) = at;
+                r.deviation(rel, || Witness::new(format!("v={v} u={u} p={p:?}: Taylor coefficient x^{i}y^{j} differs by {d:.3e} > {tol:.3e}"), json!({"v": v, "u": u, "p": p, "i": i, "j": j, "dev": d})));
             }
         }
     }
-    r.seed = Some(opts.seed ^ 0x99);
-    r.worst_deviation = Some(worst_rel);
-    r.tolerance = Some(1.0);
-    r.with_note("deviation reported relative to the per-order tolerance tol(C)·(4l)^k")
+    r.finish("deviation reported relative to the per-order tolerance tol(C)·(4l)^k")
 }
 
 /// C5.4-regular (measured, not claimed by the paper): θ_v has a rank-2 Jacobian and the
 /// sampled points show no fold (normal flips relative to the vertex normal of S′).
 pub fn check_regular(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
-    let mut r = CheckResult::new("C5.4-regular", "θ_v regular (rank-2 Jacobian) [measured]");
+    let mut r = Check::new("C5.4-regular", "θ_v regular (rank-2 Jacobian) [measured]")
+        .with_seed(opts.seed ^ 0x1234);
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x1234);
     let cj: Consts<Jet<f64>> = pps.consts(53);
     let c = pps.consts_f64();
+    // The smallest area element relative to S² (NaN-propagating: a NaN is the worst).
     let mut worst = f64::INFINITY;
     for v in examined_vertices(pps, opts.max_vertices) {
         let rad = c.degree(pps.degree(v)).map(|d| d.radius).unwrap_or(0.5);
         let scale = local_scale(pps, &[v]);
         for _ in 0..(opts.samples_per_vertex / 4).max(2) {
             let p = random_in_omega(&mut rng, rad, 0.99);
-            r.examined += 1;
-            if let Ok(g) = pps.theta_geometry(v, p, &cj) {
-                let rel = g.area_element / (scale * scale).max(f64::MIN_POSITIVE);
-                worst = worst.min(rel);
-                if !(g.area_element > 1e3 * f64::EPSILON * scale * scale) {
-                    r.offend(|| {
+            match pps.theta_geometry(v, p, &cj) {
+                Ok(g) => {
+                    let rel = g.area_element / (scale * scale).max(f64::MIN_POSITIVE);
+                    worst = if rel.is_nan() || worst.is_nan() {
+                        f64::NAN
+                    } else {
+                        worst.min(rel)
+                    };
+                    r.holds(g.area_element > 1e3 * f64::EPSILON * scale * scale, || {
                         Witness::new(
                             format!("v={v} p={p:?}: ‖θ_x × θ_y‖ = {:.3e}", g.area_element),
                             json!({"v": v, "p": p}),
                         )
                     });
                 }
+                Err(e) => r.error(OnError::Offence, &e, || {
+                    Witness::new(
+                        format!("v={v} p={p:?}: θ_v geometry failed: {e}"),
+                        json!({"v": v, "p": p}),
+                    )
+                }),
             }
         }
     }
-    r.seed = Some(opts.seed ^ 0x1234);
+    let mut r =
+        r.finish_as_warning("not guaranteed by the paper (Sec. 5.4); reported as a measurement");
     r.worst_deviation = Some(worst);
-    if r.failed() {
-        r.verdict = Verdict::Warning;
-    }
-    r.with_note("not guaranteed by the paper (Sec. 5.4); reported as a measurement")
+    r
 }
 
 /// Sec. 6.1.4 consistency cases (1)–(4): the chart points of q′ in two (three) charts are
@@ -586,19 +624,27 @@ pub fn check_eval_cases(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckResul
             "q′ ∈ int C ∩ int D ∩ int E: all three agree",
         ),
     ];
-    let mut res: Vec<CheckResult> = names
+    let mut res: Vec<Check> = names
         .iter()
-        .map(|(i, n)| CheckResult::new(*i, *n))
+        .map(|(i, n)| Check::new(*i, *n).with_seed(opts.seed ^ 0x6141))
         .collect();
     let c = pps.consts_f64();
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x6141);
     let nf = pps.num_faces();
     let nfaces = opts.max_vertices.map(|n| n.min(nf)).unwrap_or(nf);
-    let mut worst = [0.0f64; 4];
-    let mut tolmax = [0.0f64; 4];
     for fi in 0..nfaces {
         let f = FaceId(((fi as f64) * nf as f64 / nfaces as f64) as u32);
-        let Ok([u, w, x]) = pps.face(f) else { continue };
+        let [u, w, x] = match pps.face(f) {
+            Ok(t) => t,
+            Err(e) => {
+                for r in &mut res {
+                    r.error(OnError::Offence, &e, || {
+                        Witness::new(format!("face {f}: {e}"), json!({"face": f}))
+                    });
+                }
+                continue;
+            }
+        };
         let tol = tolerance(pps, u, f64::EPSILON)
             .max(tolerance(pps, w, f64::EPSILON))
             .max(tolerance(pps, x, f64::EPSILON));
@@ -635,12 +681,16 @@ pub fn check_eval_cases(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckResul
             };
             for (case, ca, cb) in pairs {
                 let r = &mut res[case];
-                r.examined += 1;
-                tolmax[case] = tolmax[case].max(tol);
                 let (Ok((va, qa)), Ok((vb, qb))) = (
                     pps.chart_point(f, ca, &qp, c),
                     pps.chart_point(f, cb, &qp, c),
                 ) else {
+                    r.error(OnError::Offence, "chart point", || {
+                        Witness::new(
+                            format!("face {f} bary {bary:?}: chart point {ca:?} or {cb:?} failed"),
+                            json!({"face": f, "bary": bary}),
+                        )
+                    });
                     continue;
                 };
                 let mapped = pps.phi(vb, va, &qa, c);
@@ -650,29 +700,27 @@ pub fn check_eval_cases(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckResul
                         let dq = m.dist_f64(&qb);
                         let dt = dist3(&ta, &tb);
                         let qtol = COND * 8.0 * f64::EPSILON;
-                        worst[case] = worst[case].max(dt);
-                        if dq > qtol || dt > tol {
-                            r.offend(|| Witness::new(format!("face {f} [{u},{w},{x}] bary {bary:?} charts {ca:?}/{cb:?}: |φ(q_a) − q_b| = {dq:.3e}, |θ_a − θ_b| = {dt:.3e}"), json!({"face": f, "bary": bary, "dq": dq, "dt": dt})));
+                        let w = || Witness::new(format!("face {f} [{u},{w},{x}] bary {bary:?} charts {ca:?}/{cb:?}: |φ(q_a) − q_b| = {dq:.3e}, |θ_a − θ_b| = {dt:.3e}"), json!({"face": f, "bary": bary, "dq": dq, "dt": dt}));
+                        if dq.is_finite() && dq <= qtol {
+                            r.deviation_within(dt, tol, w);
+                        } else {
+                            r.holds(false, w);
                         }
                     }
-                    (Ok(None), _, _) => r.offend(|| Witness::new(format!("face {f} bary {bary:?}: q in chart {ca:?} is not in the gluing domain towards {cb:?}"), json!({"face": f, "bary": bary}))),
-                    _ => r.offend(|| Witness::new(format!("face {f} bary {bary:?}: evaluation failed"), json!({"face": f, "bary": bary}))),
+                    (Ok(None), _, _) => r.holds(false, || Witness::new(format!("face {f} bary {bary:?}: q in chart {ca:?} is not in the gluing domain towards {cb:?}"), json!({"face": f, "bary": bary}))),
+                    _ => r.error(OnError::Offence, "φ or θ", || Witness::new(format!("face {f} bary {bary:?}: evaluation failed"), json!({"face": f, "bary": bary}))),
                 }
             }
         }
     }
-    for (i, r) in res.iter_mut().enumerate() {
-        r.seed = Some(opts.seed ^ 0x6141);
-        r.worst_deviation = Some(worst[i]);
-        r.tolerance = Some(tolmax[i]);
-    }
-    res
+    res.into_iter().map(|r| r.finish("")).collect()
 }
 
 /// C6.1.4-cover: t ⊂ int C ∪ int D ∪ int E (circles of squared radius `r2` = 3/4 centred at
 /// the corners). Proof: every point of t is within the circumradius 1/√3 < √3/2 of a corner.
 pub fn check_cover(r2: f64, seed: u64, n: usize) -> CheckResult {
-    let mut r = CheckResult::new("C6.1.4-cover", "t ⊂ int C ∪ int D ∪ int E (Sec. 6.1.4)");
+    let mut r =
+        Check::new("C6.1.4-cover", "t ⊂ int C ∪ int D ∪ int E (Sec. 6.1.4)").with_seed(seed ^ 0xC0);
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xC0);
     let s3h = 0.75f64.sqrt();
     let mut worst = 0.0f64;
@@ -696,7 +744,6 @@ pub fn check_cover(r2: f64, seed: u64, n: usize) -> CheckResult {
         pts.push([1.0 - a - b, a, b]);
     }
     for b in pts {
-        r.examined += 1;
         let q = [b[1] * 0.5 + b[2], -b[1] * s3h];
         let d = [
             q[0] * q[0] + q[1] * q[1],
@@ -704,26 +751,27 @@ pub fn check_cover(r2: f64, seed: u64, n: usize) -> CheckResult {
             (q[0] - 0.5).powi(2) + (q[1] + s3h).powi(2),
         ];
         let mind = d.iter().cloned().fold(f64::INFINITY, f64::min);
-        worst = worst.max(mind);
-        if !(mind < r2) {
-            r.offend(|| {
-                Witness::new(
-                    format!("bary {b:?}: q′ = {q:?} in no circle (min squared distance {mind:.4})"),
-                    json!({"bary": b, "q": q}),
-                )
-            });
-        }
+        worst = dev_max(worst, mind);
+        // Strict: the circles are open (int C, int D, int E).
+        r.holds(mind < r2, || {
+            Witness::new(
+                format!("bary {b:?}: q′ = {q:?} in no circle (min squared distance {mind:.4})"),
+                json!({"bary": b, "q": q}),
+            )
+        });
     }
-    r.seed = Some(seed ^ 0xC0);
+    let mut r =
+        r.finish("worst = largest squared distance to the nearest corner (1/3 at the centroid)");
     r.worst_deviation = Some(worst);
     r.tolerance = Some(r2);
-    r.with_note("worst = largest squared distance to the nearest corner (1/3 at the centroid)")
+    r
 }
 
 /// C3.6-approx (measured): max ‖p − h(p)‖ over the vertices of K, h(v) = θ_v(0) (the point
 /// eval gives at the corner v of any triangle).
 pub fn check_approx(pps: &Pps) -> CheckResult {
-    let mut r = CheckResult::new(
+    // A measurement without a bound: only a non-finite distance or a failed θ_v(0) offends.
+    let mut r = Check::new(
         "C3.6-approx",
         "max over vertices ‖v − θ_v(0)‖ (Sec. 3.6 (2)) [measured]",
     );
@@ -732,28 +780,43 @@ pub fn check_approx(pps: &Pps) -> CheckResult {
     let mut hi = [f64::NEG_INFINITY; 3];
     let mut wv = None;
     for v in pps.vertices() {
-        r.examined += 1;
         let p = pps.position(v);
         for d in 0..3 {
             lo[d] = lo[d].min(p[d]);
             hi[d] = hi[d].max(p[d]);
         }
-        if let Ok(t) = pps.theta_f64(v, [0.0, 0.0]) {
-            let d = ((t[0] - p[0]).powi(2) + (t[1] - p[1]).powi(2) + (t[2] - p[2]).powi(2)).sqrt();
-            if d > worst {
-                worst = d;
-                wv = Some(v);
+        match pps.theta_f64(v, [0.0, 0.0]) {
+            Ok(t) => {
+                let d =
+                    ((t[0] - p[0]).powi(2) + (t[1] - p[1]).powi(2) + (t[2] - p[2]).powi(2)).sqrt();
+                if !(d <= worst) {
+                    worst = if d.is_finite() { d } else { f64::INFINITY };
+                    wv = Some(v);
+                }
+                r.holds(d.is_finite(), || {
+                    Witness::new(
+                        format!("vertex {v}: θ_v(0) = {t:?} is not finite"),
+                        json!({"v": v}),
+                    )
+                });
             }
+            Err(e) => r.error(OnError::Offence, &e, || {
+                Witness::new(format!("vertex {v}: θ_v(0) failed: {e}"), json!({"v": v}))
+            }),
         }
     }
     let diag = ((hi[0] - lo[0]).powi(2) + (hi[1] - lo[1]).powi(2) + (hi[2] - lo[2]).powi(2)).sqrt();
-    r.worst_deviation = Some(worst);
-    r.verdict = Verdict::Warning;
-    r.with_note(format!(
+    let mut r = r.finish(format!(
         "ε achieved = {worst:.4e} ({:.3e} of the bounding-box diagonal {diag:.4e}) at vertex {:?}; the paper gives no bound",
         worst / diag.max(f64::MIN_POSITIVE),
         wv
-    ))
+    ));
+    r.worst_deviation = Some(worst);
+    // A measurement: a warning, unless θ_v(0) failed or was not finite (an offence).
+    if r.verdict == Verdict::Holds {
+        r.verdict = Verdict::Warning;
+    }
+    r
 }
 
 /// (C′)/(C″) measured: sample every θ_v(Ω_v) (shrunk to 0.9·r_v), and look for points of
@@ -762,11 +825,11 @@ pub fn check_approx(pps: &Pps) -> CheckResult {
 /// in Ω_uw. A grid hash is the spatial index. Reported as warnings (the paper does not claim them).
 pub fn check_intersections(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckResult> {
     use std::collections::HashMap;
-    let mut cp = CheckResult::new(
+    let mut cp = Check::new(
         "C3.5.1-C'",
         "θ_u(Ω_u) ∩ θ_w(Ω_w) = θ_u(Ω_uw) for edges [u,w] [measured]",
     );
-    let mut cpp = CheckResult::new(
+    let mut cpp = Check::new(
         "C3.5.1-C''",
         "θ_u(Ω_u) ∩ θ_w(Ω_w) = ∅ for non-adjacent u, w [measured]",
     );
@@ -787,21 +850,43 @@ pub fn check_intersections(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckRe
     let delta = el * 0.9 / rings as f64 * 0.05;
     // Samples: (vertex, chart point, 3D point).
     let mut pts: Vec<(VertexId, [f64; 2], [f64; 3])> = Vec::new();
+    let mut broken = false;
     for &v in &vs {
         let rad = c.degree(pps.degree(v)).map(|d| d.radius).unwrap_or(0.5) * 0.9;
-        pts.push((
-            v,
-            [0.0, 0.0],
-            pps.theta_f64(v, [0.0, 0.0]).unwrap_or([f64::NAN; 3]),
-        ));
+        let mut chart = vec![[0.0, 0.0]];
         for ri in 1..=rings {
             for si in 0..spokes {
                 let a = 2.0 * std::f64::consts::PI * (si as f64 + 0.5 * (ri % 2) as f64)
                     / spokes as f64;
                 let rr = rad * ri as f64 / rings as f64;
-                let p = [rr * a.cos(), rr * a.sin()];
-                if let Ok(t) = pps.theta_f64(v, p) {
-                    pts.push((v, p, t));
+                chart.push([rr * a.cos(), rr * a.sin()]);
+            }
+        }
+        for p in chart {
+            // A failed or non-finite θ_v(p) cannot be placed in the grid: an offence of both.
+            match pps.theta_f64(v, p) {
+                Ok(t) if t.iter().all(|x| x.is_finite()) => pts.push((v, p, t)),
+                Ok(t) => {
+                    broken = true;
+                    for r in [&mut cp, &mut cpp] {
+                        r.holds(false, || {
+                            Witness::new(
+                                format!("θ_{v}({p:?}) = {t:?} is not finite"),
+                                json!({"v": v, "p": p}),
+                            )
+                        });
+                    }
+                }
+                Err(e) => {
+                    broken = true;
+                    for r in [&mut cp, &mut cpp] {
+                        r.error(OnError::Offence, &e, || {
+                            Witness::new(
+                                format!("θ_{v}({p:?}) failed: {e}"),
+                                json!({"v": v, "p": p}),
+                            )
+                        });
+                    }
                 }
             }
         }
@@ -815,14 +900,9 @@ pub fn check_intersections(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckRe
     };
     let mut grid: HashMap<(i64, i64, i64), Vec<usize>> = HashMap::new();
     for (i, p) in pts.iter().enumerate() {
-        if p.2.iter().all(|x| x.is_finite()) {
-            grid.entry(key(p.2)).or_default().push(i);
-        }
+        grid.entry(key(p.2)).or_default().push(i);
     }
     for (i, (u, pu, xu)) in pts.iter().enumerate() {
-        if !xu.iter().all(|x| x.is_finite()) {
-            continue;
-        }
         let k0 = key(*xu);
         for dx in -1..=1 {
             for dy in -1..=1 {
@@ -845,8 +925,7 @@ pub fn check_intersections(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckRe
                         if d >= delta {
                             continue;
                         }
-                        if let Some(_) = pps.label(*u, *w) {
-                            cp.examined += 1;
+                        if pps.label(*u, *w).is_some() {
                             let glued = pps
                                 .phi(*w, *u, &P2::new(pu[0], pu[1]), c)
                                 .ok()
@@ -861,7 +940,6 @@ pub fn check_intersections(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckRe
                                 cp.offend(|| Witness::new(format!("θ_{u}({pu:?}) and θ_{w}({pw:?}) are {d:.3e} apart, not glued"), json!({"u": u, "w": w, "pu": pu, "pw": pw, "d": d})));
                             }
                         } else {
-                            cpp.examined += 1;
                             cpp.offend(|| Witness::new(format!("non-adjacent θ_{u}({pu:?}) and θ_{w}({pw:?}) are {d:.3e} apart"), json!({"u": u, "w": w, "pu": pu, "pw": pw, "d": d})));
                         }
                     }
@@ -869,14 +947,21 @@ pub fn check_intersections(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckRe
             }
         }
     }
-    for r in [&mut cp, &mut cpp] {
-        r.tolerance = Some(delta);
-        r.note = format!("{} samples on {} charts (polar grid {rings}×{spokes} on 0.9·Ω_v); near-coincidence threshold δ = {delta:.3e} (5% of the ring spacing); examined = close pairs found", pts.len(), vs.len());
-        if r.failed() {
-            r.verdict = Verdict::Warning;
-        }
-    }
-    vec![cp, cpp]
+    let note = format!("{} samples on {} charts (polar grid {rings}×{spokes} on 0.9·Ω_v), each examined against its grid neighbours; near-coincidence threshold δ = {delta:.3e} (5% of the ring spacing)", pts.len(), vs.len());
+    [cp, cpp]
+        .into_iter()
+        .map(|mut r| {
+            r.examined(pts.len() as u64);
+            let mut r = r.finish(note.clone());
+            r.tolerance = Some(delta);
+            // Measured, not claimed: close unglued pairs are warnings; a failed or
+            // non-finite θ stays an offence.
+            if r.failed() && !broken {
+                r.verdict = Verdict::Warning;
+            }
+            r
+        })
+        .collect()
 }
 
 /// Membership the checks were run with (re-exported for the CLI).
