@@ -6,14 +6,14 @@ use pseudomanifold::construction::maps::*;
 use pseudomanifold::construction::*;
 use pseudomanifold::gluing::data::{GluingData, Idx};
 use pseudomanifold::gluing::sampled::{check_all, SampleConfig};
-use rand::Rng;
-use rand_chacha::ChaCha8Rng;
 use pseudomanifold::mesh::generate::icosahedron;
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::VertexId;
 use pseudomanifold::report::{CheckResult, Verdict};
 use pseudomanifold::surface::checks::*;
 use pseudomanifold::surface::*;
+use rand::Rng;
+use rand_chacha::ChaCha8Rng;
 
 const SEED: u64 = 7;
 const N: usize = 60;
@@ -22,11 +22,23 @@ fn holds(r: &CheckResult) -> bool {
     matches!(r.verdict, Verdict::Holds | Verdict::HoldsRestricted { .. })
 }
 fn assert_fails(r: &CheckResult) {
-    assert!(r.failed(), "{} should fail: {:?} ({})", r.id, r.verdict, r.note);
+    assert!(
+        r.failed(),
+        "{} should fail: {:?} ({})",
+        r.id,
+        r.verdict,
+        r.note
+    );
     assert!(!r.witnesses.is_empty(), "{} failed without a witness", r.id);
 }
 fn assert_reported(r: &CheckResult) {
-    assert!(!holds(r), "{} must not hold: {:?} ({})", r.id, r.verdict, r.note);
+    assert!(
+        !holds(r),
+        "{} must not hold: {:?} ({})",
+        r.id,
+        r.verdict,
+        r.note
+    );
 }
 fn assert_skipped(r: &CheckResult) {
     assert!(
@@ -113,7 +125,9 @@ fn triangle() -> TriangleConfig {
     TriangleConfig::ccw(6, 6, 6, 0, 0, 0).unwrap()
 }
 fn by_id<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
-    rs.iter().find(|r| r.id == id).unwrap_or_else(|| panic!("no {id}"))
+    rs.iter()
+        .find(|r| r.id == id)
+        .unwrap_or_else(|| panic!("no {id}"))
 }
 
 #[test]
@@ -206,7 +220,10 @@ fn x_harness_surface_nan_is_an_offence() {
 #[test]
 fn x_harness_surface_errors_are_reported() {
     // Σ Γ multiplied by 0: θ_v is undefined (SurfaceError::ZeroWeight) everywhere.
-    let p = pps().with_options(Membership::Literal, Some(Fault::Denominator { factor: 0.0 }));
+    let p = pps().with_options(
+        Membership::Literal,
+        Some(Fault::Denominator { factor: 0.0 }),
+    );
     let o = sopts();
     for r in [
         check_condition_c(&p, &o),
@@ -275,7 +292,14 @@ impl GluingData<1> for Planted {
         if !self.in_gluing_domain(i, j, p) {
             return None;
         }
-        let y = p[0] - Self::lo(i) + if i == j { 0.0 } else if i == 0 { -0.5 } else { 0.5 };
+        let y = p[0] - Self::lo(i)
+            + if i == j {
+                0.0
+            } else if i == 0 {
+                -0.5
+            } else {
+                0.5
+            };
         match self.mode {
             0 if i != j && p[0] - Self::lo(i) > 0.7 => Some([f64::NAN]),
             1 if i != j => None,
@@ -288,13 +312,25 @@ impl GluingData<1> for Planted {
             .filter(|p| self.in_p_domain(i, p))
             .collect()
     }
-    fn sample_gluing_domain(&self, i: Idx, j: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<[f64; 1]> {
+    fn sample_gluing_domain(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<[f64; 1]> {
         (0..n)
             .map(|_| [Self::lo(i) + rng.gen_range(0.001..0.999)])
             .filter(|p| self.in_gluing_domain(i, j, p))
             .collect()
     }
-    fn gluing_boundary_points(&self, i: Idx, j: Idx, _: &mut ChaCha8Rng, _: usize) -> Vec<[f64; 1]> {
+    fn gluing_boundary_points(
+        &self,
+        i: Idx,
+        j: Idx,
+        _: &mut ChaCha8Rng,
+        _: usize,
+    ) -> Vec<[f64; 1]> {
         if i == j || self.mode == 2 {
             Vec::new()
         } else {
@@ -311,8 +347,14 @@ fn x_harness_gluing_nan_error_empty() {
     assert_fails(&inverse(&nan));
     let err = check_all(&Planted { mode: 1 }, &cfg);
     assert_fails(err.iter().find(|r| r.id == "D3.4.1(3)").unwrap());
-    assert!(err.iter().all(|r| !r.id.starts_with("D3.4.1(3") || !holds(r)));
+    assert!(err
+        .iter()
+        .all(|r| !r.id.starts_with("D3.4.1(3") || !holds(r)));
     for r in check_all(&Planted { mode: 2 }, &cfg) {
-        assert!(!matches!(r.verdict, Verdict::Holds), "{} holds on empty domains", r.id);
+        assert!(
+            !matches!(r.verdict, Verdict::Holds),
+            "{} holds on empty domains",
+            r.id
+        );
     }
 }

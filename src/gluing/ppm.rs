@@ -12,7 +12,7 @@ use super::exact1d::Exact1d;
 use super::relation::{classes, GridSample};
 use super::sampled::{sampled_k, SampleConfig};
 use super::tolerance::tol;
-use crate::report::{CheckResult, Witness, Check, OnError};
+use crate::report::{Check, CheckResult, OnError, Witness};
 use num_traits::Float;
 use serde_json::json;
 
@@ -41,9 +41,11 @@ where
         for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
             let Some(y) = g.phi(j, i, &x) else {
                 // The offence is D3.4.1(3)'s; here the sample cannot be examined.
-                r.error(OnError::Skip, "φ_ji(x) undefined (reported by D3.4.1(3))", || {
-                    Witness::new(fmt_point(&x), point_json(&x))
-                });
+                r.error(
+                    OnError::Skip,
+                    "φ_ji(x) undefined (reported by D3.4.1(3))",
+                    || Witness::new(fmt_point(&x), point_json(&x)),
+                );
                 continue;
             };
             let (a, b) = (theta(i, &x), theta(j, &y));
@@ -242,21 +244,21 @@ pub fn check_p3_5_1(g: &Exact1d, theta: impl Fn(Idx, f64) -> Vec<f64>, m: u32) -
                     .max(q_to_f64(&first.1).abs()),
             );
             r.deviation_within(d, t, || {
-                    Witness::new(
-                        format!(
-                            "[{}∈Ω_{}] = [{}∈Ω_{}] in M_G but θ_{}({}) = {v0:?} ≠ θ_{}({}) = {v:?}",
-                            fmt_q(&first.1),
-                            first.0,
-                            fmt_q(&p.1),
-                            p.0,
-                            first.0,
-                            fmt_q(&first.1),
-                            p.0,
-                            fmt_q(&p.1)
-                        ),
-                        json!({"kind": "theta_not_constant", "deviation": d}),
-                    )
-                });
+                Witness::new(
+                    format!(
+                        "[{}∈Ω_{}] = [{}∈Ω_{}] in M_G but θ_{}({}) = {v0:?} ≠ θ_{}({}) = {v:?}",
+                        fmt_q(&first.1),
+                        first.0,
+                        fmt_q(&p.1),
+                        p.0,
+                        first.0,
+                        fmt_q(&first.1),
+                        p.0,
+                        fmt_q(&p.1)
+                    ),
+                    json!({"kind": "theta_not_constant", "deviation": d}),
+                )
+            });
         }
     }
     r.finish("")

@@ -80,9 +80,11 @@ pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
         for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
             let Some(y) = g.phi(j, i, &x) else {
                 // The offence is D3.4.1(3)'s; here the sample cannot be examined.
-                r.error(OnError::Skip, "φ_ji(x) undefined (reported by D3.4.1(3))", || {
-                    Witness::new(fmt_point(&x), point_json(&x))
-                });
+                r.error(
+                    OnError::Skip,
+                    "φ_ji(x) undefined (reported by D3.4.1(3))",
+                    || Witness::new(fmt_point(&x), point_json(&x)),
+                );
                 continue;
             };
             let t = tol::<G::S>(norm(&x).max(norm(&y))) * g.amplification();

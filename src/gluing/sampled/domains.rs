@@ -95,8 +95,8 @@ pub fn check_1<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> C
 
 /// Def. 3.4.1(2): Ω_ij is an open subset of Ω_i, Ω_ii = Ω_i, and Ω_ij ≠ ∅ ⇔ Ω_ji ≠ ∅.
 pub fn check_2<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
-    let mut r = Check::new("D3.4.1(2)", "Ω_ij ⊆ Ω_i open, Ω_ii = Ω_i, K symmetric")
-        .with_note("sampled");
+    let mut r =
+        Check::new("D3.4.1(2)", "Ω_ij ⊆ Ω_i open, Ω_ii = Ω_i, K symmetric").with_note("sampled");
     r.seed = Some(cfg.seed);
     let mut rng = cfg.rng(2);
     let ids = g.indices();

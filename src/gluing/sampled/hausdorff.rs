@@ -180,10 +180,18 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
                 .collect();
             // Rule 1 of the harness: a non-finite image is an offence (a NaN distance would
             // otherwise read as "nothing sampled near x" below).
-            if let Some(z) = images.iter().flatten().find(|z| !z.iter().all(|c| to_f64(*c).is_finite())) {
+            if let Some(z) = images
+                .iter()
+                .flatten()
+                .find(|z| !z.iter().all(|c| to_f64(*c).is_finite()))
+            {
                 r.holds(false, || {
                     Witness::new(
-                        format!("(i,j)=({i},{j}): φ_{j}{i} near x = {} is not finite: {}", fmt_point(x), fmt_point(z)),
+                        format!(
+                            "(i,j)=({i},{j}): φ_{j}{i} near x = {} is not finite: {}",
+                            fmt_point(x),
+                            fmt_point(z)
+                        ),
                         json!({"kind": "non_finite", "i": i, "j": j, "x": point_json(x)}),
                     )
                 });
