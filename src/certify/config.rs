@@ -7,7 +7,7 @@ use super::*;
 // Configurations.
 // ---------------------------------------------------------------------------------------------
 
-/// A configuration: everything a Chapter 4 property depends on (issue 6, "Why it is possible").
+/// A configuration: everything a Chapter 4 property depends on: after the rotations R_(u,w) of Def. 4.1.8 only degrees and orientation matter.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum ConfigKey {

@@ -1,4 +1,4 @@
-//! Issue 6: certified (interval-arithmetic) proofs of the Chapter 4 conditions for every
+//! Certified (interval-arithmetic) proofs of the Chapter 4 conditions for every
 //! degree configuration up to a bound.
 //!
 //! The gluing data of Chapter 4 depends only on degrees and labels; after the rotations

@@ -6,7 +6,7 @@ use super::*;
 // Models (the paper, and planted faults).
 // ---------------------------------------------------------------------------------------------
 
-/// The construction under test: the paper's, or one with a planted fault (issue 6, item 4).
+/// The construction under test: the paper's, or one with a planted fault.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Model {
     /// Added to the radius cos(π/6) of the circles of the Sec. 6.1.3 lens test.

@@ -15,7 +15,7 @@ pub(super) struct SmoothSpec<'a, S> {
     /// For a composite F = A∘B whose outer factor A applies Π at B(p) (g_(u,w): g_w⁻¹ at
     /// h∘g_u∘R_(u,w)(p)), the radius |B(p)|. The Taylor remainder of the central difference
     /// scales with 1/ρ² for the smallest radius ρ at which a polar map is evaluated, not only
-    /// 1/|p|²: near the corners of the lens, |B(p)| is a fraction of |p| (issue 8: randomized
+    /// 1/|p|²: near the corners of the lens, |B(p)| is a fraction of |p| (SPEC `L4.2.4-random`: randomized
     /// surfaces of degree ≥ 9 gave false "not smooth" verdicts for L4.2.4 and P4.1.1).
     pub(super) inner_radius: Option<&'a dyn Fn(&P2<S>) -> Option<f64>>,
 }
