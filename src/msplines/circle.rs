@@ -198,8 +198,13 @@ fn bspline_on(x: &[Q], l: usize, p: usize, s: usize) -> Poly {
 impl CircleSplines {
     /// The cubic piece F_i on [t_i, t_{i+1}] in chart i's coordinate: two polynomials (x, y).
     pub fn piece(&self, i: usize) -> [Poly; 2] {
+        self.piece_in(i, 0)
+    }
+    /// The cubic piece F_{i+o} on [t_{i+o}, t_{i+o+1}] in chart i's coordinate.
+    pub fn piece_in(&self, chart: usize, o: i64) -> [Poly; 2] {
+        let i = (chart as i64 + o).rem_euclid(self.n() as i64) as usize;
         // Chart coordinates of t_{i−3} … t_{i+4}; knot index 3 is t_i.
-        let x: Vec<Q> = (-3i64..=4).map(|d| self.phi(i, &self.t(i, d))).collect();
+        let x: Vec<Q> = (-3i64..=4).map(|d| self.phi(chart, &self.t(chart, o + d))).collect();
         let mut out = [vec![Q::zero()], vec![Q::zero()]];
         for jd in -1i64..=2 {
             // c_{i+jd} has knots t_{i+jd−2..i+jd+2}: starting index 3 + jd − 2 in x.
@@ -255,6 +260,49 @@ pub fn check_c2_with(c: &CircleSplines, fault: &Q) -> CheckResult {
     r.with_note(format!("third derivative jumps at {c3_jumps} of {} joint components (so exactly C², not C³)", 2 * c.n()))
 }
 
+/// Def. 13(2) on Fig. 7: where a piece's knots t_{j−3..j+4} lie in both U_i and U_{i+1}, the
+/// piece computed in chart i+1 and pulled back through φ_{i+1}∘φ_i⁻¹ is the same polynomial
+/// as the piece computed in chart i (exact). Pieces with a knot outside either chart are
+/// skipped and counted (that is Def. 13(1)).
+pub fn check_d13_2(c: &CircleSplines) -> CheckResult {
+    let mut r = CheckResult::new("MS-D13(2)", "Fig. 7: F_α = F_β∘φ_αβ on the overlap (Def. 13(2); exact)");
+    let mut skipped = 0;
+    for i in 0..c.n() {
+        let j = (i + 1) % c.n();
+        let (lo_i, hi_i) = c.chart_arc(i);
+        let (lo_j, hi_j) = c.chart_arc(j);
+        for o in -2i64..=2 {
+            let in_both = (-3i64..=4).all(|d| {
+                let t = c.t(i, o + d);
+                let tj = c.t(j, o + d - 1);
+                lo_i < t && t < hi_i && lo_j < tj && tj < hi_j
+            });
+            if !in_both {
+                skipped += 1;
+                continue;
+            }
+            let (ai, bi) = &c.ab[i];
+            let (aj, bj) = &c.ab[j];
+            let shift = if j == 0 { c.length.clone() } else { Q::zero() };
+            let slope = bj / bi;
+            let off = aj + bj * (&c.knots[i] - ai / bi - &shift - &c.knots[j]);
+            let (pi, pj) = (c.piece_in(i, o), c.piece_in(j, o - 1));
+            for comp in 0..2 {
+                r.examined += 1;
+                let pulled = pcompose_affine(&pj[comp], &slope, &off);
+                let diff = padd(&pi[comp], &pscale(&pulled, &-Q::one()));
+                if diff.iter().any(|x| !x.is_zero()) {
+                    r.offend(|| Witness::new(format!("charts {i}, {j}: piece {} component {comp} differs", (i as i64 + o).rem_euclid(c.n() as i64)), json!({"chart": i, "piece_offset": o})));
+                }
+            }
+        }
+    }
+    if r.examined == 0 {
+        r.verdict = crate::report::Verdict::Skipped { reason: "no piece has all its knots in two neighbouring charts (Def. 13(1) fails)".into() };
+    }
+    r.with_note(format!("{skipped} (chart, piece) pairs skipped: a knot outside a chart"))
+}
+
 /// Def. 5 as written: φ_xy∘φ_yz = φ_xz with φ_xy : φ_x(U_x∩U_y) → φ_y(U_x∩U_y). The left side
 /// applies φ_yz to a point of φ_x(…) ⊆ Ω_x, but φ_yz is defined on Ω_y only, and the
 /// p-domains are disjoint: the witness is a point where the literal composition is undefined
@@ -294,6 +342,7 @@ pub fn check_all(c: &CircleSplines) -> Vec<CheckResult> {
     let mut out = check_gluing(c);
     out.push(check_knots_in_chart(c));
     out.push(check_c2(c));
+    out.push(check_d13_2(c));
     out.push(check_def5_literal(c));
     out
 }
