@@ -121,8 +121,9 @@ fn ms_d4_ms_d6_ms_d7_ms_t4_atlas_ms_gd_torus_translation_atlas_and_def_3_4_1_all
     let k = torus(12, 8);
     let (rep, _, _) = run(&k, &Options::default()).expect("torus");
     for r in &rep.checks {
-        assert!(!r.failed(), "{r:?}");
+        assert!(!r.failed() || r.id == "MS-5.4(6)", "{r:?}");
     }
+    assert!(!rep.failed(), "only the documented erratum MS-5.4(6) may fail");
     for id in ["MS-5.4(4)", "MS-D4", "MS-D7", "MS-T4(atlas)", "MS-5.4(6)-corrected", "D3.4.1(1)", "D3.4.1(2)", "D3.4.1(3)", "D3.4.1(3a)", "D3.4.1(3b)", "D3.4.1(3c)", "D3.4.1(4)"] {
         let r = find(&rep.checks, id);
         assert!(holds(r) && r.examined > 0, "{r:?}");
@@ -145,8 +146,7 @@ fn ms_t4_atlas_planted_non_translation_transition_is_caught_by_def_3_4_1() {
     let at = build(&k, &fm.ei, &om, &[], 1).expect("atlas");
     let cfg = SampleConfig { seed: 7, n: 24 };
     // Planted: φ_βα rotated by 0.1 rad about the chart origin for one chart α.
-    let view = AtlasView::neighbourhood(&k, &at, 0).with_phi_override(Box::new(|b, a, p| {
-        let _ = b;
+    let view = AtlasView::neighbourhood(&k, &at, 0).with_phi_override(Box::new(|_b: u32, a: u32, p: [f64; 2]| {
         (a == 0).then(|| {
             let (s, c) = 0.1f64.sin_cos();
             [c * p[0] - s * p[1], s * p[0] + c * p[1]]

@@ -86,6 +86,7 @@ fn check(a: &MsCheckArgs) -> ExitCode {
         println!("atlas: {} charts, {} overlapping pairs (k = {})", rep.charts, rep.pairs, a.ring);
         println!("time: forms {:.3} s, zeros + atlas {:.3} s, checks {:.3} s", rep.seconds[0], rep.seconds[1], rep.seconds[2]);
         print!("{}", render_text(&rep.checks));
+        println!("documented errata (fail as written, corrected rows checked): {:?}", crate::msplines::pipeline::ERRATA);
     }
     if rep.failed() {
         ExitCode::from(1)

@@ -99,10 +99,14 @@ pub struct MsReport {
     pub seconds: [f64; 3],
 }
 
+/// Statements of the paper that fail as written by design of the check (documented errata in
+/// SPEC.md, each with a corrected row that must hold).
+pub const ERRATA: &[&str] = &["MS-5.4(6)"];
+
 impl MsReport {
-    /// Any check failed.
+    /// A check other than a documented erratum failed.
     pub fn failed(&self) -> bool {
-        self.checks.iter().any(|c| c.failed())
+        self.checks.iter().any(|c| c.failed() && !ERRATA.contains(&c.id.as_str()))
     }
 }
 
