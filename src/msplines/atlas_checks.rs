@@ -241,6 +241,7 @@ pub fn merge(acc: &mut Vec<CheckResult>, new: Vec<CheckResult>) {
             Some(a) => {
                 a.examined += n.examined;
                 a.offenders += n.offenders;
+                a.eval_errors += n.eval_errors;
                 for w in n.witnesses {
                     if a.witnesses.len() < MAX_WITNESSES {
                         a.witnesses.push(w);
