@@ -92,6 +92,10 @@ pub fn develop(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, centre: Vert
         .find(|&f| k.face(f).contains(&centre))
         .or_else(|| faces.iter().next().copied());
     let mut q = VecDeque::new();
+    // One image per vertex: a vertex reached again (closing a fan, or around a hole) keeps its
+    // first image and the disagreement is recorded, so neighbouring face images share their
+    // corners exactly and the exact overlap test sees no rounding slivers.
+    let mut placed: HashMap<VertexId, P2> = HashMap::new();
     if let Some(f0) = start {
         let vs = k.face(f0);
         let base = vs.iter().position(|&v| v == centre).unwrap_or(0);
@@ -106,6 +110,9 @@ pub fn develop(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, centre: Vert
             p = [p[0] + d[0], p[1] + d[1]];
             m += d[0].abs() + d[1].abs() + om.mag[ei.edge(h).0 as usize];
             t[(base + s + 1) % 3] = p;
+        }
+        for (c, &v) in vs.iter().enumerate() {
+            placed.insert(v, t[c]);
         }
         img.insert(f0, t);
         mag.insert(f0, m);
@@ -147,7 +154,17 @@ pub fn develop(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, centre: Vert
             let Some(hb) = k.halfedge(b, gv[cg]) else { continue };
             let d = om.at(ei, hb);
             let pb = t[(c + 1) % 3];
-            tg[cg] = [pb[0] + d[0], pb[1] + d[1]];
+            let cand = [pb[0] + d[0], pb[1] + d[1]];
+            tg[cg] = match placed.get(&gv[cg]) {
+                Some(p) => {
+                    defect = defect.max((p[0] - cand[0]).hypot(p[1] - cand[1]));
+                    *p
+                }
+                None => {
+                    placed.insert(gv[cg], cand);
+                    cand
+                }
+            };
             img.insert(g, tg);
             mag.insert(g, m0 + d[0].abs() + d[1].abs() + om.mag[ei.edge(hb).0 as usize]);
             q.push_back(g);
