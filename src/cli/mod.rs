@@ -2,6 +2,7 @@
 //! (Sec. 3.1) and prints every check with its offending elements.
 
 mod check;
+mod msplines;
 mod oracle;
 mod sd;
 
@@ -147,6 +148,9 @@ enum Command {
     /// Simplicial diffeomorphisms of a planar complex (Mello–Velho): check a map, write curved
     /// isocurves, search the injectivity claims (SPEC rows SD-…).
     Sd(sd::SdArgs),
+    /// Manifold splines (Gu–He–Qin): holomorphic 1-form, zero points, affine atlas (SPEC MS-*).
+    #[command(subcommand)]
+    Msplines(msplines::MsCommand),
     /// Evaluate one point of M: eval(σ, λ, μ, ν) of Sec. 6.1.4.
     Eval {
         file: PathBuf,
@@ -267,6 +271,7 @@ pub fn main() -> ExitCode {
             profile,
             quiet,
         } => crate::surface::cli::run_sample(&file, level, &output, &profile, quiet),
+        Command::Msplines(c) => msplines::run_command(c),
         Command::Eval {
             file,
             face,
