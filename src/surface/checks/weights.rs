@@ -137,7 +137,7 @@ pub fn check_support(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
                     };
                     let mp = P2::new(Mp::new(opts.mp_prec, p[0]), Mp::new(opts.mp_prec, p[1]));
                     let gm = match pps.gamma(v, &mp, &cm) {
-                        Ok(g) => g.0.is_sign_positive() && !g.0.is_zero(),
+                        Ok(g) => g.sign() == Some(std::cmp::Ordering::Greater),
                         Err(e) => {
                             r.error(OnError::Offence, &e, fail("γ_v (Mp)", &e));
                             continue;
