@@ -151,12 +151,15 @@ pub fn check_p4_2_3<S: Scalar, M: Ppm<S>>(
         let t = match t {
             Ok(t) => t,
             Err(err) => {
-                d.offend(|| {
+                // φ_wu is claimed defined on Ω_uw: an offence of both statements.
+                let w = || {
                     Witness::new(
                         format!("φ_wu({}) failed: {err}", fmt(p)),
                         json!({"p": pt(p)}),
                     )
-                });
+                };
+                d.error(OnError::Offence, &err, w);
+                m.error(OnError::Offence, &err, w);
                 continue;
             }
         };
