@@ -49,4 +49,5 @@ pub mod gluing;
 pub mod mesh;
 pub mod oracle;
 pub mod report;
+pub mod sdiff;
 pub mod surface;

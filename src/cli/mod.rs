@@ -3,6 +3,7 @@
 
 mod check;
 mod oracle;
+mod sd;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -143,6 +144,9 @@ enum Command {
         #[arg(long)]
         quiet: bool,
     },
+    /// Simplicial diffeomorphisms of a planar complex (Mello–Velho): check a map, write curved
+    /// isocurves, search the injectivity claims (SPEC rows SD-…).
+    Sd(sd::SdArgs),
     /// Evaluate one point of M: eval(σ, λ, μ, ν) of Sec. 6.1.4.
     Eval {
         file: PathBuf,
@@ -230,6 +234,7 @@ pub fn main() -> ExitCode {
             }
         }
         Command::Certify(a) => crate::certify::cli::run(a),
+        Command::Sd(a) => sd::run(a),
         Command::Gluing { file, json } => {
             match crate::gluing::cli::run_gluing_command(&file, json) {
                 Ok((text, all_hold)) => {
