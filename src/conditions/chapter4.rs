@@ -415,7 +415,10 @@ pub fn render(r: &Ch4Report) -> String {
                 #[cfg(feature = "mpfr")]
                 MpBackend::Mpfr => b,
             };
-            format!("{} {used} bits (ε = 2^-{used})", r.options.mp_backend.describe())
+            format!(
+                "{} {used} bits (ε = 2^-{used})",
+                r.options.mp_backend.describe()
+            )
         }
     };
     let _ = writeln!(

@@ -24,6 +24,6 @@ pub use maps::{
 };
 pub use mesh_gluing::{GluingError, PpmGluing};
 pub use mp_backend::MpBackend;
-pub use scalar::{Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC};
 #[cfg(feature = "mpfr")]
 pub use scalar::MpMpfr;
+pub use scalar::{Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC};

@@ -26,7 +26,7 @@ fn edge_domain_samples<S: Scalar, M: Ppm<S>>(
 }
 
 /// D4.1.9-lens: Def. 4.1.9 read literally agrees with the Sec. 6.1.3 canonical-lens test.
-/// Disagreements within `LENS_COND·ε` of the lens boundary (in the g_u∘R_(u,w) frame) are
+/// Disagreements within the rounding margin `ROUNDTRIP_COND·amp·ε` of the lens boundary (in the g_u∘R_(u,w) frame) are
 /// counted as rounding-ambiguous, not as offences.
 pub fn check_d4_1_9_lens_agreement<S: Scalar, M: Ppm<S>>(
     model: &M,
@@ -151,12 +151,15 @@ pub fn check_p4_2_3<S: Scalar, M: Ppm<S>>(
         let t = match t {
             Ok(t) => t,
             Err(err) => {
-                d.offend(|| {
+                // φ_wu is claimed defined on Ω_uw: an offence of both statements.
+                let w = || {
                     Witness::new(
                         format!("φ_wu({}) failed: {err}", fmt(p)),
                         json!({"p": pt(p)}),
                     )
-                });
+                };
+                d.error(OnError::Offence, &err, w);
+                m.error(OnError::Offence, &err, w);
                 continue;
             }
         };

@@ -12,7 +12,7 @@
 use super::consts::Consts;
 use super::eval::{canonical_point, Chart};
 use super::jet::{Jet, JET_LEN};
-use super::pps::{Membership, Pps, PpsOptions};
+use super::pps::{Pps, PpsOptions};
 use super::profile::Profile;
 use super::scalar_ext::SurfaceScalar;
 use super::target::PnTriangles;
@@ -182,12 +182,4 @@ pub(super) fn overlap_points(
         }
     }
     out
-}
-
-/// Membership the checks were run with (re-exported for the CLI).
-pub fn membership_name(m: Membership) -> &'static str {
-    match m {
-        Membership::Literal => "literal Def. 4.1.9",
-        Membership::Lens => "Sec. 6.1.3 lens test",
-    }
 }
