@@ -61,6 +61,9 @@ enum Command {
         /// Chapter 5 profile (paper | authors-code); also {"op":"set_profile",...}.
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// S′ (Sec. 6.2): pn | loop; also {"op":"set_surface",...}.
+        #[arg(long, default_value = "pn")]
+        sprime: String,
     },
     /// Compare another implementation's answers against the reference: a table of queries
     /// (JSON lines: a request plus "value") or, with --surface, a sampled surface (OFF, PLY,
@@ -85,6 +88,9 @@ enum Command {
         /// Chapter 5 profile of the reference surface: paper | authors-code.
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// S′ of the reference surface (Sec. 6.2): pn | loop (`--surface` names the file).
+        #[arg(long, default_value = "pn")]
+        sprime: String,
         /// Largest accepted deviation (table default 1e-12; surface default: twice the
         /// printed f64 bound).
         #[arg(long)]
@@ -141,6 +147,9 @@ enum Command {
         /// paper | authors-code
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// S′ (Sec. 6.2): pn | loop
+        #[arg(long, default_value = "pn")]
+        surface: String,
         #[arg(long)]
         quiet: bool,
     },
@@ -153,6 +162,9 @@ enum Command {
         nu: f64,
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// S′ (Sec. 6.2): pn | loop
+        #[arg(long, default_value = "pn")]
+        surface: String,
     },
 }
 
@@ -172,7 +184,8 @@ pub fn main() -> ExitCode {
             mesh,
             bits,
             profile,
-        } => oracle::run_oracle(mesh.as_deref(), bits, &profile),
+            sprime,
+        } => oracle::run_oracle(mesh.as_deref(), bits, &profile, &sprime),
         Command::Diff {
             mesh,
             table,
@@ -180,6 +193,7 @@ pub fn main() -> ExitCode {
             level,
             matching,
             profile,
+            sprime,
             tolerance,
             bits,
             worst,
@@ -196,10 +210,19 @@ pub fn main() -> ExitCode {
                     bits,
                     worst,
                     json,
+                    sprime,
                 },
             ),
             (Some(table), None) => {
-                oracle::run_diff(&mesh, &table, bits, tolerance.unwrap_or(1e-12), worst, json)
+                oracle::run_diff(
+                &mesh,
+                &table,
+                bits,
+                tolerance.unwrap_or(1e-12),
+                worst,
+                json,
+                &sprime,
+            )
             }
             (None, None) => {
                 eprintln!("error: give a TABLE of answers or --surface FILE");
@@ -261,8 +284,9 @@ pub fn main() -> ExitCode {
             level,
             output,
             profile,
+            surface,
             quiet,
-        } => crate::surface::cli::run_sample(&file, level, &output, &profile, quiet),
+        } => crate::surface::cli::run_sample(&file, level, &output, &profile, &surface, quiet),
         Command::Eval {
             file,
             face,
@@ -270,6 +294,7 @@ pub fn main() -> ExitCode {
             mu,
             nu,
             profile,
-        } => crate::surface::cli::run_eval(&file, face, [lambda, mu, nu], &profile),
+            surface,
+        } => crate::surface::cli::run_eval(&file, face, [lambda, mu, nu], &profile, &surface),
     }
 }

@@ -336,7 +336,7 @@ mod tests {
     use crate::construction::Mp;
 
     #[test]
-    fn eigen_structure_reconstructs_powers_f64_all_valences() {
+    fn loop_eigen_reconstructs_powers_f64_valences_3_to_64() {
         for n in 3..=64usize {
             let e = EigenStructure::<f64>::new(n, 53).expect("eigen");
             assert_eq!(e.lambda.len(), n + 1);
@@ -347,10 +347,10 @@ mod tests {
     }
 
     #[test]
-    fn eigen_structure_mp256_matches_and_agrees_with_f64() {
-        for n in [3usize, 4, 5, 6, 7, 8, 12, 13, 31, 64] {
+    fn loop_eigen_mp256_reconstructs_and_agrees_with_f64() {
+        for n in [3usize, 4, 7, 12, 31] {
             let e = EigenStructure::<Mp>::new(n, 256).expect("eigen");
-            let r = e.residuals(4);
+            let r = e.residuals(2);
             let bound = 64.0 * (n + 6) as f64 * 2f64.powi(-256);
             assert!(r <= bound, "n = {n}: residual {r:e} > {bound:e}");
             let f = EigenStructure::<f64>::new(n, 53).expect("eigen");
@@ -366,7 +366,7 @@ mod tests {
     }
 
     #[test]
-    fn jordan_coincidences_are_exact() {
+    fn loop_eigen_jordan_coincidences_are_exact() {
         // Even N: 1/8 is an eigenvalue of S₁₁; N = 3: λ₁² = 1/16. Both exactly.
         let e = EigenStructure::<f64>::new(8, 53).expect("eigen");
         assert_eq!(*e.lambda.last().expect("λ"), 0.125);

@@ -174,7 +174,7 @@ mod tests {
     use crate::surface::loop_subdiv::topology::gather_net;
 
     #[test]
-    fn local_net_is_identity_and_rows_sum_to_one() {
+    fn loop_eigen_local_net_and_subdivision_rows_sum_to_one() {
         for n in 3..=64usize {
             let mesh = LocalMesh::patch(n);
             let net = gather_net(&mesh, 0, 1, 2, 1000).expect("net");

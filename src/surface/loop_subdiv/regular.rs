@@ -238,7 +238,7 @@ mod tests {
     }
 
     #[test]
-    fn basis_reproduces_level3_limits_exactly() {
+    fn loop_regular_basis_reproduces_level3_limits_exactly() {
         assert_eq!(basis_exact().len(), 12);
         for i in 0..=8i64 {
             for j in 0..=(8 - i) {
@@ -251,7 +251,7 @@ mod tests {
     }
 
     #[test]
-    fn basis_is_partition_of_unity_with_regular_limit_mask_at_corner() {
+    fn loop_regular_basis_partition_of_unity_and_limit_mask() {
         let b = basis_exact();
         for j in 0..15 {
             let s: BigRational = b.iter().map(|r| r[j].clone()).fold(BigRational::zero(), |a, c| a + c);
