@@ -56,6 +56,9 @@ impl Ch4Args {
                 _ => return Err(format!("--precision {other}: expected f64 or mp:BITS")),
             },
         };
+        if crate::surface::SurfaceKind::parse(&self.surface).is_none() {
+            return Err(format!("--surface {}: expected pn or loop", self.surface));
+        }
         Ok(Ch4Options {
             seed: self.seed,
             samples: self.samples.max(1),
