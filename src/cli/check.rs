@@ -42,6 +42,9 @@ pub struct Ch4Args {
     /// Run only the Chapter 3.4–4 checks (skip building the surface of Chapter 5).
     #[arg(long)]
     pub no_surface: bool,
+    /// S′ of Chapter 5 (Sec. 6.2): pn | loop (loop also runs the Loop S′ checks).
+    #[arg(long, default_value = "pn")]
+    pub surface: String,
 }
 
 impl Ch4Args {
@@ -53,6 +56,9 @@ impl Ch4Args {
                 _ => return Err(format!("--precision {other}: expected f64 or mp:BITS")),
             },
         };
+        if crate::surface::SurfaceKind::parse(&self.surface).is_none() {
+            return Err(format!("--surface {}: expected pn or loop", self.surface));
+        }
         Ok(Ch4Options {
             seed: self.seed,
             samples: self.samples.max(1),
@@ -147,6 +153,7 @@ pub fn run(
                     seed: opts.seed,
                     samples_per_vertex: opts.samples.max(1),
                     max_vertices: opts.max_star_configs,
+                    surface: crate::surface::SurfaceKind::parse(&a.surface).unwrap_or_default(),
                     ..Default::default()
                 };
                 ch5 = crate::surface::checks::run_surface_checks(k, &sopts);

@@ -63,6 +63,9 @@ enum Command {
         /// Chapter 5 profile (paper | authors-code); also {"op":"set_profile",...}.
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// S′ (Sec. 6.2): pn | loop; also {"op":"set_surface",...}.
+        #[arg(long, default_value = "pn")]
+        sprime: String,
     },
     /// Compare another implementation's answers against the reference: a table of queries
     /// (JSON lines: a request plus "value") or, with --surface, a sampled surface (OFF, PLY,
@@ -87,6 +90,9 @@ enum Command {
         /// Chapter 5 profile of the reference surface: paper | authors-code.
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// S′ of the reference surface (Sec. 6.2): pn | loop (`--surface` names the file).
+        #[arg(long, default_value = "pn")]
+        sprime: String,
         /// Largest accepted deviation (table default 1e-12; surface default: twice the
         /// printed f64 bound).
         #[arg(long)]
@@ -142,6 +148,9 @@ enum Command {
         /// paper | authors-code
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// S′ (Sec. 6.2): pn | loop
+        #[arg(long, default_value = "pn")]
+        surface: String,
         #[arg(long)]
         quiet: bool,
     },
@@ -160,6 +169,9 @@ enum Command {
         nu: f64,
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// S′ (Sec. 6.2): pn | loop
+        #[arg(long, default_value = "pn")]
+        surface: String,
     },
 }
 
@@ -179,7 +191,8 @@ pub fn main() -> ExitCode {
             mesh,
             bits,
             profile,
-        } => oracle::run_oracle(mesh.as_deref(), bits, &profile),
+            sprime,
+        } => oracle::run_oracle(mesh.as_deref(), bits, &profile, &sprime),
         Command::Diff {
             mesh,
             table,
@@ -187,6 +200,7 @@ pub fn main() -> ExitCode {
             level,
             matching,
             profile,
+            sprime,
             tolerance,
             bits,
             worst,
@@ -203,10 +217,19 @@ pub fn main() -> ExitCode {
                     bits,
                     worst,
                     json,
+                    sprime,
                 },
             ),
             (Some(table), None) => {
-                oracle::run_diff(&mesh, &table, bits, tolerance.unwrap_or(1e-12), worst, json)
+                oracle::run_diff(
+                &mesh,
+                &table,
+                bits,
+                tolerance.unwrap_or(1e-12),
+                worst,
+                json,
+                &sprime,
+            )
             }
             (None, None) => {
                 eprintln!("error: give a TABLE of answers or --surface FILE");
@@ -269,8 +292,9 @@ pub fn main() -> ExitCode {
             level,
             output,
             profile,
+            surface,
             quiet,
-        } => crate::surface::cli::run_sample(&file, level, &output, &profile, quiet),
+        } => crate::surface::cli::run_sample(&file, level, &output, &profile, &surface, quiet),
         Command::Msplines(c) => msplines::run_command(c),
         Command::Eval {
             file,
@@ -279,6 +303,7 @@ pub fn main() -> ExitCode {
             mu,
             nu,
             profile,
-        } => crate::surface::cli::run_eval(&file, face, [lambda, mu, nu], &profile),
+            surface,
+        } => crate::surface::cli::run_eval(&file, face, [lambda, mu, nu], &profile, &surface),
     }
 }

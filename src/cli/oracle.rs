@@ -12,8 +12,12 @@ use std::process::ExitCode;
 /// Longest accepted request line (bounded memory per request).
 const MAX_LINE: u64 = 1 << 20;
 
-fn session(mesh: Option<&Path>, bits: u32, profile: &str) -> Result<Session, String> {
+fn session(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> Result<Session, String> {
     let mut s = Session::new();
+    s.handle(&Request::SetSurface {
+        surface: sprime.to_string(),
+    })
+    .map_err(|e| e.to_string())?;
     s.handle(&Request::SetPrecision { bits })
         .map_err(|e| e.to_string())?;
     s.handle(&Request::SetProfile {
@@ -32,8 +36,8 @@ fn session(mesh: Option<&Path>, bits: u32, profile: &str) -> Result<Session, Str
 /// `ppm oracle [--mesh M] [--bits B] [--profile P]`: answer one JSON request per stdin line
 /// with one JSON response per stdout line until end of input. Exit status 0, or 2 when the
 /// initial mesh/precision/profile is rejected or stdin cannot be read.
-pub fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str) -> ExitCode {
-    let mut s = match session(mesh, bits, profile) {
+pub fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> ExitCode {
+    let mut s = match session(mesh, bits, profile, sprime) {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
@@ -88,8 +92,9 @@ pub fn run_diff(
     tolerance: f64,
     worst: usize,
     json: bool,
+    sprime: &str,
 ) -> ExitCode {
-    let mut s = match session(Some(mesh), bits, "paper") {
+    let mut s = match session(Some(mesh), bits, "paper", sprime) {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
@@ -135,6 +140,8 @@ pub struct SurfaceArgs {
     pub worst: usize,
     /// JSON output.
     pub json: bool,
+    /// S′ of the reference: `pn` | `loop`.
+    pub sprime: String,
 }
 
 /// `ppm diff --surface OTHER --mesh M [--level N]`: compare a sampled surface against the
@@ -154,7 +161,7 @@ pub fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> ExitCod
     if a.tolerance.is_some_and(|t| t.is_nan() || t < 0.0) {
         return fail("--tolerance must be a non-negative number".into());
     }
-    let mut s = match session(Some(mesh), a.bits, &a.profile) {
+    let mut s = match session(Some(mesh), a.bits, &a.profile, &a.sprime) {
         Ok(s) => s,
         Err(e) => return fail(e),
     };

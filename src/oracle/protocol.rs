@@ -18,7 +18,7 @@ use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::mesh::validate::validate;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::surface::jet::{Jet, MONOMIALS};
-use crate::surface::{Consts, PnTriangles, Pps, PpsOptions, Profile, SurfaceError};
+use crate::surface::{Consts, Pps, PpsOptions, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -110,6 +110,12 @@ pub enum Request {
         w: u32,
         /// The point `[x, y]` in the local coordinates of the first-named p-domain.
         p: [f64; 2],
+    },
+    /// Select S′ (Sec. 6.2): `"pn"` (PN triangles, default) or `"loop"` (the Loop limit
+    /// surface, exact); the pseudo-surface is rebuilt on the next Chapter 5 request.
+    SetSurface {
+        /// `"pn"` or `"loop"`.
+        surface: String,
     },
     /// Select the parameter profile of Chapter 5 (`"paper"` or `"authors-code"`, see
     /// [`Profile`]); the pseudo-surface is rebuilt on the next Chapter 5 request.
@@ -315,6 +321,7 @@ pub struct Session {
     surface: Option<SimplicialSurface>,
     bits: u32,
     profile: Profile,
+    sprime: crate::surface::SurfaceKind,
     ch5: Option<Ch5>,
 }
 
@@ -324,6 +331,7 @@ impl Default for Session {
             surface: None,
             bits: crate::construction::DEFAULT_MP_PREC,
             profile: Profile::default(),
+            sprime: crate::surface::SurfaceKind::default(),
             ch5: None,
         }
     }
@@ -379,10 +387,11 @@ impl Session {
     fn ch5(&mut self) -> Result<&mut Ch5, OracleError> {
         if self.ch5.is_none() {
             let k = self.k()?;
-            let pn = PnTriangles::new(k);
+            let target = crate::surface::SPrime::new(self.sprime, k)
+                .map_err(|e| OracleError::Load(e.to_string()))?;
             let pps = Pps::build(
                 k,
-                &pn,
+                target.as_target(),
                 PpsOptions {
                     profile: self.profile,
                     ..PpsOptions::default()
@@ -461,6 +470,18 @@ impl Session {
                 }
                 self.bits = *bits;
                 Ok(Response::plain(json!({"bits": bits})))
+            }
+            Request::SetSurface { surface } => {
+                let s = crate::surface::SurfaceKind::parse(surface).ok_or_else(|| {
+                    OracleError::Malformed(format!(
+                        "unknown surface {surface:?} (expected \"pn\" or \"loop\")"
+                    ))
+                })?;
+                if s != self.sprime {
+                    self.sprime = s;
+                    self.ch5 = None;
+                }
+                Ok(Response::plain(json!({"surface": s.name()})))
             }
             Request::SetProfile { profile } => {
                 let p = Profile::parse(profile).ok_or_else(|| {

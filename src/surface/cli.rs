@@ -3,7 +3,7 @@
 use super::output::{edge_use_counts, sample_surface, write_mesh_with_attributes};
 use super::pps::{Pps, PpsOptions};
 use super::profile::Profile;
-use super::target::PnTriangles;
+use super::target::{SPrime, SurfaceKind};
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::mesh::validate::validate;
 use crate::mesh::{FaceId, SimplicialSurface};
@@ -25,15 +25,22 @@ fn load(file: &Path) -> Result<SimplicialSurface, ExitCode> {
     })
 }
 
-fn build(k: &SimplicialSurface, profile: &str) -> Result<Pps, ExitCode> {
+fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, ExitCode> {
     let profile = Profile::parse(profile).ok_or_else(|| {
         eprintln!("error: unknown profile {profile:?} (paper | authors-code)");
         ExitCode::from(2)
     })?;
-    let pn = PnTriangles::new(k);
+    let kind = SurfaceKind::parse(surface).ok_or_else(|| {
+        eprintln!("error: unknown surface {surface:?} (pn | loop)");
+        ExitCode::from(2)
+    })?;
+    let target = SPrime::new(kind, k).map_err(|e| {
+        eprintln!("error: S′ = {}: {e}", kind.name());
+        ExitCode::from(1)
+    })?;
     Ok(Pps::build(
         k,
-        &pn,
+        target.as_target(),
         PpsOptions {
             profile,
             ..PpsOptions::default()
@@ -43,13 +50,20 @@ fn build(k: &SimplicialSurface, profile: &str) -> Result<Pps, ExitCode> {
 
 /// `ppm sample FILE --level N -o OUT`: sample M by midpoint subdivision through eval (Sec. 6.2)
 /// and write it with normals and curvatures.
-pub fn run_sample(file: &Path, level: u32, out: &Path, profile: &str, quiet: bool) -> ExitCode {
+pub fn run_sample(
+    file: &Path,
+    level: u32,
+    out: &Path,
+    profile: &str,
+    surface: &str,
+    quiet: bool,
+) -> ExitCode {
     let t0 = Instant::now();
     let k = match load(file) {
         Ok(k) => k,
         Err(c) => return c,
     };
-    let pps = match build(&k, profile) {
+    let pps = match build(&k, profile, surface) {
         Ok(p) => p,
         Err(c) => return c,
     };
@@ -97,12 +111,12 @@ pub fn run_sample(file: &Path, level: u32, out: &Path, profile: &str, quiet: boo
 
 /// `ppm eval FILE FACE λ μ ν`: one point of M (Sec. 6.1.4), with its chart, normal and
 /// curvatures.
-pub fn run_eval(file: &Path, face: u32, bary: [f64; 3], profile: &str) -> ExitCode {
+pub fn run_eval(file: &Path, face: u32, bary: [f64; 3], profile: &str, surface: &str) -> ExitCode {
     let k = match load(file) {
         Ok(k) => k,
         Err(c) => return c,
     };
-    let pps = match build(&k, profile) {
+    let pps = match build(&k, profile, surface) {
         Ok(p) => p,
         Err(c) => return c,
     };

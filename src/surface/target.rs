@@ -181,3 +181,71 @@ impl TargetSurface for PnTriangles {
         Some(self.net(corners))
     }
 }
+
+/// Which S′ the construction approximates (Sec. 6.2 builds every experiment with both).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum SurfaceKind {
+    /// PN triangles (Vlachos et al. 2001), the default.
+    #[default]
+    Pn,
+    /// The Loop subdivision limit surface, evaluated exactly (Stam 1998).
+    Loop,
+}
+
+impl SurfaceKind {
+    /// The name used on the command line and in reports: `pn`, `loop`.
+    pub fn name(self) -> &'static str {
+        match self {
+            SurfaceKind::Pn => "pn",
+            SurfaceKind::Loop => "loop",
+        }
+    }
+    /// Inverse of [`SurfaceKind::name`].
+    pub fn parse(s: &str) -> Option<SurfaceKind> {
+        match s {
+            "pn" => Some(SurfaceKind::Pn),
+            "loop" => Some(SurfaceKind::Loop),
+            _ => None,
+        }
+    }
+}
+
+/// S′ of the chosen kind, built for K.
+#[derive(Debug)]
+pub enum SPrime {
+    /// PN triangles.
+    Pn(PnTriangles),
+    /// The Loop limit surface.
+    Loop(Box<crate::surface::loop_subdiv::LoopSurface>),
+}
+
+impl SPrime {
+    /// S′ of kind `kind` for K; the Loop surface fails only for a valence above
+    /// [`crate::surface::loop_subdiv::MAX_VALENCE`] (or a K that is not closed).
+    pub fn new(
+        kind: SurfaceKind,
+        k: &SimplicialSurface,
+    ) -> Result<SPrime, crate::surface::loop_subdiv::LoopError> {
+        Ok(match kind {
+            SurfaceKind::Pn => SPrime::Pn(PnTriangles::new(k)),
+            SurfaceKind::Loop => SPrime::Loop(Box::new(
+                crate::surface::loop_subdiv::LoopSurface::new(k)?,
+            )),
+        })
+    }
+    /// Its kind.
+    pub fn kind(&self) -> SurfaceKind {
+        match self {
+            SPrime::Pn(_) => SurfaceKind::Pn,
+            SPrime::Loop(_) => SurfaceKind::Loop,
+        }
+    }
+    /// As the trait the construction uses.
+    pub fn as_target(&self) -> &dyn TargetSurface {
+        match self {
+            SPrime::Pn(p) => p,
+            SPrime::Loop(l) => l.as_ref(),
+        }
+    }
+}

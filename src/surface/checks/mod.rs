@@ -15,7 +15,6 @@ use super::jet::{Jet, JET_LEN};
 use super::pps::{Pps, PpsOptions};
 use super::profile::Profile;
 use super::scalar_ext::SurfaceScalar;
-use super::target::PnTriangles;
 use crate::construction::{Mp, PpmGluing, Scalar, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::report::{dev_max, Check, CheckResult, OnError, Verdict, Witness};
@@ -53,6 +52,8 @@ pub struct SurfaceCheckOptions {
     pub profile: Profile,
     /// Run the measured (C′)/(C″) patch-intersection search.
     pub intersections: bool,
+    /// S′ (Sec. 6.2); with the Loop S′ its own checks run too.
+    pub surface: super::target::SurfaceKind,
 }
 
 impl Default for SurfaceCheckOptions {
@@ -65,16 +66,24 @@ impl Default for SurfaceCheckOptions {
             mp_prec: crate::construction::DEFAULT_MP_PREC,
             profile: Profile::Paper,
             intersections: true,
+            surface: super::target::SurfaceKind::Pn,
         }
     }
 }
 
 /// Build S′ and the PPS and run every check.
 pub fn run_surface_checks(k: &SimplicialSurface, opts: &SurfaceCheckOptions) -> Vec<CheckResult> {
-    let pn = PnTriangles::new(k);
+    let target = match super::target::SPrime::new(opts.surface, k) {
+        Ok(t) => t,
+        Err(e) => {
+            let mut r = CheckResult::new("LOOP-valence", "the Loop S′ of K can be built");
+            r.offend(|| crate::report::Witness::new(e.to_string(), serde_json::Value::Null));
+            return vec![r];
+        }
+    };
     let pps = Pps::build(
         k,
-        &pn,
+        target.as_target(),
         PpsOptions {
             profile: opts.profile,
             ..PpsOptions::default()
@@ -97,6 +106,19 @@ pub fn run_surface_checks(k: &SimplicialSurface, opts: &SurfaceCheckOptions) -> 
     out.push(check_approx(&pps));
     if opts.intersections {
         out.extend(check_intersections(&pps, opts));
+    }
+    out.push(super::loop_subdiv::checks::check_pps_distance(
+        k,
+        &pps,
+        target.as_target(),
+        opts.seed,
+    ));
+    if let super::target::SPrime::Loop(l) = &target {
+        let lo = super::loop_subdiv::checks::LoopCheckOptions {
+            seed: opts.seed,
+            ..Default::default()
+        };
+        out.extend(super::loop_subdiv::checks::run_loop_checks(k, l, &lo));
     }
     out
 }

@@ -1,0 +1,438 @@
+//! Checks of the Loop S′ (SPEC.md, section "Sec. 6.2 — Loop S′"): the evaluator against the
+//! properties the limit surface must have, measured on the mesh, with derived tolerances.
+//!
+//! * `LOOP-eigen` — the closed-form eigen-structure reconstructs Aᵐ (f64 and multi-precision).
+//! * `LOOP-C0-vertex` — every face around v gives the same point at v, and it is the
+//!   closed-form limit mask (`LOOP-limit-mask`).
+//! * `LOOP-normal-mask` — the normal at v is t₁ × t₂ of the tangent masks (Σ cos(2πi/N) rᵢ,
+//!   Σ sin(2πi/N) rᵢ); at an extraordinary vertex (derivatives 0 or ∞ there) the normals of
+//!   nearby points converge to it at the rate (ρ/λ₁)ⁿ of the eigenvalues (C¹ at v, measured).
+//! * `LOOP-C0-edge`, `LOOP-C1-edge`, `LOOP-C2-edge` — across every examined edge, the two
+//!   faces agree in position, first and second derivatives with the two triangles unfolded
+//!   onto the regular lattice (edge points only; the extraordinary vertex itself is the
+//!   `LOOP-normal-mask` case).
+//!
+//! Tolerances: 1024·ε·(|X₁| + |X₂| + R·2^{q·level}) for a derivative of order q, R the radius
+//! of K's bounding box, `level` the subdivision level of the evaluated piece (the chain rule
+//! multiplies rounding errors of the level-n net by 2^{q·n}).
+
+use super::eigen::EigenStructure;
+use super::rules::{cos_sin_2pi, limit_weights};
+use super::stam::PatchJet;
+use super::surface::{LoopError, LoopSurface};
+use crate::construction::Mp;
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::report::{CheckResult, Verdict, Witness};
+use rand::seq::SliceRandom;
+use rand::SeedableRng;
+use serde_json::json;
+
+/// Tolerance factor (see the module doc).
+pub const COND: f64 = 1024.0;
+
+/// What the checks evaluate: the Loop surface, or a planted fault in tests.
+pub trait JetSource: Sync {
+    /// As [`LoopSurface::jet`] in f64.
+    fn jet(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3], derivs: bool) -> Result<PatchJet<f64>, LoopError>;
+}
+
+impl JetSource for LoopSurface {
+    fn jet(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3], derivs: bool) -> Result<PatchJet<f64>, LoopError> {
+        LoopSurface::jet::<f64>(self, f, corners, &bary, derivs)
+    }
+}
+
+/// Options of the Loop checks.
+#[derive(Debug, Clone)]
+pub struct LoopCheckOptions {
+    /// Seed of the edge and vertex samples.
+    pub seed: u64,
+    /// Examine at most this many edges (seeded sample) and vertices.
+    pub max_elements: usize,
+}
+
+impl Default for LoopCheckOptions {
+    fn default() -> Self {
+        LoopCheckOptions {
+            seed: 20240601,
+            max_elements: 4000,
+        }
+    }
+}
+
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+fn norm(a: [f64; 3]) -> f64 {
+    (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
+}
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+/// Angle between two vectors (NaN if either is zero or not finite).
+fn angle(a: [f64; 3], b: [f64; 3]) -> f64 {
+    let c = norm(cross(a, b));
+    let d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let r = c.atan2(d);
+    if norm(a) > 0.0 && norm(b) > 0.0 {
+        r
+    } else {
+        f64::NAN
+    }
+}
+
+/// Radius of K's bounding box (half its diagonal), at least the smallest positive normal.
+pub fn radius(k: &SimplicialSurface) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for v in k.vertices() {
+        let p = k.position(v);
+        for d in 0..3 {
+            lo[d] = lo[d].min(p[d]);
+            hi[d] = hi[d].max(p[d]);
+        }
+    }
+    (norm(sub(hi, lo)) / 2.0).max(f64::MIN_POSITIVE)
+}
+
+fn sample<T: Clone>(mut v: Vec<T>, max: usize, seed: u64) -> Vec<T> {
+    if v.len() > max {
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        v.shuffle(&mut rng);
+        v.truncate(max);
+    }
+    v
+}
+
+/// Offend with a witness; NaN deviations always offend.
+fn record(r: &mut CheckResult, dev: f64, tol: f64, text: impl FnOnce() -> String, data: serde_json::Value, worst: &mut (f64, f64)) {
+    r.examined += 1;
+    if dev.is_nan() || dev > tol {
+        r.offend(|| Witness::new(format!("{} (deviation {dev:.3e} > tolerance {tol:.3e})", text()), data));
+    }
+    if dev.is_nan() || dev / tol > worst.0 / worst.1 || worst.1 == 0.0 {
+        *worst = (dev, tol);
+    }
+}
+
+fn finish(mut r: CheckResult, worst: (f64, f64), seed: Option<u64>, note: &str) -> CheckResult {
+    if r.examined == 0 {
+        r.verdict = Verdict::Skipped {
+            reason: "no samples".into(),
+        };
+    }
+    r.seed = seed;
+    r.worst_deviation = Some(worst.0);
+    r.tolerance = Some(worst.1);
+    r.with_note(note)
+}
+
+/// `LOOP-eigen`: residuals of the eigen-structure for the valences ≠ 6 of K (and 3..=12), in
+/// f64 (bound 64·K·ε) and at `mp_prec` bits for the valences of K (bound 64·K·2^-prec).
+pub fn check_eigen(valences: &[u32], mp_prec: u32) -> CheckResult {
+    let mut r = CheckResult::new("LOOP-eigen", "Aᵐ = block eigen-decomposition (Stam 1998, Sec. 4), f64 and MP");
+    let mut worst = (0.0, 1.0);
+    let mut list: Vec<u32> = (3..=12).chain(valences.iter().copied()).filter(|&n| n != 6).collect();
+    list.sort_unstable();
+    list.dedup();
+    for &n in &list {
+        let kk = (n + 6) as f64;
+        let tol = 64.0 * kk * f64::EPSILON;
+        let res = EigenStructure::<f64>::new(n as usize, 53).map_or(f64::NAN, |e| e.residuals(6));
+        record(&mut r, res, tol, || format!("valence {n}, f64"), json!({"valence": n, "precision": 53}), &mut worst);
+    }
+    for &n in valences.iter().filter(|&&n| n != 6).take(6) {
+        let kk = (n + 6) as f64;
+        let tol = 64.0 * kk * 2f64.powi(-(mp_prec as i32));
+        let res = EigenStructure::<Mp>::new(n as usize, mp_prec).map_or(f64::NAN, |e| e.residuals(3));
+        record(&mut r, res, tol, || format!("valence {n}, {mp_prec} bits"), json!({"valence": n, "precision": mp_prec}), &mut worst);
+    }
+    finish(r, worst, None, "max |entry| of S₁₁U − UΛ₁, UU⁻¹ − I, S₂₂W − WΛ₂, WW⁻¹ − I, B_kAᵐ − formula (m ≤ 6 f64, ≤ 3 MP)")
+}
+
+/// The closed-form masks at v: (limit position, t₁ × t₂).
+pub fn masks(k: &SimplicialSurface, v: VertexId) -> ([f64; 3], [f64; 3]) {
+    let m = k.degree(v);
+    let (wc, wr) = limit_weights::<f64>(m, 53);
+    let p = k.position(v);
+    let mut lim = p.map(|x| wc * x);
+    let (mut t1, mut t2) = ([0.0; 3], [0.0; 3]);
+    for i in 0..m {
+        let r = k.link_vertex(v, i).map_or([f64::NAN; 3], |x| k.position(x));
+        let (c, s) = cos_sin_2pi::<f64>(i as i64, m as i64, 53);
+        for d in 0..3 {
+            lim[d] += wr * r[d];
+            t1[d] += c * r[d];
+            t2[d] += s * r[d];
+        }
+    }
+    (lim, cross(t1, t2))
+}
+
+/// The faces around v with their corners rotated to (v, a, b) (K's orientation).
+fn fans(k: &SimplicialSurface, v: VertexId) -> Vec<(FaceId, [VertexId; 3])> {
+    k.faces_around(v)
+        .iter()
+        .map(|&f| {
+            let s = k.face(f);
+            let i = s.iter().position(|&x| x == v).unwrap_or(0);
+            (f, [s[i], s[(i + 1) % 3], s[(i + 2) % 3]])
+        })
+        .collect()
+}
+
+/// `LOOP-C0-vertex` and `LOOP-limit-mask`.
+pub fn check_vertices(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopCheckOptions) -> Vec<CheckResult> {
+    let rad = radius(k);
+    let tol = COND * f64::EPSILON * rad;
+    let mut c0 = CheckResult::new("LOOP-C0-vertex", "every face around v gives the same point at v");
+    let mut mask = CheckResult::new("LOOP-limit-mask", "S′(v) = closed-form limit mask (3v + 8βΣrᵢ)/(3 + 8nβ)");
+    let (mut w0, mut w1) = ((0.0, tol), (0.0, tol));
+    let vs = sample(k.vertices().collect::<Vec<_>>(), opts.max_elements, opts.seed);
+    for v in vs {
+        let (lim, _) = masks(k, v);
+        let mut first: Option<[f64; 3]> = None;
+        for (f, c) in fans(k, v) {
+            let p = src.jet(f, c, [1.0, 0.0, 0.0], false).map_or([f64::NAN; 3], |j| j.p);
+            let d0 = first.map_or(0.0, |q| norm(sub(p, q)));
+            if first.is_none() {
+                first = Some(p);
+            }
+            record(&mut c0, d0, tol, || format!("vertex {} from face {}", v.0, f.0), json!({"vertex": v.0, "face": f.0}), &mut w0);
+            let d1 = norm(sub(p, lim));
+            record(&mut mask, d1, tol, || format!("vertex {} (valence {}) from face {}", v.0, k.degree(v), f.0), json!({"vertex": v.0, "face": f.0, "eval": p, "mask": lim}), &mut w1);
+        }
+    }
+    let note = format!("tolerance {COND}·ε·R, R = {rad:.4e}");
+    vec![finish(c0, w0, Some(opts.seed), &note), finish(mask, w1, Some(opts.seed), &note)]
+}
+
+/// Ratio ρ/λ₁ of the largest eigenvalue below λ₁ to λ₁ (rate at which the normal near an
+/// extraordinary vertex converges).
+pub fn normal_rate(n: u32) -> f64 {
+    let e = match EigenStructure::<f64>::new(n as usize, 53) {
+        Some(e) => e,
+        None => return f64::NAN,
+    };
+    let l1 = e.lambda[2];
+    let rho = e
+        .lambda
+        .iter()
+        .chain(e.mu.iter())
+        .map(|x| x.abs())
+        .filter(|&x| x < l1 * (1.0 - 1e-12))
+        .fold(0.0f64, f64::max);
+    rho / l1
+}
+
+/// `LOOP-normal-mask`: normals at vertices against t₁ × t₂.
+pub fn check_normals(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopCheckOptions) -> CheckResult {
+    let mut r = CheckResult::new(
+        "LOOP-normal-mask",
+        "normal at v = t₁ × t₂ of the tangent masks; C¹ at extraordinary v (measured rate)",
+    );
+    let mut worst = (0.0, 1.0);
+    let (k0, k1) = (4i32, 24i32);
+    let vs = sample(k.vertices().collect::<Vec<_>>(), opts.max_elements, opts.seed ^ 1);
+    for v in vs {
+        let (_, nm) = masks(k, v);
+        let n = k.degree(v);
+        for (f, c) in fans(k, v) {
+            if n == 6 {
+                let (dev, tol) = match src.jet(f, c, [1.0, 0.0, 0.0], true) {
+                    Ok(PatchJet { d: Some(d), .. }) => {
+                        let nn = cross(d[0], d[1]);
+                        let tol = COND * f64::EPSILON * norm(d[0]).max(norm(d[1])).powi(2) / norm(nn).max(f64::MIN_POSITIVE);
+                        (angle(nn, nm), tol)
+                    }
+                    _ => (f64::NAN, 0.0),
+                };
+                record(&mut r, dev, tol, || format!("vertex {} (valence 6), face {}", v.0, f.0), json!({"vertex": v.0, "face": f.0}), &mut worst);
+            } else {
+                let ang = |kk: i32| -> f64 {
+                    let d = 2f64.powi(-kk);
+                    match src.jet(f, c, [1.0 - 2.0 * d, d, d], true) {
+                        Ok(PatchJet { d: Some(j), .. }) => angle(cross(j[0], j[1]), nm),
+                        _ => f64::NAN,
+                    }
+                };
+                let (a0, a1) = (ang(k0), ang(k1));
+                let rate = normal_rate(n);
+                // Converges: at least half the predicted exponent (room for the polynomial
+                // factors of the Jordan blocks and the pre-asymptotic constants at 2^-4).
+                let tol = a0 * rate.powf((k1 - k0) as f64 / 2.0) + COND * f64::EPSILON;
+                record(
+                    &mut r,
+                    a1,
+                    tol,
+                    || format!("vertex {} (valence {n}), face {}: angle {a0:.3e} at 2^-{k0}, {a1:.3e} at 2^-{k1}, rate {rate:.4}", v.0, f.0),
+                    json!({"vertex": v.0, "face": f.0, "angle0": a0, "angle1": a1, "rate": rate}),
+                    &mut worst,
+                );
+            }
+        }
+    }
+    finish(
+        r,
+        worst,
+        Some(opts.seed ^ 1),
+        "valence 6: angle(∂u×∂v, t₁×t₂) ≤ 1024·ε·|∂|²/|∂u×∂v|; valence ≠ 6: angle at (1−2δ, δ, δ), δ = 2^-24, ≤ angle(δ = 2^-4)·(ρ/λ₁)^10 + 1024ε (half the predicted exponent 20)",
+    )
+}
+
+/// `LOOP-C0-edge`, `LOOP-C1-edge`, `LOOP-C2-edge`: across edges [a, b] with faces (a, b, c)
+/// and (b, a, d); on the lattice unfolding (s, t) the second face has (u, v) = (1 − s, −t), so
+/// C¹: ∂u₁ = −∂u₂, ∂v₁ = −∂v₂, and C²: ∂uu, ∂uv, ∂vv equal.
+pub fn check_edges(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopCheckOptions) -> Vec<CheckResult> {
+    let rad = radius(k);
+    let mut rs = [
+        CheckResult::new("LOOP-C0-edge", "S′ continuous across edges (same point from both faces)"),
+        CheckResult::new("LOOP-C1-edge", "first derivatives agree across edges (lattice unfolding)"),
+        CheckResult::new("LOOP-C2-edge", "second derivatives agree across edges (lattice unfolding)"),
+    ];
+    let mut worst = [(0.0, 1.0); 3];
+    let edges = sample(k.edges().collect::<Vec<_>>(), opts.max_elements, opts.seed ^ 2);
+    for (a, b) in edges {
+        let (Some(h1), Some(h2)) = (k.halfedge(a, b), k.halfedge(b, a)) else {
+            continue;
+        };
+        let c = k.dest(k.next(h1));
+        let d = k.dest(k.next(h2));
+        let (f1, f2) = (k.face_of(h1), k.face_of(h2));
+        let mut ts = vec![0.25, 0.5, 0.75];
+        if k.degree(a) != 6 {
+            ts.extend([2f64.powi(-4), 2f64.powi(-10)]);
+        }
+        if k.degree(b) != 6 {
+            ts.extend([1.0 - 2f64.powi(-4), 1.0 - 2f64.powi(-10)]);
+        }
+        for t in ts {
+            let j1 = src.jet(f1, [a, b, c], [1.0 - t, t, 0.0], true);
+            let j2 = src.jet(f2, [b, a, d], [t, 1.0 - t, 0.0], true);
+            let wit = || format!("edge [{}, {}] at t = {t} (faces {}, {})", a.0, b.0, f1.0, f2.0);
+            let data = json!({"edge": [a.0, b.0], "t": t, "faces": [f1.0, f2.0]});
+            let (j1, j2) = match (j1, j2) {
+                (Ok(x), Ok(y)) => (x, y),
+                _ => {
+                    for (r, w) in rs.iter_mut().zip(worst.iter_mut()) {
+                        record(r, f64::NAN, 0.0, wit, data.clone(), w);
+                    }
+                    continue;
+                }
+            };
+            let level = j1.level.max(j2.level) as i32;
+            let tol = |q: i32, x: &[[f64; 3]], y: &[[f64; 3]]| {
+                let m: f64 = x.iter().chain(y).map(|v| norm(*v)).fold(0.0, f64::max);
+                COND * f64::EPSILON * (2.0 * m + rad * 2f64.powi(q * level))
+            };
+            let d0 = norm(sub(j1.p, j2.p));
+            let t0 = tol(0, &[j1.p], &[j2.p]);
+            record(&mut rs[0], d0, t0, wit, data.clone(), &mut worst[0]);
+            let (Some(e1), Some(e2)) = (j1.d, j2.d) else {
+                record(&mut rs[1], f64::NAN, 0.0, wit, data.clone(), &mut worst[1]);
+                record(&mut rs[2], f64::NAN, 0.0, wit, data, &mut worst[2]);
+                continue;
+            };
+            let d1 = norm(add(e1[0], e2[0])).max(norm(add(e1[1], e2[1])));
+            let t1 = tol(1, &e1[..2], &e2[..2]);
+            record(&mut rs[1], d1, t1, wit, data.clone(), &mut worst[1]);
+            let d2 = (2..5).map(|i| norm(sub(e1[i], e2[i]))).fold(0.0, f64::max);
+            let t2 = tol(2, &e1[2..], &e2[2..]);
+            record(&mut rs[2], d2, t2, wit, data, &mut worst[2]);
+        }
+    }
+    let note = format!("t ∈ {{1/4, 1/2, 3/4}} and 2^-4, 2^-10 from an extraordinary end; tolerance {COND}·ε·(2 max|X| + R·2^(q·level)), R = {rad:.4e}");
+    let [a, b, c] = rs;
+    vec![
+        finish(a, worst[0], Some(opts.seed ^ 2), &note),
+        finish(b, worst[1], Some(opts.seed ^ 2), &note),
+        finish(c, worst[2], Some(opts.seed ^ 2), &note),
+    ]
+}
+
+/// Every Loop S′ check on K.
+pub fn run_loop_checks(k: &SimplicialSurface, s: &LoopSurface, opts: &LoopCheckOptions) -> Vec<CheckResult> {
+    let vals: Vec<u32> = s.stats.valences.keys().copied().collect();
+    let mut out = vec![check_eigen(&vals, crate::construction::DEFAULT_MP_PREC)];
+    out.extend(check_vertices(k, s, opts));
+    out.push(check_normals(k, s, opts));
+    out.extend(check_edges(k, s, opts));
+    out
+}
+
+/// `C6.2-mimics` (measured): how far the PPS is from the S′ it approximates — the paper
+/// says the PPS "mimics" S′ (Sec. 6.2) and gives no bound. Max and p99 of
+/// ‖eval(σ, λ, μ, ν) − S′(σ, λ, μ, ν)‖ over the corners, edge midpoints, centroid and three
+/// seeded interior points of up to 2000 faces (seeded), relative to the bounding-box radius.
+pub fn check_pps_distance(
+    k: &SimplicialSurface,
+    pps: &crate::surface::Pps,
+    target: &dyn crate::surface::TargetSurface,
+    seed: u64,
+) -> CheckResult {
+    use rand::Rng;
+    let mut r = CheckResult::new("C6.2-mimics", "PPS ↔ S′ distance at eval samples (max / p99) [measured]");
+    let faces = sample(k.faces().collect::<Vec<_>>(), 2000, seed ^ 3);
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed ^ 3);
+    let mut d: Vec<(f64, u32, [f64; 3])> = vec![];
+    let mut nan = 0u64;
+    for f in faces {
+        let mut bs = vec![
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.5, 0.5, 0.0],
+            [0.0, 0.5, 0.5],
+            [0.5, 0.0, 0.5],
+            [1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0],
+        ];
+        for _ in 0..3 {
+            let (a, b): (f64, f64) = (rng.gen(), rng.gen());
+            let (a, b) = if a + b > 1.0 { (1.0 - a, 1.0 - b) } else { (a, b) };
+            bs.push([1.0 - a - b, a, b]);
+        }
+        for b in bs {
+            r.examined += 1;
+            let p = pps.eval_f64(f, b).unwrap_or([f64::NAN; 3]);
+            let q = target.eval(f, k.face(f), b);
+            let dist = norm(sub(p, q));
+            if dist.is_nan() {
+                nan += 1;
+                r.offend(|| Witness::new(format!("face {} at {b:?}: NaN", f.0), json!({"face": f.0, "bary": b})));
+            } else {
+                d.push((dist, f.0, b));
+            }
+        }
+    }
+    d.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let rad = radius(k);
+    if r.examined == 0 {
+        r.verdict = Verdict::Skipped {
+            reason: "no samples".into(),
+        };
+        return r;
+    }
+    if nan == 0 {
+        r.verdict = Verdict::Warning;
+    }
+    let (max, p99) = d
+        .last()
+        .map(|x| (x.0, d[(d.len() * 99 / 100).min(d.len() - 1)].0))
+        .unwrap_or((f64::NAN, f64::NAN));
+    r.seed = Some(seed ^ 3);
+    r.worst_deviation = Some(max);
+    let at = d.last().map(|x| format!("face {} at {:?}", x.1, x.2)).unwrap_or_default();
+    r.with_note(format!(
+        "S′ = {}: max {max:.4e} ({:.3e} R), p99 {p99:.4e} ({:.3e} R), R = {rad:.4e}; worst {at}; the paper gives no bound",
+        target.name(),
+        max / rad,
+        p99 / rad
+    ))
+}

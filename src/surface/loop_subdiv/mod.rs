@@ -1,0 +1,13 @@
+//! S′ = the Loop subdivision limit surface of K (Sec. 6.2; Loop 1987), evaluated exactly at
+//! any (σ, λ, μ, ν) of the base mesh by Stam's method (1998).
+
+pub mod eigen;
+pub mod patch;
+pub mod regular;
+pub mod rules;
+pub mod topology;
+pub mod stam;
+pub mod surface;
+
+pub use surface::{LoopError, LoopStats, LoopSurface, MAX_VALENCE};
+pub mod checks;

@@ -1,0 +1,498 @@
+//! [`LoopSurface`]: the Loop limit surface of K as a function of K's (σ, λ, μ, ν).
+//!
+//! Per triangle σ = (c₀, c₁, c₂) of K (stored orientation), one plan:
+//! * at most one corner of valence ≠ 6: one Stam patch over σ, its net gathered in K, the
+//!   extraordinary corner (if any) first;
+//! * two or three such corners (adjacent extraordinary vertices, which Stam's method and the
+//!   authors' code refuse): the four triangles of σ after **one internal Loop step**, each
+//!   with at most one extraordinary corner (edge points have valence 6), their nets gathered
+//!   in the once-subdivided K ([`SubTopology`]). Loop's parametrization is refinable, so the
+//!   point of σ at (λ, μ, ν) is the point of the sub-triangle at the affinely mapped
+//!   coordinates (2λ − 1, 2μ, 2ν) etc.; S′ stays one function of K's parameters.
+
+use super::eigen::EigenStructure;
+use super::rules::vertex_weights;
+use super::stam::{basis_in, extraordinary_jet, regular_jet, regular_point_f64, PatchJet};
+use super::topology::{gather_net, ring, BaseTopology, MissingTriangle, SubPoint, SubTopology};
+use crate::construction::Scalar;
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use std::any::Any;
+use std::collections::{BTreeMap, HashMap};
+use std::sync::{Arc, Mutex};
+
+/// Highest valence evaluated; a higher one is [`LoopError::ValenceTooHigh`] (the eigen-
+/// structure is closed-form for any N, but the per-point cost grows as N²).
+pub const MAX_VALENCE: u32 = 512;
+
+/// Why the Loop surface of K cannot be built or evaluated.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum LoopError {
+    /// A vertex has a valence above [`MAX_VALENCE`].
+    #[error("vertex {vertex} has valence {valence} > {max} (Loop S′ evaluates valences 3..={max})")]
+    ValenceTooHigh {
+        /// The vertex.
+        vertex: u32,
+        /// Its valence.
+        valence: u32,
+        /// [`MAX_VALENCE`].
+        max: u32,
+    },
+    /// A patch net could not be gathered around a face (K is not a closed simplicial surface).
+    #[error("face {face}: {source}")]
+    Net {
+        /// The face.
+        face: u32,
+        /// What was missing.
+        source: MissingTriangle,
+    },
+    /// The corners given are not the corners of the face.
+    #[error("face {face}: {corners:?} are not its corners")]
+    WrongCorners {
+        /// The face.
+        face: u32,
+        /// The corners given.
+        corners: [u32; 3],
+    },
+    /// No such face.
+    #[error("no face {0}")]
+    NoSuchFace(u32),
+    /// Barycentric coordinates not ≥ −1e−12 or not summing to 1 within 1e−9.
+    #[error("barycentric coordinates {0:?} are not a point of the triangle (each ≥ −1e-12, sum 1 ± 1e-9)")]
+    BadBarycentric([f64; 3]),
+    /// The eigen-structure of a valence could not be derived (a defect, reported).
+    #[error("no eigen-structure for valence {0}")]
+    Eigen(usize),
+}
+
+/// A patch: its net (indices into the point table), first point = the patch corner at
+/// (x, y) = (0, 0), and its valence (6 = regular).
+#[derive(Debug, Clone)]
+struct Patch {
+    valence: u32,
+    net: Box<[u32]>,
+}
+
+#[derive(Debug, Clone)]
+enum Plan {
+    /// One patch; `rot` = which stored corner is the patch's first corner.
+    Direct { rot: u8, patch: Patch },
+    /// Four sub-patches after one internal step: corner c₀, c₁, c₂, middle.
+    Split(Box<[Patch; 4]>),
+}
+
+/// Counts for reports.
+#[derive(Debug, Clone, Default, serde::Serialize)]
+pub struct LoopStats {
+    /// Faces with three corners of valence 6.
+    pub regular_faces: usize,
+    /// Faces with exactly one corner of valence ≠ 6.
+    pub extraordinary_faces: usize,
+    /// Faces with two or three such corners, evaluated after one internal Loop step.
+    pub split_faces: usize,
+    /// The valences ≠ 6 present, with their vertex counts.
+    pub valences: BTreeMap<u32, usize>,
+}
+
+/// How a point of the table is computed.
+#[derive(Debug, Clone)]
+enum Stencil {
+    /// A vertex of K.
+    Base,
+    /// Vertex point: centre and ring.
+    Vertex(VertexId, Box<[VertexId]>),
+    /// Edge point: [a, b] and the opposite vertices c, d.
+    Edge([VertexId; 4]),
+}
+
+/// The Loop limit surface of K (Loop 1987), evaluated exactly (Stam 1998).
+pub struct LoopSurface {
+    faces: Vec<[VertexId; 3]>,
+    base: Vec<[f64; 3]>,
+    stencils: Vec<Stencil>,
+    pos: Vec<[f64; 3]>,
+    plans: Vec<Plan>,
+    /// f64 eigen-structures and basis, built with the surface (read without locking).
+    pre: HashMap<CacheKey, Arc<dyn Any + Send + Sync>>,
+    cache: Mutex<HashMap<CacheKey, Arc<dyn Any + Send + Sync>>>,
+    basis_f64: [[f64; 15]; 12],
+    /// Counts of face kinds and valences.
+    pub stats: LoopStats,
+}
+
+impl std::fmt::Debug for LoopSurface {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("LoopSurface").field("stats", &self.stats).finish()
+    }
+}
+
+type CacheKey = (std::any::TypeId, u32, u32);
+
+/// Map from the caller's (u, v) = (bary₁, bary₂) to the patch (x, y): x = a₀ + a₁u + a₂v,
+/// y = b₀ + b₁u + b₂v (integer coefficients).
+type Affine = [[i64; 3]; 2];
+
+struct Builder<'a> {
+    k: &'a SimplicialSurface,
+    stencils: Vec<Stencil>,
+    pos: Vec<[f64; 3]>,
+    index: HashMap<SubPoint, u32>,
+}
+
+impl Builder<'_> {
+    fn sub_index(&mut self, p: SubPoint) -> Result<u32, MissingTriangle> {
+        if let Some(&i) = self.index.get(&p) {
+            return Ok(i);
+        }
+        let k = self.k;
+        let t = BaseTopology(k);
+        let st = match p {
+            SubPoint::Vertex(v) => {
+                let start = k.link_vertex(v, 0).ok_or(MissingTriangle {
+                    a: format!("{v:?}"),
+                    b: "no link".into(),
+                })?;
+                let r = ring(&t, v, start, k.num_faces() + 3)?;
+                Stencil::Vertex(v, r.into_boxed_slice())
+            }
+            SubPoint::Edge(a, b) => {
+                let miss = || MissingTriangle {
+                    a: format!("{a:?}"),
+                    b: format!("{b:?}"),
+                };
+                let c = crate::surface::loop_subdiv::topology::Topology::third(&t, a, b).ok_or_else(miss)?;
+                let d = crate::surface::loop_subdiv::topology::Topology::third(&t, b, a).ok_or_else(miss)?;
+                Stencil::Edge([a, b, c, d])
+            }
+        };
+        let base = |v: VertexId| k.position(v);
+        self.pos.push(stencil_point::<f64>(&st, &base, 53));
+        self.stencils.push(st);
+        let i = (self.pos.len() - 1) as u32;
+        self.index.insert(p, i);
+        Ok(i)
+    }
+}
+
+/// The position of a stencil point in S.
+fn stencil_point<S: Scalar>(st: &Stencil, base: &dyn Fn(VertexId) -> [f64; 3], prec: u32) -> [S; 3] {
+    let bp = |v: VertexId| base(v).map(|x| S::from_f64(x, prec));
+    let zero = S::from_i64(0, prec);
+    let mut acc = [zero.clone(), zero.clone(), zero];
+    let mut add = |w: &S, p: [S; 3]| {
+        for d in 0..3 {
+            acc[d] = acc[d].add(&w.mul(&p[d]));
+        }
+    };
+    match st {
+        Stencil::Base => {}
+        Stencil::Vertex(v, r) => {
+            let (wc, wr) = vertex_weights::<S>(r.len() as u32, prec);
+            add(&wc, bp(*v));
+            for &x in r.iter() {
+                add(&wr, bp(x));
+            }
+        }
+        Stencil::Edge([a, b, c, d]) => {
+            let (w3, w1) = (S::from_ratio(3, 8, prec), S::from_ratio(1, 8, prec));
+            add(&w3, bp(*a));
+            add(&w3, bp(*b));
+            add(&w1, bp(*c));
+            add(&w1, bp(*d));
+        }
+    }
+    acc
+}
+
+impl LoopSurface {
+    /// The Loop surface of the closed simplicial surface K.
+    pub fn new(k: &SimplicialSurface) -> Result<LoopSurface, LoopError> {
+        let mut stats = LoopStats::default();
+        for v in k.vertices() {
+            let m = k.degree(v);
+            if m > MAX_VALENCE {
+                return Err(LoopError::ValenceTooHigh {
+                    vertex: v.0,
+                    valence: m,
+                    max: MAX_VALENCE,
+                });
+            }
+            if m != 6 {
+                *stats.valences.entry(m).or_default() += 1;
+            }
+        }
+        let slots = k.vertex_slots();
+        let mut b = Builder {
+            k,
+            stencils: vec![Stencil::Base; slots],
+            pos: (0..slots).map(|i| k.position(VertexId(i as u32))).collect(),
+            index: HashMap::new(),
+        };
+        let cap = MAX_VALENCE as usize + 1;
+        let base_t = BaseTopology(k);
+        let sub_t = SubTopology(BaseTopology(k));
+        let mut plans = Vec::with_capacity(k.num_faces());
+        let mut faces = Vec::with_capacity(k.num_faces());
+        for f in k.faces() {
+            let c = k.face(f);
+            faces.push(c);
+            let irregular: Vec<usize> = (0..3).filter(|&i| k.degree(c[i]) != 6).collect();
+            let err = |source| LoopError::Net { face: f.0, source };
+            let plan = if irregular.len() <= 1 {
+                let rot = irregular.first().copied().unwrap_or(0);
+                let (v, a, bb) = (c[rot], c[(rot + 1) % 3], c[(rot + 2) % 3]);
+                let net = gather_net(&base_t, v, a, bb, cap).map_err(err)?;
+                if irregular.is_empty() {
+                    stats.regular_faces += 1;
+                } else {
+                    stats.extraordinary_faces += 1;
+                }
+                Plan::Direct {
+                    rot: rot as u8,
+                    patch: Patch {
+                        valence: k.degree(v),
+                        net: net.iter().map(|p| p.0).collect(),
+                    },
+                }
+            } else {
+                stats.split_faces += 1;
+                let e = |i: usize, j: usize| SubPoint::edge(c[i], c[j]);
+                let vp = |i: usize| SubPoint::Vertex(c[i]);
+                let tris = [
+                    (vp(0), e(0, 1), e(0, 2), k.degree(c[0])),
+                    (vp(1), e(1, 2), e(0, 1), k.degree(c[1])),
+                    (vp(2), e(0, 2), e(1, 2), k.degree(c[2])),
+                    (e(0, 1), e(1, 2), e(0, 2), 6),
+                ];
+                let mut patches = Vec::with_capacity(4);
+                for (v, a, bb, valence) in tris {
+                    let net = gather_net(&sub_t, v, a, bb, cap).map_err(err)?;
+                    let idx = net
+                        .into_iter()
+                        .map(|p| b.sub_index(p))
+                        .collect::<Result<Box<[u32]>, _>>()
+                        .map_err(err)?;
+                    patches.push(Patch { valence, net: idx });
+                }
+                let arr: [Patch; 4] = patches
+                    .try_into()
+                    .map_err(|_| LoopError::Eigen(0))?;
+                Plan::Split(Box::new(arr))
+            };
+            plans.push(plan);
+        }
+        let mut pre: HashMap<CacheKey, Arc<dyn Any + Send + Sync>> = HashMap::new();
+        for &n in stats.valences.keys() {
+            let es = EigenStructure::<f64>::new(n as usize, 53).ok_or(LoopError::Eigen(n as usize))?;
+            pre.insert((std::any::TypeId::of::<EigenStructure<f64>>(), n, 53), Arc::new(es));
+        }
+        let basis = basis_in::<f64>(53).ok_or(LoopError::Eigen(6))?;
+        pre.insert((std::any::TypeId::of::<[[f64; 15]; 12]>(), 0, 53), Arc::new(basis));
+        let basis_f64 = basis;
+        Ok(LoopSurface {
+            faces,
+            base: (0..slots).map(|i| k.position(VertexId(i as u32))).collect(),
+            stencils: b.stencils,
+            pos: b.pos,
+            plans,
+            pre,
+            basis_f64,
+            cache: Mutex::new(HashMap::new()),
+            stats,
+        })
+    }
+
+    fn cached<T: Any + Send + Sync>(&self, n: u32, prec: u32, make: impl FnOnce() -> Option<T>) -> Option<Arc<T>> {
+        let key = (std::any::TypeId::of::<T>(), n, prec);
+        if let Some(v) = self.pre.get(&key) {
+            return v.clone().downcast::<T>().ok();
+        }
+        if let Ok(map) = self.cache.lock() {
+            if let Some(v) = map.get(&key) {
+                return v.clone().downcast::<T>().ok();
+            }
+        }
+        let v = Arc::new(make()?);
+        if let Ok(mut map) = self.cache.lock() {
+            map.insert(key, v.clone());
+        }
+        Some(v)
+    }
+
+    fn point<S: Scalar>(&self, i: u32, prec: u32) -> [S; 3] {
+        let i = i as usize;
+        if S::from_i64(0, prec).precision_bits() <= 53 {
+            return self.pos[i].map(|x| S::from_f64(x, prec));
+        }
+        match &self.stencils[i] {
+            Stencil::Base => self.base[i].map(|x| S::from_f64(x, prec)),
+            st => stencil_point::<S>(st, &|v: VertexId| self.base[v.idx()], prec),
+        }
+    }
+
+    /// The stored corners of face f.
+    pub fn corners(&self, f: FaceId) -> Option<[VertexId; 3]> {
+        self.faces.get(f.idx()).copied()
+    }
+
+    /// S′ and its derivatives at the point of σ = f with barycentric coordinates `bary`
+    /// w.r.t. `corners` (the corners of f in any order): p and, if `derivs`, the derivatives
+    /// w.r.t. (u, v) = (bary₁, bary₂) (bary₀ = 1 − u − v). Generic over the scalar: f64 uses
+    /// the cached eigen-structures, others build theirs at the precision of `bary`.
+    pub fn jet<S: Scalar>(
+        &self,
+        f: FaceId,
+        corners: [VertexId; 3],
+        bary: &[S; 3],
+        derivs: bool,
+    ) -> Result<PatchJet<S>, LoopError> {
+        let stored = self.corners(f).ok_or(LoopError::NoSuchFace(f.0))?;
+        let bf = bary.clone().map(|x| x.to_f64());
+        let sum = bf[0] + bf[1] + bf[2];
+        if bf.iter().any(|&x| !(x >= -1e-12)) || !((sum - 1.0).abs() <= 1e-9) {
+            return Err(LoopError::BadBarycentric(bf));
+        }
+        // perm[i] = position in the caller's list of stored corner i.
+        let mut perm = [0usize; 3];
+        for (i, s) in stored.iter().enumerate() {
+            perm[i] = corners.iter().position(|c| c == s).ok_or(LoopError::WrongCorners {
+                face: f.0,
+                corners: corners.map(|c| c.0),
+            })?;
+        }
+        if perm[0] == perm[1] || perm[1] == perm[2] || perm[0] == perm[2] {
+            return Err(LoopError::WrongCorners {
+                face: f.0,
+                corners: corners.map(|c| c.0),
+            });
+        }
+        let prec = bary[0].precision_bits();
+        // Caller bary as affine functions of (1, u, v).
+        let caller: [[i64; 3]; 3] = [[1, -1, -1], [0, 1, 0], [0, 0, 1]];
+        let sb: [S; 3] = std::array::from_fn(|i| bary[perm[i]].clone());
+        let sa: [[i64; 3]; 3] = std::array::from_fn(|i| caller[perm[i]]);
+        let c = |p: i64, q: i64| S::from_ratio(p, q, prec);
+        let split = matches!(self.plans[f.idx()], Plan::Split(_));
+        let (patch, lb, la, rot) = match &self.plans[f.idx()] {
+            Plan::Direct { rot, patch } => (patch, sb, sa, *rot as usize),
+            Plan::Split(ps) => {
+                let half = c(1, 2);
+                let lin = |coef: [(i64, usize); 2], k: i64| -> ([i64; 3], S) {
+                    let mut a = [0i64; 3];
+                    a[0] += k;
+                    let mut v = S::from_i64(k, prec);
+                    for (w, i) in coef {
+                        for t in 0..3 {
+                            a[t] += w * sa[i][t];
+                        }
+                        v = v.add(&S::from_i64(w, prec).mul(&sb[i]));
+                    }
+                    (a, v)
+                };
+                // (sub-face index, its bary as ±2·bary + const).
+                let (j, parts) = if sb[0].lt(&half).is_false() {
+                    (0, [lin([(2, 0), (0, 0)], -1), lin([(2, 1), (0, 0)], 0), lin([(2, 2), (0, 0)], 0)])
+                } else if sb[1].lt(&half).is_false() {
+                    (1, [lin([(2, 1), (0, 0)], -1), lin([(2, 2), (0, 0)], 0), lin([(2, 0), (0, 0)], 0)])
+                } else if sb[2].lt(&half).is_false() {
+                    (2, [lin([(2, 2), (0, 0)], -1), lin([(2, 0), (0, 0)], 0), lin([(2, 1), (0, 0)], 0)])
+                } else {
+                    (3, [lin([(-2, 2), (0, 0)], 1), lin([(-2, 0), (0, 0)], 1), lin([(-2, 1), (0, 0)], 1)])
+                };
+                let [p0, p1, p2] = parts;
+                (&ps[j], [p0.1, p1.1, p2.1], [p0.0, p1.0, p2.0], 0)
+            }
+        };
+        let (x, y) = (lb[(rot + 1) % 3].clone(), lb[(rot + 2) % 3].clone());
+        let map: Affine = [la[(rot + 1) % 3], la[(rot + 2) % 3]];
+        let net: Vec<[S; 3]> = patch.net.iter().map(|&i| self.point::<S>(i, prec)).collect();
+        let basis = self
+            .cached(0, prec, || basis_in::<S>(prec))
+            .ok_or(LoopError::Eigen(6))?;
+        let mut jet = self.patch_jet(patch, &basis, &net, &x, &y, derivs, prec)?;
+        jet.level += split as u32;
+        Ok(reparam(jet, &map, prec))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn patch_jet<S: Scalar>(
+        &self,
+        patch: &Patch,
+        basis: &[[S; 15]; 12],
+        net: &[[S; 3]],
+        x: &S,
+        y: &S,
+        derivs: bool,
+        prec: u32,
+    ) -> Result<PatchJet<S>, LoopError> {
+        if patch.valence == 6 {
+            let n12: &[[S; 3]; 12] = net.try_into().map_err(|_| LoopError::Eigen(6))?;
+            return Ok(regular_jet(basis, n12, x, y, derivs, prec));
+        }
+        let n = patch.valence;
+        let es = self
+            .cached(n, prec, || EigenStructure::<S>::new(n as usize, prec))
+            .ok_or(LoopError::Eigen(n as usize))?;
+        Ok(extraordinary_jet(&es, basis, net, x, y, derivs))
+    }
+
+    /// f64 position (the [`crate::surface::TargetSurface`] evaluation). Regular faces take an
+    /// allocation-free path (same arithmetic as [`Self::jet`]).
+    pub fn eval_f64(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> Result<[f64; 3], LoopError> {
+        if let (Some(Plan::Direct { patch, .. }), Some(stored)) = (self.plans.get(f.idx()), self.corners(f)) {
+            let sum = bary[0] + bary[1] + bary[2];
+            if patch.valence == 6
+                && bary.iter().all(|&x| x >= -1e-12)
+                && (sum - 1.0).abs() <= 1e-9
+            {
+                // Regular faces are gathered with rot = 0: x, y = bary of stored c₁, c₂.
+                let at = |s: VertexId| corners.iter().position(|&c| c == s);
+                if let (Some(i0), Some(i1), Some(i2)) = (at(stored[0]), at(stored[1]), at(stored[2])) {
+                    if i0 != i1 && i1 != i2 && i0 != i2 {
+                        let net: [[f64; 3]; 12] = std::array::from_fn(|j| self.pos[patch.net[j] as usize]);
+                        return Ok(regular_point_f64(&self.basis_f64, &net, bary[i1], bary[i2]));
+                    }
+                }
+            }
+        }
+        Ok(self.jet::<f64>(f, corners, &bary, false)?.p)
+    }
+}
+
+/// Derivatives w.r.t. (x, y) to derivatives w.r.t. (u, v) for the affine map `m`.
+fn reparam<S: Scalar>(jet: PatchJet<S>, m: &Affine, prec: u32) -> PatchJet<S> {
+    let Some(d) = jet.d else { return jet };
+    let i = |x: i64| S::from_i64(x, prec);
+    let (xu, xv, yu, yv) = (m[0][1], m[0][2], m[1][1], m[1][2]);
+    let lin = |a: &[S; 3], ca: i64, b: &[S; 3], cb: i64| -> [S; 3] {
+        std::array::from_fn(|t| a[t].mul(&i(ca)).add(&b[t].mul(&i(cb))))
+    };
+    let quad = |c: [i64; 3]| -> [S; 3] {
+        std::array::from_fn(|t| {
+            d[2][t]
+                .mul(&i(c[0]))
+                .add(&d[3][t].mul(&i(c[1])))
+                .add(&d[4][t].mul(&i(c[2])))
+        })
+    };
+    let du = lin(&d[0], xu, &d[1], yu);
+    let dv = lin(&d[0], xv, &d[1], yv);
+    let duu = quad([xu * xu, 2 * xu * yu, yu * yu]);
+    let duv = quad([xu * xv, xu * yv + xv * yu, yu * yv]);
+    let dvv = quad([xv * xv, 2 * xv * yv, yv * yv]);
+    PatchJet {
+        p: jet.p,
+        d: Some([du, dv, duu, duv, dvv]),
+        level: jet.level,
+    }
+}
+
+impl crate::surface::TargetSurface for LoopSurface {
+    fn name(&self) -> &str {
+        "loop-limit"
+    }
+    /// The exact limit point; NaN when the arguments are not a point of f (the fit then
+    /// reports the NaN: the trait has no error channel).
+    fn eval(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> [f64; 3] {
+        self.eval_f64(f, corners, bary).unwrap_or([f64::NAN; 3])
+    }
+}
