@@ -1,4 +1,4 @@
-//! Chapter 4: the PPM set of gluing data built from a simplicial surface (issue 4).
+//! Chapter 4: the PPM set of gluing data built from a simplicial surface.
 //!
 //! This module holds the pure mathematics of Sec. 4.1 (independent of meshes), generic over
 //! the scalar type ([`scalar::Scalar`]: `f64`, [`scalar::Mp`]), the seeded samplers, and the
