@@ -4,8 +4,7 @@
 //! and, with `--features mpfr`, in MPFR; the ratio astro/MPFR is printed.
 //! Run: `cargo bench --bench mp_backends --features mpfr`.
 //!
-//! Measured (2-core CI-class machine, shared with other builds, so ±30 %): see the table
-//! in docs/multiprecision.md ("Speed").
+//! The ratio is printed by the run; record it in docs/multiprecision.md ("Speed").
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use pseudomanifold::conditions::chapter4::{run_chapter4, Ch4Options, Precision};
