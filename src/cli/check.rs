@@ -39,6 +39,15 @@ pub struct Ch4Args {
     /// Run only the Chapter 3.4–4 checks (skip building the surface of Chapter 5).
     #[arg(long)]
     pub no_surface: bool,
+    /// vertex (the report's, Ch. 4–5) | sigma-v (the tutorial's (σ, v)-indexed PPS, SPEC SV-…).
+    #[arg(long, default_value = "vertex")]
+    pub construction: String,
+    /// sigma-v: κ of the overlapping point r_{v,σ} = −κ·cos(π/m_v)·b (SPEC SV-D3), in (0, 1).
+    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
+    pub kappa: f64,
+    /// sigma-v: degree of the triangular Bézier patches ψ_(σ,v) (SPEC SV-D11).
+    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE)]
+    pub patch_degree: usize,
 }
 
 impl Ch4Args {

@@ -3,6 +3,7 @@
 
 mod check;
 mod oracle;
+mod sigma_v;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -143,6 +144,15 @@ enum Command {
         profile: String,
         #[arg(long)]
         quiet: bool,
+        /// vertex (the report's) | sigma-v (the tutorial's (σ, v)-indexed PPS).
+        #[arg(long, default_value = "vertex")]
+        construction: String,
+        /// sigma-v: κ of r_{v,σ} (SPEC SV-D3).
+        #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
+        kappa: f64,
+        /// sigma-v: degree of the triangular patches (SPEC SV-D11).
+        #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE)]
+        patch_degree: usize,
     },
     /// Evaluate one point of M: eval(σ, λ, μ, ν) of Sec. 6.1.4.
     Eval {
@@ -167,7 +177,25 @@ pub fn main() -> ExitCode {
             labels,
             spec,
             ch4,
-        } => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
+        } => match ch4.construction.as_str() {
+            "vertex" => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
+            "sigma-v" if spec => sigma_v::run_check(
+                &file,
+                json,
+                &crate::construction::sigma_v::checks::SvCheckOptions {
+                    seed: ch4.seed,
+                    samples: ch4.samples,
+                    max_views: ch4.max_configs.unwrap_or(2),
+                    kappa: ch4.kappa,
+                    patch_degree: ch4.patch_degree,
+                    ..Default::default()
+                },
+            ),
+            other => {
+                eprintln!("error: --construction {other}: expected vertex, or sigma-v with --spec");
+                ExitCode::from(2)
+            }
+        },
         Command::Oracle {
             mesh,
             bits,
@@ -262,7 +290,17 @@ pub fn main() -> ExitCode {
             output,
             profile,
             quiet,
-        } => crate::surface::cli::run_sample(&file, level, &output, &profile, quiet),
+            construction,
+            kappa,
+            patch_degree,
+        } => match construction.as_str() {
+            "vertex" => crate::surface::cli::run_sample(&file, level, &output, &profile, quiet),
+            "sigma-v" => sigma_v::run_sample(&file, level, &output, kappa, patch_degree, quiet),
+            other => {
+                eprintln!("error: --construction {other}: expected vertex or sigma-v");
+                ExitCode::from(2)
+            }
+        },
         Command::Eval {
             file,
             face,

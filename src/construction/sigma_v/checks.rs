@@ -25,8 +25,16 @@ pub const SV_ERRATA: &[(&str, &str)] = &[
         "the first attempt's wedges overlap (T 2092–2100: \"So, I did NOT make it right\")",
     ),
     (
-        "SV-D4.1.6-factor",
-        "g_u's angular factor 6/m_u (T 2174) is inverted; m_u/6 as in the report",
+        "SV-E-gu-factor",
+        "g_u's angular factor 6/m_u (T 2174) is inverted; m_u/6 as in the report (R 690)",
+    ),
+    (
+        "SV-E-angle-range",
+        "g_u on [0, 2π) (T 2172, 2211) is not closed under θ ↦ m_uθ/6; the report's (−π, π] with R_(u,w)",
+    ),
+    (
+        "SV-E-equilateral",
+        "\"(1/2, √2/3)\" (T 2678) is not a vertex of the equilateral triangle; (1/2, −√3/2) (R 1360)",
     ),
 ];
 
@@ -341,6 +349,7 @@ pub fn run_sigma_v_checks(k: &SimplicialSurface, target: &dyn crate::surface::Ta
     };
     let cfg = SampleConfig { seed: o.seed, n: o.samples.max(1) };
     out.push(check_count(&g));
+    out.extend(super::errata::run_errata(g.degrees()));
     let faces = view_faces(k, o.max_views.max(1), o.seed);
     if let Some(&f) = faces.first() {
         out.push(check_first_attempt(&g, k.face(f)[0], &cfg));

@@ -17,6 +17,8 @@
 //! SPEC.md (section "Tutorial (σ, v)-indexed construction").
 
 pub mod checks;
+pub mod compare;
+pub mod errata;
 pub mod gluing;
 pub mod patch;
 pub mod surface;

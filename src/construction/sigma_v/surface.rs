@@ -17,6 +17,9 @@ use super::wedge::{WedgeConsts, WedgeTable};
 use crate::construction::maps::{g_v_inv, rotate_frac, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::surface::eval::{canonical_point, choose_chart, Chart};
+use crate::surface::geometry::from_jet;
+use crate::surface::jet::Jet;
+use crate::surface::output::{sample_pattern_faces, SampledMesh};
 use crate::surface::target::TargetSurface;
 use crate::surface::{Consts, Profile, SurfaceScalar};
 use rayon::prelude::*;
@@ -366,6 +369,38 @@ impl SigmaVPps {
     /// eval in f64.
     pub fn eval_f64(&self, f: FaceId, bary: [f64; 3]) -> Result<[f64; 3], SigmaVError> {
         Ok(self.eval(f, &bary, &self.consts)?.2)
+    }
+
+    /// Sample M by midpoint subdivision through eval (the Sec. 6.2 pattern of
+    /// `surface::output`, shared), with normals and curvatures from the jets of θ.
+    pub fn sample_surface(&self, level: u32) -> Result<SampledMesh, SigmaVError> {
+        let faces: Vec<_> = (0..self.gluing.num_faces())
+            .map(|f| self.gluing.face_corners(FaceId(f as u32)))
+            .collect::<Result<_, _>>()?;
+        let pat = sample_pattern_faces(&faces, level);
+        let cj = self.consts::<Jet<f64>>(53);
+        let res: Vec<Result<_, SigmaVError>> = pat
+            .points
+            .par_iter()
+            .map(|s| {
+                let (corner, q) = self.eval_chart(s.face, &s.bary, &self.consts)?;
+                let (x, y) = Jet::variables(q.x, q.y);
+                let t = self.theta_plane(corner, &P2::new(x, y), &cj)?;
+                Ok(from_jet(&t))
+            })
+            .collect();
+        let mut out = SampledMesh {
+            faces: pat.faces,
+            ..SampledMesh::default()
+        };
+        for r in res {
+            let g = r?;
+            out.positions.push(g.point);
+            out.normals.push(g.normal);
+            out.gaussian.push(g.gaussian);
+            out.mean.push(g.mean);
+        }
+        Ok(out)
     }
 
     /// eval of many points in parallel; `out[i]` for `points[i]`.

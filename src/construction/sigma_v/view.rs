@@ -13,7 +13,7 @@
 //!
 //! The view is taken on a subset of I (the checkers loop over all pairs and triples).
 
-use super::gluing::{Corner, CornerId, PairCase, SigmaV};
+use super::gluing::{g_uw_on_domain, Corner, CornerId, PairCase, SigmaV};
 use super::wedge::WedgeTable;
 use crate::construction::abstract_view::COPY_SPACING;
 use crate::construction::maps::{g_v_inv, rotate_frac, P2};
@@ -137,6 +137,7 @@ impl<'a> SigmaVView<'a> {
                 let m = self.g.degree(i.v);
                 if let Some(w) = self.t.get(m) {
                     out.extend(self.wedge_samples(i, rng, n));
+                    out.extend(self.wedge_samples(j, rng, n));
                     // W_i ∩ W_j always contains a neighbourhood of the centre.
                     let r = 3.0 * w.delta;
                     for _ in 0..n {
@@ -150,6 +151,14 @@ impl<'a> SigmaVView<'a> {
                 for (_, q) in sample_lens::<f64>(rng.next_u64(), n, 53).points {
                     if let Ok(p) = g_v_inv(e.m_u, &q) {
                         out.push(rotate_frac(&p, e.i as i64, e.m_u as i64));
+                    }
+                }
+                // And from j's side (so Ω_ij and Ω_ji are found non-empty together, also
+                // when they are thin slivers along a side of W_j).
+                let back = e.reversed();
+                for y in self.wedge_samples(j, rng, n) {
+                    if let Some(q) = g_uw_on_domain(&back, &y) {
+                        out.push(q);
                     }
                 }
             }
