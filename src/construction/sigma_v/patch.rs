@@ -276,7 +276,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn sv_psi_full_rank_and_reproduces_linear_data() {
+    fn sv_d11_sv_psi_full_rank_and_reproduces_linear_data() {
         for m in [3u32, 5, 6, 8, 12] {
             let w = WedgeConsts::<f64>::new(m, 0.25, 53);
             let f = factor(&w, DEFAULT_PATCH_DEGREE);

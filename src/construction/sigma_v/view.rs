@@ -42,7 +42,16 @@ pub struct SigmaVView<'a> {
     ids: Vec<CornerId>,
     version: Version,
     phi_override: Option<Box<SvPhiOverride<'a>>>,
+    /// Per case-(2) pair: the points of a fixed grid of Ω_uw that lie in Ω_ij (see
+    /// [`Self::grid_points`]).
+    grid: std::sync::Mutex<std::collections::HashMap<(Idx, Idx), Vec<P2<f64>>>>,
 }
+
+/// Side of the grid of the canonical lens whose pull-backs seed the samples of the case-(2)
+/// gluing domains. The grid is invariant under h (x ↦ 1 − x, y ↦ −y), so g_(u,w) maps the
+/// grid of Ω_uw onto the grid of Ω_wu: Ω_ij and Ω_ji are found non-empty together (up to
+/// rounding on their boundaries), also when they are thin slivers.
+pub const LENS_GRID_SIDE: usize = 64;
 
 impl<'a> SigmaVView<'a> {
     /// The view on `ids` (ids outside I are dropped).
@@ -54,6 +63,7 @@ impl<'a> SigmaVView<'a> {
             ids,
             version,
             phi_override: None,
+            grid: Default::default(),
         }
     }
 
@@ -208,6 +218,26 @@ impl<'a> SigmaVView<'a> {
         out
     }
 
+    /// The grid points of Ω_ij (case (2)), cached per pair.
+    fn grid_points(&self, i: Idx, j: Idx, a: Corner, b: Corner) -> Vec<P2<f64>> {
+        let PairCase::Edge(e) = self.g.case(a, b) else {
+            return vec![];
+        };
+        if let Ok(m) = self.grid.lock() {
+            if let Some(v) = m.get(&(i, j)) {
+                return v.clone();
+            }
+        }
+        let pts: Vec<P2<f64>> = super::checks::omega_uw_grid(&e, LENS_GRID_SIDE)
+            .into_iter()
+            .filter(|q| self.in_gluing_plane(a, b, q))
+            .collect();
+        if let Ok(mut m) = self.grid.lock() {
+            m.insert((i, j), pts.clone());
+        }
+        pts
+    }
+
     fn phi_plane(&self, j: Corner, i: Corner, q: &P2<f64>) -> Option<P2<f64>> {
         if let Some(f) = &self.phi_override {
             if let Some(y) = f(j, i, q.to_f64()) {
@@ -289,6 +319,11 @@ impl GluingData<2> for SigmaVView<'_> {
                     kept.push(q);
                 }
             }
+        }
+        if kept.len() < want {
+            let grid = self.grid_points(i, j, a, b);
+            let step = (grid.len() / want).max(1);
+            kept.extend(grid.into_iter().step_by(step));
         }
         kept.truncate(want);
         kept.iter().filter_map(|q| self.from_plane(i, q)).collect()

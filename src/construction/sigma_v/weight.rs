@@ -67,7 +67,16 @@ mod tests {
                 for b in 0..60 {
                     let p = P2::new(-1.0 + a as f64 / 30.0, -1.0 + b as f64 / 30.0);
                     let g = gamma_local(&w, &k, &p);
-                    assert_eq!(g > 0.0, w.in_wedge_local(&p), "m {m} p {p:?} γ {g}");
+                    // γ > 0 only on W; on W at a margin from ∂W it is positive in f64 too (ξ is
+                    // flat at its ends, so within ~1e-6 of ∂W it underflows to 0).
+                    if g > 0.0 {
+                        assert!(w.in_wedge_local(&p), "m {m} p {p:?} γ {g}");
+                    }
+                    let (d1, d2) = w.side_distances(&p);
+                    let margin = d1.min(d2) > 1e-3 * w.c && p.norm2() < w.rho2 * (1.0 - 1e-3);
+                    if margin {
+                        assert!(g > 0.0, "m {m} p {p:?} γ {g}");
+                    }
                 }
             }
         }
