@@ -129,7 +129,6 @@ enum Command {
         json: bool,
     },
     /// Certified interval proofs of the Chapter 4 conditions for all degree configurations
-    /// (issue 6).
     Certify(crate::certify::cli::CertifyArgs),
     /// Sample the C^∞ surface M by midpoint subdivision through eval (Sec. 6.2) and write it
     /// with per-vertex normals and curvatures (.obj, .off, .ply; PLY also with colours).
