@@ -16,7 +16,10 @@ use std::path::Path;
 use std::time::Instant;
 
 fn meshes() -> Vec<(String, SimplicialSurface)> {
-    let mut out = vec![("torus 20k".to_string(), validate(&torus(100, 100)).surface.expect("torus"))];
+    let mut out = vec![(
+        "torus 20k".to_string(),
+        validate(&torus(100, 100)).surface.expect("torus"),
+    )];
     let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good/koala.obj");
     if let Ok(raw) = read_mesh(&koala, &ReadOptions::default()) {
         if let Some(k) = validate(&raw).surface {
@@ -27,7 +30,8 @@ fn meshes() -> Vec<(String, SimplicialSurface)> {
 }
 
 fn build(k: &SimplicialSurface) -> SigmaVPps {
-    SigmaVPps::build(k, &PnTriangles::new(k), DEFAULT_KAPPA, DEFAULT_PATCH_DEGREE).expect("default κ")
+    SigmaVPps::build(k, &PnTriangles::new(k), DEFAULT_KAPPA, DEFAULT_PATCH_DEGREE)
+        .expect("default κ")
 }
 
 fn points(nf: usize, n: usize) -> Vec<(FaceId, [f64; 3])> {

@@ -19,7 +19,10 @@ fn load(file: &Path) -> Result<SimplicialSurface, ExitCode> {
         ExitCode::from(2)
     })?;
     validate(&raw).surface.ok_or_else(|| {
-        eprintln!("error: {} is not a simplicial surface (run `ppm check` for details)", file.display());
+        eprintln!(
+            "error: {} is not a simplicial surface (run `ppm check` for details)",
+            file.display()
+        );
         ExitCode::from(1)
     })
 }
@@ -64,9 +67,16 @@ pub fn run_check(file: &Path, json: bool, o: &SvCheckOptions) -> ExitCode {
             }
         }
         if unexpected.is_empty() {
-            println!("verdict: no failure beyond the documented errata  [{:.2} s]", t0.elapsed().as_secs_f64());
+            println!(
+                "verdict: no failure beyond the documented errata  [{:.2} s]",
+                t0.elapsed().as_secs_f64()
+            );
         } else {
-            println!("verdict: unexpected failures: {}  [{:.2} s]", unexpected.join(", "), t0.elapsed().as_secs_f64());
+            println!(
+                "verdict: unexpected failures: {}  [{:.2} s]",
+                unexpected.join(", "),
+                t0.elapsed().as_secs_f64()
+            );
         }
     }
     if unexpected.is_empty() {
@@ -77,7 +87,14 @@ pub fn run_check(file: &Path, json: bool, o: &SvCheckOptions) -> ExitCode {
 }
 
 /// `ppm sample --construction sigma-v FILE --level N -o OUT`.
-pub fn run_sample(file: &Path, level: u32, out: &Path, kappa: f64, degree: usize, quiet: bool) -> ExitCode {
+pub fn run_sample(
+    file: &Path,
+    level: u32,
+    out: &Path,
+    kappa: f64,
+    degree: usize,
+    quiet: bool,
+) -> ExitCode {
     let t0 = Instant::now();
     let k = match load(file) {
         Ok(k) => k,
@@ -99,7 +116,10 @@ pub fn run_sample(file: &Path, level: u32, out: &Path, kappa: f64, degree: usize
             t0.elapsed().as_secs_f64()
         );
         for f in pps.fit_info() {
-            eprintln!("  degree {:>2}: {} samples, {} unknowns, rank {}, κ(A) = {:.2e}", f.m, f.rows, f.unknowns, f.rank, f.condition);
+            eprintln!(
+                "  degree {:>2}: {} samples, {} unknowns, rank {}, κ(A) = {:.2e}",
+                f.m, f.rows, f.unknowns, f.rank, f.condition
+            );
         }
     }
     let m = match pps.sample_surface(level) {

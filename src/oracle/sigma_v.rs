@@ -20,7 +20,11 @@ pub struct SigmaVOracle {
 impl SigmaVOracle {
     /// A state with κ (validated when the surface is built).
     pub fn new(kappa: f64) -> Self {
-        SigmaVOracle { kappa, pps: None, mp: None }
+        SigmaVOracle {
+            kappa,
+            pps: None,
+            mp: None,
+        }
     }
 
     /// Forget the surface (a new mesh was loaded).
@@ -40,8 +44,13 @@ impl SigmaVOracle {
     ) -> Result<(Result<Vec<f64>, String>, Vec<Mp>, Value), String> {
         if self.pps.is_none() {
             let pn = PnTriangles::new(k);
-            let p = SigmaVPps::build(k, &pn, self.kappa, crate::construction::sigma_v::DEFAULT_PATCH_DEGREE)
-                .map_err(|e| e.to_string())?;
+            let p = SigmaVPps::build(
+                k,
+                &pn,
+                self.kappa,
+                crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+            )
+            .map_err(|e| e.to_string())?;
             self.pps = Some(p);
         }
         let pps = self.pps.as_ref().ok_or("no surface")?;
@@ -52,7 +61,10 @@ impl SigmaVOracle {
         let f = FaceId(face);
         let bm = bary.map(|x| Mp::from_f64(x, bits));
         let (corner, q, b) = pps.eval(f, &bm, cm).map_err(|e| e.to_string())?;
-        let a = pps.eval_f64(f, bary).map(|x| x.to_vec()).map_err(|e| e.to_string());
+        let a = pps
+            .eval_f64(f, bary)
+            .map(|x| x.to_vec())
+            .map_err(|e| e.to_string());
         let info = json!({
             "construction": "sigma-v",
             "kappa": self.kappa,

@@ -108,7 +108,9 @@ pub fn view_faces(k: &SimplicialSurface, n: usize, seed: u64) -> Vec<FaceId> {
         return vec![];
     }
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x5157);
-    let mut out: Vec<FaceId> = (0..n.min(nf)).map(|_| FaceId(rng.gen_range(0..nf as u32))).collect();
+    let mut out: Vec<FaceId> = (0..n.min(nf))
+        .map(|_| FaceId(rng.gen_range(0..nf as u32)))
+        .collect();
     out.sort_unstable();
     out.dedup();
     out
@@ -170,7 +172,12 @@ pub fn omega_uw_grid(e: &EdgeConfig, side: usize) -> Vec<P2<f64>> {
 
 /// SPEC `SV-H`: for every edge [u, w] (one per degree pair), the pairs of case (3) declared
 /// empty by T 2430–2442 have W_i ∩ g_(w,u)(W_j ∖ {0}) = ∅ (scanned on a grid of Ω_uw).
-pub fn check_declared_empty(k: &SimplicialSurface, g: &SigmaV, t: &WedgeTable<f64>, side: usize) -> CheckResult {
+pub fn check_declared_empty(
+    k: &SimplicialSurface,
+    g: &SigmaV,
+    t: &WedgeTable<f64>,
+    side: usize,
+) -> CheckResult {
     let mut r = CheckResult::new(
         "SV-H",
         "case-(3) pairs with [u,w] an edge are empty: W_i ∩ g_(w,u)(W_j−{0}) = ∅",
@@ -212,13 +219,25 @@ pub fn check_declared_empty(k: &SimplicialSurface, g: &SigmaV, t: &WedgeTable<f6
 
 /// The smallest κ on the grid `kappas` at which SV-H fails for degrees (m_u, m_w) (labels 0),
 /// with a witness; `None` when it holds at every κ given.
-pub fn emptiness_threshold(m_u: u32, m_w: u32, kappas: &[f64], side: usize) -> Option<(f64, [f64; 2])> {
-    let e = EdgeConfig { m_u, i: 0, m_w, j: 0 };
+pub fn emptiness_threshold(
+    m_u: u32,
+    m_w: u32,
+    kappas: &[f64],
+    side: usize,
+) -> Option<(f64, [f64; 2])> {
+    let e = EdgeConfig {
+        m_u,
+        i: 0,
+        m_w,
+        j: 0,
+    };
     for &kappa in kappas {
         let tu = super::wedge::WedgeConsts::<f64>::new(m_u, kappa, 53);
         let tw = super::wedge::WedgeConsts::<f64>::new(m_w, kappa, 53);
         for q in omega_uw_grid(&e, side) {
-            let Some(y) = g_uw_on_domain(&e, &q) else { continue };
+            let Some(y) = g_uw_on_domain(&e, &q) else {
+                continue;
+            };
             // case (3): w ∉ τ (label 0 ∉ {k, k+1}) and u ∉ η (0 ∉ {k', k'+1}).
             for ki in 1..m_u - 1 {
                 if !tu.in_wedge(ki, &q) {
@@ -253,16 +272,29 @@ fn theta_fn<'a>(
 /// SPEC `SV-D13`: eval's point lies in W_(σ,c*) and θ is defined there; samples of every
 /// face (up to `max_faces`).
 pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
-    let mut r = CheckResult::new("SV-D13", "eval(σ,λ,μ,ν): q ∈ W_(σ,c*) and θ defined (T 2649–2747)");
+    let mut r = CheckResult::new(
+        "SV-D13",
+        "eval(σ,λ,μ,ν): q ∈ W_(σ,c*) and θ defined (T 2649–2747)",
+    );
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xe7a1);
     let nf = pps.gluing.num_faces();
     let c = pps.consts_f64();
     for fi in 0..nf.min(max_faces) {
         let f = FaceId(fi as u32);
-        let mut pts: Vec<[f64; 3]> = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.5, 0.5, 0.0], [1.0 / 3.0; 3]];
+        let mut pts: Vec<[f64; 3]> = vec![
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.5, 0.5, 0.0],
+            [1.0 / 3.0; 3],
+        ];
         for _ in 0..8 {
             let (a, b): (f64, f64) = (rng.gen(), rng.gen());
-            let (a, b) = if a + b > 1.0 { (1.0 - a, 1.0 - b) } else { (a, b) };
+            let (a, b) = if a + b > 1.0 {
+                (1.0 - a, 1.0 - b)
+            } else {
+                (a, b)
+            };
             pts.push([1.0 - a - b, a, b]);
         }
         for b in pts {
@@ -270,9 +302,17 @@ pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
             match pps.eval(f, &b, c) {
                 Ok((_, _, x)) if x.iter().all(|v| v.is_finite()) => {}
                 Ok((corner, q, x)) => r.offend(|| {
-                    Witness::new(format!("face {fi} bary {b:?}: θ = {x:?} at corner {corner:?}, q = {q:?}"), json!({"face": fi, "bary": b}))
+                    Witness::new(
+                        format!("face {fi} bary {b:?}: θ = {x:?} at corner {corner:?}, q = {q:?}"),
+                        json!({"face": fi, "bary": b}),
+                    )
                 }),
-                Err(e) => r.offend(|| Witness::new(format!("face {fi} bary {b:?}: {e}"), json!({"face": fi, "bary": b, "error": e.to_string()}))),
+                Err(e) => r.offend(|| {
+                    Witness::new(
+                        format!("face {fi} bary {b:?}: {e}"),
+                        json!({"face": fi, "bary": b, "error": e.to_string()}),
+                    )
+                }),
             }
         }
     }
@@ -285,7 +325,10 @@ pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
 /// point from the jets: second differences err by ≤ h·max|θ'''|/3 over [p−h, p+h] plus
 /// rounding 4ε·|θ|/h².
 pub fn check_smooth(pps: &SigmaVPps, view: &SigmaVView, cfg: &SampleConfig) -> CheckResult {
-    let mut r = CheckResult::new("SV-smooth", "θ_(σ,v) is C^∞ (jet vs central differences, order ≤ 2)");
+    let mut r = CheckResult::new(
+        "SV-smooth",
+        "θ_(σ,v) is C^∞ (jet vs central differences, order ≤ 2)",
+    );
     r.seed = Some(cfg.seed);
     let cj: SvConsts<Jet<f64>> = pps.consts(53);
     let mut rng = cfg.rng(77);
@@ -300,22 +343,40 @@ pub fn check_smooth(pps: &SigmaVPps, view: &SigmaVView, cfg: &SampleConfig) -> C
             }
         }
         for x in pts {
-            let Some(q) = view.to_plane(i, &x) else { continue };
+            let Some(q) = view.to_plane(i, &x) else {
+                continue;
+            };
             let jet_at = |dx: f64, dy: f64| {
                 let (a, b) = Jet::variables(q.x + dx, q.y + dy);
                 pps.theta_plane(c, &P2::new(a, b), &cj).ok()
             };
-            let pts3 = [jet_at(0.0, 0.0), jet_at(h, 0.0), jet_at(-h, 0.0), jet_at(0.0, h), jet_at(0.0, -h)];
+            let pts3 = [
+                jet_at(0.0, 0.0),
+                jet_at(h, 0.0),
+                jet_at(-h, 0.0),
+                jet_at(0.0, h),
+                jet_at(0.0, -h),
+            ];
             let [Some(t0), Some(px), Some(mx), Some(py), Some(my)] = pts3 else {
                 continue; // p ± h left Ω_i
             };
             r.examined += 1;
             let third = |t: &[Jet<f64>; 3]| -> f64 {
                 t.iter()
-                    .flat_map(|d| [d.derivative(3, 0), d.derivative(2, 1), d.derivative(1, 2), d.derivative(0, 3)])
+                    .flat_map(|d| {
+                        [
+                            d.derivative(3, 0),
+                            d.derivative(2, 1),
+                            d.derivative(1, 2),
+                            d.derivative(0, 3),
+                        ]
+                    })
                     .fold(0.0f64, |a, b| a.max(b.abs()))
             };
-            let t3 = [&t0, &px, &mx, &py, &my].iter().map(|t| third(t)).fold(0.0f64, f64::max);
+            let t3 = [&t0, &px, &mx, &py, &my]
+                .iter()
+                .map(|t| third(t))
+                .fold(0.0f64, f64::max);
             let mag = t0.iter().map(|d| d.value().abs()).fold(1.0f64, f64::max);
             let tol = 2.0 * h * t3 / 3.0 + 4.0 * f64::EPSILON * mag / (h * h);
             let mut dev = 0.0f64;
@@ -332,12 +393,18 @@ pub fn check_smooth(pps: &SigmaVPps, view: &SigmaVView, cfg: &SampleConfig) -> C
         }
     }
     r.tolerance = Some(1.0);
-    r.with_note(format!("h = {h}; deviation relative to the per-point tolerance"))
+    r.with_note(format!(
+        "h = {h}; deviation relative to the per-point tolerance"
+    ))
 }
 
 /// Every check of the tutorial's construction on K (the `ppm check --spec --construction
 /// sigma-v` run).
-pub fn run_sigma_v_checks(k: &SimplicialSurface, target: &dyn crate::surface::TargetSurface, o: &SvCheckOptions) -> Vec<CheckResult> {
+pub fn run_sigma_v_checks(
+    k: &SimplicialSurface,
+    target: &dyn crate::surface::TargetSurface,
+    o: &SvCheckOptions,
+) -> Vec<CheckResult> {
     let mut out = Vec::new();
     let g = match SigmaV::new(k, o.kappa) {
         Ok(g) => g,
@@ -347,7 +414,10 @@ pub fn run_sigma_v_checks(k: &SimplicialSurface, target: &dyn crate::surface::Ta
             return vec![r];
         }
     };
-    let cfg = SampleConfig { seed: o.seed, n: o.samples.max(1) };
+    let cfg = SampleConfig {
+        seed: o.seed,
+        n: o.samples.max(1),
+    };
     out.push(check_count(&g));
     out.extend(super::errata::run_errata(g.degrees()));
     let faces = view_faces(k, o.max_views.max(1), o.seed);
@@ -365,25 +435,49 @@ pub fn run_sigma_v_checks(k: &SimplicialSurface, target: &dyn crate::surface::Ta
             return out;
         }
     };
-    let mut fit = CheckResult::new("SV-psi", "ψ by least squares: full rank per (m, d) (T 2916)");
+    let mut fit = CheckResult::new(
+        "SV-psi",
+        "ψ by least squares: full rank per (m, d) (T 2916)",
+    );
     for f in pps.fit_info() {
         fit.examined += 1;
         if f.rank != f.unknowns {
             let f = f.clone();
-            fit.offend(|| Witness::new(format!("degree {}: rank {} < {} unknowns", f.m, f.rank, f.unknowns), json!(f)));
+            fit.offend(|| {
+                Witness::new(
+                    format!("degree {}: rank {} < {} unknowns", f.m, f.rank, f.unknowns),
+                    json!(f),
+                )
+            });
         }
     }
-    let worst_cond = pps.fit_info().iter().map(|f| f.condition).fold(0.0, f64::max);
+    let worst_cond = pps
+        .fit_info()
+        .iter()
+        .map(|f| f.condition)
+        .fold(0.0, f64::max);
     out.push(fit.with_note(format!("largest κ(A) = {worst_cond:.3e}")));
     let mut merged: Vec<CheckResult> = Vec::new();
     for &f in &faces {
         let view = SigmaVView::at_vertices(&g, &k.face(f), Version::Fixed);
-        let mut rs: Vec<CheckResult> = check_all(&view, &cfg).into_iter().map(|r| renamed(r, "SV-")).collect();
+        let mut rs: Vec<CheckResult> = check_all(&view, &cfg)
+            .into_iter()
+            .map(|r| renamed(r, "SV-"))
+            .collect();
         let th = theta_fn(&pps, &view);
-        rs.push(renamed(crate::gluing::ppm::check_c(&view, &th, &cfg), "SV-"));
+        rs.push(renamed(
+            crate::gluing::ppm::check_c(&view, &th, &cfg),
+            "SV-",
+        ));
         if o.c_prime {
-            rs.push(renamed(crate::gluing::ppm::check_c_prime(&view, &th, &cfg), "SV-"));
-            rs.push(renamed(crate::gluing::ppm::check_c_second(&view, &th, &cfg), "SV-"));
+            rs.push(renamed(
+                crate::gluing::ppm::check_c_prime(&view, &th, &cfg),
+                "SV-",
+            ));
+            rs.push(renamed(
+                crate::gluing::ppm::check_c_second(&view, &th, &cfg),
+                "SV-",
+            ));
         }
         rs.push(check_smooth(&pps, &view, &cfg));
         for r in rs {

@@ -23,7 +23,10 @@ fn spread(mut v: Vec<f64>) -> Spread {
     v.sort_by(f64::total_cmp);
     let n = v.len();
     if n == 0 {
-        return Spread { max: f64::NAN, p99: f64::NAN };
+        return Spread {
+            max: f64::NAN,
+            p99: f64::NAN,
+        };
     }
     Spread {
         max: v[n - 1],
@@ -96,12 +99,14 @@ pub fn compare(
         let a = pps.eval_f64(s.face, s.bary).map_err(|e| e.to_string())?;
         let b = sv.eval_f64(s.face, s.bary).map_err(|e| e.to_string())?;
         let t = target.eval(s.face, k.face(s.face), s.bary);
-        let d = |x: [f64; 3], y: [f64; 3]| crate::mesh::vec3::norm(crate::mesh::vec3::sub(x, y)) / diag;
+        let d =
+            |x: [f64; 3], y: [f64; 3]| crate::mesh::vec3::norm(crate::mesh::vec3::sub(x, y)) / diag;
         between.push(d(a, b));
         vt.push(d(a, t));
         st.push(d(b, t));
     }
-    let mv = crate::surface::output::sample_surface(&pps, level, false).map_err(|e| e.to_string())?;
+    let mv =
+        crate::surface::output::sample_surface(&pps, level, false).map_err(|e| e.to_string())?;
     let ms = sv.sample_surface(level).map_err(|e| e.to_string())?;
     Ok(CompareReport {
         level,

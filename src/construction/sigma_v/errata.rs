@@ -10,7 +10,10 @@ use std::f64::consts::PI;
 /// the sector of the canonical triangle (angle π/3), as the report's m_u/6 does (R 690, S 1015).
 /// As written, the spoke at angle 2π/m_u goes to 12π/m_u² (witness: any m_u ≠ 6).
 pub fn check_gu_factor_as_written(degrees: &[u32]) -> CheckResult {
-    let mut r = CheckResult::new("SV-E-gu-factor", "T 2174 as written: g_u scales angles by 6/m_u");
+    let mut r = CheckResult::new(
+        "SV-E-gu-factor",
+        "T 2174 as written: g_u scales angles by 6/m_u",
+    );
     for &m in degrees {
         r.examined += 1;
         let spoke = 2.0 * PI / m as f64;
@@ -25,7 +28,9 @@ pub fn check_gu_factor_as_written(degrees: &[u32]) -> CheckResult {
             });
         }
     }
-    r.with_note("erratum: the angular factor is inverted; corrected statement SV-E-gu-factor[corrected]")
+    r.with_note(
+        "erratum: the angular factor is inverted; corrected statement SV-E-gu-factor[corrected]",
+    )
 }
 
 /// The corrected g_u (the report's, `construction::maps::g_v`, factor m_u/6) takes the spoke at
@@ -47,7 +52,9 @@ pub fn check_gu_factor_corrected(degrees: &[u32]) -> CheckResult {
                 worst = worst.max(dev);
                 let tol = 64.0 * f64::EPSILON * (m as f64 / 6.0).max(1.0) * PI;
                 if !(dev <= tol) {
-                    r.offend(|| Witness::new(format!("m = {m}: angle {} ≠ π/3", p.theta), json!({"m": m})));
+                    r.offend(|| {
+                        Witness::new(format!("m = {m}: angle {} ≠ π/3", p.theta), json!({"m": m}))
+                    });
                 }
             }
             Err(e) => r.offend(|| Witness::new(format!("m = {m}: {e}"), json!({"m": m}))),
@@ -61,11 +68,17 @@ pub fn check_gu_factor_corrected(degrees: &[u32]) -> CheckResult {
 /// m_u/6 the image of θ ∈ [0, 2π) is [0, m_uπ/3), which leaves [0, 2π) for m_u > 6; with the
 /// slides' 6/m_u it is [0, 12π/m_u), which leaves it for m_u < 6. Witnesses for both.
 pub fn check_angle_range_as_written(degrees: &[u32]) -> CheckResult {
-    let mut r = CheckResult::new("SV-E-angle-range", "T 2172: g_u maps [0, 2π) × R₊ into [0, 2π) × R₊");
+    let mut r = CheckResult::new(
+        "SV-E-angle-range",
+        "T 2172: g_u maps [0, 2π) × R₊ into [0, 2π) × R₊",
+    );
     for &m in degrees {
         r.examined += 1;
         let theta = 2.0 * PI * 0.99;
-        for (which, f) in [("m_u/6 (corrected factor)", m as f64 / 6.0), ("6/m_u (as written)", 6.0 / m as f64)] {
+        for (which, f) in [
+            ("m_u/6 (corrected factor)", m as f64 / 6.0),
+            ("6/m_u (as written)", 6.0 / m as f64),
+        ] {
             let img = f * theta;
             if img >= 2.0 * PI {
                 r.offend(|| {
@@ -104,14 +117,30 @@ pub fn check_angle_range_corrected(degrees: &[u32]) -> CheckResult {
 /// equilateral triangle on (0,0), (1,0) has it at (1/2, ±√3/2). The report's (1/2, −√3/2)
 /// (R 1360) is the corrected statement.
 pub fn check_equilateral() -> (CheckResult, CheckResult) {
-    let side = |p: [f64; 2]| ((p[0] * p[0] + p[1] * p[1]).sqrt(), ((p[0] - 1.0).powi(2) + p[1] * p[1]).sqrt());
-    let mut w = CheckResult::new("SV-E-equilateral", "T 2678 as written: (0,0), (1,0), (1/2, √2/3) is equilateral");
+    let side = |p: [f64; 2]| {
+        (
+            (p[0] * p[0] + p[1] * p[1]).sqrt(),
+            ((p[0] - 1.0).powi(2) + p[1] * p[1]).sqrt(),
+        )
+    };
+    let mut w = CheckResult::new(
+        "SV-E-equilateral",
+        "T 2678 as written: (0,0), (1,0), (1/2, √2/3) is equilateral",
+    );
     let (a, b) = side([0.5, 2f64.sqrt() / 3.0]);
     w.examined = 1;
     if (a - 1.0).abs() > 4.0 * f64::EPSILON || (b - 1.0).abs() > 4.0 * f64::EPSILON {
-        w.offend(|| Witness::new(format!("|b − a| = {a:.6}, |b − c| = {b:.6} ≠ 1"), json!({"sides": [a, b]})));
+        w.offend(|| {
+            Witness::new(
+                format!("|b − a| = {a:.6}, |b − c| = {b:.6} ≠ 1"),
+                json!({"sides": [a, b]}),
+            )
+        });
     }
-    let mut c = CheckResult::new("SV-E-equilateral[corrected]", "(0,0), (1,0), (1/2, −√3/2) is equilateral (R 1360)");
+    let mut c = CheckResult::new(
+        "SV-E-equilateral[corrected]",
+        "(0,0), (1,0), (1/2, −√3/2) is equilateral (R 1360)",
+    );
     let (a, b) = side([0.5, -(3f64.sqrt()) / 2.0]);
     c.examined = 1;
     let tol = 4.0 * f64::EPSILON;

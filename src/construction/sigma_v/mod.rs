@@ -27,7 +27,7 @@ pub mod wedge;
 pub mod weight;
 
 pub use gluing::{Corner, CornerId, PairCase, SigmaV, SigmaVError};
+pub use patch::DEFAULT_PATCH_DEGREE;
 pub use surface::{SigmaVPps, SvConsts, SvFault};
 pub use view::{SigmaVView, Version};
 pub use wedge::DEFAULT_KAPPA;
-pub use patch::DEFAULT_PATCH_DEGREE;

@@ -262,7 +262,11 @@ pub fn factor(w: &WedgeConsts<f64>, d: usize) -> TriFit {
             rows,
             unknowns: nc,
             rank,
-            condition: if smin > 0.0 { smax / smin } else { f64::INFINITY },
+            condition: if smin > 0.0 {
+                smax / smin
+            } else {
+                f64::INFINITY
+            },
         },
         samples,
         pinv,

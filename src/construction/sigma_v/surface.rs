@@ -11,9 +11,11 @@
 //! 2π/m_v of the spoke of w; `surface::pps` uses the same bound).
 
 use super::gluing::{g_uw_on_domain, Corner, CornerId, SigmaV, SigmaVError};
-use super::patch::{eval_tri, eval_tri_f64, factor, multinomials, num_control_points, TriFit, TriFitInfo};
-use super::weight::{gamma_local, WeightConsts};
+use super::patch::{
+    eval_tri, eval_tri_f64, factor, multinomials, num_control_points, TriFit, TriFitInfo,
+};
 use super::wedge::{WedgeConsts, WedgeTable};
+use super::weight::{gamma_local, WeightConsts};
 use crate::construction::maps::{g_v_inv, rotate_frac, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::surface::eval::{canonical_point, choose_chart, Chart};
@@ -51,7 +53,9 @@ impl<S: SurfaceScalar> SvConsts<S> {
     }
     fn wedge(&self, m: u32) -> &WedgeConsts<S> {
         // Built for every degree of K; a missing one is a programming error upstream.
-        self.wedges.get(m).expect("wedge constants for every degree of K")
+        self.wedges
+            .get(m)
+            .expect("wedge constants for every degree of K")
     }
     fn weight(&self, m: u32) -> &WeightConsts<S> {
         self.weights[m as usize]
@@ -184,7 +188,12 @@ impl SigmaVPps {
     }
 
     /// ψ_j at a local point.
-    pub fn psi_local<S: SurfaceScalar>(&self, j: CornerId, w: &WedgeConsts<S>, p: &P2<S>) -> [S; 3] {
+    pub fn psi_local<S: SurfaceScalar>(
+        &self,
+        j: CornerId,
+        w: &WedgeConsts<S>,
+        p: &P2<S>,
+    ) -> [S; 3] {
         let l = w.envelope_bary(p);
         let cp = self.patch(j);
         if let Some(l64) = (&l as &dyn std::any::Any).downcast_ref::<[f64; 3]>() {
@@ -282,7 +291,9 @@ impl SigmaVPps {
     /// J(p) as a list (corner id, γ_j(φ_ji(p))), for the checks.
     pub fn terms(&self, i: Corner, q: [f64; 2]) -> Result<Vec<(CornerId, f64)>, SigmaVError> {
         let mut out = Vec::new();
-        self.for_each_term(i, &P2::new(q[0], q[1]), &self.consts, |j, g, _, _| out.push((j, g)))?;
+        self.for_each_term(i, &P2::new(q[0], q[1]), &self.consts, |j, g, _, _| {
+            out.push((j, g))
+        })?;
         Ok(out)
     }
 
@@ -404,8 +415,14 @@ impl SigmaVPps {
     }
 
     /// eval of many points in parallel; `out[i]` for `points[i]`.
-    pub fn eval_batch_f64(&self, points: &[(FaceId, [f64; 3])]) -> Vec<Result<[f64; 3], SigmaVError>> {
-        points.par_iter().map(|&(f, b)| self.eval_f64(f, b)).collect()
+    pub fn eval_batch_f64(
+        &self,
+        points: &[(FaceId, [f64; 3])],
+    ) -> Vec<Result<[f64; 3], SigmaVError>> {
+        points
+            .par_iter()
+            .map(|&(f, b)| self.eval_f64(f, b))
+            .collect()
     }
 }
 

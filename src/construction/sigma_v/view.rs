@@ -151,7 +151,8 @@ impl<'a> SigmaVView<'a> {
                     // W_i ∩ W_j always contains a neighbourhood of the centre.
                     let r = 3.0 * w.delta;
                     for _ in 0..n {
-                        let (a, t): (f64, f64) = (rng.gen_range(0.0..std::f64::consts::TAU), rng.gen());
+                        let (a, t): (f64, f64) =
+                            (rng.gen_range(0.0..std::f64::consts::TAU), rng.gen());
                         out.push(P2::new(r * t.sqrt() * a.cos(), r * t.sqrt() * a.sin()));
                     }
                     out.push(P2::new(0.0, 0.0));
@@ -193,8 +194,15 @@ impl<'a> SigmaVView<'a> {
             let p = match kind {
                 0 | 1 => {
                     let (s, t): (f64, f64) = (rng.gen(), rng.gen());
-                    let (s, t) = if s + t > 1.0 { (1.0 - s, 1.0 - t) } else { (s, t) };
-                    [r[0] + s * (a[0] - r[0]) + t * (b[0] - r[0]), r[1] + s * (a[1] - r[1]) + t * (b[1] - r[1])]
+                    let (s, t) = if s + t > 1.0 {
+                        (1.0 - s, 1.0 - t)
+                    } else {
+                        (s, t)
+                    };
+                    [
+                        r[0] + s * (a[0] - r[0]) + t * (b[0] - r[0]),
+                        r[1] + s * (a[1] - r[1]) + t * (b[1] - r[1]),
+                    ]
                 }
                 2 => {
                     let ang = rng.gen_range(-0.6..0.6) * std::f64::consts::PI;
@@ -203,7 +211,11 @@ impl<'a> SigmaVView<'a> {
                 }
                 _ => {
                     let s: f64 = rng.gen();
-                    let (end, nrm) = if rng.gen::<bool>() { (a, w.n1) } else { (b, w.n2) };
+                    let (end, nrm) = if rng.gen::<bool>() {
+                        (a, w.n1)
+                    } else {
+                        (b, w.n2)
+                    };
                     [
                         r[0] + s * (end[0] - r[0]) + eps * nrm.0,
                         r[1] + s * (end[1] - r[1]) + eps * nrm.1,
@@ -293,7 +305,13 @@ impl GluingData<2> for SigmaVView<'_> {
     /// Candidates (wedge and centre samples for case 1, the report's lens pulled back for
     /// case 2) filtered by membership; when few are kept, a second round samples the
     /// bounding box of the kept points (the Ω_ij are small near the centre and along spokes).
-    fn sample_gluing_domain(&self, i: Idx, j: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<Point<f64, 2>> {
+    fn sample_gluing_domain(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<f64, 2>> {
         let (Some(a), Some(b)) = (self.corner(i), self.corner(j)) else {
             return vec![];
         };
@@ -302,7 +320,10 @@ impl GluingData<2> for SigmaVView<'_> {
         }
         let want = n.max(1);
         let cand = self.candidates(a, b, rng, (4 * want).max(400));
-        let mut kept: Vec<P2<f64>> = cand.into_iter().filter(|q| self.in_gluing_plane(a, b, q)).collect();
+        let mut kept: Vec<P2<f64>> = cand
+            .into_iter()
+            .filter(|q| self.in_gluing_plane(a, b, q))
+            .collect();
         if !kept.is_empty() && kept.len() < want {
             let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
             for q in &kept {
@@ -331,7 +352,13 @@ impl GluingData<2> for SigmaVView<'_> {
 
     /// Points of ∂Ω_ij ∩ Ω_i: bisection between a point of Ω_ij and a point of Ω_i ∖ Ω_ij
     /// (60 halvings); the outer end is kept when it lies in Ω_i.
-    fn gluing_boundary_points(&self, i: Idx, j: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<Point<f64, 2>> {
+    fn gluing_boundary_points(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<f64, 2>> {
         let (Some(a), Some(b)) = (self.corner(i), self.corner(j)) else {
             return vec![];
         };

@@ -189,7 +189,10 @@ mod tests {
                     assert!((x - want).abs() < 1e-12, "m {m} vertex {t}: {b:?}");
                 }
             }
-            assert!(w.in_wedge_local(&P2::new(0.0, 0.0)), "centre in W (r behind 0)");
+            assert!(
+                w.in_wedge_local(&P2::new(0.0, 0.0)),
+                "centre in W (r behind 0)"
+            );
             assert!(!w.in_wedge_local(&P2::new(-0.9 * w.rho, 0.0)));
             // f and f⁻¹ are inverse.
             let q = P2::new(0.3, -0.2);
