@@ -45,6 +45,15 @@ pub struct Ch4Args {
     /// S′ of Chapter 5 (Sec. 6.2): pn | loop (loop also runs the Loop S′ checks).
     #[arg(long, default_value = "pn")]
     pub surface: String,
+    /// vertex (the report's, Ch. 4–5) | sigma-v (the tutorial's (σ, v)-indexed PPS, SPEC SV-…).
+    #[arg(long, default_value = "vertex")]
+    pub construction: String,
+    /// sigma-v: κ of the overlapping point r_{v,σ} = −κ·cos(π/m_v)·b (SPEC SV-D3), in (0, 1).
+    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
+    pub kappa: f64,
+    /// sigma-v: degree of the triangular Bézier patches ψ_(σ,v) (SPEC SV-D11).
+    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE)]
+    pub patch_degree: usize,
 }
 
 impl Ch4Args {

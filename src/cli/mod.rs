@@ -5,6 +5,7 @@ mod check;
 mod msplines;
 mod oracle;
 mod sd;
+mod sigma_v;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -153,6 +154,15 @@ enum Command {
         surface: String,
         #[arg(long)]
         quiet: bool,
+        /// vertex (the report's) | sigma-v (the tutorial's (σ, v)-indexed PPS).
+        #[arg(long, default_value = "vertex")]
+        construction: String,
+        /// sigma-v: κ of r_{v,σ} (SPEC SV-D3).
+        #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
+        kappa: f64,
+        /// sigma-v: degree of the triangular patches (SPEC SV-D11).
+        #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE)]
+        patch_degree: usize,
     },
     /// Simplicial diffeomorphisms of a planar complex (Mello–Velho): check a map, write curved
     /// isocurves, search the injectivity claims (SPEC rows SD-…).
@@ -186,7 +196,25 @@ pub fn main() -> ExitCode {
             labels,
             spec,
             ch4,
-        } => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
+        } => match ch4.construction.as_str() {
+            "vertex" => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
+            "sigma-v" if spec => sigma_v::run_check(
+                &file,
+                json,
+                &crate::construction::sigma_v::checks::SvCheckOptions {
+                    seed: ch4.seed,
+                    samples: ch4.samples,
+                    max_views: ch4.max_configs.unwrap_or(2),
+                    kappa: ch4.kappa,
+                    patch_degree: ch4.patch_degree,
+                    ..Default::default()
+                },
+            ),
+            other => {
+                eprintln!("error: --construction {other}: expected vertex, or sigma-v with --spec");
+                ExitCode::from(2)
+            }
+        },
         Command::Oracle {
             mesh,
             bits,
@@ -294,7 +322,19 @@ pub fn main() -> ExitCode {
             profile,
             surface,
             quiet,
-        } => crate::surface::cli::run_sample(&file, level, &output, &profile, &surface, quiet),
+            construction,
+            kappa,
+            patch_degree,
+        } => match construction.as_str() {
+            "vertex" => {
+                crate::surface::cli::run_sample(&file, level, &output, &profile, &surface, quiet)
+            }
+            "sigma-v" => sigma_v::run_sample(&file, level, &output, kappa, patch_degree, quiet),
+            other => {
+                eprintln!("error: --construction {other}: expected vertex or sigma-v");
+                ExitCode::from(2)
+            }
+        },
         Command::Msplines(c) => msplines::run_command(c),
         Command::Eval {
             file,

@@ -17,6 +17,7 @@ pub mod mp_backend;
 pub mod mp_mpfr;
 pub mod sampling;
 pub mod scalar;
+pub mod sigma_v;
 
 pub use maps::{
     g_uw, in_omega_uw, in_omega_uw_lens, phi_wu, phi_wu_f64_vs_mp, ConfigError, EdgeConfig,

@@ -10,6 +10,7 @@
 
 pub mod diff;
 pub mod protocol;
+pub mod sigma_v;
 pub mod surface_diff;
 
 pub use protocol::{OracleError, Request, Response, Session};

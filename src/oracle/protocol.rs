@@ -117,6 +117,16 @@ pub enum Request {
         /// `"pn"` or `"loop"`.
         surface: String,
     },
+    /// Select the construction later `eval` requests answer for: `"vertex"` (the report's,
+    /// default) or `"sigma-v"` (the tutorial's (σ, v)-indexed PPS, SPEC `SV-…`; optional
+    /// `kappa`, default 1/4). Other Chapter 5 ops stay with the vertex construction.
+    SetConstruction {
+        /// `"vertex"` or `"sigma-v"`.
+        construction: String,
+        /// κ of r_{v,σ} (sigma-v only).
+        #[serde(default)]
+        kappa: Option<f64>,
+    },
     /// Select the parameter profile of Chapter 5 (`"paper"` or `"authors-code"`, see
     /// [`Profile`]); the pseudo-surface is rebuilt on the next Chapter 5 request.
     SetProfile {
@@ -323,6 +333,7 @@ pub struct Session {
     profile: Profile,
     sprime: crate::surface::SurfaceKind,
     ch5: Option<Ch5>,
+    sigma_v: Option<super::sigma_v::SigmaVOracle>,
 }
 
 impl Default for Session {
@@ -333,6 +344,7 @@ impl Default for Session {
             profile: Profile::default(),
             sprime: crate::surface::SurfaceKind::default(),
             ch5: None,
+            sigma_v: None,
         }
     }
 }
@@ -462,6 +474,9 @@ impl Session {
                 let out = json!({"vertices": k.num_vertices(), "faces": k.num_faces(), "edges": k.num_edges()});
                 self.surface = Some(k);
                 self.ch5 = None;
+                if let Some(sv) = &mut self.sigma_v {
+                    sv.reset();
+                }
                 Ok(Response::plain(out))
             }
             Request::SetPrecision { bits } => {
@@ -483,6 +498,28 @@ impl Session {
                 }
                 Ok(Response::plain(json!({"surface": s.name()})))
             }
+            Request::SetConstruction {
+                construction,
+                kappa,
+            } => match construction.as_str() {
+                "vertex" => {
+                    self.sigma_v = None;
+                    Ok(Response::plain(json!({"construction": "vertex"})))
+                }
+                "sigma-v" => {
+                    let kappa = kappa.unwrap_or(crate::construction::sigma_v::DEFAULT_KAPPA);
+                    if !(kappa > 0.0 && kappa < 1.0) {
+                        return Err(OracleError::Malformed(format!(
+                            "kappa {kappa} is not in (0, 1) (SPEC SV-D3)"
+                        )));
+                    }
+                    self.sigma_v = Some(super::sigma_v::SigmaVOracle::new(kappa));
+                    Ok(Response::plain(json!({"construction": "sigma-v", "kappa": kappa})))
+                }
+                other => Err(OracleError::Malformed(format!(
+                    "unknown construction {other:?} (expected \"vertex\" or \"sigma-v\")"
+                ))),
+            },
             Request::SetProfile { profile } => {
                 let p = Profile::parse(profile).ok_or_else(|| {
                     OracleError::Malformed(format!(
@@ -578,6 +615,32 @@ impl Session {
             Request::Eval { face, bary } => {
                 if !bary.iter().all(|c| c.is_finite()) {
                     return Err(OracleError::NonFinite);
+                }
+                if let Some(sv) = &mut self.sigma_v {
+                    let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
+                    let (a, b, info) = sv
+                        .eval(k, *face, *bary, bits)
+                        .map_err(OracleError::Undefined)?;
+                    let mut r = match a {
+                        Ok(a) => both(&a, &b, bits),
+                        Err(e) => {
+                            let mut r = both(&[], &b, bits);
+                            r.f64 = None;
+                            r.difference = None;
+                            r.info = Some(json!({"f64_failed": e}));
+                            r
+                        }
+                    };
+                    r.info = Some(match r.info.take() {
+                        Some(Value::Object(mut m)) => {
+                            if let Value::Object(i) = info {
+                                m.extend(i);
+                            }
+                            Value::Object(m)
+                        }
+                        _ => info,
+                    });
+                    return Ok(r);
                 }
                 let (pps, cm) = self.ch5()?.with_mp(bits);
                 let f = FaceId(*face);

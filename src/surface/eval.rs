@@ -108,31 +108,7 @@ impl Pps {
 
     /// The chart eval chooses for q′ (depends on the profile).
     pub fn choose_chart<S: SurfaceScalar>(&self, qp: &P2<S>, c: &Consts<S>) -> Chart {
-        let one = S::from_i64(1, c.prec);
-        let da = qp.norm2();
-        let dc = P2::new(qp.x.sub(&one), qp.y.clone()).norm2();
-        let half = S::from_ratio(1, 2, c.prec);
-        let db = P2::new(qp.x.sub(&half), qp.y.add(&c.s3h)).norm2();
-        match self.options.profile {
-            Profile::Paper => {
-                if da.lt(&c.c_sq).is_true() {
-                    Chart::U
-                } else if dc.lt(&c.c_sq).is_true() {
-                    Chart::X
-                } else {
-                    Chart::W
-                }
-            }
-            Profile::AuthorsCode => {
-                if da.le(&dc).is_true() && da.le(&db).is_true() {
-                    Chart::U
-                } else if dc.le(&db).is_true() {
-                    Chart::X
-                } else {
-                    Chart::W
-                }
-            }
-        }
+        choose_chart(self.options.profile, qp, c)
     }
 
     /// Sec. 6.1.4: eval(σ, λ, μ, ν).
@@ -187,5 +163,35 @@ impl Pps {
     /// eval in f64 with the built-in constants.
     pub fn eval_f64(&self, f: FaceId, bary: [f64; 3]) -> Result<[f64; 3], SurfaceError> {
         Ok(self.eval(f, &bary, self.consts_f64())?.point)
+    }
+}
+
+/// The chart eval chooses for q′ under `profile` (Sec. 6.1.4; shared by the (σ, v)-indexed
+/// construction of `construction::sigma_v`).
+pub fn choose_chart<S: SurfaceScalar>(profile: Profile, qp: &P2<S>, c: &Consts<S>) -> Chart {
+    let one = S::from_i64(1, c.prec);
+    let da = qp.norm2();
+    let dc = P2::new(qp.x.sub(&one), qp.y.clone()).norm2();
+    let half = S::from_ratio(1, 2, c.prec);
+    let db = P2::new(qp.x.sub(&half), qp.y.add(&c.s3h)).norm2();
+    match profile {
+        Profile::Paper => {
+            if da.lt(&c.c_sq).is_true() {
+                Chart::U
+            } else if dc.lt(&c.c_sq).is_true() {
+                Chart::X
+            } else {
+                Chart::W
+            }
+        }
+        Profile::AuthorsCode => {
+            if da.le(&dc).is_true() && da.le(&db).is_true() {
+                Chart::U
+            } else if dc.le(&db).is_true() {
+                Chart::X
+            } else {
+                Chart::W
+            }
+        }
     }
 }

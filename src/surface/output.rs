@@ -63,8 +63,17 @@ pub struct SamplePattern {
 /// (k, i, j)/2^level of every face, a point on an edge or corner of K listed once (through the
 /// first face that reaches it), so the triangles close up.
 pub fn sample_pattern(pps: &Pps, level: u32) -> Result<SamplePattern, SurfaceError> {
+    let faces = (0..pps.num_faces())
+        .map(|f| pps.face(FaceId(f as u32)))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(sample_pattern_faces(&faces, level))
+}
+
+/// [`sample_pattern`] for any list of faces (corner triples in their stored order): shared
+/// by the constructions that sample through eval(σ, λ, μ, ν).
+pub fn sample_pattern_faces(faces: &[[crate::mesh::VertexId; 3]], level: u32) -> SamplePattern {
     let n = 1u32 << level.min(12);
-    let nf = pps.num_faces();
+    let nf = faces.len();
     let mut index: HashMap<Key, u32> = HashMap::new();
     let mut out = SamplePattern {
         points: Vec::new(),
@@ -77,7 +86,7 @@ pub fn sample_pattern(pps: &Pps, level: u32) -> Result<SamplePattern, SurfaceErr
     }
     for fi in 0..nf {
         let f = FaceId(fi as u32);
-        let c = pps.face(f)?;
+        let c = faces[fi];
         let mut local = Vec::with_capacity(row_start[n as usize + 1]);
         for i in 0..=n {
             for j in 0..=(n - i) {
@@ -120,7 +129,7 @@ pub fn sample_pattern(pps: &Pps, level: u32) -> Result<SamplePattern, SurfaceErr
             }
         }
     }
-    Ok(out)
+    out
 }
 
 /// Sample M at subdivision level `level` (Sec. 6.2). `progress`: a progress line on stderr.

@@ -1,0 +1,498 @@
+//! Tutorial Part V (T 2751–2982, 2649–2747): the parametrizations θ_(σ,v), built on the
+//! (σ, v)-indexed gluing data, and eval from a mesh triangle.
+//!
+//! θ_i(p) = Σ_{j∈J(p)} γ_j(φ_ji(p))·ψ_j(φ_ji(p)) / Σ_{j∈J(p)} γ_j(φ_ji(p)), J(p) = {j : p ∈ Ω_ij}
+//! (T 2877–2895, SPEC `SV-D12`). Points of Ω_i are handled in plane coordinates q = f_i(p)
+//! ([`super::gluing`]); γ_j and ψ_j in the local frame of j. Generic over
+//! [`SurfaceScalar`]: f64, `Mp` (oracle) and jets (derivatives, curvature, smoothness).
+//!
+//! J(p) candidates: every corner at v (q ∈ W_j is tested), and the corners at the two
+//! neighbours w whose spokes bound q's sector of P_v (the report's Ω_vw lies within angle
+//! 2π/m_v of the spoke of w; `surface::pps` uses the same bound).
+
+use super::gluing::{g_uw_on_domain, Corner, CornerId, SigmaV, SigmaVError};
+use super::patch::{
+    eval_tri, eval_tri_f64, factor, multinomials, num_control_points, TriFit, TriFitInfo,
+};
+use super::wedge::{WedgeConsts, WedgeTable};
+use super::weight::{gamma_local, WeightConsts};
+use crate::construction::maps::{g_v_inv, rotate_frac, P2};
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::surface::eval::{canonical_point, choose_chart, Chart};
+use crate::surface::geometry::from_jet;
+use crate::surface::jet::Jet;
+use crate::surface::output::{sample_pattern_faces, SampledMesh};
+use crate::surface::target::TargetSurface;
+use crate::surface::{Consts, Profile, SurfaceScalar};
+use rayon::prelude::*;
+use std::cmp::Ordering;
+
+/// Constants of the construction in one scalar type.
+#[derive(Clone, Debug)]
+pub struct SvConsts<S> {
+    /// Wedges per degree.
+    pub wedges: WedgeTable<S>,
+    weights: Vec<Option<WeightConsts<S>>>,
+    /// The constants of the report's eval (Sec. 6.1.4).
+    pub eval: Consts<S>,
+}
+
+impl<S: SurfaceScalar> SvConsts<S> {
+    /// For the degrees of `g` at `prec` bits.
+    pub fn new(g: &SigmaV, prec: u32) -> Self {
+        let wedges = WedgeTable::new(g.degrees().iter().copied(), g.kappa, prec);
+        let max = g.degrees().last().copied().unwrap_or(0) as usize;
+        let weights = (0..=max)
+            .map(|m| wedges.get(m as u32).map(|w| WeightConsts::new(w, prec)))
+            .collect();
+        SvConsts {
+            wedges,
+            weights,
+            eval: Consts::new(g.degrees().iter().copied(), prec),
+        }
+    }
+    fn wedge(&self, m: u32) -> &WedgeConsts<S> {
+        // Built for every degree of K; a missing one is a programming error upstream.
+        self.wedges
+            .get(m)
+            .expect("wedge constants for every degree of K")
+    }
+    fn weight(&self, m: u32) -> &WeightConsts<S> {
+        self.weights[m as usize]
+            .as_ref()
+            .expect("weight constants for every degree of K")
+    }
+}
+
+/// A planted fault (tests: each check must be able to fail).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum SvFault {
+    /// γ of one corner multiplied by a factor when it enters θ of *another* corner.
+    NeighbourWeight {
+        /// The corner id.
+        corner: u32,
+        /// The factor.
+        factor: f64,
+    },
+    /// The cross-edge transition followed by a rotation by `angle`.
+    Transition {
+        /// Rotation angle (radians).
+        angle: f64,
+    },
+}
+
+/// The parametric pseudo-surface of the tutorial.
+#[derive(Debug, Clone)]
+pub struct SigmaVPps {
+    /// The gluing data.
+    pub gluing: SigmaV,
+    /// Patch degree d.
+    pub degree: usize,
+    /// A planted fault (None in production).
+    pub fault: Option<SvFault>,
+    target_name: String,
+    coef: Vec<f64>,
+    ncp: usize,
+    /// Control points: corner c's are cps[c·ncp..(c+1)·ncp].
+    cps: Vec<[f64; 3]>,
+    fits: Vec<TriFitInfo>,
+    consts: SvConsts<f64>,
+}
+
+/// Corners fitted per matrix product (bounds memory: 10·m_v·3·BATCH doubles).
+const BATCH: usize = 2048;
+
+impl SigmaVPps {
+    /// Build all ψ_(σ,v) for K approximating S′ = `target`.
+    pub fn build(
+        k: &SimplicialSurface,
+        target: &dyn TargetSurface,
+        kappa: f64,
+        degree: usize,
+    ) -> Result<Self, SigmaVError> {
+        let g = SigmaV::new(k, kappa)?;
+        let degree = degree.clamp(1, super::patch::MAX_PATCH_DEGREE);
+        let ncp = num_control_points(degree);
+        let consts = SvConsts::<f64>::new(&g, 53);
+        let fits: Vec<TriFit> = g
+            .degrees()
+            .par_iter()
+            .map(|&m| factor(consts.wedge(m), degree))
+            .collect();
+        let mut cps = vec![[0.0; 3]; g.len() * ncp];
+        // Work items: (fit, vertices of its degree), chunked.
+        let mut tasks: Vec<(&TriFit, Vec<VertexId>)> = Vec::new();
+        for f in &fits {
+            let vs: Vec<VertexId> = k.vertices().filter(|&v| k.degree(v) == f.info.m).collect();
+            let per = (BATCH / f.info.m as usize).max(1);
+            for ch in vs.chunks(per) {
+                tasks.push((f, ch.to_vec()));
+            }
+        }
+        let results: Vec<Vec<(u32, Vec<[f64; 3]>)>> = tasks
+            .par_iter()
+            .map(|(fit, vs)| fit_vertices(&g, target, fit, vs, ncp))
+            .collect();
+        for batch in results {
+            for (c, pts) in batch {
+                let s = c as usize * ncp;
+                cps[s..s + ncp].copy_from_slice(&pts);
+            }
+        }
+        Ok(SigmaVPps {
+            gluing: g,
+            degree,
+            fault: None,
+            target_name: target.name().to_string(),
+            coef: multinomials(degree),
+            ncp,
+            cps,
+            fits: fits.into_iter().map(|f| f.info).collect(),
+            consts,
+        })
+    }
+
+    /// Name of S′.
+    pub fn target_name(&self) -> &str {
+        &self.target_name
+    }
+    /// Per-degree least-squares summaries.
+    pub fn fit_info(&self) -> &[TriFitInfo] {
+        &self.fits
+    }
+    /// The f64 constants.
+    pub fn consts_f64(&self) -> &SvConsts<f64> {
+        &self.consts
+    }
+    /// Constants in another scalar.
+    pub fn consts<S: SurfaceScalar>(&self, prec: u32) -> SvConsts<S> {
+        SvConsts::new(&self.gluing, prec)
+    }
+    /// Control points of ψ of a corner.
+    pub fn patch(&self, c: CornerId) -> &[[f64; 3]] {
+        let s = c.0 as usize * self.ncp;
+        &self.cps[s..s + self.ncp]
+    }
+    /// Mutable control points (planted faults).
+    pub fn patch_mut(&mut self, c: CornerId) -> &mut [[f64; 3]] {
+        let s = c.0 as usize * self.ncp;
+        &mut self.cps[s..s + self.ncp]
+    }
+    /// Largest |control point coordinate| (scale of tolerances).
+    pub fn scale(&self) -> f64 {
+        self.cps
+            .iter()
+            .flat_map(|c| c.iter())
+            .fold(0.0f64, |a, &b| a.max(b.abs()))
+            .max(f64::MIN_POSITIVE)
+    }
+
+    /// ψ_j at a local point.
+    pub fn psi_local<S: SurfaceScalar>(
+        &self,
+        j: CornerId,
+        w: &WedgeConsts<S>,
+        p: &P2<S>,
+    ) -> [S; 3] {
+        let l = w.envelope_bary(p);
+        let cp = self.patch(j);
+        if let Some(l64) = (&l as &dyn std::any::Any).downcast_ref::<[f64; 3]>() {
+            let r = eval_tri_f64(self.degree, cp, &self.coef, *l64);
+            if let Some(out) = (&r as &dyn std::any::Any).downcast_ref::<[S; 3]>() {
+                return out.clone();
+            }
+        }
+        eval_tri(self.degree, cp, &self.coef, &l)
+    }
+
+    /// γ_j at a plane point q of its vertex (0 outside W_j).
+    pub fn gamma_plane<S: SurfaceScalar>(&self, j: Corner, q: &P2<S>, c: &SvConsts<S>) -> S {
+        let m = self.gluing.degree(j.v);
+        let w = c.wedge(m);
+        gamma_local(w, c.weight(m), &w.to_local(j.k, q))
+    }
+
+    /// J(p) with γ_j(φ_ji(p)) and the local point of φ_ji(p), i = `i`, q = f_i(p). Calls
+    /// `f(j, γ, local point, wedge)` for each j ∈ J(p) (i first among the corners at v).
+    fn for_each_term<S: SurfaceScalar>(
+        &self,
+        i: Corner,
+        q: &P2<S>,
+        c: &SvConsts<S>,
+        mut f: impl FnMut(CornerId, S, P2<S>, &WedgeConsts<S>),
+    ) -> Result<(), SigmaVError> {
+        let g = &self.gluing;
+        let m = g.degree(i.v);
+        let w = c.wedge(m);
+        if !w.in_wedge(i.k, q) {
+            let [x, y] = q.to_f64();
+            return Err(SigmaVError::NotInOmega {
+                corner: g.id(i).0,
+                x,
+                y,
+            });
+        }
+        let iid = g.id(i);
+        for kk in 0..m {
+            let p = w.to_local(kk, q);
+            if w.in_wedge_local(&p) {
+                let j = Corner { v: i.v, k: kk };
+                let jid = g.id(j);
+                let mut gam = gamma_local(w, c.weight(m), &p);
+                if let Some(SvFault::NeighbourWeight { corner, factor }) = self.fault {
+                    if corner == jid.0 && jid != iid {
+                        gam = gam.mul(&S::from_f64(factor, c.wedges.prec));
+                    }
+                }
+                f(jid, gam, p, w);
+            }
+        }
+        let [x, y] = q.to_f64();
+        if x == 0.0 && y == 0.0 {
+            return Ok(());
+        }
+        let mut a = y.atan2(x);
+        if a < 0.0 {
+            a += std::f64::consts::TAU;
+        }
+        let s0 = ((a * m as f64 / std::f64::consts::TAU).floor() as u32).min(m - 1);
+        for l in [s0, (s0 + 1) % m] {
+            let e = g.edge_config(i.v, l);
+            let Some(mut y) = g_uw_on_domain(&e, q) else {
+                continue;
+            };
+            if let Some(SvFault::Transition { angle }) = self.fault {
+                y = crate::construction::maps::rotate(&y, &S::from_f64(angle, c.wedges.prec));
+            }
+            let u = g.link(i.v, l);
+            let ww = c.wedge(e.m_w);
+            let w_in_tau = l == i.k || l == (i.k + 1) % m;
+            for kk in 0..e.m_w {
+                let u_in_eta = e.j == kk || e.j == (kk + 1) % e.m_w;
+                if !(w_in_tau || u_in_eta) {
+                    continue; // case (3): declared empty (T 2430)
+                }
+                let p = ww.to_local(kk, &y);
+                if ww.in_wedge_local(&p) {
+                    let j = Corner { v: u, k: kk };
+                    let mut gam = gamma_local(ww, c.weight(e.m_w), &p);
+                    if let Some(SvFault::NeighbourWeight { corner, factor }) = self.fault {
+                        if corner == g.id(j).0 {
+                            gam = gam.mul(&S::from_f64(factor, c.wedges.prec));
+                        }
+                    }
+                    f(g.id(j), gam, p, ww);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// J(p) as a list (corner id, γ_j(φ_ji(p))), for the checks.
+    pub fn terms(&self, i: Corner, q: [f64; 2]) -> Result<Vec<(CornerId, f64)>, SigmaVError> {
+        let mut out = Vec::new();
+        self.for_each_term(i, &P2::new(q[0], q[1]), &self.consts, |j, g, _, _| {
+            out.push((j, g))
+        })?;
+        Ok(out)
+    }
+
+    /// θ_i at q = f_i(p) (plane coordinates of P_v).
+    pub fn theta_plane<S: SurfaceScalar>(
+        &self,
+        i: Corner,
+        q: &P2<S>,
+        c: &SvConsts<S>,
+    ) -> Result<[S; 3], SigmaVError> {
+        let z = S::from_i64(0, c.wedges.prec);
+        let mut den = z.clone();
+        let mut num = [z.clone(), z.clone(), z];
+        self.for_each_term(i, q, c, |j, gam, p, w| {
+            if gam.sign() == Some(Ordering::Equal) {
+                return;
+            }
+            let psi = self.psi_local(j, w, &p);
+            for d in 0..3 {
+                num[d] = num[d].add(&gam.mul(&psi[d]));
+            }
+            den = den.add(&gam);
+        })?;
+        if den.sign() != Some(Ordering::Greater) {
+            return Err(SigmaVError::ZeroWeight(self.gluing.id(i).0));
+        }
+        Ok(num.map(|n| n.div(&den)))
+    }
+
+    /// θ_i in f64.
+    pub fn theta_f64(&self, i: Corner, q: [f64; 2]) -> Result<[f64; 3], SigmaVError> {
+        self.theta_plane(i, &P2::new(q[0], q[1]), &self.consts)
+    }
+
+    /// SPEC `SV-D13`: eval(σ, λ, μ, ν): the report's chart choice (Sec. 6.1.4, paper
+    /// profile) gives a corner c* of σ and q ∈ D_{c*} in the sector of σ; returns the corner
+    /// (σ, c*), q = f_(σ,c*)(p) and θ_(σ,c*)(p).
+    pub fn eval<S: SurfaceScalar>(
+        &self,
+        f: FaceId,
+        bary: &[S; 3],
+        c: &SvConsts<S>,
+    ) -> Result<(Corner, P2<S>, [S; 3]), SigmaVError> {
+        let (corner, q) = self.eval_chart(f, bary, c)?;
+        let x = self.theta_plane(corner, &q, c)?;
+        Ok((corner, q, x))
+    }
+
+    /// The corner and plane point eval uses (no θ).
+    pub fn eval_chart<S: SurfaceScalar>(
+        &self,
+        f: FaceId,
+        bary: &[S; 3],
+        c: &SvConsts<S>,
+    ) -> Result<(Corner, P2<S>), SigmaVError> {
+        let b = bary.clone().map(|x| x.to_f64());
+        let s = b[0] + b[1] + b[2];
+        if b.iter().any(|&x| !(x >= -1e-12)) || !((s - 1.0).abs() <= 1e-9) {
+            return Err(SigmaVError::BadBarycentric(b));
+        }
+        let g = &self.gluing;
+        let [u, w, x] = g.face_corners(f)?;
+        let lab = |a: VertexId, b: VertexId| g.label(a, b).ok_or(SigmaVError::NoSuchFace(f));
+        let qp = canonical_point(bary, &c.eval);
+        let one = S::from_i64(1, c.wedges.prec);
+        let h = |p: &P2<S>| P2::new(one.sub(&p.x), p.y.neg());
+        // (corner vertex, label of the face's half-edge, rotation label, chart point z)
+        let (v, k, rot, z) = match choose_chart(Profile::Paper, &qp, &c.eval) {
+            Chart::U => (u, lab(u, w)?, lab(u, x)?, qp),
+            Chart::X => (x, lab(x, u)?, lab(x, u)?, h(&qp)),
+            Chart::W => (w, lab(w, x)?, lab(w, u)?, h(&rotate_frac(&qp, 1, 6))),
+        };
+        let m = g.degree(v);
+        let is_zero = z.x.sign() == Some(Ordering::Equal) && z.y.sign() == Some(Ordering::Equal);
+        let q = if is_zero {
+            z
+        } else {
+            let a = g_v_inv(m, &z).map_err(|_| SigmaVError::BadBarycentric(b))?;
+            rotate_frac(&a, rot as i64, m as i64)
+        };
+        Ok((Corner { v, k }, q))
+    }
+
+    /// eval in f64.
+    pub fn eval_f64(&self, f: FaceId, bary: [f64; 3]) -> Result<[f64; 3], SigmaVError> {
+        Ok(self.eval(f, &bary, &self.consts)?.2)
+    }
+
+    /// Sample M by midpoint subdivision through eval (the Sec. 6.2 pattern of
+    /// `surface::output`, shared), with normals and curvatures from the jets of θ.
+    pub fn sample_surface(&self, level: u32) -> Result<SampledMesh, SigmaVError> {
+        let faces: Vec<_> = (0..self.gluing.num_faces())
+            .map(|f| self.gluing.face_corners(FaceId(f as u32)))
+            .collect::<Result<_, _>>()?;
+        let pat = sample_pattern_faces(&faces, level);
+        let cj = self.consts::<Jet<f64>>(53);
+        let res: Vec<Result<_, SigmaVError>> = pat
+            .points
+            .par_iter()
+            .map(|s| {
+                let (corner, q) = self.eval_chart(s.face, &s.bary, &self.consts)?;
+                let (x, y) = Jet::variables(q.x, q.y);
+                let t = self.theta_plane(corner, &P2::new(x, y), &cj)?;
+                Ok(from_jet(&t))
+            })
+            .collect();
+        let mut out = SampledMesh {
+            faces: pat.faces,
+            ..SampledMesh::default()
+        };
+        for r in res {
+            let g = r?;
+            out.positions.push(g.point);
+            out.normals.push(g.normal);
+            out.gaussian.push(g.gaussian);
+            out.mean.push(g.mean);
+        }
+        Ok(out)
+    }
+
+    /// eval of many points in parallel; `out[i]` for `points[i]`.
+    pub fn eval_batch_f64(
+        &self,
+        points: &[(FaceId, [f64; 3])],
+    ) -> Vec<Result<[f64; 3], SigmaVError>> {
+        points
+            .par_iter()
+            .map(|&(f, b)| self.eval_f64(f, b))
+            .collect()
+    }
+}
+
+/// Fit the corners of the vertices `vs` (all of degree fit.info.m). Cubic-net targets: one
+/// product with A⁺W per batch; others: A⁺ times S′ sampled at the fit's samples.
+fn fit_vertices(
+    g: &SigmaV,
+    target: &dyn TargetSurface,
+    fit: &TriFit,
+    vs: &[VertexId],
+    ncp: usize,
+) -> Vec<(u32, Vec<[f64; 3]>)> {
+    let m = fit.info.m;
+    let cols = 10 * fit.sectors.len();
+    let mut out = Vec::with_capacity(vs.len() * m as usize);
+    let sector = |v: VertexId, s: u32| -> (FaceId, [VertexId; 3]) {
+        let c = Corner { v, k: s % m };
+        (g.face_of(c), [v, g.link(v, s % m), g.link(v, (s + 1) % m)])
+    };
+    for &v in vs {
+        let nets: Option<Vec<[[f64; 3]; 10]>> = (0..m)
+            .map(|s| {
+                let (f, c) = sector(v, s);
+                target.cubic_net(f, c)
+            })
+            .collect();
+        for kk in 0..m {
+            let id = g.id(Corner { v, k: kk }).0;
+            let mut cp = vec![[0.0; 3]; ncp];
+            match &nets {
+                Some(nets) => {
+                    for (c, o) in cp.iter_mut().enumerate() {
+                        let row = &fit.net_map[c * cols..(c + 1) * cols];
+                        let mut acc = [0.0; 3];
+                        for (t, &srel) in fit.sectors.iter().enumerate() {
+                            let net = &nets[((kk + srel) % m) as usize];
+                            for (q, p) in net.iter().enumerate() {
+                                let wgt = row[10 * t + q];
+                                acc[0] += wgt * p[0];
+                                acc[1] += wgt * p[1];
+                                acc[2] += wgt * p[2];
+                            }
+                        }
+                        *o = acc;
+                    }
+                }
+                None => {
+                    let rows = fit.samples.len();
+                    let d: Vec<[f64; 3]> = fit
+                        .samples
+                        .iter()
+                        .map(|s| {
+                            let (f, c) = sector(v, kk + s.sector);
+                            target.eval(f, c, s.bary)
+                        })
+                        .collect();
+                    for (c, o) in cp.iter_mut().enumerate() {
+                        let row = &fit.pinv[c * rows..(c + 1) * rows];
+                        let mut acc = [0.0; 3];
+                        for (wgt, p) in row.iter().zip(&d) {
+                            acc[0] += wgt * p[0];
+                            acc[1] += wgt * p[1];
+                            acc[2] += wgt * p[2];
+                        }
+                        *o = acc;
+                    }
+                }
+            }
+            out.push((id, cp));
+        }
+    }
+    out
+}

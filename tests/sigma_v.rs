@@ -1,0 +1,474 @@
+//! The tutorial's (σ, v)-indexed construction (seed 002, Parts IV–V): SPEC rows `SV-…`, each
+//! with its planted faults. Fast fixtures by default; the good corpus when ../shared exists.
+
+mod common;
+
+use pseudomanifold::construction::maps::{in_omega_uw, EdgeConfig, P2};
+use pseudomanifold::construction::sigma_v::checks::*;
+use pseudomanifold::construction::sigma_v::gluing::g_uw_on_domain;
+use pseudomanifold::construction::sigma_v::wedge::WedgeTable;
+use pseudomanifold::construction::sigma_v::*;
+use pseudomanifold::gluing::data::GluingData;
+use pseudomanifold::gluing::sampled::{check_1, check_all, SampleConfig};
+use pseudomanifold::mesh::generate::{icosahedron, octahedron, torus};
+use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
+use pseudomanifold::mesh::validate::validate;
+use pseudomanifold::mesh::{FaceId, RawMesh, SimplicialSurface, VertexId};
+use pseudomanifold::report::CheckResult;
+use pseudomanifold::surface::PnTriangles;
+
+fn surface(raw: &RawMesh) -> SimplicialSurface {
+    validate(raw).surface.expect("valid fixture")
+}
+
+/// Bipyramid over an n-gon: apexes of degree n, equator of degree 4.
+fn bipyramid(n: u32) -> SimplicialSurface {
+    let mut pos = vec![[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
+    for i in 0..n {
+        let a = 2.0 * std::f64::consts::PI * i as f64 / n as f64;
+        pos.push([a.cos(), a.sin(), 0.0]);
+    }
+    let mut faces = vec![];
+    for i in 0..n {
+        let (a, b) = (2 + i, 2 + (i + 1) % n);
+        faces.push([0, a, b]);
+        faces.push([1, b, a]);
+    }
+    surface(&RawMesh::from_arrays(pos, faces))
+}
+
+fn build(k: &SimplicialSurface) -> SigmaVPps {
+    SigmaVPps::build(k, &PnTriangles::new(k), DEFAULT_KAPPA, DEFAULT_PATCH_DEGREE).expect("κ valid")
+}
+
+fn holds(r: &CheckResult) {
+    assert!(!r.failed(), "{} fails: {:?}", r.id, r.witnesses.first());
+    assert!(r.examined > 0, "{}: nothing examined", r.id);
+    eprintln!(
+        "{} holds: examined {}, worst {:?}, tol {:?}",
+        r.id, r.examined, r.worst_deviation, r.tolerance
+    );
+}
+
+fn fails(r: &CheckResult) {
+    assert!(r.failed(), "{} should fail", r.id);
+    assert!(!r.witnesses.is_empty());
+    eprintln!("{} fails as expected: {}", r.id, r.witnesses[0].text);
+}
+
+const CFG: SampleConfig = SampleConfig { seed: 7, n: 16 };
+
+#[test]
+fn sv_count_three_n_t() {
+    for k in [
+        surface(&octahedron()),
+        surface(&icosahedron()),
+        bipyramid(7),
+    ] {
+        let g = SigmaV::new(&k, DEFAULT_KAPPA).unwrap();
+        assert_eq!(g.len(), 3 * k.num_faces());
+        holds(&check_count(&g));
+    }
+}
+
+#[test]
+fn sv_d3_kappa_out_of_range_is_a_typed_error() {
+    let k = surface(&octahedron());
+    for kappa in [0.0, 1.0, -0.1, f64::NAN, 2.0] {
+        assert!(matches!(
+            SigmaV::new(&k, kappa),
+            Err(SigmaVError::BadKappa(_))
+        ));
+    }
+}
+
+#[test]
+fn sv_first_attempt_fails_def_3_4_1_1_with_witness() {
+    let k = surface(&icosahedron());
+    let g = SigmaV::new(&k, DEFAULT_KAPPA).unwrap();
+    let r = check_first_attempt(&g, VertexId(0), &CFG);
+    fails(&r);
+    // And across vertices: all P-polygons at the origin in the first attempt.
+    let view = SigmaVView::at_vertices(&g, &[VertexId(0), VertexId(1)], Version::FirstAttempt);
+    fails(&check_1(&view, &CFG));
+}
+
+#[test]
+fn sv_1_sv_cocycle_fixed_version_satisfies_def_3_4_1() {
+    for k in [surface(&octahedron()), bipyramid(7)] {
+        let g = SigmaV::new(&k, DEFAULT_KAPPA).unwrap();
+        let f = k.face(FaceId(0));
+        let view = SigmaVView::at_vertices(&g, &f, Version::Fixed);
+        for r in check_all(&view, &CFG) {
+            holds(&r);
+        }
+    }
+}
+
+#[test]
+fn sv_d7_sv_h_declared_empty_pairs_are_empty_at_default_kappa() {
+    for k in [
+        surface(&octahedron()),
+        surface(&icosahedron()),
+        bipyramid(7),
+        surface(&torus(8, 6)),
+    ] {
+        let g = SigmaV::new(&k, DEFAULT_KAPPA).unwrap();
+        let t = WedgeTable::<f64>::new(g.degrees().iter().copied(), g.kappa, 53);
+        holds(&check_declared_empty(&k, &g, &t, 120));
+    }
+}
+
+#[test]
+fn sv_h_threshold_first_failure_between_0_45_and_0_5_for_degree_3() {
+    // Holds at the probe's values, fails from 0.5 at (m_u, m_w) = (3, 3).
+    assert_eq!(
+        emptiness_threshold(3, 3, &[0.05, 0.25, 0.4, 0.45], 300),
+        None
+    );
+    let grid: Vec<f64> = (45..=60).map(|c| c as f64 / 100.0).collect();
+    let (kappa, q) = emptiness_threshold(3, 3, &grid, 300).expect("fails for large κ");
+    eprintln!("SV-H first fails at κ = {kappa} for (3,3): witness q = {q:?}");
+    assert!(kappa > 0.45 && kappa <= 0.5, "first failure at κ = {kappa}");
+    // Other degree pairs hold at the default κ and at 0.45.
+    for (a, b) in [(3, 6), (4, 4), (5, 7), (6, 6), (12, 5), (4, 7)] {
+        assert_eq!(
+            emptiness_threshold(a, b, &[0.25, 0.45], 200),
+            None,
+            "({a},{b})"
+        );
+    }
+}
+
+#[test]
+fn sv_h_failure_is_a_planted_fault_for_the_checker() {
+    // κ = 0.6 on the tetrahedron-like degree-3 configurations: the scan must find a witness.
+    let k = surface(&pseudomanifold::mesh::generate::tetrahedron());
+    let g = SigmaV::new(&k, 0.6).unwrap();
+    let t = WedgeTable::<f64>::new(g.degrees().iter().copied(), g.kappa, 53);
+    fails(&check_declared_empty(&k, &g, &t, 160));
+}
+
+#[test]
+fn sv_d9_sv_same_maps_cross_edge_phi_is_the_reports_and_membership_literal() {
+    // g_uw_on_domain decides Def. 4.1.9 as the literal round-trip test does, and its value is
+    // the report's φ_wu (T 3289: "the transition maps do not change").
+    use pseudomanifold::construction::maps::{phi_wu, VertexPair};
+    let mut n_in = 0;
+    for (mu, mw) in [(3u32, 5u32), (4, 4), (6, 6), (7, 3), (9, 12), (12, 4)] {
+        let e = EdgeConfig {
+            m_u: mu,
+            i: 1,
+            m_w: mw,
+            j: 2,
+        };
+        for a in 0..80 {
+            for b in 0..80 {
+                let q = P2::new(
+                    -1.0 + a as f64 / 40.0 + 0.0037,
+                    -1.0 + b as f64 / 40.0 + 0.0011,
+                );
+                let ours = g_uw_on_domain(&e, &q);
+                let er = e.reversed();
+                let lit = in_omega_uw::<f64>(&er.reversed(), &q);
+                assert_eq!(ours.is_some(), lit.is_true(), "m=({mu},{mw}) q={q:?}");
+                if let Some(y) = ours {
+                    n_in += 1;
+                    let r = phi_wu(&VertexPair::Edge(e), &q).unwrap();
+                    assert!(y.dist_f64(&r) < 1e-14);
+                }
+            }
+        }
+    }
+    assert!(n_in > 1000);
+}
+
+#[test]
+fn sv_2_sv_3_sv_4_planted_faults_are_caught() {
+    let k = surface(&icosahedron());
+    let g = SigmaV::new(&k, DEFAULT_KAPPA).unwrap();
+    let f = k.face(FaceId(0));
+    // Wrong map: the cross-edge transition rotated by 0.01.
+    let view =
+        SigmaVView::at_vertices(&g, &f, Version::Fixed).with_phi_override(Box::new(|j, i, q| {
+            if j.v == i.v {
+                return None;
+            }
+            let (c, s) = (0.01f64.cos(), 0.01f64.sin());
+            Some([c * q[0] - s * q[1], s * q[0] + c * q[1]])
+        }));
+    let rs = check_all(&view, &CFG);
+    let b = rs.iter().find(|r| r.id == "D3.4.1(3b)").unwrap();
+    fails(b);
+    // NaN map.
+    let view = SigmaVView::at_vertices(&g, &f, Version::Fixed)
+        .with_phi_override(Box::new(|j, i, _| (j != i).then_some([f64::NAN, 0.0])));
+    let rs = check_all(&view, &CFG);
+    assert!(rs.iter().any(|r| r.failed()), "NaN map must not hold");
+    // Empty domain: a view on ids outside I.
+    let view = SigmaVView::new(&g, vec![CornerId(999_999)], Version::Fixed);
+    fails(&check_1(&view, &CFG));
+}
+
+#[test]
+fn sv_c_sv_e_index_condition_c_holds_and_planted_faults_fail() {
+    let k = bipyramid(7);
+    let mut pps = build(&k);
+    let g = pps.gluing.clone();
+    let f = k.face(FaceId(0));
+    let view = SigmaVView::at_vertices(&g, &f, Version::Fixed);
+    let th = |p: &SigmaVPps| {
+        let p = p.clone();
+        let view = &view;
+        move |i: u32, x: &[f64; 2]| -> Vec<f64> {
+            let (Some(c), Some(q)) = (view.corner(i), view.to_plane(i, x)) else {
+                return vec![f64::NAN; 3];
+            };
+            p.theta_f64(c, [q.x, q.y])
+                .map(|t| t.to_vec())
+                .unwrap_or(vec![f64::NAN; 3])
+        }
+    };
+    holds(&pseudomanifold::gluing::ppm::check_c(&view, th(&pps), &CFG));
+    pps.fault = Some(SvFault::Transition { angle: 1e-3 });
+    fails(&pseudomanifold::gluing::ppm::check_c(&view, th(&pps), &CFG));
+    let c0 = g.id(Corner { v: f[1], k: 0 }).0;
+    pps.fault = Some(SvFault::NeighbourWeight {
+        corner: c0,
+        factor: 1.5,
+    });
+    fails(&pseudomanifold::gluing::ppm::check_c(&view, th(&pps), &CFG));
+    pps.fault = None;
+    // A moved control point changes M but keeps it consistent: (C) still holds.
+    pps.patch_mut(CornerId(c0))[5][0] += 1e-3;
+    holds(&pseudomanifold::gluing::ppm::check_c(&view, th(&pps), &CFG));
+}
+
+#[test]
+fn sv_d12_sv_smooth_sv_gamma_theta_smooth_on_views() {
+    let k = surface(&icosahedron());
+    let pps = build(&k);
+    let f = k.face(FaceId(3));
+    let view = SigmaVView::at_vertices(&pps.gluing, &f, Version::Fixed);
+    holds(&check_smooth(&pps, &view, &CFG));
+}
+
+#[test]
+fn sv_d13_sv_count_sv_bench_eval_and_sample_watertight() {
+    use pseudomanifold::surface::output::edge_use_counts;
+    for k in [surface(&icosahedron()), bipyramid(7), surface(&torus(8, 6))] {
+        let pps = build(&k);
+        holds(&check_eval(&pps, 1000, 3));
+        let m = pps.sample_surface(2).expect("sample");
+        let (_, other) = edge_use_counts(&m.faces);
+        assert_eq!(other, 0, "watertight");
+        assert!(m.positions.iter().flatten().all(|x| x.is_finite()));
+        // Points shared by faces are evaluated once; evaluate through every face and compare
+        // (condition (C) seen from eval): corners of K through each incident face.
+        for fi in 0..k.num_faces() {
+            let f = FaceId(fi as u32);
+            let c = k.face(f);
+            for (t, _) in c.iter().enumerate() {
+                let mut b = [0.0; 3];
+                b[t] = 1.0;
+                let x = pps.eval_f64(f, b).unwrap();
+                let y = pps
+                    .eval_f64(FaceId(k.faces_around(c[t])[0].0), {
+                        let f0 = k.faces_around(c[t])[0];
+                        let c0 = k.face(f0);
+                        let mut b0 = [0.0; 3];
+                        b0[c0.iter().position(|&v| v == c[t]).unwrap()] = 1.0;
+                        b0
+                    })
+                    .unwrap();
+                let d =
+                    ((x[0] - y[0]).powi(2) + (x[1] - y[1]).powi(2) + (x[2] - y[2]).powi(2)).sqrt();
+                assert!(d < 1e-12, "vertex {} via faces: {d}", c[t]);
+            }
+        }
+    }
+}
+
+#[test]
+fn sv_e_gu_factor_sv_e_angle_range_sv_e_equilateral_errata() {
+    use pseudomanifold::construction::sigma_v::errata::*;
+    let degs = [3u32, 4, 5, 6, 7, 9, 12];
+    fails(&check_gu_factor_as_written(&degs));
+    holds(&check_gu_factor_corrected(&degs));
+    // m = 6 alone: the slides' factor is right there.
+    assert!(!check_gu_factor_as_written(&[6]).failed());
+    fails(&check_angle_range_as_written(&degs));
+    holds(&check_angle_range_corrected(&degs));
+    let (w, c) = check_equilateral();
+    fails(&w);
+    holds(&c);
+}
+
+#[test]
+fn sv_psi_fit_rank_reported_per_degree() {
+    let k = bipyramid(9);
+    let pps = build(&k);
+    for f in pps.fit_info() {
+        eprintln!("{f:?}");
+        assert_eq!(f.rank, f.unknowns);
+    }
+}
+
+#[test]
+fn sv_d1_sv_d5_sv_d8_run_sigma_v_checks_on_fixtures() {
+    use pseudomanifold::construction::sigma_v::checks::{
+        run_sigma_v_checks, sv_erratum, SvCheckOptions,
+    };
+    let mut paths = common::bundled_good();
+    paths.extend(
+        common::corpus()
+            .into_iter()
+            .filter(|m| m.good && m.faces <= 20_000)
+            .map(|m| m.path),
+    );
+    for p in paths {
+        let Ok(raw) = read_mesh(&p, &ReadOptions::default()) else {
+            continue;
+        };
+        let Some(k) = validate(&raw).surface else {
+            continue;
+        };
+        let o = SvCheckOptions {
+            samples: 8,
+            max_views: 1,
+            ..Default::default()
+        };
+        let rs = run_sigma_v_checks(&k, &PnTriangles::new(&k), &o);
+        for r in &rs {
+            eprintln!(
+                "{}: {:?} {} examined {}",
+                p.display(),
+                r.verdict,
+                r.id,
+                r.examined
+            );
+            if r.failed() {
+                assert!(
+                    sv_erratum(&r.id).is_some(),
+                    "{}: {} fails: {:?}",
+                    p.display(),
+                    r.id,
+                    r.witnesses.first()
+                );
+            }
+        }
+        assert!(
+            rs.iter().any(|r| r.id == "SV-first" && r.failed()),
+            "first attempt must fail"
+        );
+    }
+}
+
+#[test]
+fn sv_compare_two_constructions_on_the_same_mesh() {
+    use pseudomanifold::construction::sigma_v::compare::compare;
+    for (name, k) in [
+        ("icosahedron", surface(&icosahedron())),
+        ("torus 8x6", surface(&torus(8, 6))),
+    ] {
+        let pn = PnTriangles::new(&k);
+        let sv = build(&k);
+        let r = compare(&k, &pn, &sv, 2).expect("both evaluate");
+        eprintln!("SV-compare {name}: {}", serde_json::to_string(&r).unwrap());
+        assert!(r.between.max.is_finite() && r.sigma_v_to_target.max.is_finite());
+        // Both approximate S′: within a few percent of the diagonal.
+        assert!(
+            r.sigma_v_to_target.max < 0.05 && r.vertex_to_target.max < 0.05,
+            "{r:?}"
+        );
+    }
+}
+
+#[test]
+fn sv_d13_oracle_set_construction_eval_f64_against_mpfr() {
+    use pseudomanifold::oracle::Session;
+    let k = surface(&icosahedron());
+    let pps = build(&k);
+    let mut s = Session::with_surface(k);
+    assert!(
+        s.handle_line(r#"{"op":"set_construction","construction":"sigma-v"}"#)
+            .ok
+    );
+    let r = s.handle_line(r#"{"op":"eval","face":3,"bary":[0.2,0.3,0.5]}"#);
+    assert!(r.ok, "{r:?}");
+    let d = r.difference.expect("f64 and MPFR");
+    assert!(d < 1e-12, "f64 vs MPFR: {d}");
+    let f: Vec<f64> = serde_json::from_value(r.f64.clone().unwrap()).unwrap();
+    let mine = pps.eval_f64(FaceId(3), [0.2, 0.3, 0.5]).unwrap();
+    assert_eq!(f, mine.to_vec());
+    // Back to the vertex construction: a different surface, and bad κ is a typed error.
+    assert!(
+        s.handle_line(r#"{"op":"set_construction","construction":"vertex"}"#)
+            .ok
+    );
+    let v = s.handle_line(r#"{"op":"eval","face":3,"bary":[0.2,0.3,0.5]}"#);
+    assert!(v.ok && v.f64 != r.f64);
+    assert!(
+        !s.handle_line(r#"{"op":"set_construction","construction":"sigma-v","kappa":1.5}"#)
+            .ok
+    );
+    assert!(
+        !s.handle_line(r#"{"op":"set_construction","construction":"nope"}"#)
+            .ok
+    );
+}
+
+#[test]
+fn sv_h_consequence_condition_c_fails_where_declared_empty_pairs_meet() {
+    // κ = 0.6 > the SV-H threshold on a degree-3 mesh: the pairs declared empty by T 2430
+    // meet, so same-vertex corners see different J(p) and (C) fails with a witness.
+    let k = surface(&pseudomanifold::mesh::generate::tetrahedron());
+    let pps = SigmaVPps::build(&k, &PnTriangles::new(&k), 0.6, DEFAULT_PATCH_DEGREE).unwrap();
+    let f = k.face(FaceId(0));
+    let view = SigmaVView::at_vertices(&pps.gluing, &f, Version::Fixed);
+    let th = |i: u32, x: &[f64; 2]| -> Vec<f64> {
+        let (Some(c), Some(q)) = (view.corner(i), view.to_plane(i, x)) else {
+            return vec![f64::NAN; 3];
+        };
+        pps.theta_f64(c, [q.x, q.y])
+            .map(|t| t.to_vec())
+            .unwrap_or(vec![f64::NAN; 3])
+    };
+    let cfg = SampleConfig { seed: 7, n: 64 };
+    fails(&pseudomanifold::gluing::ppm::check_c(&view, th, &cfg));
+}
+
+/// Timing probe for SPEC `SV-bench` (the bench proper is `benches/sigma_v.rs`): run with
+/// `PPM_SV_BENCH_MESH=../shared/meshes/good/koala.obj cargo test --test sigma_v -- --ignored`.
+#[test]
+#[ignore]
+fn sv_bench_timing_probe() {
+    use rayon::prelude::*;
+    let Ok(path) = std::env::var("PPM_SV_BENCH_MESH") else {
+        return;
+    };
+    let raw = read_mesh(std::path::Path::new(&path), &ReadOptions::default()).unwrap();
+    let k = validate(&raw).surface.unwrap();
+    let t = std::time::Instant::now();
+    let pps = build(&k);
+    let tb = t.elapsed().as_secs_f64();
+    let nf = k.num_faces();
+    let pts: Vec<(FaceId, [f64; 3])> = (0..500_000usize)
+        .map(|i| {
+            let a = ((i * 7919) % 997) as f64 / 997.0;
+            let b = ((i * 104729) % 991) as f64 / 991.0 * (1.0 - a);
+            (FaceId((i % nf) as u32), [1.0 - a - b, a, b])
+        })
+        .collect();
+    let t = std::time::Instant::now();
+    let s: f64 = pts
+        .par_iter()
+        .map(|(f, b)| pps.eval_f64(*f, *b).map(|x| x[0]).unwrap_or(f64::NAN))
+        .sum();
+    let te = t.elapsed().as_secs_f64();
+    eprintln!(
+        "SV-bench {path}: {} patches built in {tb:.2} s; eval {:.0} points/s (checksum {s})",
+        pps.gluing.len(),
+        pts.len() as f64 / te
+    );
+}
