@@ -379,7 +379,7 @@ impl Session {
     fn ch5(&mut self) -> Result<&mut Ch5, OracleError> {
         if self.ch5.is_none() {
             let k = self.k()?;
-            let pn = PnTriangles::new(k);
+            let pn = PnTriangles::for_profile(k, self.profile);
             let pps = Pps::build(
                 k,
                 &pn,

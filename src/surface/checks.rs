@@ -61,7 +61,7 @@ impl Default for SurfaceCheckOptions {
 
 /// Build S′ and the PPS and run every check.
 pub fn run_surface_checks(k: &SimplicialSurface, opts: &SurfaceCheckOptions) -> Vec<CheckResult> {
-    let pn = PnTriangles::new(k);
+    let pn = PnTriangles::for_profile(k, opts.profile);
     let pps = Pps::build(
         k,
         &pn,

@@ -30,7 +30,7 @@ fn build(k: &SimplicialSurface, profile: &str) -> Result<Pps, ExitCode> {
         eprintln!("error: unknown profile {profile:?} (paper | authors-code)");
         ExitCode::from(2)
     })?;
-    let pn = PnTriangles::new(k);
+    let pn = PnTriangles::for_profile(k, profile);
     Ok(Pps::build(
         k,
         &pn,

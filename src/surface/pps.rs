@@ -16,6 +16,7 @@
 //! E lies in the open sector |β| < π/3 (the tangents from 0 to the circle D touch it at angle
 //! ±π/3), i.e. |θ(R_(v,u)p)| < 2π/m_v. With the literal membership only those two are tested.
 
+use super::authors_fit::{fit_vertex_authors, AuthorsDegreeFit};
 use super::consts::{Consts, DegreeConsts};
 use super::fit::{factor_degree, DegreeFit, DegreeFitInfo};
 use super::profile::Profile;
@@ -170,11 +171,21 @@ impl Pps {
         }
         let mut nbr = vec![VertexId(0); nbr_start[slots]];
         let mut back = vec![0u32; nbr_start[slots]];
+        // v′_0 depends on the profile (`Profile::label_offset`): label i of the profile is
+        // label (i + offset_v) mod m_v of K.
+        let offset: Vec<u32> = (0..slots)
+            .map(|v| options.profile.label_offset(k, VertexId(v as u32)))
+            .collect();
         for v in k.vertices() {
-            for (i, &h) in k.outgoing(v).iter().enumerate() {
+            let out = k.outgoing(v);
+            let m = out.len();
+            for i in 0..m {
+                let h = out[(i + offset[v.idx()] as usize) % m];
                 let u = k.dest(h);
+                let mu = degree[u.idx()].max(1);
                 nbr[nbr_start[v.idx()] + i] = u;
-                back[nbr_start[v.idx()] + i] = k.label(k.twin(h));
+                back[nbr_start[v.idx()] + i] =
+                    (k.label(k.twin(h)) + mu - offset[u.idx()] % mu) % mu;
             }
         }
         let mut degs: Vec<u32> = k.vertices().map(|v| k.degree(v)).collect();
@@ -253,9 +264,29 @@ impl Pps {
                 tasks.push((f, cur));
             }
         }
-        tasks
-            .into_par_iter()
-            .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &mut vs));
+        if options.profile == Profile::AuthorsCode {
+            // Their fit (normal equations, their samples), vertex by vertex.
+            let afits: Vec<(u32, AuthorsDegreeFit)> = degs
+                .par_iter()
+                .map(|&m| (m, AuthorsDegreeFit::new(m, options.profile.bezier_degree(m))))
+                .collect();
+            tasks.into_par_iter().for_each(|(fit, mut vs)| {
+                let Some((_, af)) = afits.iter().find(|(m, _)| *m == fit.info.m) else {
+                    return;
+                };
+                for (v, out) in vs.iter_mut() {
+                    if !fit_vertex_authors(k, target, *v, offset[v.idx()], af, out) {
+                        // Their code stops here (AᵀA singular: never met, as every sample
+                        // is interior to □_v); NaN makes every use of ψ_v report it.
+                        out.fill([f64::NAN; 3]);
+                    }
+                }
+            });
+        } else {
+            tasks
+                .into_par_iter()
+                .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &mut vs));
+        }
         Pps {
             options,
             target_name: target.name().to_string(),
@@ -477,8 +508,19 @@ impl Pps {
         {
             return Ok(None);
         }
-        // a = g_v(q).
-        let beta = pol.theta.mul(&dv.ang);
+        // a = g_v(q). The authors' code takes the polar angle in (−π/2, 3π/2]: +2π in the
+        // third quadrant, where (for m_v = 3, the only degree whose two candidate spokes
+        // reach it) g_v(q) then leaves the lens and u's term is dropped.
+        let zero = S::from_i64(0, c.prec);
+        let theta = if self.options.profile.authors_polar_angle()
+            && q.x.lt(&zero).is_true()
+            && q.y.lt(&zero).is_true()
+        {
+            pol.theta.add(&S::pi(c.prec).mul(&S::from_i64(2, c.prec)))
+        } else {
+            pol.theta
+        };
+        let beta = theta.mul(&dv.ang);
         let rho = pol.r.mul(&dv.radial);
         let a = P2::new(rho.mul(&beta.cos()), rho.mul(&beta.sin()));
         // Canonical lens E: |a|² < 3/4, |a − (1,0)|² < 3/4, a ∉ {0, (1,0)}.

@@ -10,6 +10,7 @@
 //! caller names them; b_σ does not depend on that order.
 
 use crate::mesh::vec3::{cross, dot, norm, sub};
+use super::profile::{NormalRule, Profile};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 
 /// Order of the 10 control points of a cubic Bézier triangle: exponents (i, j, k), i + j + k
@@ -61,7 +62,7 @@ pub trait TargetSurface: Sync {
 
 /// PN triangles (Vlachos et al. 2001) from vertex normals.
 ///
-/// **Normal rule**: the normal of vertex v is the angle-weighted average of the unit normals
+/// **Normal rule** ([`NormalRule`]; the paper profile's default): the normal of vertex v is the angle-weighted average of the unit normals
 /// of the faces around v (Thürmer & Wüthrich 1998), face normals taken in the consistent
 /// orientation of K, normalised. (Angle weighting makes the normal independent of how a flat
 /// region is triangulated.) A vertex whose weighted sum vanishes gets the unweighted sum, and
@@ -83,6 +84,18 @@ impl PnTriangles {
     /// The PN-triangle surface of K: vertex normals are angle-weighted face normals (plain
     /// face-normal sums as a fallback).
     pub fn new(k: &SimplicialSurface) -> Self {
+        Self::with_rule(k, NormalRule::AngleWeighted)
+    }
+
+    /// The PN-triangle surface of K under a profile (its [`Profile::normal_rule`]).
+    pub fn for_profile(k: &SimplicialSurface, profile: Profile) -> Self {
+        Self::with_rule(k, profile.normal_rule())
+    }
+
+    /// The PN-triangle surface of K with the given vertex-normal rule. With
+    /// [`NormalRule::PlainMean`] (the authors' code) the normal is the mean of the unit face
+    /// normals, normalised; the weighted sum is then never used.
+    pub fn with_rule(k: &SimplicialSurface, rule: NormalRule) -> Self {
         let n = k.vertex_slots();
         let positions: Vec<[f64; 3]> = (0..n).map(|i| k.position(VertexId(i as u32))).collect();
         let mut acc = vec![[0.0; 3]; n];
@@ -111,7 +124,11 @@ impl PnTriangles {
         let mut degenerate = 0;
         let normals = (0..n)
             .map(|v| {
-                for cand in [acc[v], plain[v]] {
+                let cands = match rule {
+                    NormalRule::AngleWeighted => [acc[v], plain[v]],
+                    NormalRule::PlainMean => [plain[v], plain[v]],
+                };
+                for cand in cands {
                     let l = norm(cand);
                     if l > 0.0 && l.is_finite() {
                         return cand.map(|x| x / l);
