@@ -221,7 +221,7 @@ pub struct TsvReport {
     pub tolerance: f64,
     /// The compared quantities.
     pub quantities: Vec<Quantity>,
-    /// Every deviation ≤ tolerance and every row evaluated.
+    /// Some row compared, every row evaluated and every deviation ≤ tolerance.
     pub within_tolerance: bool,
 }
 
@@ -326,9 +326,11 @@ pub fn diff_rows(
             worst: all,
         });
     }
-    let within = quantities
-        .iter()
-        .all(|q| q.point.errors == 0 && q.point.max <= tolerance);
+    // Zero rows compared is "nothing checked", never agreement.
+    let within = !quantities.is_empty()
+        && quantities
+            .iter()
+            .all(|q| q.point.count > 0 && q.point.errors == 0 && q.point.max <= tolerance);
     TsvReport {
         rows: rows.len(),
         diagonal: diag,

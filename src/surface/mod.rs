@@ -34,6 +34,6 @@ pub use consts::Consts;
 pub use eval::{Chart, EvalPoint};
 pub use jet::Jet;
 pub use pps::{Fault, Membership, Pps, PpsOptions, SurfaceError, Term};
-pub use profile::{NormalRule, Profile};
+pub use profile::{AuthorsStages, NormalRule, Profile};
 pub use scalar_ext::SurfaceScalar;
 pub use target::{PnTriangles, TargetSurface};

@@ -19,7 +19,7 @@
 use super::authors_fit::{fit_vertex_authors, AuthorsDegreeFit};
 use super::consts::{Consts, DegreeConsts};
 use super::fit::{factor_degree, DegreeFit, DegreeFitInfo};
-use super::profile::Profile;
+use super::profile::{label_offset, AuthorsStages, Profile};
 use super::scalar_ext::SurfaceScalar;
 use super::target::TargetSurface;
 use super::weights::{xi_of_sq, XiConsts};
@@ -139,6 +139,8 @@ pub struct Term<S> {
 pub struct Pps {
     /// The options the surface evaluates with.
     pub options: PpsOptions,
+    /// The authors'-code stages it was built and evaluates with.
+    pub stages: AuthorsStages,
     target_name: String,
     faces: Vec<[VertexId; 3]>,
     positions: Vec<[f64; 3]>,
@@ -163,6 +165,17 @@ pub struct Pps {
 impl Pps {
     /// Build all ψ_v (Sec. 5.2) for K approximating S′ = `target`.
     pub fn build(k: &SimplicialSurface, target: &dyn TargetSurface, options: PpsOptions) -> Pps {
+        Self::build_staged(k, target, options, options.profile.stages())
+    }
+
+    /// [`Self::build`] with the authors'-code stages chosen one by one (to measure the effect
+    /// of each difference between the paper and their code).
+    pub fn build_staged(
+        k: &SimplicialSurface,
+        target: &dyn TargetSurface,
+        options: PpsOptions,
+        stages: AuthorsStages,
+    ) -> Pps {
         let slots = k.vertex_slots();
         let degree: Vec<u32> = (0..slots).map(|v| k.degree(VertexId(v as u32))).collect();
         let mut nbr_start = vec![0usize; slots + 1];
@@ -174,7 +187,7 @@ impl Pps {
         // v′_0 depends on the profile (`Profile::label_offset`): label i of the profile is
         // label (i + offset_v) mod m_v of K.
         let offset: Vec<u32> = (0..slots)
-            .map(|v| options.profile.label_offset(k, VertexId(v as u32)))
+            .map(|v| label_offset(k, VertexId(v as u32), stages))
             .collect();
         for v in k.vertices() {
             let out = k.outgoing(v);
@@ -264,7 +277,7 @@ impl Pps {
                 tasks.push((f, cur));
             }
         }
-        if options.profile == Profile::AuthorsCode {
+        if stages.normal_equations {
             // Their fit (normal equations, their samples), vertex by vertex.
             let afits: Vec<(u32, AuthorsDegreeFit)> = degs
                 .par_iter()
@@ -285,10 +298,11 @@ impl Pps {
         } else {
             tasks
                 .into_par_iter()
-                .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &mut vs));
+                .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &offset, &mut vs));
         }
         Pps {
             options,
+            stages,
             target_name: target.name().to_string(),
             faces: k.faces().map(|f| k.face(f)).collect(),
             positions: (0..slots).map(|v| k.position(VertexId(v as u32))).collect(),
@@ -512,7 +526,7 @@ impl Pps {
         // third quadrant, where (for m_v = 3, the only degree whose two candidate spokes
         // reach it) g_v(q) then leaves the lens and u's term is dropped.
         let zero = S::from_i64(0, c.prec);
-        let theta = if self.options.profile.authors_polar_angle()
+        let theta = if self.stages.polar_angle
             && q.x.lt(&zero).is_true()
             && q.y.lt(&zero).is_true()
         {
@@ -805,6 +819,7 @@ fn fit_batch(
     k: &SimplicialSurface,
     target: &dyn TargetSurface,
     fit: &DegreeFit,
+    offset: &[u32],
     vs: &mut [(VertexId, &mut [[f64; 3]])],
 ) {
     let m = fit.info.m;
@@ -817,18 +832,19 @@ fn fit_batch(
     for (idx, (v, out)) in vs.iter_mut().enumerate() {
         let v = *v;
         let outgoing = k.outgoing(v);
+        let off = offset[v.idx()] as usize;
         nets.clear();
         for i in 0..m as usize {
-            let h = outgoing[i];
+            let h = outgoing[(i + off) % m as usize];
             let a = k.dest(h);
-            let b = k.dest(outgoing[(i + 1) % m as usize]);
+            let b = k.dest(outgoing[(i + off + 1) % m as usize]);
             match target.cubic_net(k.face_of(h), [v, a, b]) {
                 Some(net) => nets.push(net),
                 None => break,
             }
         }
         if nets.len() != m as usize || out.len() != kk {
-            fit_vertex(k, target, v, fit, out);
+            fit_vertex(k, target, v, off as u32, fit, out);
             continue;
         }
         for d in 0..3 {
@@ -857,15 +873,16 @@ fn fit_vertex(
     k: &SimplicialSurface,
     target: &dyn TargetSurface,
     v: VertexId,
+    off: u32,
     fit: &DegreeFit,
     out: &mut [[f64; 3]],
 ) {
     let m = k.degree(v);
     let outgoing = k.outgoing(v);
     let sector = |i: u32| -> (FaceId, [VertexId; 3]) {
-        let h = outgoing[i as usize];
+        let h = outgoing[((i + off) % m) as usize];
         let a = k.dest(h);
-        let b = k.dest(outgoing[((i + 1) % m) as usize]);
+        let b = k.dest(outgoing[((i + off + 1) % m) as usize]);
         (k.face_of(h), [v, a, b])
     };
     let kk = out.len();

@@ -25,6 +25,36 @@
 use crate::mesh::{HalfedgeId, SimplicialSurface, VertexId};
 use serde::Serialize;
 
+/// The stages in which the authors' code departs from the paper's text, each switchable on
+/// its own (all on for [`Profile::AuthorsCode`], all off for [`Profile::Paper`]): switching
+/// one back to the paper's rule measures that difference's effect (`docs/authors-code.md`).
+/// The Bézier degree, grid and normal rule follow the profile itself.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
+pub struct AuthorsStages {
+    /// v′_0 from the last face containing v ([`Profile::label_offset`]).
+    pub labels: bool,
+    /// Their grid and kept points and the normal-equations fit (else the SVD of Sec. 5.2 on
+    /// the profile's grid).
+    pub normal_equations: bool,
+    /// Their canonical-domain polar angle in (−π/2, 3π/2].
+    pub polar_angle: bool,
+    /// eval's chart: the nearest corner of the canonical triangle (else Sec. 6.1.4's rule).
+    pub nearest_chart: bool,
+    /// eval blends only the evaluated triangle's three vertices (else all of J_v(p)).
+    pub triangle_blend: bool,
+}
+
+impl AuthorsStages {
+    /// Every stage as in the authors' code.
+    pub const ALL: AuthorsStages = AuthorsStages {
+        labels: true,
+        normal_equations: true,
+        polar_angle: true,
+        nearest_chart: true,
+        triangle_blend: true,
+    };
+}
+
 /// How the PN-triangle vertex normals of S′ are formed (Sec. 5.1 leaves it open).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
@@ -90,23 +120,27 @@ impl Profile {
     /// and numbers the others counterclockwise from it (same direction as ours), so their
     /// v′_i is our label (i + offset) mod m_v.
     pub fn label_offset(self, k: &SimplicialSurface, v: VertexId) -> u32 {
+        label_offset(k, v, self.stages())
+    }
+    /// The stages of [`AuthorsStages`] this profile follows.
+    pub fn stages(self) -> AuthorsStages {
         match self {
-            Profile::Paper => 0,
-            Profile::AuthorsCode => {
-                let Some(&f) = k.faces_around(v).last() else {
-                    return 0;
-                };
-                let corners = k.face(f);
-                match corners.iter().position(|&c| c == v) {
-                    Some(c) => k.label(HalfedgeId(3 * f.0 + c as u32)),
-                    None => 0,
-                }
-            }
+            Profile::Paper => AuthorsStages::default(),
+            Profile::AuthorsCode => AuthorsStages::ALL,
         }
     }
-    /// Whether the canonical-domain polar angle follows the authors' code: in (−π/2, 3π/2],
-    /// i.e. +2π in the third quadrant (their `to_canonical_domain`).
-    pub fn authors_polar_angle(self) -> bool {
-        self == Profile::AuthorsCode
+}
+
+/// [`Profile::label_offset`] for a set of stages.
+pub fn label_offset(k: &SimplicialSurface, v: VertexId, stages: AuthorsStages) -> u32 {
+    if !stages.labels {
+        return 0;
+    }
+    let Some(&f) = k.faces_around(v).last() else {
+        return 0;
+    };
+    match k.face(f).iter().position(|&c| c == v) {
+        Some(c) => k.label(HalfedgeId(3 * f.0 + c as u32)),
+        None => 0,
     }
 }

@@ -187,6 +187,34 @@ pub fn eval_cubic(net: &[[f64; 3]; 10], bary: [f64; 3]) -> [f64; 3] {
     r
 }
 
+/// [`eval_cubic`] in any scalar (the oracle's S′ in MPFR): the net's f64 control points are
+/// exact in `S`, so the difference from the f64 value is the rounding of the evaluation.
+pub fn eval_cubic_in<S: crate::construction::Scalar>(
+    net: &[[f64; 3]; 10],
+    bary: &[S; 3],
+    prec: u32,
+) -> [S; 3] {
+    let mut r = [0, 1, 2].map(|_| S::from_i64(0, prec));
+    for (e, cj) in CUBIC_ORDER.iter().zip(net) {
+        // 3!/(i!j!k!) λ^i ν^j η^k
+        let coef = match e.iter().filter(|&&x| x > 0).count() {
+            1 => 1,
+            2 => 3,
+            _ => 6,
+        };
+        let mut b = S::from_i64(coef, prec);
+        for (x, &n) in bary.iter().zip(e) {
+            for _ in 0..n {
+                b = b.mul(x);
+            }
+        }
+        for d in 0..3 {
+            r[d] = r[d].add(&b.mul(&S::from_f64(cj[d], prec)));
+        }
+    }
+    r
+}
+
 impl TargetSurface for PnTriangles {
     fn name(&self) -> &str {
         "pn-triangles"
