@@ -65,6 +65,16 @@ fn main() {
             let (pm, p50) = q("pps").map_or((f64::NAN, f64::NAN), |q| (q.point.max, q.point.p50));
             let sm = q("sprime").map_or(f64::NAN, |q| q.point.max);
             println!("{name}\t{label}\t{pm:.2e}\t{p50:.2e}\t{sm:.2e}");
+            if !stages.polar_angle && profile == Profile::AuthorsCode && pm > 1e-9 {
+                // A witness of defect D1 (docs/authors-code.md): their value vs the value
+                // without the defect.
+                if let Some(w) = q("pps").and_then(|q| q.worst.first()) {
+                    eprintln!(
+                        "D1 witness {name}: line {} face {} bary {:?}: theirs {:?}, without the defect {:?}",
+                        w.line, w.face, w.bary, w.theirs, w.ours
+                    );
+                }
+            }
         }
     }
 }

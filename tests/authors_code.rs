@@ -185,3 +185,29 @@ fn authors_tables_exact_facts() {
         assert!(worst_edge <= 1e-12, "eval at an edge midpoint differs by {worst_edge:e}");
     }
 }
+
+/// The oracle's `sprime` op: S′ at a corner is the vertex, f64 and MPFR agree, bad input is a
+/// typed error.
+#[test]
+fn authors_code_oracle_sprime_op() {
+    use pseudomanifold::oracle::Session;
+    let (mesh, _) = fixture();
+    let mut s = Session::new();
+    let load = format!(r#"{{"op":"load","path":{:?}}}"#, mesh.display().to_string());
+    assert!(s.handle_line(&load).ok);
+    assert!(s.handle_line(r#"{"op":"set_profile","profile":"authors-code"}"#).ok);
+    let r = s.handle_line(r#"{"op":"sprime","face":0,"bary":[1,0,0]}"#);
+    assert!(r.ok, "{r:?}");
+    let (k, faces) = load_fixture_mesh();
+    let v = k.position(pseudomanifold::mesh::VertexId(faces[0][0]));
+    let f: Vec<f64> = serde_json::from_value(r.f64.clone().expect("f64")).expect("array");
+    assert_eq!(f, v.to_vec());
+    let r = s.handle_line(r#"{"op":"sprime","face":3,"bary":[0.2,0.3,0.5]}"#);
+    assert!(r.ok && r.difference.expect("difference") < 1e-15, "{r:?}");
+    assert!(!s.handle_line(r#"{"op":"sprime","face":3,"bary":[2,-0.5,-0.5]}"#).ok);
+    assert!(!s.handle_line(r#"{"op":"sprime","face":480,"bary":[1,0,0]}"#).ok);
+}
+
+fn load_fixture_mesh() -> (SimplicialSurface, Vec<[u32; 3]>) {
+    load(&fixture().0)
+}
