@@ -20,24 +20,93 @@ fn main() {
     };
     let names: Vec<String> = std::env::args().skip(1).collect();
     let names = if names.is_empty() {
-        ["cube", "bob_small", "eight", "anchor", "spot", "bunny", "torus", "skull_low"]
-            .map(String::from)
-            .to_vec()
+        [
+            "cube",
+            "bob_small",
+            "eight",
+            "anchor",
+            "spot",
+            "bunny",
+            "torus",
+            "skull_low",
+        ]
+        .map(String::from)
+        .to_vec()
     } else {
         names
     };
     let all = AuthorsStages::ALL;
     type Variant = (&'static str, Profile, NormalRule, AuthorsStages);
     let variants: [Variant; 9] = [
-        ("authors-code", Profile::AuthorsCode, NormalRule::PlainMean, all),
-        ("normals angle-weighted", Profile::AuthorsCode, NormalRule::AngleWeighted, all),
-        ("l = max(m+1, 7)", Profile::Paper, NormalRule::PlainMean, all),
-        ("labels from first face", Profile::AuthorsCode, NormalRule::PlainMean, AuthorsStages { labels: false, ..all }),
-        ("SVD fit on our grid", Profile::AuthorsCode, NormalRule::PlainMean, AuthorsStages { normal_equations: false, ..all }),
-        ("polar angle atan2", Profile::AuthorsCode, NormalRule::PlainMean, AuthorsStages { polar_angle: false, ..all }),
-        ("chart rule of Sec. 6.1.4", Profile::AuthorsCode, NormalRule::PlainMean, AuthorsStages { nearest_chart: false, ..all }),
-        ("blend all of J_v(p)", Profile::AuthorsCode, NormalRule::PlainMean, AuthorsStages { triangle_blend: false, ..all }),
-        ("paper profile", Profile::Paper, NormalRule::AngleWeighted, AuthorsStages::default()),
+        (
+            "authors-code",
+            Profile::AuthorsCode,
+            NormalRule::PlainMean,
+            all,
+        ),
+        (
+            "normals angle-weighted",
+            Profile::AuthorsCode,
+            NormalRule::AngleWeighted,
+            all,
+        ),
+        (
+            "l = max(m+1, 7)",
+            Profile::Paper,
+            NormalRule::PlainMean,
+            all,
+        ),
+        (
+            "labels from first face",
+            Profile::AuthorsCode,
+            NormalRule::PlainMean,
+            AuthorsStages {
+                labels: false,
+                ..all
+            },
+        ),
+        (
+            "SVD fit on our grid",
+            Profile::AuthorsCode,
+            NormalRule::PlainMean,
+            AuthorsStages {
+                normal_equations: false,
+                ..all
+            },
+        ),
+        (
+            "polar angle atan2",
+            Profile::AuthorsCode,
+            NormalRule::PlainMean,
+            AuthorsStages {
+                polar_angle: false,
+                ..all
+            },
+        ),
+        (
+            "chart rule of Sec. 6.1.4",
+            Profile::AuthorsCode,
+            NormalRule::PlainMean,
+            AuthorsStages {
+                nearest_chart: false,
+                ..all
+            },
+        ),
+        (
+            "blend all of J_v(p)",
+            Profile::AuthorsCode,
+            NormalRule::PlainMean,
+            AuthorsStages {
+                triangle_blend: false,
+                ..all
+            },
+        ),
+        (
+            "paper profile",
+            Profile::Paper,
+            NormalRule::AngleWeighted,
+            AuthorsStages::default(),
+        ),
     ];
     println!("mesh\tvariant\tpps_max\tpps_p50\tsprime_max");
     for name in &names {
@@ -58,7 +127,10 @@ fn main() {
         };
         for (label, profile, rule, stages) in variants {
             let pn = PnTriangles::with_rule(&k, rule);
-            let opts = PpsOptions { profile, ..PpsOptions::default() };
+            let opts = PpsOptions {
+                profile,
+                ..PpsOptions::default()
+            };
             let pps = Pps::build_staged(&k, &pn, opts, stages);
             let r = diff_rows(&k, &raw.faces, &pps, &pn, &rows, 1e-9, 1);
             let q = |n: &str| r.quantities.iter().find(|q| q.name == n);

@@ -90,7 +90,11 @@ fn load(mesh: &Path) -> (SimplicialSurface, Vec<[u32; 3]>) {
 }
 
 fn rows(table: &Path, k: &SimplicialSurface) -> Vec<Row> {
-    parse_tsv(&std::fs::read_to_string(table).expect("table"), k.num_faces()).expect("rows")
+    parse_tsv(
+        &std::fs::read_to_string(table).expect("table"),
+        k.num_faces(),
+    )
+    .expect("rows")
 }
 
 /// Planted faults: the paper profile, a shifted value, an unevaluable row and an empty table
@@ -99,7 +103,10 @@ fn rows(table: &Path, k: &SimplicialSurface) -> Vec<Row> {
 fn authors_code_diff_reports_planted_faults() {
     let (mesh, table) = fixture();
     let paper = diff_tsv_files(&mesh, &table, Profile::Paper, 1e-9, 3).expect("diff");
-    assert!(!paper.within_tolerance, "the paper profile differs from their code");
+    assert!(
+        !paper.within_tolerance,
+        "the paper profile differs from their code"
+    );
     let (k, faces) = load(&mesh);
     let mut rs = rows(&table, &k);
     let pn = PnTriangles::for_profile(&k, Profile::AuthorsCode);
@@ -139,8 +146,20 @@ fn authors_code_diff_reports_planted_faults() {
 fn authors_tables_exact_facts() {
     let mut cases = vec![fixture()];
     if let Some(dir) = reference_dir() {
-        for n in ["cube", "bob_small", "eight", "anchor", "spot", "bunny", "torus", "skull_low"] {
-            cases.push((dir.join(format!("meshes/{n}.off")), dir.join(format!("pn/{n}.tsv"))));
+        for n in [
+            "cube",
+            "bob_small",
+            "eight",
+            "anchor",
+            "spot",
+            "bunny",
+            "torus",
+            "skull_low",
+        ] {
+            cases.push((
+                dir.join(format!("meshes/{n}.off")),
+                dir.join(format!("pn/{n}.tsv")),
+            ));
         }
     }
     for (mesh, table) in cases {
@@ -161,7 +180,13 @@ fn authors_tables_exact_facts() {
                 corner_rows += 1;
                 let v = f[c];
                 let p = k.position(pseudomanifold::mesh::VertexId(v));
-                assert_eq!(sp, p, "{}: line {}: S′ at vertex {v}", table.display(), r.line);
+                assert_eq!(
+                    sp,
+                    p,
+                    "{}: line {}: S′ at vertex {v}",
+                    table.display(),
+                    r.line
+                );
                 if let Some(q) = at_vertex.insert(v, pps) {
                     worst_vertex = worst_vertex.max(dist(q, pps) / diag);
                 }
@@ -181,8 +206,14 @@ fn authors_tables_exact_facts() {
             table.display()
         );
         assert!(corner_rows > 0);
-        assert!(worst_vertex <= 1e-12, "eval at a vertex differs by {worst_vertex:e}");
-        assert!(worst_edge <= 1e-12, "eval at an edge midpoint differs by {worst_edge:e}");
+        assert!(
+            worst_vertex <= 1e-12,
+            "eval at a vertex differs by {worst_vertex:e}"
+        );
+        assert!(
+            worst_edge <= 1e-12,
+            "eval at an edge midpoint differs by {worst_edge:e}"
+        );
     }
 }
 
@@ -195,7 +226,10 @@ fn authors_code_oracle_sprime_op() {
     let mut s = Session::new();
     let load = format!(r#"{{"op":"load","path":{:?}}}"#, mesh.display().to_string());
     assert!(s.handle_line(&load).ok);
-    assert!(s.handle_line(r#"{"op":"set_profile","profile":"authors-code"}"#).ok);
+    assert!(
+        s.handle_line(r#"{"op":"set_profile","profile":"authors-code"}"#)
+            .ok
+    );
     let r = s.handle_line(r#"{"op":"sprime","face":0,"bary":[1,0,0]}"#);
     assert!(r.ok, "{r:?}");
     let (k, faces) = load_fixture_mesh();
@@ -204,8 +238,14 @@ fn authors_code_oracle_sprime_op() {
     assert_eq!(f, v.to_vec());
     let r = s.handle_line(r#"{"op":"sprime","face":3,"bary":[0.2,0.3,0.5]}"#);
     assert!(r.ok && r.difference.expect("difference") < 1e-15, "{r:?}");
-    assert!(!s.handle_line(r#"{"op":"sprime","face":3,"bary":[2,-0.5,-0.5]}"#).ok);
-    assert!(!s.handle_line(r#"{"op":"sprime","face":480,"bary":[1,0,0]}"#).ok);
+    assert!(
+        !s.handle_line(r#"{"op":"sprime","face":3,"bary":[2,-0.5,-0.5]}"#)
+            .ok
+    );
+    assert!(
+        !s.handle_line(r#"{"op":"sprime","face":480,"bary":[1,0,0]}"#)
+            .ok
+    );
 }
 
 fn load_fixture_mesh() -> (SimplicialSurface, Vec<[u32; 3]>) {

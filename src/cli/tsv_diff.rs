@@ -29,7 +29,7 @@ pub fn run(
         eprintln!("error: unknown profile {profile:?} (paper | authors-code)");
         return ExitCode::from(2);
     };
-    if !(tolerance >= 0.0) {
+    if tolerance.is_nan() || tolerance < 0.0 {
         eprintln!("error: --tolerance must be a non-negative number");
         return ExitCode::from(2);
     }

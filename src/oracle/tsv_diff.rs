@@ -80,14 +80,21 @@ pub struct Row {
 
 /// Parse a table (see the module doc).
 pub fn parse_tsv(text: &str, faces: usize) -> Result<Vec<Row>, TsvError> {
-    let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty());
     let (_, header) = lines.next().ok_or(TsvError::Empty)?;
     let names: Vec<&str> = header.split('\t').map(str::trim).collect();
     let col = |n: &str| names.iter().position(|&c| c == n);
     let need = |n: &str| col(n).ok_or_else(|| TsvError::MissingColumn(n.to_string()));
     let key = [need("face")?, need("lambda")?, need("mu")?, need("nu")?];
     let triple = |p: &str| -> Option<[usize; 3]> {
-        Some([col(&format!("{p}_x"))?, col(&format!("{p}_y"))?, col(&format!("{p}_z"))?])
+        Some([
+            col(&format!("{p}_x"))?,
+            col(&format!("{p}_y"))?,
+            col(&format!("{p}_z"))?,
+        ])
     };
     let (pc, sc) = (triple("pps"), triple("sprime"));
     if pc.is_none() && sc.is_none() {
@@ -129,7 +136,8 @@ pub fn parse_tsv(text: &str, faces: usize) -> Result<Vec<Row>, TsvError> {
         }
         let bary = [num(key[1])?, num(key[2])?, num(key[3])?];
         let point = |t: Option<[usize; 3]>| -> Result<Option<[f64; 3]>, TsvError> {
-            t.map(|[a, b, c]| Ok([num(a)?, num(b)?, num(c)?])).transpose()
+            t.map(|[a, b, c]| Ok([num(a)?, num(b)?, num(c)?]))
+                .transpose()
         };
         rows.push(Row {
             line,
@@ -370,7 +378,8 @@ pub fn diff_tsv_files(
 ) -> Result<TsvReport, TsvDiffError> {
     use crate::mesh::io::{read_mesh, ReadOptions};
     use crate::surface::{PnTriangles, PpsOptions};
-    let raw = read_mesh(mesh, &ReadOptions::default()).map_err(|e| TsvDiffError::Mesh(e.to_string()))?;
+    let raw =
+        read_mesh(mesh, &ReadOptions::default()).map_err(|e| TsvDiffError::Mesh(e.to_string()))?;
     let k = crate::mesh::validate::validate(&raw)
         .surface
         .ok_or_else(|| TsvDiffError::NotSurface(mesh.display().to_string()))?;
@@ -391,7 +400,9 @@ pub fn diff_tsv_files(
             ..PpsOptions::default()
         },
     );
-    Ok(diff_rows(&k, &raw.faces, &pps, &pn, &rows, tolerance, worst))
+    Ok(diff_rows(
+        &k, &raw.faces, &pps, &pn, &rows, tolerance, worst,
+    ))
 }
 
 /// Whether a table file is a TSV table of points (its first line names `face` first).
@@ -473,7 +484,11 @@ mod tests {
         ));
         assert!(matches!(
             parse_tsv(&format!("{h}5\t1\t0\t0\t1\t2\t3\n"), 2),
-            Err(TsvError::NoSuchFace { line: 2, face: 5, .. })
+            Err(TsvError::NoSuchFace {
+                line: 2,
+                face: 5,
+                ..
+            })
         ));
         let rows = parse_tsv(&format!("{h}1\t0.5\t0.25\t0.25\t1\t2\t3\n"), 2).expect("parsed");
         assert_eq!(rows[0].sprime, Some([1.0, 2.0, 3.0]));

@@ -111,9 +111,10 @@ impl CroutLu {
     fn new(mut a: Vec<f64>, n: usize) -> Option<CroutLu> {
         let mut scale = vec![0.0; n];
         for i in 0..n {
-            let big = a[i * n..(i + 1) * n]
-                .iter()
-                .fold(0.0f64, |b, x| if x.abs() > b { x.abs() } else { b });
+            let big =
+                a[i * n..(i + 1) * n]
+                    .iter()
+                    .fold(0.0f64, |b, x| if x.abs() > b { x.abs() } else { b });
             if big == 0.0 {
                 return None;
             }

@@ -281,7 +281,12 @@ impl Pps {
             // Their fit (normal equations, their samples), vertex by vertex.
             let afits: Vec<(u32, AuthorsDegreeFit)> = degs
                 .par_iter()
-                .map(|&m| (m, AuthorsDegreeFit::new(m, options.profile.bezier_degree(m))))
+                .map(|&m| {
+                    (
+                        m,
+                        AuthorsDegreeFit::new(m, options.profile.bezier_degree(m)),
+                    )
+                })
                 .collect();
             tasks.into_par_iter().for_each(|(fit, mut vs)| {
                 let Some((_, af)) = afits.iter().find(|(m, _)| *m == fit.info.m) else {
@@ -526,9 +531,7 @@ impl Pps {
         // third quadrant, where (for m_v = 3, the only degree whose two candidate spokes
         // reach it) g_v(q) then leaves the lens and u's term is dropped.
         let zero = S::from_i64(0, c.prec);
-        let theta = if self.stages.polar_angle
-            && q.x.lt(&zero).is_true()
-            && q.y.lt(&zero).is_true()
+        let theta = if self.stages.polar_angle && q.x.lt(&zero).is_true() && q.y.lt(&zero).is_true()
         {
             pol.theta.add(&S::pi(c.prec).mul(&S::from_i64(2, c.prec)))
         } else {

@@ -9,8 +9,8 @@
 //! is identified with (λ, ν, η), with a, b, c the images of the corners of σ in the order the
 //! caller names them; b_σ does not depend on that order.
 
-use crate::mesh::vec3::{cross, dot, norm, sub};
 use super::profile::{NormalRule, Profile};
+use crate::mesh::vec3::{cross, dot, norm, sub};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 
 /// Order of the 10 control points of a cubic Bézier triangle: exponents (i, j, k), i + j + k
