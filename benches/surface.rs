@@ -2,7 +2,8 @@
 //! eval at ≥ 1 M points/s in f64. Run: `cargo bench --bench surface` (criterion), or
 //! `SURFACE_QUICK=1 cargo bench --bench surface` for a one-shot table (cold builds, per-degree
 //! factorization times, eval throughput). Uses `../shared/meshes/good/koala.obj` when present,
-//! and always a generated 20,000-triangle torus.
+//! and always a generated 20,000-triangle torus. `build … authors-code 1 thread` is the
+//! construction to compare with the authors' single-threaded C++ code.
 
 use criterion::{Criterion, Throughput};
 use pseudomanifold::mesh::generate::torus;
@@ -18,7 +19,7 @@ use std::time::Instant;
 fn build(k: &SimplicialSurface, profile: Profile) -> Pps {
     Pps::build(
         k,
-        &PnTriangles::new(k),
+        &PnTriangles::for_profile(k, profile),
         PpsOptions {
             profile,
             ..PpsOptions::default()
@@ -136,6 +137,13 @@ fn quick() {
         }
         if std::env::var("SURFACE_SKIP_EVAL").is_ok() {
             continue;
+        }
+        // Side by side with the authors' C++ code, which is single-threaded
+        // (docs/oracle.md, "Checked against the authors' implementation").
+        if let Ok(one) = rayon::ThreadPoolBuilder::new().num_threads(1).build() {
+            g.bench_function(format!("build {name} authors-code 1 thread"), |b| {
+                b.iter(|| one.install(|| build(k, Profile::AuthorsCode)))
+            });
         }
         let pps = build(k, Profile::Paper);
         let pts = points(pps.num_faces());

@@ -6,6 +6,7 @@ mod msplines;
 mod oracle;
 mod sd;
 mod sigma_v;
+mod tsv_diff;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -75,7 +76,9 @@ enum Command {
         /// The mesh the answers refer to.
         #[arg(long)]
         mesh: PathBuf,
-        /// The table of answers (JSON lines).
+        /// The table of answers: JSON lines, or a TSV table of points (header `face lambda
+        /// mu nu` plus `pps_x pps_y pps_z` and/or `sprime_x sprime_y sprime_z`; deviations
+        /// relative to the bounding-box diagonal, default tolerance 1e-9).
         #[arg(required_unless_present = "surface", conflicts_with = "surface")]
         table: Option<PathBuf>,
         /// The other implementation's sampled surface (OFF, PLY or OBJ), vertices in eval
@@ -247,6 +250,14 @@ pub fn main() -> ExitCode {
                     json,
                     sprime,
                 },
+            ),
+            (Some(table), None) if tsv_diff::is_tsv(&table) => tsv_diff::run(
+                &mesh,
+                &table,
+                &profile,
+                tolerance.unwrap_or(1e-9),
+                worst,
+                json,
             ),
             (Some(table), None) => {
                 oracle::run_diff(

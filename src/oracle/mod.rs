@@ -7,11 +7,13 @@
 //! * [`diff`] compares another implementation's answers against the reference (`ppm diff`).
 //! * [`surface_diff`] compares another implementation's sampled surface against the reference
 //!   sampling of Sec. 6.2 (`ppm diff --surface`).
+//! * [`tsv_diff`] compares a TSV table of eval and S′ points (`ppm diff MESH TABLE.tsv`).
 
 pub mod diff;
 pub mod protocol;
 pub mod sigma_v;
 pub mod surface_diff;
+pub mod tsv_diff;
 
 pub use protocol::{OracleError, Request, Response, Session};
 

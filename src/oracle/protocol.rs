@@ -171,6 +171,14 @@ pub enum Request {
         #[serde(default)]
         order: Option<u32>,
     },
+    /// S′ at (σ, λ, μ, ν) (Sec. 5.1): the session's PN-triangle surface b_σ (normal rule of
+    /// the profile), f64 and MPFR with the same f64 control net.
+    Sprime {
+        /// σ: face id (0-based file index).
+        face: u32,
+        /// (λ, μ, ν) at the corners of σ in file order (≥ 0, sum 1).
+        bary: [f64; 3],
+    },
     /// eval(σ, λ, μ, ν) (Sec. 6.1.4): the point of M, with the chart and q ∈ Ω_vertex.
     Eval {
         /// σ: face id (0-based file index).
@@ -320,6 +328,7 @@ impl Response {
 /// The Chapter 5 state of a session: the pseudo-surface and its constants per scalar.
 struct Ch5 {
     pps: Pps,
+    target: crate::surface::SPrime,
     jet: Consts<Jet<f64>>,
     mp: Option<Consts<Mp>>,
     jet_mp: Option<Consts<Jet<Mp>>>,
@@ -399,7 +408,7 @@ impl Session {
     fn ch5(&mut self) -> Result<&mut Ch5, OracleError> {
         if self.ch5.is_none() {
             let k = self.k()?;
-            let target = crate::surface::SPrime::new(self.sprime, k)
+            let target = crate::surface::SPrime::for_profile(self.sprime, k, self.profile)
                 .map_err(|e| OracleError::Load(e.to_string()))?;
             let pps = Pps::build(
                 k,
@@ -412,6 +421,7 @@ impl Session {
             let jet = pps.consts(53);
             self.ch5 = Some(Ch5 {
                 pps,
+                target,
                 jet,
                 mp: None,
                 jet_mp: None,
@@ -611,6 +621,36 @@ impl Session {
                 );
                 r.info = Some(info);
                 Ok(r)
+            }
+            Request::Sprime { face, bary } => {
+                if !bary.iter().all(|c| c.is_finite()) {
+                    return Err(OracleError::NonFinite);
+                }
+                let sum: f64 = bary.iter().sum();
+                if bary.iter().any(|&x| !(-1e-12..=1.0 + 1e-12).contains(&x))
+                    || (sum - 1.0).abs() > 1e-9
+                {
+                    return Err(SurfaceError::BadBarycentric(*bary).into());
+                }
+                let k = self.k()?;
+                let f = FaceId(*face);
+                if f.idx() >= k.num_faces() {
+                    return Err(SurfaceError::NoSuchFace(f).into());
+                }
+                // The stored corners: the file's order unless the validator reversed σ.
+                let corners = k.face(f);
+                let net = match &self.ch5()?.target {
+                    crate::surface::SPrime::Pn(pn) => pn.net(corners),
+                    crate::surface::SPrime::Loop(_) => {
+                        return Err(OracleError::Malformed(
+                            "sprime answers for the PN S′ only; send {\"op\":\"set_surface\",\"surface\":\"pn\"}".into(),
+                        ))
+                    }
+                };
+                let a = crate::surface::target::eval_cubic(&net, *bary);
+                let bm = bary.map(|x| Mp::from_f64(x, bits));
+                let b = crate::surface::target::eval_cubic_in(&net, &bm, bits);
+                Ok(both(&a, &b, bits))
             }
             Request::Eval { face, bary } => {
                 if !bary.iter().all(|c| c.is_finite()) {

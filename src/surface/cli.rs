@@ -34,7 +34,7 @@ fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, Exi
         eprintln!("error: unknown surface {surface:?} (pn | loop)");
         ExitCode::from(2)
     })?;
-    let target = SPrime::new(kind, k).map_err(|e| {
+    let target = SPrime::for_profile(kind, k, profile).map_err(|e| {
         eprintln!("error: S′ = {}: {e}", kind.name());
         ExitCode::from(1)
     })?;

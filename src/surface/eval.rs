@@ -14,7 +14,6 @@
 
 use super::consts::Consts;
 use super::pps::{Pps, SurfaceError};
-use super::profile::Profile;
 use super::scalar_ext::SurfaceScalar;
 use crate::construction::P2;
 use crate::mesh::{FaceId, VertexId};
@@ -108,7 +107,26 @@ impl Pps {
 
     /// The chart eval chooses for q′ (depends on the profile).
     pub fn choose_chart<S: SurfaceScalar>(&self, qp: &P2<S>, c: &Consts<S>) -> Chart {
-        choose_chart(self.options.profile, qp, c)
+        let one = S::from_i64(1, c.prec);
+        let da = qp.norm2();
+        let dc = P2::new(qp.x.sub(&one), qp.y.clone()).norm2();
+        let half = S::from_ratio(1, 2, c.prec);
+        let db = P2::new(qp.x.sub(&half), qp.y.add(&c.s3h)).norm2();
+        if self.stages.nearest_chart {
+            if da.le(&dc).is_true() && da.le(&db).is_true() {
+                Chart::U
+            } else if dc.le(&db).is_true() {
+                Chart::X
+            } else {
+                Chart::W
+            }
+        } else if da.lt(&c.c_sq).is_true() {
+            Chart::U
+        } else if dc.lt(&c.c_sq).is_true() {
+            Chart::X
+        } else {
+            Chart::W
+        }
     }
 
     /// Sec. 6.1.4: eval(σ, λ, μ, ν).
@@ -127,14 +145,11 @@ impl Pps {
         let qp = canonical_point(bary, c);
         let chart = self.choose_chart(&qp, c);
         let (vertex, q) = self.chart_point(f, chart, &qp, c)?;
-        let only = match self.options.profile {
-            Profile::Paper => None,
-            Profile::AuthorsCode => Some(match chart {
-                Chart::U => [w, x],
-                Chart::X => [u, w],
-                Chart::W => [u, x],
-            }),
-        };
+        let only = self.stages.triangle_blend.then_some(match chart {
+            Chart::U => [w, x],
+            Chart::X => [u, w],
+            Chart::W => [u, x],
+        });
         let point = self.theta_only(vertex, &q, c, only)?;
         Ok(EvalPoint {
             chart,

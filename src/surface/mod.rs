@@ -13,6 +13,7 @@
 //!
 //! See `SPEC.md` for statement-by-statement verdicts.
 
+pub mod authors_fit;
 pub mod bezier;
 pub mod checks;
 pub mod cli;
@@ -34,6 +35,6 @@ pub use consts::Consts;
 pub use eval::{Chart, EvalPoint};
 pub use jet::Jet;
 pub use pps::{Fault, Membership, Pps, PpsOptions, SurfaceError, Term};
-pub use profile::Profile;
+pub use profile::{AuthorsStages, NormalRule, Profile};
 pub use scalar_ext::SurfaceScalar;
 pub use target::{PnTriangles, SPrime, SurfaceKind, TargetSurface};

@@ -16,9 +16,10 @@
 //! E lies in the open sector |β| < π/3 (the tangents from 0 to the circle D touch it at angle
 //! ±π/3), i.e. |θ(R_(v,u)p)| < 2π/m_v. With the literal membership only those two are tested.
 
+use super::authors_fit::{fit_vertex_authors, AuthorsDegreeFit};
 use super::consts::{Consts, DegreeConsts};
 use super::fit::{factor_degree, DegreeFit, DegreeFitInfo};
-use super::profile::Profile;
+use super::profile::{label_offset, AuthorsStages, Profile};
 use super::scalar_ext::SurfaceScalar;
 use super::target::TargetSurface;
 use super::weights::{xi_of_sq, XiConsts};
@@ -138,6 +139,8 @@ pub struct Term<S> {
 pub struct Pps {
     /// The options the surface evaluates with.
     pub options: PpsOptions,
+    /// The authors'-code stages it was built and evaluates with.
+    pub stages: AuthorsStages,
     target_name: String,
     faces: Vec<[VertexId; 3]>,
     positions: Vec<[f64; 3]>,
@@ -162,6 +165,17 @@ pub struct Pps {
 impl Pps {
     /// Build all ψ_v (Sec. 5.2) for K approximating S′ = `target`.
     pub fn build(k: &SimplicialSurface, target: &dyn TargetSurface, options: PpsOptions) -> Pps {
+        Self::build_staged(k, target, options, options.profile.stages())
+    }
+
+    /// [`Self::build`] with the authors'-code stages chosen one by one (to measure the effect
+    /// of each difference between the paper and their code).
+    pub fn build_staged(
+        k: &SimplicialSurface,
+        target: &dyn TargetSurface,
+        options: PpsOptions,
+        stages: AuthorsStages,
+    ) -> Pps {
         let slots = k.vertex_slots();
         let degree: Vec<u32> = (0..slots).map(|v| k.degree(VertexId(v as u32))).collect();
         let mut nbr_start = vec![0usize; slots + 1];
@@ -170,11 +184,21 @@ impl Pps {
         }
         let mut nbr = vec![VertexId(0); nbr_start[slots]];
         let mut back = vec![0u32; nbr_start[slots]];
+        // v′_0 depends on the profile (`Profile::label_offset`): label i of the profile is
+        // label (i + offset_v) mod m_v of K.
+        let offset: Vec<u32> = (0..slots)
+            .map(|v| label_offset(k, VertexId(v as u32), stages))
+            .collect();
         for v in k.vertices() {
-            for (i, &h) in k.outgoing(v).iter().enumerate() {
+            let out = k.outgoing(v);
+            let m = out.len();
+            for i in 0..m {
+                let h = out[(i + offset[v.idx()] as usize) % m];
                 let u = k.dest(h);
+                let mu = degree[u.idx()].max(1);
                 nbr[nbr_start[v.idx()] + i] = u;
-                back[nbr_start[v.idx()] + i] = k.label(k.twin(h));
+                back[nbr_start[v.idx()] + i] =
+                    (k.label(k.twin(h)) + mu - offset[u.idx()] % mu) % mu;
             }
         }
         let mut degs: Vec<u32> = k.vertices().map(|v| k.degree(v)).collect();
@@ -253,11 +277,37 @@ impl Pps {
                 tasks.push((f, cur));
             }
         }
-        tasks
-            .into_par_iter()
-            .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &mut vs));
+        if stages.normal_equations {
+            // Their fit (normal equations, their samples), vertex by vertex.
+            let afits: Vec<(u32, AuthorsDegreeFit)> = degs
+                .par_iter()
+                .map(|&m| {
+                    (
+                        m,
+                        AuthorsDegreeFit::new(m, options.profile.bezier_degree(m)),
+                    )
+                })
+                .collect();
+            tasks.into_par_iter().for_each(|(fit, mut vs)| {
+                let Some((_, af)) = afits.iter().find(|(m, _)| *m == fit.info.m) else {
+                    return;
+                };
+                for (v, out) in vs.iter_mut() {
+                    if !fit_vertex_authors(k, target, *v, offset[v.idx()], af, out) {
+                        // Their code stops here (AᵀA singular: never met, as every sample
+                        // is interior to □_v); NaN makes every use of ψ_v report it.
+                        out.fill([f64::NAN; 3]);
+                    }
+                }
+            });
+        } else {
+            tasks
+                .into_par_iter()
+                .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &offset, &mut vs));
+        }
         Pps {
             options,
+            stages,
             target_name: target.name().to_string(),
             faces: k.faces().map(|f| k.face(f)).collect(),
             positions: (0..slots).map(|v| k.position(VertexId(v as u32))).collect(),
@@ -477,8 +527,17 @@ impl Pps {
         {
             return Ok(None);
         }
-        // a = g_v(q).
-        let beta = pol.theta.mul(&dv.ang);
+        // a = g_v(q). The authors' code takes the polar angle in (−π/2, 3π/2]: +2π in the
+        // third quadrant, where (for m_v = 3, the only degree whose two candidate spokes
+        // reach it) g_v(q) then leaves the lens and u's term is dropped.
+        let zero = S::from_i64(0, c.prec);
+        let theta = if self.stages.polar_angle && q.x.lt(&zero).is_true() && q.y.lt(&zero).is_true()
+        {
+            pol.theta.add(&S::pi(c.prec).mul(&S::from_i64(2, c.prec)))
+        } else {
+            pol.theta
+        };
+        let beta = theta.mul(&dv.ang);
         let rho = pol.r.mul(&dv.radial);
         let a = P2::new(rho.mul(&beta.cos()), rho.mul(&beta.sin()));
         // Canonical lens E: |a|² < 3/4, |a − (1,0)|² < 3/4, a ∉ {0, (1,0)}.
@@ -763,6 +822,7 @@ fn fit_batch(
     k: &SimplicialSurface,
     target: &dyn TargetSurface,
     fit: &DegreeFit,
+    offset: &[u32],
     vs: &mut [(VertexId, &mut [[f64; 3]])],
 ) {
     let m = fit.info.m;
@@ -775,18 +835,19 @@ fn fit_batch(
     for (idx, (v, out)) in vs.iter_mut().enumerate() {
         let v = *v;
         let outgoing = k.outgoing(v);
+        let off = offset[v.idx()] as usize;
         nets.clear();
         for i in 0..m as usize {
-            let h = outgoing[i];
+            let h = outgoing[(i + off) % m as usize];
             let a = k.dest(h);
-            let b = k.dest(outgoing[(i + 1) % m as usize]);
+            let b = k.dest(outgoing[(i + off + 1) % m as usize]);
             match target.cubic_net(k.face_of(h), [v, a, b]) {
                 Some(net) => nets.push(net),
                 None => break,
             }
         }
         if nets.len() != m as usize || out.len() != kk {
-            fit_vertex(k, target, v, fit, out);
+            fit_vertex(k, target, v, off as u32, fit, out);
             continue;
         }
         for d in 0..3 {
@@ -815,15 +876,16 @@ fn fit_vertex(
     k: &SimplicialSurface,
     target: &dyn TargetSurface,
     v: VertexId,
+    off: u32,
     fit: &DegreeFit,
     out: &mut [[f64; 3]],
 ) {
     let m = k.degree(v);
     let outgoing = k.outgoing(v);
     let sector = |i: u32| -> (FaceId, [VertexId; 3]) {
-        let h = outgoing[i as usize];
+        let h = outgoing[((i + off) % m) as usize];
         let a = k.dest(h);
-        let b = k.dest(outgoing[((i + 1) % m) as usize]);
+        let b = k.dest(outgoing[((i + off + 1) % m) as usize]);
         (k.face_of(h), [v, a, b])
     };
     let kk = out.len();

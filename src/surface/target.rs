@@ -9,6 +9,7 @@
 //! is identified with (λ, ν, η), with a, b, c the images of the corners of σ in the order the
 //! caller names them; b_σ does not depend on that order.
 
+use super::profile::{NormalRule, Profile};
 use crate::mesh::vec3::{cross, dot, norm, sub};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 
@@ -61,7 +62,7 @@ pub trait TargetSurface: Sync {
 
 /// PN triangles (Vlachos et al. 2001) from vertex normals.
 ///
-/// **Normal rule**: the normal of vertex v is the angle-weighted average of the unit normals
+/// **Normal rule** ([`NormalRule`]; the paper profile's default): the normal of vertex v is the angle-weighted average of the unit normals
 /// of the faces around v (Thürmer & Wüthrich 1998), face normals taken in the consistent
 /// orientation of K, normalised. (Angle weighting makes the normal independent of how a flat
 /// region is triangulated.) A vertex whose weighted sum vanishes gets the unweighted sum, and
@@ -83,6 +84,18 @@ impl PnTriangles {
     /// The PN-triangle surface of K: vertex normals are angle-weighted face normals (plain
     /// face-normal sums as a fallback).
     pub fn new(k: &SimplicialSurface) -> Self {
+        Self::with_rule(k, NormalRule::AngleWeighted)
+    }
+
+    /// The PN-triangle surface of K under a profile (its [`Profile::normal_rule`]).
+    pub fn for_profile(k: &SimplicialSurface, profile: Profile) -> Self {
+        Self::with_rule(k, profile.normal_rule())
+    }
+
+    /// The PN-triangle surface of K with the given vertex-normal rule. With
+    /// [`NormalRule::PlainMean`] (the authors' code) the normal is the mean of the unit face
+    /// normals, normalised; the weighted sum is then never used.
+    pub fn with_rule(k: &SimplicialSurface, rule: NormalRule) -> Self {
         let n = k.vertex_slots();
         let positions: Vec<[f64; 3]> = (0..n).map(|i| k.position(VertexId(i as u32))).collect();
         let mut acc = vec![[0.0; 3]; n];
@@ -111,7 +124,11 @@ impl PnTriangles {
         let mut degenerate = 0;
         let normals = (0..n)
             .map(|v| {
-                for cand in [acc[v], plain[v]] {
+                let cands = match rule {
+                    NormalRule::AngleWeighted => [acc[v], plain[v]],
+                    NormalRule::PlainMean => [plain[v], plain[v]],
+                };
+                for cand in cands {
                     let l = norm(cand);
                     if l > 0.0 && l.is_finite() {
                         return cand.map(|x| x / l);
@@ -165,6 +182,34 @@ pub fn eval_cubic(net: &[[f64; 3]; 10], bary: [f64; 3]) -> [f64; 3] {
     for (bj, cj) in b.iter().zip(net) {
         for d in 0..3 {
             r[d] += bj * cj[d];
+        }
+    }
+    r
+}
+
+/// [`eval_cubic`] in any scalar (the oracle's S′ in MPFR): the net's f64 control points are
+/// exact in `S`, so the difference from the f64 value is the rounding of the evaluation.
+pub fn eval_cubic_in<S: crate::construction::Scalar>(
+    net: &[[f64; 3]; 10],
+    bary: &[S; 3],
+    prec: u32,
+) -> [S; 3] {
+    let mut r = [0, 1, 2].map(|_| S::from_i64(0, prec));
+    for (e, cj) in CUBIC_ORDER.iter().zip(net) {
+        // 3!/(i!j!k!) λ^i ν^j η^k
+        let coef = match e.iter().filter(|&&x| x > 0).count() {
+            1 => 1,
+            2 => 3,
+            _ => 6,
+        };
+        let mut b = S::from_i64(coef, prec);
+        for (x, &n) in bary.iter().zip(e) {
+            for _ in 0..n {
+                b = b.mul(x);
+            }
+        }
+        for d in 0..3 {
+            r[d] = r[d].add(&b.mul(&S::from_f64(cj[d], prec)));
         }
     }
     r
@@ -229,6 +274,20 @@ impl SPrime {
     ) -> Result<SPrime, crate::surface::loop_subdiv::LoopError> {
         Ok(match kind {
             SurfaceKind::Pn => SPrime::Pn(PnTriangles::new(k)),
+            SurfaceKind::Loop => SPrime::Loop(Box::new(
+                crate::surface::loop_subdiv::LoopSurface::new(k)?,
+            )),
+        })
+    }
+    /// As [`SPrime::new`], with the PN vertex-normal rule of `profile` (the authors' code
+    /// averages unit face normals; see [`PnTriangles::for_profile`]).
+    pub fn for_profile(
+        kind: SurfaceKind,
+        k: &SimplicialSurface,
+        profile: Profile,
+    ) -> Result<SPrime, crate::surface::loop_subdiv::LoopError> {
+        Ok(match kind {
+            SurfaceKind::Pn => SPrime::Pn(PnTriangles::for_profile(k, profile)),
             SurfaceKind::Loop => SPrime::Loop(Box::new(
                 crate::surface::loop_subdiv::LoopSurface::new(k)?,
             )),

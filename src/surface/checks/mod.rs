@@ -73,7 +73,7 @@ impl Default for SurfaceCheckOptions {
 
 /// Build S′ and the PPS and run every check.
 pub fn run_surface_checks(k: &SimplicialSurface, opts: &SurfaceCheckOptions) -> Vec<CheckResult> {
-    let target = match super::target::SPrime::new(opts.surface, k) {
+    let target = match super::target::SPrime::for_profile(opts.surface, k, opts.profile) {
         Ok(t) => t,
         Err(e) => {
             let mut r = CheckResult::new("LOOP-valence", "the Loop S′ of K can be built");
