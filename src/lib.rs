@@ -27,5 +27,6 @@ pub mod exact;
 pub mod gluing;
 pub mod mesh;
 pub mod oracle;
+pub mod render;
 pub mod report;
 pub mod surface;

@@ -3,6 +3,7 @@
 
 mod check;
 mod oracle;
+pub mod render;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -144,6 +145,9 @@ enum Command {
         #[arg(long)]
         quiet: bool,
     },
+    /// Draw K, S′ or the PPS coloured by curvature to a PNG (software rendering; Figs. 6.4–6.7
+    /// with --panels).
+    Render(render::RenderArgs),
     /// Evaluate one point of M: eval(σ, λ, μ, ν) of Sec. 6.1.4.
     Eval {
         file: PathBuf,
@@ -231,6 +235,7 @@ pub fn main() -> ExitCode {
             }
         }
         Command::Certify(a) => crate::certify::cli::run(a),
+        Command::Render(a) => render::run(a),
         Command::Gluing { file, json } => {
             match crate::gluing::cli::run_gluing_command(&file, json) {
                 Ok((text, all_hold)) => {

@@ -9,7 +9,7 @@
 //! condition (C) (the point does not depend on the triangle used, up to rounding).
 
 use super::consts::Consts;
-use super::jet::Jet;
+use super::jet::Jet2;
 use super::pps::{Pps, SurfaceError};
 use crate::mesh::FaceId;
 use std::collections::HashMap;
@@ -129,7 +129,8 @@ pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMe
         points: todo,
         faces,
     } = sample_pattern(pps, level)?;
-    let cj: Consts<Jet<f64>> = pps.consts(53);
+    // Order-2 jets: the normal and curvatures need no third derivatives.
+    let cj: Consts<Jet2<f64>> = pps.consts(53);
     let done = AtomicUsize::new(0);
     let total = todo.len();
     let step = (total / 10).max(1);
@@ -138,7 +139,7 @@ pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMe
     let results: Vec<Result<super::geometry::SurfacePoint, SurfaceError>> =
         super::pps::map_in_key_order(&keys, |i| {
             let SamplePoint { face, bary } = todo[i];
-            let r = pps.eval_geometry(face, bary, &cj).map(|x| x.2);
+            let r = pps.eval_geometry_of_order(face, bary, &cj).map(|x| x.2);
             if progress {
                 let d = done.fetch_add(1, Ordering::Relaxed) + 1;
                 if d % step == 0 || d == total {
