@@ -19,7 +19,7 @@ pub mod interval;
 use crate::construction::maps::{self, cos_pi_6, is_nonzero, EdgeConfig, Ppm, TriangleConfig, P2};
 use crate::construction::scalar::{Iv, Mp, Scalar, Trit};
 use crate::report::{CheckResult, Verdict, Witness};
-use inari::Interval as I;
+use crate::construction::interval::Interval as I;
 use interval::{c, iv, member, member_any, phi_polar, two_pi_frac, Deg, Domain};
 use serde::{Deserialize, Serialize};
 use std::time::Instant;

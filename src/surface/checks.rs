@@ -449,7 +449,7 @@ pub fn check_support(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
                             &P2::new(Mp::new(opts.mp_prec, p[0]), Mp::new(opts.mp_prec, p[1])),
                             &cm,
                         )
-                        .map(|g| g.0.is_sign_positive() && !g.0.is_zero())
+                        .map(|g| g.sign() == Some(std::cmp::Ordering::Greater))
                         .unwrap_or(false);
                     let gf = pps.gamma(v, &P2::new(p[0], p[1]), c).unwrap_or(0.0);
                     if inside != gm {
