@@ -256,7 +256,7 @@ fn lit_luminance(scene: &Scene) -> (f64, usize) {
 fn r_normal_sign_planted_flip_darkens_the_shading_and_is_reported() {
     let k = surface(icosahedron());
     let (_, pps) = pps_of(&k);
-    let scene = pps_scene(&pps, 2).expect("sample");
+    let scene = pps_scene(&pps, 2, true).expect("sample");
     let (good, bad_corners) = lit_luminance(&scene);
     let ok = check_orientation(&scene);
     assert_eq!(bad_corners, 0);
@@ -278,7 +278,7 @@ fn r_normal_sign_planted_flip_darkens_the_shading_and_is_reported() {
 fn r_deterministic_same_scene_same_png_bytes() {
     let k = surface(torus(10, 7));
     let (pn, pps) = pps_of(&k);
-    for scene in [sprime_scene(&k, &pn, 2), pps_scene(&pps, 2).expect("sample")] {
+    for scene in [sprime_scene(&k, &pn, 2), pps_scene(&pps, 2, true).expect("sample")] {
         let o = RenderOptions {
             width: 160,
             height: 120,

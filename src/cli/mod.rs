@@ -142,6 +142,10 @@ enum Command {
         /// paper | authors-code
         #[arg(long, default_value = "paper")]
         profile: String,
+        /// What to compute per vertex: positions | normals | curvature (each costs more:
+        /// plain eval, order-1 jets, order-2 jets).
+        #[arg(long, default_value = "curvature")]
+        attributes: String,
         #[arg(long)]
         quiet: bool,
     },
@@ -266,8 +270,9 @@ pub fn main() -> ExitCode {
             level,
             output,
             profile,
+            attributes,
             quiet,
-        } => crate::surface::cli::run_sample(&file, level, &output, &profile, quiet),
+        } => crate::surface::cli::run_sample(&file, level, &output, &profile, &attributes, quiet),
         Command::Eval {
             file,
             face,

@@ -128,6 +128,8 @@ fn scenes(a: &RenderArgs, notes: &mut Vec<String>) -> Result<(Vec<Panel>, Option
         RenderError::Mesh(format!("unknown --profile {:?} (paper | authors-code)", a.profile))
     })?;
     pn_only(&a.surface)?;
+    // Curvature costs order-2 jets: skip it when the picture is not coloured.
+    let curvature = a.colour.as_deref() != Some("none");
     let frame = mesh_scene(&k).bbox();
     let pn = PnTriangles::new(&k);
     let pps = || {
@@ -155,14 +157,14 @@ fn scenes(a: &RenderArgs, notes: &mut Vec<String>) -> Result<(Vec<Panel>, Option
             },
             Panel {
                 caption: "PPS from PN triangles".into(),
-                scene: pps_scene(&pps(), level)?,
+                scene: pps_scene(&pps(), level, curvature)?,
             },
         ]
     } else {
         let (caption, scene) = match a.what.as_str() {
             "mesh" => ("K", mesh_scene(&k)),
             "sprime" => ("S'", sprime_scene(&k, &pn, level)),
-            "pps" => ("PPS", pps_scene(&pps(), level)?),
+            "pps" => ("PPS", pps_scene(&pps(), level, curvature)?),
             other => {
                 return Err(RenderError::Mesh(format!(
                     "unknown --what {other:?} (mesh | sprime | pps)"

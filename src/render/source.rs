@@ -10,7 +10,7 @@ use crate::mesh::raw::RawMesh;
 use crate::mesh::vec3::{cross, sub};
 use crate::mesh::SimplicialSurface;
 use crate::surface::geometry::from_jet;
-use crate::surface::output::sample_surface;
+use crate::surface::output::{sample_surface_with, Attributes};
 use crate::surface::target::eval_cubic;
 use crate::surface::jet::Jet2;
 use crate::surface::{PnTriangles, Pps};
@@ -91,14 +91,20 @@ pub fn sprime_scene(k: &SimplicialSurface, pn: &PnTriangles, level: u32) -> Scen
     s
 }
 
-/// The PPS sampled at `level` (Sec. 6.2) with θ's normals and curvatures.
-pub fn pps_scene(pps: &Pps, level: u32) -> Result<Scene, RenderError> {
-    let m = sample_surface(pps, level, false)?;
+/// The PPS sampled at `level` (Sec. 6.2) with θ's normals, and its curvatures when
+/// `curvature` (order-2 jets; order-1 jets otherwise).
+pub fn pps_scene(pps: &Pps, level: u32, curvature: bool) -> Result<Scene, RenderError> {
+    let attrs = if curvature {
+        Attributes::Curvature
+    } else {
+        Attributes::Normals
+    };
+    let m = sample_surface_with(pps, level, attrs, false)?;
     Ok(Scene {
         positions: m.positions,
         normals: m.normals,
-        gaussian: Some(m.gaussian),
-        mean: Some(m.mean),
+        gaussian: curvature.then_some(m.gaussian),
+        mean: curvature.then_some(m.mean),
         faces: m.faces,
     })
 }

@@ -1,6 +1,6 @@
 //! `ppm sample` and `ppm eval` (called from `crate::cli`).
 
-use super::output::{edge_use_counts, sample_surface, write_mesh_with_attributes};
+use super::output::{edge_use_counts, sample_surface_with, write_mesh_with_attributes, Attributes};
 use super::pps::{Pps, PpsOptions};
 use super::profile::Profile;
 use super::target::PnTriangles;
@@ -43,7 +43,18 @@ fn build(k: &SimplicialSurface, profile: &str) -> Result<Pps, ExitCode> {
 
 /// `ppm sample FILE --level N -o OUT`: sample M by midpoint subdivision through eval (Sec. 6.2)
 /// and write it with normals and curvatures.
-pub fn run_sample(file: &Path, level: u32, out: &Path, profile: &str, quiet: bool) -> ExitCode {
+pub fn run_sample(
+    file: &Path,
+    level: u32,
+    out: &Path,
+    profile: &str,
+    attributes: &str,
+    quiet: bool,
+) -> ExitCode {
+    let Some(attrs) = Attributes::parse(attributes) else {
+        eprintln!("error: unknown --attributes {attributes:?} (positions | normals | curvature)");
+        return ExitCode::from(2);
+    };
     let t0 = Instant::now();
     let k = match load(file) {
         Ok(k) => k,
@@ -69,7 +80,7 @@ pub fn run_sample(file: &Path, level: u32, out: &Path, profile: &str, quiet: boo
             );
         }
     }
-    let m = match sample_surface(&pps, level, !quiet) {
+    let m = match sample_surface_with(&pps, level, attrs, !quiet) {
         Ok(m) => m,
         Err(e) => {
             eprintln!("error: {e}");
