@@ -57,14 +57,14 @@ pub fn draw_colour_bar(img: &mut Image, x0: u32, range: &ColourRange, label: &st
             continue;
         }
         last_row = y;
-        for x in bar_x + bar_w..bar_x + bar_w + 3 * s {
+        for x in bar_x + bar_w..bar_x + bar_w + 2 * s {
             for d in 0..s {
                 img.put(x, y + d - s / 2, [0, 0, 0]);
             }
         }
         draw_text(
             img,
-            bar_x + bar_w + 5 * s,
+            bar_x + bar_w + 6 * s,
             y - 4 * s,
             &format_number(v),
             scale,
