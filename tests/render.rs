@@ -310,3 +310,25 @@ fn r_bad_scene_and_arguments_are_typed_errors() {
     assert!(View::parse("10,95").is_err());
     assert!(render_scene(&Scene::default(), &plain(100, 100, View::default())).is_err());
 }
+
+#[test]
+fn r_sampling_attributes_agree_whatever_is_computed() {
+    use pseudomanifold::surface::output::{sample_surface_with, Attributes};
+    let k = surface(icosahedron());
+    let (_, pps) = pps_of(&k);
+    let full = sample_surface_with(&pps, 2, Attributes::Curvature, false).expect("sample");
+    let nrm = sample_surface_with(&pps, 2, Attributes::Normals, false).expect("sample");
+    let pos = sample_surface_with(&pps, 2, Attributes::Positions, false).expect("sample");
+    assert_eq!(full.faces, pos.faces);
+    assert!(pos.normals.is_empty() && pos.gaussian.is_empty() && nrm.gaussian.is_empty());
+    let d = |a: [f64; 3], b: [f64; 3]| (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max);
+    let (mut dp, mut dn) = (0.0f64, 0.0f64);
+    for i in 0..full.positions.len() {
+        dp = dp.max(d(full.positions[i], pos.positions[i]));
+        dp = dp.max(d(full.positions[i], nrm.positions[i]));
+        dn = dn.max(d(full.normals[i], nrm.normals[i]));
+    }
+    println!("{} points: max position difference {dp:e}, normal difference {dn:e}", full.positions.len());
+    // Same operations on the value and first-order parts: equal up to a few ulps.
+    assert!(dp <= 1e-13 && dn <= 1e-13, "{dp} {dn}");
+}
