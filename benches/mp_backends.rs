@@ -43,7 +43,9 @@ fn time(f: impl Fn()) -> Duration {
 }
 
 fn bench(c: &mut Criterion) {
-    let Some(k) = validate(&icosahedron()).surface else { return };
+    let Some(k) = validate(&icosahedron()).surface else {
+        return;
+    };
     let pps = Pps::build(&k, &PnTriangles::new(&k), PpsOptions::default());
     let ch4 = |b: MpBackend| Ch4Options {
         precision: Precision::Mp(256),
@@ -65,14 +67,20 @@ fn bench(c: &mut Criterion) {
                 MpBackend::Mpfr => oracle_work::<pseudomanifold::construction::MpMpfr>(&k, &pps),
             };
         });
-        eprintln!("{}: chapter 4 at mp:256 {:.3} s; oracle (8 eval + 4 θ) {:.4} s", b.describe(), t4.as_secs_f64(), to.as_secs_f64());
+        eprintln!(
+            "{}: chapter 4 at mp:256 {:.3} s; oracle (8 eval + 4 θ) {:.4} s",
+            b.describe(),
+            t4.as_secs_f64(),
+            to.as_secs_f64()
+        );
     }
     let mut g = c.benchmark_group("mp_backends");
     g.sample_size(10);
     for b in MpBackend::available() {
-        g.bench_function(format!("chapter4 mp:256 icosahedron ({})", b.name()), |bb| {
-            bb.iter(|| run_chapter4(&k, &ch4(b)).checks.len())
-        });
+        g.bench_function(
+            format!("chapter4 mp:256 icosahedron ({})", b.name()),
+            |bb| bb.iter(|| run_chapter4(&k, &ch4(b)).checks.len()),
+        );
         g.bench_function(format!("oracle eval+theta 256 bits ({})", b.name()), |bb| {
             bb.iter(|| match b {
                 MpBackend::PureRust => oracle_work::<pseudomanifold::construction::Mp>(&k, &pps),

@@ -8,6 +8,27 @@
 //! mesh (Sec. 3.1) → gluing data (Secs. 3.4–3.5 abstract, Ch. 4 concrete) → parametrizations
 //! (Ch. 5, Sec. 6.1.4) → reports.
 //!
+//! ## The five entry points
+//!
+//! 1. **Read and validate a mesh** (Sec. 3.1): [`mesh::io::read_mesh`] gives a `RawMesh`;
+//!    [`mesh::validate::validate`] checks Defs. 3.1.1–3.1.7 and, when they hold, returns the
+//!    [`mesh::SimplicialSurface`] every later stage takes (only the validator makes one).
+//! 2. **Check Chapter 4 on it**: [`conditions::chapter4::run_chapter4`] (or, per configuration,
+//!    [`construction::checks::run_edge_checks`] and [`construction::checks::run_triangle_checks`]).
+//! 3. **Build and evaluate the surface** (Ch. 5, Sec. 6.1.4): [`surface::Pps::build`], then
+//!    `Pps::eval` at a face and barycentric coordinates; [`surface::checks::run_surface_checks`]
+//!    checks condition (C) and the Chapter 5 claims.
+//! 4. **Certify** every degree configuration up to a bound with interval branch and bound:
+//!    [`certify::run`].
+//! 5. **Serve as an oracle** (f64 and multi-precision side by side):
+//!    [`oracle::protocol::Session`].
+//!
+//! Every checker returns [`report::CheckResult`]s recorded through one harness,
+//! [`report::Check`] (a NaN is an offence, evaluation errors are counted, nothing examined is
+//! skipped); only [`cli`] prints and sets exit codes.
+//!
+//! ## Modules
+//!
 //! * [`mesh`] — Sec. 3.1: reading triangle meshes, validating them as simplicial surfaces
 //!   (Defs. 3.1.1–3.1.7), and the half-edge structure of Sec. 6.1.1 with the labelling s_v of
 //!   Sec. 6.1.2 / Def. 4.1.4.
@@ -26,7 +47,9 @@ pub mod construction;
 pub mod exact;
 pub mod gluing;
 pub mod mesh;
+pub mod msplines;
 pub mod oracle;
 pub mod render;
 pub mod report;
+pub mod sdiff;
 pub mod surface;

@@ -24,7 +24,9 @@ use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, SimplicialSurface, VertexId};
 use pseudomanifold::surface::fit::sample_set;
 use pseudomanifold::surface::jet::MONOMIALS;
-use pseudomanifold::surface::{Jet, PnTriangles, Pps, PpsOptions, Profile, SurfaceScalar, TargetSurface};
+use pseudomanifold::surface::{
+    Jet, PnTriangles, Pps, PpsOptions, Profile, SurfaceScalar, TargetSurface,
+};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::cmp::Ordering;
@@ -52,7 +54,11 @@ impl Exact for Mp {
             return rug::Float::with_val(64, rug::float::Special::Nan);
         }
         if b.is_inf() {
-            let s = if b.is_negative() { rug::float::Special::NegInfinity } else { rug::float::Special::Infinity };
+            let s = if b.is_negative() {
+                rug::float::Special::NegInfinity
+            } else {
+                rug::float::Special::Infinity
+            };
             return rug::Float::with_val(64, s);
         }
         let Some((words, _, sign, e, _)) = b.as_raw_parts() else {
@@ -189,7 +195,10 @@ fn points(k: &SimplicialSurface, pps: &Pps, rng: &mut ChaCha8Rng) -> Points {
             let b: f64 = rng.gen_range(0.05..1.0);
             let c: f64 = rng.gen_range(0.05..1.0);
             let s = a + b + c;
-            (faces[rng.gen_range(0..faces.len())], [a / s, b / s, 1.0 - a / s - b / s])
+            (
+                faces[rng.gen_range(0..faces.len())],
+                [a / s, b / s, 1.0 - a / s - b / s],
+            )
         })
         .collect();
     let mut theta = Vec::new();
@@ -199,7 +208,10 @@ fn points(k: &SimplicialSurface, pps: &Pps, rng: &mut ChaCha8Rng) -> Points {
         }
         let v = verts[rng.gen_range(0..verts.len())];
         let p = disk(rng);
-        if pps.in_omega(v, &P2::new(p[0], p[1]), pps.consts_f64()).unwrap_or(false) {
+        if pps
+            .in_omega(v, &P2::new(p[0], p[1]), pps.consts_f64())
+            .unwrap_or(false)
+        {
             theta.push((v, p));
         }
     }
@@ -218,11 +230,22 @@ fn points(k: &SimplicialSurface, pps: &Pps, rng: &mut ChaCha8Rng) -> Points {
             Some((v, f, corners, s.q, target.eval(f, corners, s.bary)))
         })
         .collect();
-    Points { phi, g: gs, eval, theta, fit }
+    Points {
+        phi,
+        g: gs,
+        eval,
+        theta,
+        fit,
+    }
 }
 
 /// Every quantity at the points, in backend `S` at `bits`: (name, components).
-fn quantities<S: SurfaceScalar>(k: &SimplicialSurface, pps: &Pps, pts: &Points, bits: u32) -> Vec<(String, Vec<S>)> {
+fn quantities<S: SurfaceScalar>(
+    k: &SimplicialSurface,
+    pps: &Pps,
+    pts: &Points,
+    bits: u32,
+) -> Vec<(String, Vec<S>)> {
     let g = PpmGluing::new(k);
     let p2 = |p: &[f64; 2]| P2::<S>::from_f64(p[0], p[1], bits);
     let mut out = Vec::new();
@@ -263,7 +286,11 @@ fn quantities<S: SurfaceScalar>(k: &SimplicialSurface, pps: &Pps, pts: &Points, 
     }
     for (v, _f, _c, q, b) in &pts.fit {
         let psi = pps.psi(*v, &p2(q));
-        let r: Vec<S> = psi.iter().zip(b).map(|(x, y)| x.sub(&S::from_f64(*y, bits))).collect();
+        let r: Vec<S> = psi
+            .iter()
+            .zip(b)
+            .map(|(x, y)| x.sub(&S::from_f64(*y, bits)))
+            .collect();
         out.push((format!("fit residual ψ_{}({q:?})", v.0), r));
     }
     out
@@ -284,11 +311,18 @@ fn compare<A: Exact>(name: &str, k: &SimplicialSurface) -> Outcome {
     let a = quantities::<A>(k, &pps, &pts, P);
     let m = quantities::<MpMpfr>(k, &pps, &pts, P);
     let t = quantities::<MpMpfr>(k, &pps, &pts, 2 * P);
-    let mut o = Outcome { compared: 0, worst_ratio: 0.0, worst: String::new(), offences: vec![] };
+    let mut o = Outcome {
+        compared: 0,
+        worst_ratio: 0.0,
+        worst: String::new(),
+        offences: vec![],
+    };
     let names_a: Vec<&String> = a.iter().map(|q| &q.0).collect();
     let names_m: Vec<&String> = m.iter().map(|q| &q.0).collect();
     if names_a != names_m {
-        o.offences.push(format!("{name}: the backends answered different sets of queries"));
+        o.offences.push(format!(
+            "{name}: the backends answered different sets of queries"
+        ));
         return o;
     }
     let u = rug::Float::with_val(64, rug::Float::u_exp(1, -(P as i32)));
@@ -313,7 +347,11 @@ fn compare<A: Exact>(name: &str, k: &SimplicialSurface) -> Outcome {
             let ratio = (diff / &bound).to_f64();
             if ratio >= o.worst_ratio {
                 o.worst_ratio = ratio;
-                o.worst = format!("{name}: {} (|Δ| = {d:.3e}, bound {:.3e})", qa.0, bound.to_f64());
+                o.worst = format!(
+                    "{name}: {} (|Δ| = {d:.3e}, bound {:.3e})",
+                    qa.0,
+                    bound.to_f64()
+                );
             }
         }
     }
@@ -353,16 +391,29 @@ fn mp_backends_agree_on_every_oracle_quantity_at_256_bits() {
             worst = (o.worst_ratio, o.worst);
         }
     }
-    eprintln!("{total} components compared; worst |Δ|/bound = {:.3e} at {}", worst.0, worst.1);
+    eprintln!(
+        "{total} components compared; worst |Δ|/bound = {:.3e} at {}",
+        worst.0, worst.1
+    );
     assert!(total > 100, "only {total} components compared");
 }
 
 #[test]
 fn mp_backends_planted_wrong_pi_is_caught() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/icosahedron_binary_le.ply");
-    let k = validate(&read_mesh(&path, &ReadOptions::default()).expect("fixture")).surface.expect("valid");
+    let k = validate(&read_mesh(&path, &ReadOptions::default()).expect("fixture"))
+        .surface
+        .expect("valid");
     let o = compare::<Planted>("icosahedron (π + 2^-180 π)", &k);
-    eprintln!("{} components, {} offences; first: {:?}", o.compared, o.offences.len(), o.offences.first());
+    eprintln!(
+        "{} components, {} offences; first: {:?}",
+        o.compared,
+        o.offences.len(),
+        o.offences.first()
+    );
     assert!(o.compared > 0);
-    assert!(!o.offences.is_empty(), "a wrong π in one backend went unnoticed");
+    assert!(
+        !o.offences.is_empty(),
+        "a wrong π in one backend went unnoticed"
+    );
 }

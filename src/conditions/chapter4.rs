@@ -115,7 +115,7 @@ pub struct Ch4Report {
     pub certificates: Option<CertCoverage>,
 }
 
-/// Which Chapter 4 properties of a mesh a certificate (issue 6, `ppm certify`) covers.
+/// Which Chapter 4 properties of a mesh a certificate (`ppm certify`, SPEC section "certified proofs") covers.
 #[derive(Debug, Clone, Serialize)]
 pub struct CertCoverage {
     /// The certificate file, as given.
@@ -415,7 +415,10 @@ pub fn render(r: &Ch4Report) -> String {
                 #[cfg(feature = "mpfr")]
                 MpBackend::Mpfr => b,
             };
-            format!("{} {used} bits (ε = 2^-{used})", r.options.mp_backend.describe())
+            format!(
+                "{} {used} bits (ε = 2^-{used})",
+                r.options.mp_backend.describe()
+            )
         }
     };
     let _ = writeln!(

@@ -83,7 +83,11 @@ fn directed(r: f64, err_sign: Option<f64>) -> (f64, f64) {
 fn add_dir(a: f64, b: f64) -> (f64, f64) {
     let s = a + b;
     if !(a.is_finite() && b.is_finite()) {
-        return if s.is_nan() { (f64::NEG_INFINITY, f64::INFINITY) } else { (s, s) };
+        return if s.is_nan() {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            (s, s)
+        };
     }
     // TwoSum: a + b = s + e exactly (no underflow issue for addition).
     let bb = s - a;
@@ -115,7 +119,11 @@ fn div_dir(a: f64, b: f64) -> (f64, f64) {
     }
     let q = a / b;
     if !(a.is_finite() && b.is_finite()) {
-        return if q.is_nan() { (f64::NEG_INFINITY, f64::INFINITY) } else { (q, q) };
+        return if q.is_nan() {
+            (f64::NEG_INFINITY, f64::INFINITY)
+        } else {
+            (q, q)
+        };
     }
     // a − q·b exactly; a/b − q has its sign times sign(b).
     let r = (-q).mul_add(b, a);
@@ -156,7 +164,11 @@ fn may_contain_phase(a: f64, b: f64, k: i64) -> bool {
         let two_pi = cc.pi(p, RM).mul(&BigFloat::from_i64(2, 64), p, RM);
         let shift = BigFloat::from_i64(k, 64).div(&BigFloat::from_i64(4, 64), p, RM);
         let margin = BigFloat::from_f64(2f64.powi(-60), 64);
-        let t = |x: f64| BigFloat::from_f64(x, p).div(&two_pi, p, RM).sub(&shift, p, RM);
+        let t = |x: f64| {
+            BigFloat::from_f64(x, p)
+                .div(&two_pi, p, RM)
+                .sub(&shift, p, RM)
+        };
         // Smallest integer ≥ t(a) − margin, compared with t(b) + margin.
         let n = t(a).sub(&margin, p, RM).ceil();
         let tb = t(b).add(&margin, p, RM);
@@ -166,12 +178,20 @@ fn may_contain_phase(a: f64, b: f64, k: i64) -> bool {
 
 impl Interval {
     /// The empty set.
-    pub const EMPTY: Interval = Interval { lo: f64::INFINITY, hi: f64::NEG_INFINITY };
+    pub const EMPTY: Interval = Interval {
+        lo: f64::INFINITY,
+        hi: f64::NEG_INFINITY,
+    };
     /// The whole real line.
-    pub const ENTIRE: Interval = Interval { lo: f64::NEG_INFINITY, hi: f64::INFINITY };
+    pub const ENTIRE: Interval = Interval {
+        lo: f64::NEG_INFINITY,
+        hi: f64::INFINITY,
+    };
     /// The tightest `f64` interval around π: π_f64 = 3.141592653589793 < π < its successor.
-    pub const PI: Interval =
-        Interval { lo: std::f64::consts::PI, hi: 3.141_592_653_589_793_6 };
+    pub const PI: Interval = Interval {
+        lo: std::f64::consts::PI,
+        hi: 3.141_592_653_589_793_6,
+    };
 
     fn raw(lo: f64, hi: f64) -> Interval {
         if lo.is_nan() || hi.is_nan() {
@@ -227,7 +247,10 @@ impl Interval {
         if o.is_empty() {
             return self;
         }
-        Interval { lo: self.lo.min(o.lo), hi: self.hi.max(o.hi) }
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.max(o.hi),
+        }
     }
     /// Set intersection.
     pub fn intersection(self, o: Interval) -> Interval {
@@ -247,7 +270,10 @@ impl Interval {
         } else if self.hi <= 0.0 {
             -self
         } else {
-            Interval { lo: 0.0, hi: (-self.lo).max(self.hi) }
+            Interval {
+                lo: 0.0,
+                hi: (-self.lo).max(self.hi),
+            }
         }
     }
     /// {max(x, y)}.
@@ -255,14 +281,20 @@ impl Interval {
         if self.is_empty() || o.is_empty() {
             return Interval::EMPTY;
         }
-        Interval { lo: self.lo.max(o.lo), hi: self.hi.max(o.hi) }
+        Interval {
+            lo: self.lo.max(o.lo),
+            hi: self.hi.max(o.hi),
+        }
     }
     /// {min(x, y)}.
     pub fn min(self, o: Interval) -> Interval {
         if self.is_empty() || o.is_empty() {
             return Interval::EMPTY;
         }
-        Interval { lo: self.lo.min(o.lo), hi: self.hi.min(o.hi) }
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.min(o.hi),
+        }
     }
     /// {x²} (tighter than x·x when the interval contains 0).
     pub fn sqr(self) -> Interval {
@@ -327,7 +359,10 @@ impl Interval {
         if y.is_empty() || x.is_empty() {
             return Interval::EMPTY;
         }
-        let all = Interval { lo: -Interval::PI.hi, hi: Interval::PI.hi };
+        let all = Interval {
+            lo: -Interval::PI.hi,
+            hi: Interval::PI.hi,
+        };
         if !(y.lo.is_finite() && y.hi.is_finite() && x.lo.is_finite() && x.hi.is_finite()) {
             return all;
         }
@@ -377,7 +412,10 @@ impl Neg for Interval {
         if self.is_empty() {
             return self;
         }
-        Interval { lo: -self.hi, hi: -self.lo }
+        Interval {
+            lo: -self.hi,
+            hi: -self.lo,
+        }
     }
 }
 

@@ -739,23 +739,6 @@ pub trait Ppm<S: Scalar>: Sync {
         }
     }
 
-    /// φ_wu as implemented in Sec. 6.1.3: domain decided by the canonical-lens test.
-    fn phi_wu_sec613(&self, pair: &VertexPair, p: &P2<S>) -> Result<P2<S>, MapError> {
-        match pair {
-            VertexPair::Same { m } => match in_omega_v(*m, p) {
-                Trit::True => Ok(p.clone()),
-                Trit::False => Err(MapError::NotInDomain("p ∉ Ω_u")),
-                Trit::Unknown => Err(MapError::Undecided("p ∈ Ω_u")),
-            },
-            VertexPair::Edge(e) => match self.in_omega_uw_lens(e, p) {
-                Trit::True => self.g_uw_formula(e, p),
-                Trit::False => Err(MapError::NotInDomain("h∘g_u∘R_(u,w)(p) ∉ E (Sec. 6.1.3)")),
-                Trit::Unknown => Err(MapError::Undecided("lens membership")),
-            },
-            VertexPair::NotAdjacent => Err(MapError::NotInDomain("Ω_uw = ∅")),
-        }
-    }
-
     /// Analytic Jacobian of g_(u,w) at p by the chain rule (one-sided on the cut of Π).
     fn g_uw_jacobian(&self, e: &EdgeConfig, p: &P2<S>) -> Result<Jac<S>, MapError> {
         let prec = p.prec();

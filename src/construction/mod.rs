@@ -1,4 +1,4 @@
-//! Chapter 4: the PPM set of gluing data built from a simplicial surface (issue 4).
+//! Chapter 4: the PPM set of gluing data built from a simplicial surface.
 //!
 //! This module holds the pure mathematics of Sec. 4.1 (independent of meshes), generic over
 //! the scalar type ([`scalar::Scalar`]: `f64`, [`scalar::Mp`]), the seeded samplers, and the
@@ -24,6 +24,6 @@ pub use maps::{
 };
 pub use mesh_gluing::{GluingError, PpmGluing};
 pub use mp_backend::MpBackend;
-pub use scalar::{Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC};
 #[cfg(feature = "mpfr")]
 pub use scalar::MpMpfr;
+pub use scalar::{Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC};

@@ -139,7 +139,11 @@ pub(crate) fn big_to_f64(v: &BigFloat) -> f64 {
         return f64::NAN;
     }
     if v.is_inf() {
-        return if v.is_negative() { f64::NEG_INFINITY } else { f64::INFINITY };
+        return if v.is_negative() {
+            f64::NEG_INFINITY
+        } else {
+            f64::INFINITY
+        };
     }
     let neg = v.is_negative();
     let Some((words, _bits, sign, e, _)) = v.as_raw_parts() else {
@@ -343,13 +347,29 @@ mod tests {
                 (m.exp().to_f64(), x.exp()),
                 (m.abs().sqrt().to_f64(), x.abs().sqrt()),
             ] {
-                assert!((a - b).abs() <= 2.0 * f64::EPSILON * b.abs().max(1e-300), "{x}: {a} {b}");
+                assert!(
+                    (a - b).abs() <= 2.0 * f64::EPSILON * b.abs().max(1e-300),
+                    "{x}: {a} {b}"
+                );
             }
         }
-        for (y, x) in [(1.0, 1.0), (1.0, -1.0), (-1.0, -1.0), (-1.0, 1.0), (0.0, -1.0), (2.0, 0.0), (-2.0, 0.0), (0.0, 0.0), (1e-20, -1.0)] {
+        for (y, x) in [
+            (1.0, 1.0),
+            (1.0, -1.0),
+            (-1.0, -1.0),
+            (-1.0, 1.0),
+            (0.0, -1.0),
+            (2.0, 0.0),
+            (-2.0, 0.0),
+            (0.0, 0.0),
+            (1e-20, -1.0),
+        ] {
             let a = Mp::from_f64(y, 256).atan2(&Mp::from_f64(x, 256)).to_f64();
             let b = f64::atan2(y, x);
-            assert!((a - b).abs() <= 2.0 * f64::EPSILON * b.abs(), "atan2({y},{x}): {a} {b}");
+            assert!(
+                (a - b).abs() <= 2.0 * f64::EPSILON * b.abs(),
+                "atan2({y},{x}): {a} {b}"
+            );
             eprintln!("atan2({y}, {x}) = {a}");
             assert_eq!(a.is_sign_negative(), b.is_sign_negative(), "atan2({y},{x})");
         }

@@ -43,9 +43,19 @@ impl MpBackend {
     /// Parse a command-line name; the error names the backends this build has.
     pub fn parse(s: &str) -> Result<MpBackend, String> {
         let names: Vec<&str> = Self::available().iter().map(|b| b.name()).collect();
-        Self::available().into_iter().find(|b| b.name() == s).ok_or_else(|| {
-            let hint = if s == "mpfr" { " (rebuild with `--features mpfr`)" } else { "" };
-            format!("--mp-backend {s}: this build has {}{hint}", names.join(", "))
-        })
+        Self::available()
+            .into_iter()
+            .find(|b| b.name() == s)
+            .ok_or_else(|| {
+                let hint = if s == "mpfr" {
+                    " (rebuild with `--features mpfr`)"
+                } else {
+                    ""
+                };
+                format!(
+                    "--mp-backend {s}: this build has {}{hint}",
+                    names.join(", ")
+                )
+            })
     }
 }

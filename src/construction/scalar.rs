@@ -216,7 +216,7 @@ impl Scalar for f64 {
 }
 
 /// A closed interval with outward-rounded endpoints ([`Interval`], IEEE 1788 semantics), for the certified
-/// provers of issue 6 (`crate::certify`). Every operation returns an enclosure of the exact
+/// provers (`crate::certify`). Every operation returns an enclosure of the exact
 /// result over all points of the operands, so a decision taken by [`Scalar::sign`] (which
 /// answers `None` when the enclosure contains 0) holds for every point of the inputs.
 ///

@@ -38,7 +38,3 @@ id_type!(
     /// A half-edge of the DCEL of Sec. 6.1.1.
     HalfedgeId
 );
-id_type!(
-    /// An (undirected) edge of the mesh (a 1-simplex of K).
-    EdgeId
-);

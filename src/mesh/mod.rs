@@ -17,5 +17,5 @@ pub mod vec3;
 
 pub use error::{Location, MeshError};
 pub use halfedge::SimplicialSurface;
-pub use ids::{EdgeId, FaceId, HalfedgeId, VertexId};
+pub use ids::{FaceId, HalfedgeId, VertexId};
 pub use raw::{MeshFormat, RawMesh};

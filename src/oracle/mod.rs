@@ -1,4 +1,4 @@
-//! The oracle interface (issue 9): reference quantities of the construction, each evaluated in
+//! The oracle interface: reference quantities of the construction, each evaluated in
 //! f64 *and* in MPFR at a chosen precision, with the difference as the error estimate of the
 //! f64 value. Faster implementations compare against these, point by point.
 //!
