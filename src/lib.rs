@@ -49,6 +49,7 @@ pub mod gluing;
 pub mod mesh;
 pub mod msplines;
 pub mod oracle;
+pub mod render;
 pub mod report;
 pub mod sdiff;
 pub mod surface;

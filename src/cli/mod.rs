@@ -4,6 +4,7 @@
 mod check;
 mod msplines;
 mod oracle;
+pub mod render;
 mod sd;
 mod sigma_v;
 mod tsv_diff;
@@ -155,6 +156,10 @@ enum Command {
         /// S′ (Sec. 6.2): pn | loop
         #[arg(long, default_value = "pn")]
         surface: String,
+        /// What to compute per vertex: positions | normals | curvature (each costs more:
+        /// plain eval, order-1 jets, order-2 jets).
+        #[arg(long, default_value = "curvature")]
+        attributes: String,
         #[arg(long)]
         quiet: bool,
         /// vertex (the report's) | sigma-v (the tutorial's (σ, v)-indexed PPS).
@@ -167,6 +172,9 @@ enum Command {
         #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE)]
         patch_degree: usize,
     },
+    /// Draw K, S′ or the PPS coloured by curvature to a PNG (software rendering; Figs. 6.4–6.7
+    /// with --panels).
+    Render(render::RenderArgs),
     /// Simplicial diffeomorphisms of a planar complex (Mello–Velho): check a map, write curved
     /// isocurves, search the injectivity claims (SPEC rows SD-…).
     Sd(sd::SdArgs),
@@ -300,6 +308,7 @@ pub fn main() -> ExitCode {
             }
         }
         Command::Certify(a) => crate::certify::cli::run(a),
+        Command::Render(a) => render::run(a),
         Command::Sd(a) => sd::run(a),
         Command::Gluing { file, json } => {
             match crate::gluing::cli::run_gluing_command(&file, json) {
@@ -332,14 +341,21 @@ pub fn main() -> ExitCode {
             output,
             profile,
             surface,
+            attributes,
             quiet,
             construction,
             kappa,
             patch_degree,
         } => match construction.as_str() {
-            "vertex" => {
-                crate::surface::cli::run_sample(&file, level, &output, &profile, &surface, quiet)
-            }
+            "vertex" => crate::surface::cli::run_sample(
+                &file,
+                level,
+                &output,
+                &profile,
+                &surface,
+                &attributes,
+                quiet,
+            ),
             "sigma-v" => sigma_v::run_sample(&file, level, &output, kappa, patch_degree, quiet),
             other => {
                 eprintln!("error: --construction {other}: expected vertex or sigma-v");

@@ -4,6 +4,7 @@
 //! disjoint subsets of ℝⁿ, so chart i is centred at c_i = (∓3ρ, 0, …, 0).
 
 use super::data::{GluingData, Idx, Point};
+use crate::construction::Scalar;
 use crate::report::{CheckResult, Witness};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -19,18 +20,26 @@ pub fn phi_south(x: &[f64]) -> Vec<f64> {
     let n = x.len() - 1;
     x[..n].iter().map(|c| c / (1.0 + x[n])).collect()
 }
-/// φ_N⁻¹(u) = (2u, ‖u‖² − 1)/(‖u‖² + 1).
-pub fn phi_north_inv(u: &[f64]) -> Vec<f64> {
-    let s: f64 = u.iter().map(|c| c * c).sum();
-    let mut v: Vec<f64> = u.iter().map(|c| 2.0 * c / (s + 1.0)).collect();
-    v.push((s - 1.0) / (s + 1.0));
-    v
+/// φ_N⁻¹(u) = (2u, ‖u‖² − 1)/(‖u‖² + 1). Generic over the scalar (jets give its derivatives:
+/// the curvature check of `ppm render`).
+pub fn phi_north_inv<S: Scalar>(u: &[S]) -> Vec<S> {
+    stereo_inv(u, false)
 }
 /// φ_S⁻¹(u) = (2u, 1 − ‖u‖²)/(‖u‖² + 1).
-pub fn phi_south_inv(u: &[f64]) -> Vec<f64> {
-    let s: f64 = u.iter().map(|c| c * c).sum();
-    let mut v: Vec<f64> = u.iter().map(|c| 2.0 * c / (s + 1.0)).collect();
-    v.push((1.0 - s) / (s + 1.0));
+pub fn phi_south_inv<S: Scalar>(u: &[S]) -> Vec<S> {
+    stereo_inv(u, true)
+}
+fn stereo_inv<S: Scalar>(u: &[S], south: bool) -> Vec<S> {
+    let prec = u.first().map_or(53, Scalar::precision_bits);
+    let one = S::from_i64(1, prec);
+    let two = S::from_i64(2, prec);
+    let s = u
+        .iter()
+        .fold(S::from_i64(0, prec), |acc, c| acc.add(&c.mul(c)));
+    let d = s.add(&one);
+    let mut v: Vec<S> = u.iter().map(|c| two.mul(c).div(&d)).collect();
+    let last = if south { one.sub(&s) } else { s.sub(&one) };
+    v.push(last.div(&d));
     v
 }
 /// The transition φ_SN = φ_NS : u ↦ u/‖u‖² on ℝⁿ − {0} stated in Sec. 3.3.

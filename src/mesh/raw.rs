@@ -42,6 +42,10 @@ pub struct RawMesh {
     pub triangulated_polygons: u64,
     /// Whether `face_origin`/`vertex_origin` are lines (`true`) or element indices (`false`).
     pub origin_is_line: bool,
+    /// Per-vertex scalar properties kept from the file besides the position (PLY vertex
+    /// properties named in `io::ply::VERTEX_SCALARS`, e.g. the curvatures `ppm sample` writes),
+    /// as (name, one value per vertex).
+    pub vertex_scalars: Vec<(String, Vec<f64>)>,
 }
 
 impl RawMesh {
@@ -58,6 +62,7 @@ impl RawMesh {
             format: None,
             triangulated_polygons: 0,
             origin_is_line: false,
+            vertex_scalars: Vec::new(),
         }
     }
 

@@ -1,6 +1,6 @@
 //! `ppm sample` and `ppm eval` (called from `crate::cli`).
 
-use super::output::{edge_use_counts, sample_surface, write_mesh_with_attributes};
+use super::output::{edge_use_counts, sample_surface_with, write_mesh_with_attributes, Attributes};
 use super::pps::{Pps, PpsOptions};
 use super::profile::Profile;
 use super::target::{SPrime, SurfaceKind};
@@ -56,8 +56,13 @@ pub fn run_sample(
     out: &Path,
     profile: &str,
     surface: &str,
+    attributes: &str,
     quiet: bool,
 ) -> ExitCode {
+    let Some(attrs) = Attributes::parse(attributes) else {
+        eprintln!("error: unknown --attributes {attributes:?} (positions | normals | curvature)");
+        return ExitCode::from(2);
+    };
     let t0 = Instant::now();
     let k = match load(file) {
         Ok(k) => k,
@@ -83,7 +88,7 @@ pub fn run_sample(
             );
         }
     }
-    let m = match sample_surface(&pps, level, !quiet) {
+    let m = match sample_surface_with(&pps, level, attrs, !quiet) {
         Ok(m) => m,
         Err(e) => {
             eprintln!("error: {e}");

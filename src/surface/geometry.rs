@@ -30,8 +30,9 @@ pub struct SurfacePoint {
     pub mean: f64,
 }
 
-/// Normal and curvatures from an order-≥2 jet of a parametrization.
-pub fn from_jet(j: &[Jet<f64>; 3]) -> SurfacePoint {
+/// Normal and curvatures from a jet of a parametrization (order ≥ 2 for the curvatures: an
+/// order-1 jet gives NaN curvatures).
+pub fn from_jet<const L: usize>(j: &[Jet<f64, L>; 3]) -> SurfacePoint {
     let g = |a: usize, b: usize| -> [f64; 3] { std::array::from_fn(|d| j[d].derivative(a, b)) };
     let (xu, xv) = (g(1, 0), g(0, 1));
     let (xuu, xuv, xvv) = (g(2, 0), g(1, 1), g(0, 2));
@@ -65,7 +66,7 @@ pub fn from_jet(j: &[Jet<f64>; 3]) -> SurfacePoint {
 }
 
 impl Pps {
-    /// The jet (derivatives to order 3) of θ_v at p.
+    /// The jet of θ_v at p (derivatives to the order of the jet type, 3 by default).
     pub fn theta_jet(
         &self,
         v: VertexId,
@@ -73,6 +74,17 @@ impl Pps {
         c: &Consts<Jet<f64>>,
         only: Option<[VertexId; 2]>,
     ) -> Result<[Jet<f64>; 3], SurfaceError> {
+        self.theta_jet_of_order(v, p, c, only)
+    }
+
+    /// [`Self::theta_jet`] with jets of any order (the order of `c`'s jet type).
+    pub fn theta_jet_of_order<const L: usize>(
+        &self,
+        v: VertexId,
+        p: [f64; 2],
+        c: &Consts<Jet<f64, L>>,
+        only: Option<[VertexId; 2]>,
+    ) -> Result<[Jet<f64, L>; 3], SurfaceError> {
         let (x, y) = Jet::variables(p[0], p[1]);
         self.theta_only(v, &P2::new(x, y), c, only)
     }
@@ -94,6 +106,17 @@ impl Pps {
         bary: [f64; 3],
         c: &Consts<Jet<f64>>,
     ) -> Result<(Chart, VertexId, SurfacePoint), SurfaceError> {
+        self.eval_geometry_of_order(f, bary, c)
+    }
+
+    /// [`Self::eval_geometry`] with jets of any order ≥ 2 (the order of `c`'s jet type;
+    /// [`super::jet::Jet2`] is the cheapest that gives the curvatures).
+    pub fn eval_geometry_of_order<const L: usize>(
+        &self,
+        f: FaceId,
+        bary: [f64; 3],
+        c: &Consts<Jet<f64, L>>,
+    ) -> Result<(Chart, VertexId, SurfacePoint), SurfaceError> {
         let cf = self.consts_f64();
         let qp = super::eval::canonical_point(&bary, cf);
         let chart = self.choose_chart(&qp, cf);
@@ -109,7 +132,7 @@ impl Pps {
                 })
             }
         };
-        let j = self.theta_jet(v, [q.x, q.y], c, only)?;
+        let j = self.theta_jet_of_order(v, [q.x, q.y], c, only)?;
         Ok((chart, v, from_jet(&j)))
     }
 }

@@ -39,7 +39,25 @@ pub const fn idx(i: usize, j: usize) -> usize {
     d * (d + 1) / 2 + j
 }
 
-const fn mul_table() -> [(u8, u8, u8); 35] {
+/// Jets truncated at total order 2 (value, gradient, Hessian): enough for normals and
+/// curvatures, at under half the work of order 3 per product.
+pub type Jet2<S> = Jet<S, 6>;
+/// Jets truncated at total order 1 (value and gradient): enough for normals.
+pub type Jet1<S> = Jet<S, 3>;
+
+/// The total order of a jet with `len` coefficients (1, 3, 6 or 10).
+pub const fn order_of(len: usize) -> usize {
+    match len {
+        1 => 0,
+        3 => 1,
+        6 => 2,
+        10 => 3,
+        _ => panic!("a jet has 1, 3, 6 or 10 coefficients (order 0..=3)"),
+    }
+}
+
+/// All (a, b, c) with monomial a · monomial b = monomial c of degree ≤ `order`, and how many.
+const fn mul_table(order: usize) -> ([(u8, u8, u8); 35], usize) {
     let mut t = [(0u8, 0u8, 0u8); 35];
     let mut n = 0;
     let mut a = 0;
@@ -48,7 +66,7 @@ const fn mul_table() -> [(u8, u8, u8); 35] {
         while b < JET_LEN {
             let (ia, ja) = MONOMIALS[a];
             let (ib, jb) = MONOMIALS[b];
-            if ia + ja + ib + jb <= JET_ORDER {
+            if ia + ja + ib + jb <= order {
                 t[n] = (a as u8, b as u8, idx(ia + ib, ja + jb) as u8);
                 n += 1;
             }
@@ -56,24 +74,28 @@ const fn mul_table() -> [(u8, u8, u8); 35] {
         }
         a += 1;
     }
-    t
+    (t, n)
 }
 
-/// All (a, b, c) with monomial a · monomial b = monomial c of degree ≤ 3.
-const MUL: [(u8, u8, u8); 35] = mul_table();
+/// The product tables of the orders 0..=3 (order 3: the full table of [`JET_ORDER`]).
+const MUL: [([(u8, u8, u8); 35], usize); 4] =
+    [mul_table(0), mul_table(1), mul_table(2), mul_table(JET_ORDER)];
 
-/// A jet of total order 3 in two variables over the scalar `S`.
+/// A jet in two variables over the scalar `S` with `L` Taylor coefficients: total order 3 by
+/// default (L = 10); [`Jet2`] (L = 6) and [`Jet1`] (L = 3) truncate lower.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Jet<S> {
+pub struct Jet<S, const L: usize = JET_LEN> {
     /// Taylor coefficients: `c[idx(i, j)]` multiplies xⁱyʲ (so `c[0]` is the value).
-    pub c: [S; JET_LEN],
+    pub c: [S; L],
 }
 
-impl<S: Scalar> Jet<S> {
+impl<S: Scalar, const L: usize> Jet<S, L> {
+    /// The total order of the jet.
+    pub const ORDER: usize = order_of(L);
     /// The constant `v` (all derivatives zero).
     pub fn constant(v: S) -> Self {
         let z = S::from_i64(0, v.precision_bits());
-        let mut c: [S; JET_LEN] = std::array::from_fn(|_| z.clone());
+        let mut c: [S; L] = std::array::from_fn(|_| z.clone());
         c[0] = v;
         Jet { c }
     }
@@ -82,19 +104,26 @@ impl<S: Scalar> Jet<S> {
         let prec = x0.precision_bits().max(y0.precision_bits());
         let one = S::from_i64(1, prec);
         let mut x = Jet::constant(x0);
-        x.c[idx(1, 0)] = one.clone();
         let mut y = Jet::constant(y0);
-        y.c[idx(0, 1)] = one;
+        if Self::ORDER >= 1 {
+            x.c[idx(1, 0)] = one.clone();
+            y.c[idx(0, 1)] = one;
+        }
         (x, y)
     }
     /// The value at the base point.
     pub fn value(&self) -> &S {
         &self.c[0]
     }
-    /// The partial derivative ∂^{i+j} / ∂x^i ∂y^j at the base point (i + j ≤ 3).
+    /// The partial derivative ∂^{i+j} / ∂x^i ∂y^j at the base point; NaN when i + j exceeds
+    /// the jet's order (not tracked).
     pub fn derivative(&self, i: usize, j: usize) -> S {
+        let prec = self.c[0].precision_bits();
+        if i + j > Self::ORDER {
+            return S::from_f64(f64::NAN, prec);
+        }
         let f = |n: usize| -> i64 { (1..=n as i64).product::<i64>().max(1) };
-        let k = S::from_i64(f(i) * f(j), self.c[0].precision_bits());
+        let k = S::from_i64(f(i) * f(j), prec);
         self.c[idx(i, j)].mul(&k)
     }
     fn zero_like(&self) -> S {
@@ -139,9 +168,9 @@ impl<S: Scalar> Jet<S> {
     }
 }
 
-impl<S: Scalar> Scalar for Jet<S> {
+impl<S: Scalar, const L: usize> Scalar for Jet<S, L> {
     fn type_name(&self) -> String {
-        format!("jet3<{}>", self.c[0].type_name())
+        format!("jet{}<{}>", Self::ORDER, self.c[0].type_name())
     }
     fn from_f64(x: f64, prec: u32) -> Self {
         Jet::constant(S::from_f64(x, prec))
@@ -169,8 +198,9 @@ impl<S: Scalar> Scalar for Jet<S> {
     }
     fn mul(&self, o: &Self) -> Self {
         let z = self.zero_like();
-        let mut c: [S; JET_LEN] = std::array::from_fn(|_| z.clone());
-        for &(a, b, r) in MUL.iter() {
+        let mut c: [S; L] = std::array::from_fn(|_| z.clone());
+        let (table, n) = &MUL[Self::ORDER];
+        for &(a, b, r) in &table[..*n] {
             let t = self.c[a as usize].mul(&o.c[b as usize]);
             c[r as usize] = c[r as usize].add(&t);
         }
@@ -237,7 +267,7 @@ impl<S: Scalar> Scalar for Jet<S> {
     }
 }
 
-impl<S: SurfaceScalar> SurfaceScalar for Jet<S> {
+impl<S: SurfaceScalar, const L: usize> SurfaceScalar for Jet<S, L> {
     fn exp(&self) -> Self {
         let e = self.c[0].exp();
         self.compose([e.clone(), e.clone(), e.clone(), e])

@@ -9,7 +9,7 @@
 //! condition (C) (the point does not depend on the triangle used, up to rounding).
 
 use super::consts::Consts;
-use super::jet::Jet;
+use super::jet::{Jet1, Jet2};
 use super::pps::{Pps, SurfaceError};
 use crate::mesh::FaceId;
 use std::collections::HashMap;
@@ -132,46 +132,113 @@ pub fn sample_pattern_faces(faces: &[[crate::mesh::VertexId; 3]], level: u32) ->
     out
 }
 
-/// Sample M at subdivision level `level` (Sec. 6.2). `progress`: a progress line on stderr.
+/// Which per-vertex attributes a sampling computes: each costs more than the one before
+/// (positions: plain f64 eval; normals: order-1 jets; curvatures: order-2 jets).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Attributes {
+    /// Positions only.
+    Positions,
+    /// Positions and unit normals.
+    Normals,
+    /// Positions, normals, Gaussian and mean curvature.
+    #[default]
+    Curvature,
+}
+
+impl Attributes {
+    /// Parse `positions | normals | curvature`.
+    pub fn parse(s: &str) -> Option<Attributes> {
+        match s {
+            "positions" => Some(Attributes::Positions),
+            "normals" => Some(Attributes::Normals),
+            "curvature" => Some(Attributes::Curvature),
+            _ => None,
+        }
+    }
+}
+
+/// Sample M at subdivision level `level` (Sec. 6.2) with normals and curvatures. `progress`:
+/// a progress line on stderr.
 pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMesh, SurfaceError> {
+    sample_surface_with(pps, level, Attributes::Curvature, progress)
+}
+
+/// Evaluate `f` at every point of `todo`, in the patches' storage order (cache locality),
+/// results in `todo` order.
+fn eval_points<T: Send>(
+    pps: &Pps,
+    todo: &[SamplePoint],
+    progress: bool,
+    f: impl Fn(SamplePoint) -> Result<T, SurfaceError> + Sync,
+) -> Result<Vec<T>, SurfaceError> {
+    let done = AtomicUsize::new(0);
+    let total = todo.len();
+    let step = (total / 10).max(1);
+    let keys: Vec<u32> = todo.iter().map(|s| pps.locality_key(s.face)).collect();
+    let results = super::pps::map_in_key_order(&keys, |i| {
+        let r = f(todo[i]);
+        if progress {
+            let d = done.fetch_add(1, Ordering::Relaxed) + 1;
+            if d % step == 0 || d == total {
+                eprint!(
+                    "\rppm sample: {d}/{total} points ({:.0}%)",
+                    100.0 * d as f64 / total as f64
+                );
+            }
+        }
+        r
+    });
+    if progress {
+        eprintln!();
+    }
+    results.into_iter().collect()
+}
+
+/// Sample M at subdivision level `level` (Sec. 6.2) computing only `attrs` (the other arrays
+/// of the result stay empty).
+pub fn sample_surface_with(
+    pps: &Pps,
+    level: u32,
+    attrs: Attributes,
+    progress: bool,
+) -> Result<SampledMesh, SurfaceError> {
     let SamplePattern {
         points: todo,
         faces,
     } = sample_pattern(pps, level)?;
-    let cj: Consts<Jet<f64>> = pps.consts(53);
-    let done = AtomicUsize::new(0);
-    let total = todo.len();
-    let step = (total / 10).max(1);
-    // Evaluated in the patches' storage order (cache locality), results in `todo` order.
-    let keys: Vec<u32> = todo.iter().map(|s| pps.locality_key(s.face)).collect();
-    let results: Vec<Result<super::geometry::SurfacePoint, SurfaceError>> =
-        super::pps::map_in_key_order(&keys, |i| {
-            let SamplePoint { face, bary } = todo[i];
-            let r = pps.eval_geometry(face, bary, &cj).map(|x| x.2);
-            if progress {
-                let d = done.fetch_add(1, Ordering::Relaxed) + 1;
-                if d % step == 0 || d == total {
-                    eprint!(
-                        "\rppm sample: {d}/{total} points ({:.0}%)",
-                        100.0 * d as f64 / total as f64
-                    );
-                }
-            }
-            r
-        });
-    if progress {
-        eprintln!();
-    }
     let mut out = SampledMesh {
         faces,
         ..SampledMesh::default()
     };
-    for r in results {
-        let g = r?;
-        out.positions.push(g.point);
-        out.normals.push(g.normal);
-        out.gaussian.push(g.gaussian);
-        out.mean.push(g.mean);
+    let geometry = |attrs| -> Result<Vec<super::geometry::SurfacePoint>, SurfaceError> {
+        if attrs == Attributes::Normals {
+            let cj: Consts<Jet1<f64>> = pps.consts(53);
+            eval_points(pps, &todo, progress, |s| {
+                pps.eval_geometry_of_order(s.face, s.bary, &cj).map(|x| x.2)
+            })
+        } else {
+            // Order-2 jets: the normal and curvatures need no third derivatives.
+            let cj: Consts<Jet2<f64>> = pps.consts(53);
+            eval_points(pps, &todo, progress, |s| {
+                pps.eval_geometry_of_order(s.face, s.bary, &cj).map(|x| x.2)
+            })
+        }
+    };
+    match attrs {
+        Attributes::Positions => {
+            out.positions = eval_points(pps, &todo, progress, |s| pps.eval_f64(s.face, s.bary))?;
+        }
+        Attributes::Normals | Attributes::Curvature => {
+            for g in geometry(attrs)? {
+                out.positions.push(g.point);
+                out.normals.push(g.normal);
+                if attrs == Attributes::Curvature {
+                    out.gaussian.push(g.gaussian);
+                    out.mean.push(g.mean);
+                }
+            }
+        }
     }
     Ok(out)
 }
@@ -220,7 +287,8 @@ pub fn robust_range(xs: &[f64]) -> f64 {
 
 /// Write the sampled mesh: `.obj` (v, vn, f a//a), `.off` (NOFF: positions and normals),
 /// `.ply` (ascii: x y z nx ny nz red green blue gaussian_curvature mean_curvature; colours
-/// from the mean curvature, clipped at its 98th percentile).
+/// from the mean curvature, clipped at its 98th percentile). Attributes that were not
+/// computed ([`Attributes`]) are left out.
 pub fn write_mesh_with_attributes(path: &Path, m: &SampledMesh) -> std::io::Result<()> {
     let ext = path
         .extension()
@@ -243,51 +311,76 @@ pub fn write_mesh_with_attributes(path: &Path, m: &SampledMesh) -> std::io::Resu
             }
             for f in &m.faces {
                 let [a, b, c] = f.map(|i| u64::from(i) + 1);
-                writeln!(w, "f {a}//{a} {b}//{b} {c}//{c}")?;
+                if m.normals.is_empty() {
+                    writeln!(w, "f {a} {b} {c}")?;
+                } else {
+                    writeln!(w, "f {a}//{a} {b}//{b} {c}//{c}")?;
+                }
             }
         }
         "off" => {
-            writeln!(w, "NOFF")?;
+            let with_normals = !m.normals.is_empty();
+            writeln!(w, "{}", if with_normals { "NOFF" } else { "OFF" })?;
             writeln!(w, "{} {} 0", m.positions.len(), m.faces.len())?;
-            for (p, n) in m.positions.iter().zip(&m.normals) {
-                writeln!(
-                    w,
-                    "{:?} {:?} {:?} {:?} {:?} {:?}",
-                    p[0], p[1], p[2], n[0], n[1], n[2]
-                )?;
+            for (i, p) in m.positions.iter().enumerate() {
+                match m.normals.get(i) {
+                    Some(n) => writeln!(
+                        w,
+                        "{:?} {:?} {:?} {:?} {:?} {:?}",
+                        p[0], p[1], p[2], n[0], n[1], n[2]
+                    )?,
+                    None => writeln!(w, "{:?} {:?} {:?}", p[0], p[1], p[2])?,
+                }
             }
             for f in &m.faces {
                 writeln!(w, "3 {} {} {}", f[0], f[1], f[2])?;
             }
         }
         _ => {
+            let normals = m.normals.len() == m.positions.len() && !m.positions.is_empty();
+            let curvature = normals && m.mean.len() == m.positions.len();
             let range = robust_range(&m.mean);
             writeln!(w, "ply\nformat ascii 1.0")?;
-            writeln!(
-                w,
-                "comment ppm sample: colours = mean curvature clipped at ±{range:e}"
-            )?;
-            writeln!(w, "element vertex {}", m.positions.len())?;
-            for p in ["x", "y", "z", "nx", "ny", "nz"] {
-                writeln!(w, "property double {p}")?;
-            }
-            for p in ["red", "green", "blue"] {
-                writeln!(w, "property uchar {p}")?;
-            }
-            writeln!(
-                w,
-                "property double gaussian_curvature\nproperty double mean_curvature"
-            )?;
-            writeln!(w, "element face {}", m.faces.len())?;
-            writeln!(w, "property list uchar int vertex_indices\nend_header")?;
-            for i in 0..m.positions.len() {
-                let (p, n) = (m.positions[i], m.normals[i]);
-                let c = curvature_colour(m.mean[i], range);
+            if curvature {
                 writeln!(
                     w,
-                    "{:?} {:?} {:?} {:?} {:?} {:?} {} {} {} {:?} {:?}",
-                    p[0], p[1], p[2], n[0], n[1], n[2], c[0], c[1], c[2], m.gaussian[i], m.mean[i]
+                    "comment ppm sample: colours = mean curvature clipped at ±{range:e}"
                 )?;
+            }
+            writeln!(w, "element vertex {}", m.positions.len())?;
+            let mut props = vec!["x", "y", "z"];
+            if normals {
+                props.extend(["nx", "ny", "nz"]);
+            }
+            for p in props {
+                writeln!(w, "property double {p}")?;
+            }
+            if curvature {
+                for p in ["red", "green", "blue"] {
+                    writeln!(w, "property uchar {p}")?;
+                }
+                writeln!(
+                    w,
+                    "property double gaussian_curvature\nproperty double mean_curvature"
+                )?;
+            }
+            writeln!(w, "element face {}", m.faces.len())?;
+            writeln!(w, "property list uchar int vertex_indices\nend_header")?;
+            for (i, p) in m.positions.iter().enumerate() {
+                write!(w, "{:?} {:?} {:?}", p[0], p[1], p[2])?;
+                if normals {
+                    let n = m.normals[i];
+                    write!(w, " {:?} {:?} {:?}", n[0], n[1], n[2])?;
+                }
+                if curvature {
+                    let c = curvature_colour(m.mean[i], range);
+                    write!(
+                        w,
+                        " {} {} {} {:?} {:?}",
+                        c[0], c[1], c[2], m.gaussian[i], m.mean[i]
+                    )?;
+                }
+                writeln!(w)?;
             }
             for f in &m.faces {
                 writeln!(w, "3 {} {} {}", f[0], f[1], f[2])?;

@@ -10,6 +10,7 @@
 //! caller names them; b_σ does not depend on that order.
 
 use super::profile::{NormalRule, Profile};
+use crate::construction::Scalar;
 use crate::mesh::vec3::{cross, dot, norm, sub};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 
@@ -29,19 +30,24 @@ pub const CUBIC_ORDER: [[u8; 3]; 10] = [
 ];
 
 /// The 10 cubic Bernstein polynomials at barycentric coordinates (λ, ν, η), in [`CUBIC_ORDER`].
-pub fn cubic_bernstein(b: [f64; 3]) -> [f64; 10] {
+/// Generic over the scalar so that jets give the derivatives of b_σ (normals and curvature of
+/// S′ for `ppm render`).
+pub fn cubic_bernstein<S: Scalar>(b: [S; 3]) -> [S; 10] {
     let [l, n, e] = b;
+    let prec = l.precision_bits();
+    let (three, six) = (S::from_i64(3, prec), S::from_i64(6, prec));
+    let (ll, nn, ee) = (l.mul(&l), n.mul(&n), e.mul(&e));
     [
-        l * l * l,
-        n * n * n,
-        e * e * e,
-        3.0 * l * l * n,
-        3.0 * l * n * n,
-        3.0 * n * n * e,
-        3.0 * n * e * e,
-        3.0 * l * e * e,
-        3.0 * l * l * e,
-        6.0 * l * n * e,
+        ll.mul(&l),
+        nn.mul(&n),
+        ee.mul(&e),
+        three.mul(&ll).mul(&n),
+        three.mul(&l).mul(&nn),
+        three.mul(&nn).mul(&e),
+        three.mul(&n).mul(&ee),
+        three.mul(&l).mul(&ee),
+        three.mul(&ll).mul(&e),
+        six.mul(&l).mul(&n).mul(&e),
     ]
 }
 
@@ -175,13 +181,14 @@ impl PnTriangles {
     }
 }
 
-/// Σ_j B_j(bary) c_j for a cubic net in [`CUBIC_ORDER`].
-pub fn eval_cubic(net: &[[f64; 3]; 10], bary: [f64; 3]) -> [f64; 3] {
+/// Σ_j B_j(bary) c_j for a cubic net in [`CUBIC_ORDER`] (generic: jets give derivatives).
+pub fn eval_cubic<S: Scalar>(net: &[[f64; 3]; 10], bary: [S; 3]) -> [S; 3] {
+    let prec = bary[0].precision_bits();
     let b = cubic_bernstein(bary);
-    let mut r = [0.0; 3];
+    let mut r: [S; 3] = std::array::from_fn(|_| S::from_i64(0, prec));
     for (bj, cj) in b.iter().zip(net) {
         for d in 0..3 {
-            r[d] += bj * cj[d];
+            r[d] = r[d].add(&bj.mul(&S::from_f64(cj[d], prec)));
         }
     }
     r

@@ -208,5 +208,6 @@ pub(crate) fn read(bytes: &[u8], ctx: &Ctx<'_>) -> Result<RawMesh, MeshError> {
         format: Some(MeshFormat::Off),
         triangulated_polygons: faces.triangulated_polygons,
         origin_is_line: true,
+        vertex_scalars: Vec::new(),
     })
 }

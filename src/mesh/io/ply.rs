@@ -81,8 +81,14 @@ struct Property {
 enum Role {
     Skip,
     Coord(usize),
+    /// Index into [`VERTEX_SCALARS`].
+    Kept(usize),
     Corners,
 }
+
+/// Vertex scalar properties kept besides x, y, z: the normals and curvatures that
+/// `ppm sample` writes (read back by `ppm render --input-is-samples`).
+pub const VERTEX_SCALARS: [&str; 5] = ["nx", "ny", "nz", "gaussian_curvature", "mean_curvature"];
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum ElemKind {
@@ -274,6 +280,11 @@ fn parse_header<'a>(ctx: &Ctx<'_>, lines: &mut Lines<'a>) -> Result<Header, Mesh
                     (ElemKind::Vertex, "x" | "y" | "z", Kind::List { .. }) => {
                         return Err(ctx.parse(at, format!("vertex property '{name}' is a list")))
                     }
+                    (ElemKind::Vertex, _, Kind::Scalar(_))
+                        if VERTEX_SCALARS.contains(&name) =>
+                    {
+                        Role::Kept(VERTEX_SCALARS.iter().position(|&n| n == name).unwrap_or(0))
+                    }
                     (
                         ElemKind::Face,
                         "vertex_indices" | "vertex_index",
@@ -343,6 +354,8 @@ fn check_roles(ctx: &Ctx<'_>, elements: &[Element]) -> Result<(), MeshError> {
 /// What the body readers fill in.
 struct Body {
     positions: Vec<[f64; 3]>,
+    /// Values of the [`VERTEX_SCALARS`] (filled only for those the header declares).
+    kept: [Vec<f64>; 5],
     vertex_origin: Vec<u64>,
     sink: FaceSink,
 }
@@ -360,6 +373,7 @@ pub(crate) fn read(bytes: &[u8], ctx: &Ctx<'_>) -> Result<RawMesh, MeshError> {
         _ => (1, 1),
     };
     let mut body = Body {
+        kept: Default::default(),
         positions: Vec::new(),
         vertex_origin: Vec::new(),
         sink: FaceSink::new(ctx.opts.triangulate, 0),
@@ -403,7 +417,14 @@ pub(crate) fn read(bytes: &[u8], ctx: &Ctx<'_>) -> Result<RawMesh, MeshError> {
         }
     };
     let faces = body.sink.finish(ctx, &body.positions, origin_is_line)?;
+    let vertex_scalars = VERTEX_SCALARS
+        .iter()
+        .zip(std::mem::take(&mut body.kept))
+        .filter(|(_, v)| !v.is_empty() && v.len() == body.positions.len())
+        .map(|(n, v)| (n.to_string(), v))
+        .collect();
     Ok(RawMesh {
+        vertex_scalars,
         positions: body.positions,
         faces: faces.faces,
         face_origin: faces.origins,
@@ -479,10 +500,14 @@ fn read_ascii(
                                 ),
                             )
                         })?;
-                        if let Role::Coord(axis) = role {
-                            if let Some(c) = p.get_mut(*axis) {
-                                *c = v;
+                        match role {
+                            Role::Coord(axis) => {
+                                if let Some(c) = p.get_mut(*axis) {
+                                    *c = v;
+                                }
                             }
+                            Role::Kept(i) => body.kept[*i].push(v),
+                            _ => {}
                         }
                     }
                     Kind::List { count, item } => {
@@ -686,10 +711,14 @@ fn read_binary(
                 match prop.kind {
                     Kind::Scalar(sc) => {
                         let v = cur.read(sc).ok_or_else(|| truncated(k))?;
-                        if let Role::Coord(axis) = role {
-                            if let Some(c) = p.get_mut(*axis) {
-                                *c = v.as_f64();
+                        match role {
+                            Role::Coord(axis) => {
+                                if let Some(c) = p.get_mut(*axis) {
+                                    *c = v.as_f64();
+                                }
                             }
+                            Role::Kept(i) => body.kept[*i].push(v.as_f64()),
+                            _ => {}
                         }
                     }
                     Kind::List { count, item } => {

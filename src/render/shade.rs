@@ -1,0 +1,30 @@
+//! Per-pixel shading: the normal interpolated from the triangle's corners (then normalised)
+//! lights the base colour with a Lambert term for a light above and to the left of the viewer;
+//! a face turned away from the light (or a normal of the wrong sign) is dark.
+
+use crate::mesh::vec3::{dot, norm};
+
+/// Fraction of light that reaches every point.
+pub const AMBIENT: f64 = 0.25;
+
+/// The light direction in camera terms: mostly from the viewer, a little from above-left.
+pub fn light_direction(right: [f64; 3], up: [f64; 3], towards: [f64; 3]) -> [f64; 3] {
+    let l: [f64; 3] = std::array::from_fn(|d| towards[d] + 0.45 * up[d] - 0.3 * right[d]);
+    let n = norm(l);
+    l.map(|x| x / n)
+}
+
+/// Brightness factor in [AMBIENT, 1] of the interpolated normal `n` (any length) under the
+/// light `l`; a zero or non-finite normal (singular point) gets the ambient term alone.
+pub fn brightness(n: [f64; 3], l: [f64; 3]) -> f64 {
+    let len = norm(n);
+    if !(len > 0.0 && len.is_finite()) {
+        return AMBIENT;
+    }
+    AMBIENT + (1.0 - AMBIENT) * (dot(n, l) / len).max(0.0)
+}
+
+/// `base` lit by `brightness`.
+pub fn lit(base: [f64; 3], brightness: f64) -> [f64; 3] {
+    base.map(|c| c * brightness)
+}
