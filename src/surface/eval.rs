@@ -14,6 +14,7 @@
 
 use super::consts::Consts;
 use super::pps::{Pps, SurfaceError};
+use super::profile::Profile;
 use super::scalar_ext::SurfaceScalar;
 use crate::construction::P2;
 use crate::mesh::{FaceId, VertexId};
