@@ -697,7 +697,7 @@ pub trait Ppm<S: Scalar>: Sync {
             Err(MapError::AtOrigin) => return Trit::False,
             Err(_) => return Trit::Unknown,
         };
-        let tol = S::from_f64(roundtrip_tolerance(e, p.x.epsilon()), p.prec());
+        let tol = S::from_f64(roundtrip_tolerance(e, 1.0), p.prec()).mul(&p.x.unit_roundoff());
         let close = back.sub(p).norm2().le(&tol.sqr());
         in_u.and(in_w).and(close)
     }
