@@ -93,3 +93,106 @@ fn x_adv_02_precision_1024_breaks_membership_r_unit_roundoff() {
         assert!(inside > 0, "no interior point sampled for ({mu}, {mw})");
     }
 }
+
+/// `sample --level` above 12 was silently clamped to 12 (and level 12 then aborted on
+/// allocation): now the output size is estimated and a level beyond the budget is refused.
+#[test]
+fn x_adv_12_sample_level_clamped_silently() {
+    use pseudomanifold::surface::output::{sample_estimate, sample_pattern, SAMPLE_MEMORY_LIMIT};
+    let k = surface(&octahedron());
+    let pps = build(&k);
+    for level in [13, 14, 31, u32::MAX] {
+        match sample_pattern(&pps, level) {
+            Err(SurfaceError::LevelTooLarge { level: l, bytes, .. }) => {
+                assert_eq!(l, level);
+                assert!(bytes > SAMPLE_MEMORY_LIMIT || level > 30);
+            }
+            other => panic!("level {level}: expected LevelTooLarge, got {:?}", other.map(|p| p.points.len())),
+        }
+    }
+    let p = sample_pattern(&pps, 3).expect("level 3");
+    assert_eq!(p.points.len(), 8 * 64 / 2 + 2, "octahedron level 3: 4^3·F/2 + 2 points");
+    assert!(sample_estimate(8, 3).0 >= p.points.len() as u128);
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
+        .args(["figure", "--degrees", "4294967295,5", "-o"])
+        .arg(std::env::temp_dir().join("x_adv_12.svg"))
+        .output()
+        .expect("run ppm");
+    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+/// `ppm eval` accepted NaN, ±∞ and out-of-simplex barycentrics (printing NaN into JSON);
+/// `eval-map --bits 0|1` was accepted.
+#[test]
+fn x_adv_13_eval_accepts_nan_barycentrics() {
+    let k = surface(&octahedron());
+    let pps = build(&k);
+    let cj = pps.consts::<Jet<f64>>(53);
+    for b in [
+        [f64::NAN, 0.5, 0.5],
+        [f64::INFINITY, 0.0, 0.0],
+        [-0.5, 1.5, 0.0],
+        [2.0, 2.0, 2.0],
+    ] {
+        assert!(
+            matches!(pps.eval_geometry(FaceId(1), b, &cj), Err(SurfaceError::BadBarycentric(_))),
+            "{b:?} accepted"
+        );
+    }
+    let bin = env!("CARGO_BIN_EXE_ppm");
+    let mesh = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/octahedron.obj");
+    let out = std::process::Command::new(bin)
+        .args(["eval", mesh, "1", "NaN", "0.5", "0.5"])
+        .output()
+        .expect("run ppm");
+    assert_eq!(out.status.code(), Some(1));
+    assert!(out.stdout.is_empty(), "{}", String::from_utf8_lossy(&out.stdout));
+    for bits in ["0", "1"] {
+        let out = std::process::Command::new(bin)
+            .args(["eval-map", mesh, "0", "1", "0.3", "0.1", "--bits", bits])
+            .output()
+            .expect("run ppm");
+        assert_eq!(out.status.code(), Some(2), "--bits {bits} accepted");
+    }
+}
+
+/// A failed write left a truncated output file: the file is now written under a temporary
+/// name and renamed, so the previous content survives a failure.
+#[test]
+fn x_adv_14_failed_write_leaves_truncated_file() {
+    use pseudomanifold::surface::output::{write_mesh_with_attributes, SampledMesh};
+    let dir = std::env::temp_dir().join(format!("x_adv_14_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp dir");
+    let target = dir.join("out.off");
+    std::fs::write(&target, "previous").expect("write");
+    // A directory where the temporary file would go makes the write fail.
+    let blocker = dir.join(format!("out.off.{}.partial", std::process::id()));
+    std::fs::create_dir_all(&blocker).expect("blocker");
+    let m = SampledMesh {
+        positions: vec![[0.0; 3]],
+        normals: vec![[0.0, 0.0, 1.0]],
+        gaussian: vec![0.0],
+        mean: vec![0.0],
+        faces: vec![],
+    };
+    assert!(write_mesh_with_attributes(&target, &m).is_err());
+    assert_eq!(std::fs::read_to_string(&target).expect("read"), "previous");
+    std::fs::remove_dir(&blocker).expect("rm");
+    write_mesh_with_attributes(&target, &m).expect("write");
+    assert!(std::fs::read_to_string(&target).expect("read").starts_with("NOFF"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Unknown output extensions (`.stl`, none) were silently written as PLY.
+#[test]
+fn x_adv_15_unknown_extension_written_as_ply() {
+    use pseudomanifold::surface::output::{write_mesh_with_attributes, SampledMesh};
+    let dir = std::env::temp_dir();
+    for name in ["x_adv_15.stl", "x_adv_15"] {
+        let p = dir.join(name);
+        let _ = std::fs::remove_file(&p);
+        let e = write_mesh_with_attributes(&p, &SampledMesh::default()).expect_err(name);
+        assert_eq!(e.kind(), std::io::ErrorKind::InvalidInput);
+        assert!(!p.exists(), "{name} was written");
+    }
+}
