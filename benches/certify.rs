@@ -1,4 +1,4 @@
-//! Issue 6: speed of the interval provers. Run: `cargo bench --bench certify`.
+//! Speed of the interval provers. Run: `cargo bench --bench certify`.
 //! Small degrees only (the full M = 16 run is `ppm certify --max-degree 16 --jobs 2`, see
 //! `certificates/`): one triangle configuration (L4.2.1 + L4.2.2), one edge (P4.2.3, L4.2.3,
 //! P4.2.1), one vertex (the four star provers and the lens agreement), and a whole run for

@@ -13,9 +13,8 @@ cd "$here"
 [ -d "corpus/$t" ] || ./make_seeds.sh > /dev/null
 mkdir -p logs "artifacts/$t"
 log="logs/$t-$(date +%Y%m%dT%H%M%S).log"
-# cargo-fuzz sets RUSTFLAGS itself, which overrides .cargo/config.toml, so inari's required
-# target CPU must come through the environment (cargo-fuzz appends to it).
-export RUSTFLAGS="${RUSTFLAGS:-} -Ctarget-cpu=haswell"
+# The default build (what the fuzz targets link) needs no target-CPU flag: its multi-precision
+# and interval arithmetic are pure Rust (docs/multiprecision.md).
 # PPM_FUZZ_STABLE=1 forces the stable path (CI: it must not depend on nightly being present).
 if [ "${PPM_FUZZ_STABLE:-0}" != 1 ] && rustup toolchain list 2>/dev/null | grep -q '^nightly'; then
     tc="+nightly"

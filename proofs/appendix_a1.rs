@@ -1,4 +1,4 @@
-//! Exact replay of the Appendix A.1 proofs (issue 7, part 1): Prop. 4.2.4, Lemma 4.2.1 and
+//! Exact replay of the Appendix A.1 proofs: Prop. 4.2.4, Lemma 4.2.1 and
 //! Lemma 4.2.2, each written as the list of steps the paper takes, every step checked exactly
 //! (Q(√3) for rotations by multiples of π/3, h and the disks C, D, F, G; polar-affine maps with
 //! the Π wrap analysis over rational regions of θ/π for R_(u,w), g_v, g_v⁻¹).

@@ -1,4 +1,4 @@
-//! Proof harnesses for the combinatorial core (issue 7, part 2), written the s2n-quic way:
+//! Proof harnesses for the combinatorial core, written the s2n-quic way:
 //! each body is a `#[cfg_attr(kani, kani::proof)]` harness where Kani is available and an
 //! ordinary `#[test]` over a bounded exhaustive domain everywhere else (see proofs/README.md).
 //! The `Any` shim below draws from `kani::any()` under Kani and enumerates otherwise.

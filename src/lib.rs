@@ -26,6 +26,8 @@ pub mod construction;
 pub mod exact;
 pub mod gluing;
 pub mod mesh;
+pub mod msplines;
 pub mod oracle;
 pub mod report;
+pub mod sdiff;
 pub mod surface;

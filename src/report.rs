@@ -1,7 +1,12 @@
 //! Reports as data: every checker returns a [`CheckResult`] (serde-serialisable), rendered as
 //! text or JSON by the CLI. A result always carries the SPEC.md ID of the statement it checks.
+//! Checkers record their findings through the one harness, [`Check`] (see [`harness`] for its
+//! rules: NaN is an offence, evaluation errors are counted, nothing examined is skipped).
 
 use serde::Serialize;
+
+pub mod harness;
+pub use harness::{dev_max, Check, OnError, Restricted};
 
 /// How many offending elements a check lists in full; the total is always counted.
 pub const MAX_WITNESSES: usize = 8;
@@ -79,6 +84,10 @@ pub struct CheckResult {
     pub witnesses: Vec<Witness>,
     /// Number of elements or samples examined.
     pub examined: u64,
+    /// Evaluation errors met (see [`harness::OnError`]): offences or skipped samples, counted
+    /// either way.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub eval_errors: u64,
     /// Seed of the sampler, when the check samples.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
@@ -103,6 +112,7 @@ impl CheckResult {
             offenders: 0,
             witnesses: Vec::new(),
             examined: 0,
+            eval_errors: 0,
             seed: None,
             worst_deviation: None,
             tolerance: None,
@@ -134,6 +144,10 @@ impl CheckResult {
     }
 }
 
+fn is_zero(n: &u64) -> bool {
+    *n == 0
+}
+
 /// Render a list of results as a text table, one line per check plus indented witnesses.
 pub fn render_text(results: &[CheckResult]) -> String {
     use std::fmt::Write;
@@ -143,6 +157,9 @@ pub fn render_text(results: &[CheckResult]) -> String {
         let _ = write!(s, " examined {}", r.examined);
         if r.offenders > 0 {
             let _ = write!(s, ", offending {}", r.offenders);
+        }
+        if r.eval_errors > 0 {
+            let _ = write!(s, ", evaluation errors {}", r.eval_errors);
         }
         if let Some(seed) = r.seed {
             let _ = write!(s, ", seed {seed}");

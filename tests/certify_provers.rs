@@ -1,4 +1,4 @@
-//! Issue 6: interval provers on small degrees, and their refutations (planted faults and the
+//! Certified interval provers on small degrees, and their refutations (planted faults and the
 //! paper's own failures).
 
 use pseudomanifold::certify::{

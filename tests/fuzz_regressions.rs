@@ -1,4 +1,4 @@
-//! Issue 8: every crash, hang or OOM the fuzzers found, replayed from
+//! SPEC `X-fuzz`: every crash, hang or OOM the fuzzers found, replayed from
 //! `tests/data/fuzz-regressions/` (file name = `<target>-<what>.bin`, the raw libFuzzer input),
 //! plus the checker bugs the randomized surfaces found. These always run (no nightly needed).
 

@@ -1,4 +1,4 @@
-//! Cross-validation (issue 3, item 5): on random 1-D affine gluing data the exact decisions of
+//! Cross-validation: on random 1-D affine gluing data the exact decisions of
 //! 3(c) and (4) must agree with independent brute-force procedures that only evaluate the
 //! definitions (membership and φ) on a rational grid of step 1/128. The generator keeps every
 //! relevant endpoint and limit in ℤ/8, so the grid sees every violation and radius 1/32 separates

@@ -1,4 +1,4 @@
-//! Issue 9: the oracle protocol driven from a child process, `ppm diff`, and the self-test —
+//! The oracle protocol driven from a child process, `ppm diff`, and the self-test —
 //! this crate's f64 path treated as "a faster implementation" and diffed against the MPFR
 //! reference, with a planted sign flip in one rotation that the diff must catch.
 

@@ -1,4 +1,4 @@
-//! Issue 9, Chapter 5 part: the surface oracle ops of `ppm oracle`, and `ppm diff --surface`
+//! Chapter 5 part of the oracle: the surface oracle ops of `ppm oracle`, and `ppm diff --surface`
 //! with its self-test — this crate's own f64 sampled surface (written as `ppm sample` writes
 //! it) diffed against the reference, within the printed bound; planted faults (a sign flip in
 //! one rotation of the surface model, a perturbed vertex, a shuffled vertex order) caught or

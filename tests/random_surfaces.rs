@@ -1,4 +1,4 @@
-//! Issue 8: randomized closed surfaces. From the tetrahedron, octahedron, icosahedron and tori,
+//! Randomized closed surfaces. From the tetrahedron, octahedron, icosahedron and tori,
 //! random edge flips, edge splits and 1→3 splits (`mesh::generate::grow`, re-validated exactly
 //! after each step) give closed simplicial surfaces with degrees from 3 to 20+. On them:
 //! the validator accepts (Def. 3.1.6), χ is preserved, s_v is a simplicial isomorphism

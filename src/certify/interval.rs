@@ -18,7 +18,7 @@
 //! (|b|² < 3/4 ⇔ r < cos(π/m_u)).
 
 use crate::construction::scalar::Trit;
-use inari::Interval as I;
+use crate::construction::interval::Interval as I;
 
 /// The point interval `[x, x]`.
 pub fn c(x: f64) -> I {

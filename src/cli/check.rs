@@ -26,9 +26,12 @@ pub struct Ch4Args {
     /// Samples per category per configuration.
     #[arg(long, default_value_t = 24)]
     pub samples: usize,
-    /// `f64` or `mp:BITS` (MPFR), e.g. `mp:256`.
+    /// `f64` or `mp:BITS` (multi-precision, see `--mp-backend`), e.g. `mp:256`.
     #[arg(long, default_value = "f64")]
     pub precision: String,
+    /// Implementation of `mp:BITS`: `astro` (pure Rust, always built) or `mpfr` (feature `mpfr`).
+    #[arg(long, default_value = "astro")]
+    pub mp_backend: String,
     /// Check at most this many distinct configurations of each kind (seeded subset).
     #[arg(long)]
     pub max_configs: Option<usize>,
@@ -54,6 +57,7 @@ impl Ch4Args {
             seed: self.seed,
             samples: self.samples.max(1),
             precision,
+            mp_backend: crate::construction::MpBackend::parse(&self.mp_backend)?,
             max_edge_configs: self.max_configs,
             max_triangle_configs: self.max_configs,
             max_star_configs: self.max_configs,

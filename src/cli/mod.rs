@@ -2,7 +2,9 @@
 //! (Sec. 3.1) and prints every check with its offending elements.
 
 mod check;
+mod msplines;
 mod oracle;
+mod sd;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -128,7 +130,6 @@ enum Command {
         json: bool,
     },
     /// Certified interval proofs of the Chapter 4 conditions for all degree configurations
-    /// (issue 6).
     Certify(crate::certify::cli::CertifyArgs),
     /// Sample the C^∞ surface M by midpoint subdivision through eval (Sec. 6.2) and write it
     /// with per-vertex normals and curvatures (.obj, .off, .ply; PLY also with colours).
@@ -144,6 +145,12 @@ enum Command {
         #[arg(long)]
         quiet: bool,
     },
+    /// Simplicial diffeomorphisms of a planar complex (Mello–Velho): check a map, write curved
+    /// isocurves, search the injectivity claims (SPEC rows SD-…).
+    Sd(sd::SdArgs),
+    /// Manifold splines (Gu–He–Qin): holomorphic 1-form, zero points, affine atlas (SPEC MS-*).
+    #[command(subcommand)]
+    Msplines(msplines::MsCommand),
     /// Evaluate one point of M: eval(σ, λ, μ, ν) of Sec. 6.1.4.
     Eval {
         file: PathBuf,
@@ -231,6 +238,7 @@ pub fn main() -> ExitCode {
             }
         }
         Command::Certify(a) => crate::certify::cli::run(a),
+        Command::Sd(a) => sd::run(a),
         Command::Gluing { file, json } => {
             match crate::gluing::cli::run_gluing_command(&file, json) {
                 Ok((text, all_hold)) => {
@@ -263,6 +271,7 @@ pub fn main() -> ExitCode {
             profile,
             quiet,
         } => crate::surface::cli::run_sample(&file, level, &output, &profile, quiet),
+        Command::Msplines(c) => msplines::run_command(c),
         Command::Eval {
             file,
             face,

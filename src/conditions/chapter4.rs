@@ -13,7 +13,9 @@ use crate::construction::abstract_view::AbstractPpm;
 use crate::construction::checks::{
     check_star_overlaps, run_edge_checks, run_triangle_checks, StarConfig,
 };
-use crate::construction::{EdgeConfig, Mp, Paper, PpmGluing, TriangleConfig};
+#[cfg(feature = "mpfr")]
+use crate::construction::MpMpfr;
+use crate::construction::{EdgeConfig, Mp, MpBackend, Paper, PpmGluing, TriangleConfig};
 use crate::mesh::{SimplicialSurface, VertexId};
 use crate::report::{CheckResult, Witness};
 use rand::seq::SliceRandom;
@@ -28,7 +30,7 @@ use std::collections::BTreeMap;
 pub enum Precision {
     /// IEEE double.
     F64,
-    /// MPFR at the given number of bits.
+    /// Multi-precision at the given number of bits, on [`Ch4Options::mp_backend`].
     Mp(u32),
 }
 
@@ -42,6 +44,8 @@ pub struct Ch4Options {
     pub samples: usize,
     /// Arithmetic of the checks.
     pub precision: Precision,
+    /// Implementation of [`Precision::Mp`].
+    pub mp_backend: MpBackend,
     /// At most this many distinct edge / triangle / star configurations (seeded subset).
     pub max_edge_configs: Option<usize>,
     /// At most this many distinct triangle configurations (seeded subset).
@@ -56,6 +60,7 @@ impl Default for Ch4Options {
             seed: 20240601,
             samples: 24,
             precision: Precision::F64,
+            mp_backend: MpBackend::default(),
             max_edge_configs: None,
             max_triangle_configs: None,
             max_star_configs: None,
@@ -110,7 +115,7 @@ pub struct Ch4Report {
     pub certificates: Option<CertCoverage>,
 }
 
-/// Which Chapter 4 properties of a mesh a certificate (issue 6, `ppm certify`) covers.
+/// Which Chapter 4 properties of a mesh a certificate (`ppm certify`, SPEC section "certified proofs") covers.
 #[derive(Debug, Clone, Serialize)]
 pub struct CertCoverage {
     /// The certificate file, as given.
@@ -253,7 +258,11 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
             );
             let rs = match opts.precision {
                 Precision::F64 => run_edge_checks::<f64>(e, seed, n, 53),
-                Precision::Mp(bits) => run_edge_checks::<Mp>(e, seed, n, bits),
+                Precision::Mp(bits) => match opts.mp_backend {
+                    MpBackend::PureRust => run_edge_checks::<Mp>(e, seed, n, bits),
+                    #[cfg(feature = "mpfr")]
+                    MpBackend::Mpfr => run_edge_checks::<MpMpfr>(e, seed, n, bits),
+                },
             };
             rs.into_iter().map(move |r| (ctx.clone(), r))
         })
@@ -294,7 +303,11 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
             );
             let rs = match opts.precision {
                 Precision::F64 => run_triangle_checks::<f64>(t, seed, n, 53),
-                Precision::Mp(bits) => run_triangle_checks::<Mp>(t, seed, n, bits),
+                Precision::Mp(bits) => match opts.mp_backend {
+                    MpBackend::PureRust => run_triangle_checks::<Mp>(t, seed, n, bits),
+                    #[cfg(feature = "mpfr")]
+                    MpBackend::Mpfr => run_triangle_checks::<MpMpfr>(t, seed, n, bits),
+                },
             };
             rs.into_iter().map(move |r| (ctx.clone(), r))
         })
@@ -328,9 +341,15 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
                     Precision::F64 => {
                         check_star_overlaps::<f64, Paper>(&Paper, s, lens, seed, n, 53)
                     }
-                    Precision::Mp(bits) => {
-                        check_star_overlaps::<Mp, Paper>(&Paper, s, lens, seed, n, bits)
-                    }
+                    Precision::Mp(bits) => match opts.mp_backend {
+                        MpBackend::PureRust => {
+                            check_star_overlaps::<Mp, Paper>(&Paper, s, lens, seed, n, bits)
+                        }
+                        #[cfg(feature = "mpfr")]
+                        MpBackend::Mpfr => {
+                            check_star_overlaps::<MpMpfr, Paper>(&Paper, s, lens, seed, n, bits)
+                        }
+                    },
                 });
             }
             rs.into_iter().map(move |r| (ctx.clone(), r))
@@ -390,7 +409,14 @@ pub fn render(r: &Ch4Report) -> String {
     let c = &r.coverage;
     let prec = match r.options.precision {
         Precision::F64 => "f64 (53-bit significand, ε = 1.1e-16)".to_string(),
-        Precision::Mp(b) => format!("MPFR {b} bits (ε = 2^-{b})"),
+        Precision::Mp(b) => {
+            let used = match r.options.mp_backend {
+                MpBackend::PureRust => Mp::effective_precision(b),
+                #[cfg(feature = "mpfr")]
+                MpBackend::Mpfr => b,
+            };
+            format!("{} {used} bits (ε = 2^-{used})", r.options.mp_backend.describe())
+        }
     };
     let _ = writeln!(
         s,

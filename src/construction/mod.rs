@@ -1,4 +1,4 @@
-//! Chapter 4: the PPM set of gluing data built from a simplicial surface (issue 4).
+//! Chapter 4: the PPM set of gluing data built from a simplicial surface.
 //!
 //! This module holds the pure mathematics of Sec. 4.1 (independent of meshes), generic over
 //! the scalar type ([`scalar::Scalar`]: `f64`, [`scalar::Mp`]), the seeded samplers, and the
@@ -8,8 +8,13 @@
 pub mod abstract_view;
 pub mod checks;
 pub mod figure;
+pub mod interval;
 pub mod maps;
 pub mod mesh_gluing;
+pub mod mp;
+pub mod mp_backend;
+#[cfg(feature = "mpfr")]
+pub mod mp_mpfr;
 pub mod sampling;
 pub mod scalar;
 
@@ -18,4 +23,7 @@ pub use maps::{
     MapError, Paper, Ppm, TriangleConfig, VertexPair, P2,
 };
 pub use mesh_gluing::{GluingError, PpmGluing};
+pub use mp_backend::MpBackend;
 pub use scalar::{Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC};
+#[cfg(feature = "mpfr")]
+pub use scalar::MpMpfr;

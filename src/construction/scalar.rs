@@ -1,9 +1,10 @@
-//! Scalar types for the Chapter 4 maps: `f64` and the multi-precision [`Mp`] (MPFR via `rug`).
+//! Scalar types for the Chapter 4 maps: `f64`, the multi-precision [`Mp`] (pure Rust,
+//! `super::mp`; with feature `mpfr` also `MpMpfr`, MPFR via `rug`) and the interval [`Iv`].
 //!
 //! The maps of Sec. 4.1 are written once, generic over [`Scalar`]. Every decision that the
 //! maps take (a sign, a comparison deciding membership in a set, the branch of Π) goes through
 //! [`Scalar::sign`], which may answer `None` ("cannot decide"). Point types (`f64`, [`Mp`])
-//! answer `None` only for NaN; the interval type [`Iv`] (`inari`) answers `None` when the
+//! answer `None` only for NaN; the interval type [`Iv`] answers `None` when the
 //! enclosure contains zero, and the maps propagate that as
 //! [`Trit::Unknown`] / [`super::maps::MapError::Undecided`] without any change to the maps.
 //!
@@ -13,6 +14,11 @@
 
 use std::cmp::Ordering;
 use std::fmt::Debug;
+
+pub use super::interval::Interval;
+pub use super::mp::Mp;
+#[cfg(feature = "mpfr")]
+pub use super::mp_mpfr::MpMpfr;
 
 /// Default precision of [`Mp`] in bits.
 pub const DEFAULT_MP_PREC: u32 = 256;
@@ -231,101 +237,8 @@ impl Scalar for f64 {
     }
 }
 
-/// A multi-precision float (MPFR, round-to-nearest) whose precision is carried in the value.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Mp(pub rug::Float);
-
-impl Mp {
-    /// Clamp a requested precision to what MPFR accepts.
-    fn clamp(prec: u32) -> u32 {
-        prec.clamp(
-            rug::float::prec_min().max(2),
-            rug::float::prec_max().min(1 << 20),
-        )
-    }
-    fn p2(&self, o: &Self) -> u32 {
-        self.0.prec().max(o.0.prec())
-    }
-    /// `x` rounded to `prec` bits (clamped to what MPFR accepts); same as [`Scalar::from_f64`].
-    pub fn new(prec: u32, x: f64) -> Mp {
-        Mp(rug::Float::with_val(Self::clamp(prec), x))
-    }
-}
-
-impl Scalar for Mp {
-    fn type_name(&self) -> String {
-        format!("mp{}", self.0.prec())
-    }
-    fn from_f64(x: f64, prec: u32) -> Self {
-        Mp(rug::Float::with_val(Self::clamp(prec), x))
-    }
-    fn from_i64(x: i64, prec: u32) -> Self {
-        Mp(rug::Float::with_val(Self::clamp(prec), x))
-    }
-    fn from_ratio(p: i64, q: i64, prec: u32) -> Self {
-        let prec = Self::clamp(prec);
-        if q == 0 {
-            return Mp(rug::Float::with_val(prec, p) / rug::Float::with_val(prec, 0));
-        }
-        Mp(rug::Float::with_val(prec, rug::Rational::from((p, q))))
-    }
-    fn pi(prec: u32) -> Self {
-        Mp(rug::Float::with_val(
-            Self::clamp(prec),
-            rug::float::Constant::Pi,
-        ))
-    }
-    fn to_f64(&self) -> f64 {
-        self.0.to_f64()
-    }
-    fn precision_bits(&self) -> u32 {
-        self.0.prec()
-    }
-    fn add(&self, o: &Self) -> Self {
-        Mp(rug::Float::with_val(self.p2(o), &self.0 + &o.0))
-    }
-    fn sub(&self, o: &Self) -> Self {
-        Mp(rug::Float::with_val(self.p2(o), &self.0 - &o.0))
-    }
-    fn mul(&self, o: &Self) -> Self {
-        Mp(rug::Float::with_val(self.p2(o), &self.0 * &o.0))
-    }
-    fn div(&self, o: &Self) -> Self {
-        Mp(rug::Float::with_val(self.p2(o), &self.0 / &o.0))
-    }
-    fn neg(&self) -> Self {
-        Mp(-self.0.clone())
-    }
-    fn sqrt(&self) -> Self {
-        Mp(self.0.clone().sqrt())
-    }
-    fn sin(&self) -> Self {
-        Mp(self.0.clone().sin())
-    }
-    fn cos(&self) -> Self {
-        Mp(self.0.clone().cos())
-    }
-    fn abs(&self) -> Self {
-        Mp(self.0.clone().abs())
-    }
-    fn atan2(&self, x: &Self) -> Self {
-        Mp(rug::Float::with_val(self.p2(x), self.0.atan2_ref(&x.0)))
-    }
-    fn sign(&self) -> Option<Ordering> {
-        if self.0.is_nan() {
-            None
-        } else if self.0.is_zero() {
-            Some(Ordering::Equal)
-        } else if self.0.is_sign_negative() {
-            Some(Ordering::Less)
-        } else {
-            Some(Ordering::Greater)
-        }
-    }
-}
-
-/// A closed interval with outward-rounded endpoints (`inari`, IEEE 1788), for the certified
-/// provers of issue 6 (`crate::certify`). Every operation returns an enclosure of the exact
+/// A closed interval with outward-rounded endpoints ([`Interval`], IEEE 1788 semantics), for the certified
+/// provers (`crate::certify`). Every operation returns an enclosure of the exact
 /// result over all points of the operands, so a decision taken by [`Scalar::sign`] (which
 /// answers `None` when the enclosure contains 0) holds for every point of the inputs.
 ///
@@ -334,12 +247,12 @@ impl Scalar for Mp {
 /// reports such a box as undecided (the sign of `y` is unknown), and the provers split it
 /// (`certify::interval::principal_pieces`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Iv(pub inari::Interval);
+pub struct Iv(pub Interval);
 
 impl Iv {
     /// `[lo, hi]`; an invalid pair (lo > hi, NaN) gives the entire line (a sound enclosure).
     pub fn new(lo: f64, hi: f64) -> Iv {
-        Iv(inari::Interval::try_from((lo, hi)).unwrap_or(inari::Interval::ENTIRE))
+        Iv(Interval::try_from((lo, hi)).unwrap_or(Interval::ENTIRE))
     }
     /// The degenerate interval [x, x].
     pub fn point(x: f64) -> Iv {
@@ -375,7 +288,7 @@ impl Scalar for Iv {
         Iv(Self::from_i64(p, prec).0 / Self::from_i64(q, prec).0)
     }
     fn pi(_prec: u32) -> Self {
-        Iv(inari::Interval::PI)
+        Iv(Interval::PI)
     }
     fn to_f64(&self) -> f64 {
         self.0.mid()
@@ -414,7 +327,7 @@ impl Scalar for Iv {
         let (y, xx) = (self.0, x.0);
         if xx.sup() < 0.0 && y.inf() < 0.0 && y.sup() > 0.0 {
             // Straddles the cut of Π: the principal angles lie near ±π.
-            return Iv(inari::Interval::PI.convex_hull(-inari::Interval::PI));
+            return Iv(Interval::PI.convex_hull(-Interval::PI));
         }
         Iv(y.atan2(xx))
     }

@@ -1,5 +1,5 @@
 //! Exact replay machinery for the Appendix A.1 proofs and the Sec. 6.1.4 eval consistency
-//! argument (issue 7, part 1).
+//! argument.
 //!
 //! * [`q3`] — the field Q(√3), exact;
 //! * [`plane`] — points, affine maps (M_{kπ/3}, h of Def. 4.1.7), disks C, D, F, G over Q(√3);

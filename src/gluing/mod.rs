@@ -1,4 +1,4 @@
-//! Secs. 3.2–3.5: abstract sets of gluing data (Def. 3.4.1) and their checkers (issue 3).
+//! Secs. 3.2–3.5: abstract sets of gluing data (Def. 3.4.1) and their checkers.
 //!
 //! * [`data`] — the [`GluingData`] trait (Def. 3.4.1), dimension- and scalar-generic.
 //! * [`sampled`] — sampled checkers of every condition, for any implementor.

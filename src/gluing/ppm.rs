@@ -12,7 +12,7 @@ use super::exact1d::Exact1d;
 use super::relation::{classes, GridSample};
 use super::sampled::{sampled_k, SampleConfig};
 use super::tolerance::tol;
-use crate::report::{CheckResult, Witness};
+use crate::report::{Check, CheckResult, OnError, Witness};
 use num_traits::Float;
 use serde_json::json;
 
@@ -33,35 +33,39 @@ where
     G: GluingData<N>,
     F: Fn(Idx, &Point<G::S, N>) -> Vec<f64>,
 {
-    let mut r = CheckResult::new("D3.5.1(C)", "θ_i = θ_j ∘ φ_ji on Ω_ij").with_note("sampled");
-    r.seed = Some(cfg.seed);
+    let mut r = Check::new("D3.5.1(C)", "θ_i = θ_j ∘ φ_ji on Ω_ij")
+        .with_note("sampled")
+        .with_seed(cfg.seed);
     let mut rng = cfg.rng(20);
     for (i, j) in sampled_k(g, cfg) {
         for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
-            let Some(y) = g.phi(j, i, &x) else { continue };
-            r.examined += 1;
+            let Some(y) = g.phi(j, i, &x) else {
+                // The offence is D3.4.1(3)'s; here the sample cannot be examined.
+                r.error(
+                    OnError::Skip,
+                    "φ_ji(x) undefined (reported by D3.4.1(3))",
+                    || Witness::new(fmt_point(&x), point_json(&x)),
+                );
+                continue;
+            };
             let (a, b) = (theta(i, &x), theta(j, &y));
             let d = vdist(&a, &b);
             let mag = vnorm(&a)
                 .max(super::data::norm(&x))
                 .max(super::data::norm(&y));
             let t = tol::<G::S>(mag);
-            r.worst_deviation = Some(r.worst_deviation.unwrap_or(0.0).max(d));
-            r.tolerance = Some(r.tolerance.unwrap_or(0.0).max(t));
-            if d > t {
-                r.offend(|| {
-                    Witness::new(
-                        format!(
-                            "(i,j)=({i},{j}): θ_{i}({}) = {a:?} ≠ θ_{j}(φ_{j}{i}(x)) = {b:?}",
-                            fmt_point(&x)
-                        ),
-                        json!({"kind": "c", "i": i, "j": j, "x": point_json(&x), "deviation": d}),
-                    )
-                });
-            }
+            r.deviation_within(d, t, || {
+                Witness::new(
+                    format!(
+                        "(i,j)=({i},{j}): θ_{i}({}) = {a:?} ≠ θ_{j}(φ_{j}{i}(x)) = {b:?}",
+                        fmt_point(&x)
+                    ),
+                    json!({"kind": "c", "i": i, "j": j, "x": point_json(&x), "deviation": d}),
+                )
+            });
         }
     }
-    r
+    r.finish("")
 }
 
 /// Smallest |θ_j(b) − target| over b ∈ Ω_j found from the sample cloud by compass search.
@@ -225,11 +229,10 @@ where
 /// class \[x\] of M_G. Checked on the classes of a grid sample of exact 1-D data; a class with two
 /// different θ-values is a witness that Θ is not well defined (which (C) excludes).
 pub fn check_p3_5_1(g: &Exact1d, theta: impl Fn(Idx, f64) -> Vec<f64>, m: u32) -> CheckResult {
-    let mut r = CheckResult::new("P3.5.1", "Θ well defined on M_G, θ_i = Θ ∘ τ_i")
-        .with_note("on the classes of a grid sample (exact ∼, f64 θ)");
+    let mut r = Check::new("P3.5.1", "Θ well defined on M_G, θ_i = Θ ∘ τ_i")
+        .with_note("on the classes of a grid sample (exact ∼, f64 θ); examined = pairs in a class");
     let s = GridSample::new(g, m);
     for c in classes(g, &s) {
-        r.examined += 1;
         let Some(first) = c.first() else { continue };
         let v0 = theta(first.0, q_to_f64(&first.1));
         for p in &c[1..] {
@@ -240,27 +243,23 @@ pub fn check_p3_5_1(g: &Exact1d, theta: impl Fn(Idx, f64) -> Vec<f64>, m: u32) -
                     .max(q_to_f64(&p.1).abs())
                     .max(q_to_f64(&first.1).abs()),
             );
-            r.worst_deviation = Some(r.worst_deviation.unwrap_or(0.0).max(d));
-            r.tolerance = Some(r.tolerance.unwrap_or(0.0).max(t));
-            if d > t {
-                r.offend(|| {
-                    Witness::new(
-                        format!(
-                            "[{}∈Ω_{}] = [{}∈Ω_{}] in M_G but θ_{}({}) = {v0:?} ≠ θ_{}({}) = {v:?}",
-                            fmt_q(&first.1),
-                            first.0,
-                            fmt_q(&p.1),
-                            p.0,
-                            first.0,
-                            fmt_q(&first.1),
-                            p.0,
-                            fmt_q(&p.1)
-                        ),
-                        json!({"kind": "theta_not_constant", "deviation": d}),
-                    )
-                });
-            }
+            r.deviation_within(d, t, || {
+                Witness::new(
+                    format!(
+                        "[{}∈Ω_{}] = [{}∈Ω_{}] in M_G but θ_{}({}) = {v0:?} ≠ θ_{}({}) = {v:?}",
+                        fmt_q(&first.1),
+                        first.0,
+                        fmt_q(&p.1),
+                        p.0,
+                        first.0,
+                        fmt_q(&first.1),
+                        p.0,
+                        fmt_q(&p.1)
+                    ),
+                    json!({"kind": "theta_not_constant", "deviation": d}),
+                )
+            });
         }
     }
-    r
+    r.finish("")
 }

@@ -107,7 +107,7 @@ pub fn torus(n: u32, m: u32) -> RawMesh {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Random closed surfaces by local surgery (issue 8): edge flips, edge splits and 1→3 face
+// Random closed surfaces by local surgery (SPEC `D3.1.6-random`): edge flips, edge splits and 1→3 face
 // splits on a closed, consistently oriented triangle list. Each operation keeps the triangle
 // list a closed combinatorial surface (every edge in two triangles, every link one cycle, same
 // Euler characteristic for flips, +0 for splits since ΔV − ΔE + ΔF = 0); the geometry (Def.

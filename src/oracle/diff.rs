@@ -178,9 +178,8 @@ fn compare(theirs: &Value, reference: Option<&Value>, bits: u32) -> Result<f64, 
     for (a, b) in th.iter().zip(&ours) {
         let a = a.as_f64().ok_or("value component is not a number")?;
         let rb = match (b.as_str(), b.as_f64()) {
-            (Some(b), _) => rug::Float::parse(b)
-                .map(|p| Mp(rug::Float::with_val(bits, p)))
-                .map_err(|e| e.to_string())?,
+            (Some(b), _) => Mp::parse_decimal(b, bits)
+                .ok_or_else(|| format!("reference component {b:?} is not a decimal number"))?,
             (None, Some(x)) => Mp::from_f64(x, bits),
             _ => return Err("reference component is not a number".into()),
         };

@@ -1,4 +1,4 @@
-//! The oracle interface (issue 9): reference quantities of the construction, each evaluated in
+//! The oracle interface: reference quantities of the construction, each evaluated in
 //! f64 *and* in MPFR at a chosen precision, with the difference as the error estimate of the
 //! f64 value. Faster implementations compare against these, point by point.
 //!
@@ -16,10 +16,9 @@ pub use protocol::{OracleError, Request, Response, Session};
 
 use crate::construction::{Mp, Scalar};
 
-/// Render an MPFR value with all its significant decimal digits.
+/// Render a multi-precision value with all its significant decimal digits.
 pub fn mp_decimal(x: &Mp) -> String {
-    let digits = (f64::from(x.0.prec()) * std::f64::consts::LOG10_2).ceil() as usize + 2;
-    x.0.to_string_radix(10, Some(digits))
+    x.to_decimal()
 }
 
 /// Distance between an f64 vector and an MPFR vector, computed in MPFR and rounded up to f64.

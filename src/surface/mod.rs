@@ -1,4 +1,4 @@
-//! Chapter 5 and Sec. 6.1.4: shape functions, weight functions, parametrizations (issue 5).
+//! Chapter 5 and Sec. 6.1.4: shape functions, weight functions, parametrizations.
 //!
 //! * [`target`] — Sec. 5.1: the surface S′ to approximate (PN triangles; pluggable).
 //! * [`bezier`], [`fit`] — Def. 5.2.1 and Sec. 5.2: shape functions ψ_v by least squares.

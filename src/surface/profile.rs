@@ -5,7 +5,7 @@
 //!   outside P_v dropped; Sec. 6.1.4: eval picks Ω_u if q′ ∈ int(C), else Ω_x if q′ ∈ int(D),
 //!   else Ω_w.
 //! * [`Profile::AuthorsCode`]: the parameters of the authors' published C++ implementation (as
-//!   described in issue 5; their code was not consulted): l = min(m_v + 1, 7), a
+//!   described in the project's design notes; their code was not consulted): l = min(m_v + 1, 7), a
 //!   (2l + 1) × (2l + 1) grid on □_v clipped to P_v, and eval picks the p-domain of the corner
 //!   of the canonical triangle (0,0), (1,0), (1/2, −√3/2) nearest to q′, blending in θ only v
 //!   and the two other vertices of the evaluated triangle.

@@ -30,6 +30,13 @@ impl SurfaceScalar for f64 {
 
 impl SurfaceScalar for Mp {
     fn exp(&self) -> Self {
-        Mp(self.0.clone().exp())
+        Mp::exp(self)
+    }
+}
+
+#[cfg(feature = "mpfr")]
+impl SurfaceScalar for crate::construction::MpMpfr {
+    fn exp(&self) -> Self {
+        crate::construction::MpMpfr::exp(self)
     }
 }

@@ -1,4 +1,4 @@
-//! The exact 1-D backend (issue 3, item 3): gluing data in ℝ¹ with rational interval endpoints
+//! The exact 1-D backend: gluing data in ℝ¹ with rational interval endpoints
 //! and piecewise-affine transition maps, where every condition of Def. 3.4.1 is decided.
 
 pub mod data;

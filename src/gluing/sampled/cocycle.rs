@@ -5,55 +5,51 @@
 use super::{sampled_k, SampleConfig};
 use crate::gluing::data::{dist, fmt_point, norm, point_json, GluingData};
 use crate::gluing::tolerance::tol;
-use crate::report::{CheckResult, Witness};
+use crate::report::{Check, CheckResult, OnError, Witness};
 use serde_json::json;
 
-fn track(r: &mut CheckResult, dev: f64, t: f64) {
-    r.worst_deviation = Some(r.worst_deviation.unwrap_or(0.0).max(dev));
-    r.tolerance = Some(r.tolerance.unwrap_or(0.0).max(t));
-}
+/// φ returned `None` where the statement claims it is defined.
+const UNDEFINED: &str = "φ undefined";
 
 /// Def. 3.4.1(3), the part a sampler can refute: φ_ji is defined on Ω_ij and maps it into Ω_ji.
 /// (Surjectivity onto Ω_ji and injectivity follow from 3(b), checked separately.)
 pub fn check_maps_into<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(3)", "φ_ji : Ω_ij → Ω_ji defined, into Ω_ji")
+    let mut r = Check::new("D3.4.1(3)", "φ_ji : Ω_ij → Ω_ji defined, into Ω_ji")
         .with_note("sampled; bijectivity via 3(b)");
     r.seed = Some(cfg.seed);
     let mut rng = cfg.rng(3);
     for (i, j) in sampled_k(g, cfg) {
         for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
-            r.examined += 1;
             match g.phi(j, i, &x) {
-                None => r.offend(|| {
+                None => r.error(OnError::Offence, UNDEFINED, || {
                     Witness::new(
                         format!("φ_{j}{i}({}) undefined though the point is in Ω_{i}{j}", fmt_point(&x)),
                         json!({"kind": "undefined", "i": i, "j": j, "x": point_json(&x)}),
                     )
                 }),
-                Some(y) if !g.in_gluing_domain(j, i, &y) => r.offend(|| {
+                Some(y) if !g.in_gluing_domain(j, i, &y) => r.holds(false, || {
                     Witness::new(
                         format!("φ_{j}{i}({}) = {} ∉ Ω_{j}{i}", fmt_point(&x), fmt_point(&y)),
                         json!({"kind": "not_into", "i": i, "j": j, "x": point_json(&x), "y": point_json(&y)}),
                     )
                 }),
-                Some(_) => {}
+                Some(_) => r.examined(1),
             }
         }
     }
-    r
+    r.finish("")
 }
 
 /// Def. 3.4.1(3a): φ_ii = id on Ω_i.
 pub fn check_3a<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(3a)", "φ_ii = id").with_note("sampled");
+    let mut r = Check::new("D3.4.1(3a)", "φ_ii = id").with_note("sampled");
     r.seed = Some(cfg.seed);
     let mut rng = cfg.rng(4);
     for i in g.indices() {
         for x in g.sample_p_domain(i, &mut rng, cfg.n) {
-            r.examined += 1;
             let t = tol::<G::S>(norm(&x)) * g.amplification();
             match g.phi(i, i, &x) {
-                None => r.offend(|| {
+                None => r.error(OnError::Offence, UNDEFINED, || {
                     Witness::new(
                         format!("φ_{i}{i}({}) undefined", fmt_point(&x)),
                         json!({"kind": "undefined", "i": i, "x": point_json(&x)}),
@@ -61,35 +57,39 @@ pub fn check_3a<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                 }),
                 Some(y) => {
                     let d = dist(&x, &y);
-                    track(&mut r, d, t);
-                    if d > t {
-                        r.offend(|| {
-                            Witness::new(
-                                format!("φ_{i}{i}({}) = {} ≠ {}", fmt_point(&x), fmt_point(&y), fmt_point(&x)),
-                                json!({"kind": "not_identity", "i": i, "x": point_json(&x), "phi": point_json(&y), "deviation": d}),
-                            )
-                        });
-                    }
+                    r.deviation_within(d, t, || {
+                        Witness::new(
+                            format!("φ_{i}{i}({}) = {} ≠ {}", fmt_point(&x), fmt_point(&y), fmt_point(&x)),
+                            json!({"kind": "not_identity", "i": i, "x": point_json(&x), "phi": point_json(&y), "deviation": d}),
+                        )
+                    });
                 }
             }
         }
     }
-    r
+    r.finish("")
 }
 
 /// Def. 3.4.1(3b): φ_ij = φ_ji⁻¹, checked as φ_ij(φ_ji(x)) = x for sampled x ∈ Ω_ij, for every
 /// (i, j) ∈ K (both orders, so both one-sided inverse laws are sampled).
 pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(3b)", "φ_ij = φ_ji⁻¹").with_note("sampled");
+    let mut r = Check::new("D3.4.1(3b)", "φ_ij = φ_ji⁻¹").with_note("sampled");
     r.seed = Some(cfg.seed);
     let mut rng = cfg.rng(5);
     for (i, j) in sampled_k(g, cfg) {
         for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
-            r.examined += 1;
-            let Some(y) = g.phi(j, i, &x) else { continue }; // reported by D3.4.1(3)
+            let Some(y) = g.phi(j, i, &x) else {
+                // The offence is D3.4.1(3)'s; here the sample cannot be examined.
+                r.error(
+                    OnError::Skip,
+                    "φ_ji(x) undefined (reported by D3.4.1(3))",
+                    || Witness::new(fmt_point(&x), point_json(&x)),
+                );
+                continue;
+            };
             let t = tol::<G::S>(norm(&x).max(norm(&y))) * g.amplification();
             match g.phi(i, j, &y) {
-                None => r.offend(|| {
+                None => r.error(OnError::Offence, UNDEFINED, || {
                     Witness::new(
                         format!(
                             "φ_{i}{j}(φ_{j}{i}({})) undefined: φ_{j}{i}(x) = {} ∉ Ω_{j}{i}",
@@ -101,20 +101,17 @@ pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                 }),
                 Some(z) => {
                     let d = dist(&x, &z);
-                    track(&mut r, d, t);
-                    if d > t {
-                        r.offend(|| {
-                            Witness::new(
-                                format!("φ_{i}{j}(φ_{j}{i}({})) = {} ≠ x", fmt_point(&x), fmt_point(&z)),
-                                json!({"kind": "not_inverse", "i": i, "j": j, "x": point_json(&x), "back": point_json(&z), "deviation": d}),
-                            )
-                        });
-                    }
+                    r.deviation_within(d, t, || {
+                        Witness::new(
+                            format!("φ_{i}{j}(φ_{j}{i}({})) = {} ≠ x", fmt_point(&x), fmt_point(&z)),
+                            json!({"kind": "not_inverse", "i": i, "j": j, "x": point_json(&x), "back": point_json(&z), "deviation": d}),
+                        )
+                    });
                 }
             }
         }
     }
-    r
+    r.finish("")
 }
 
 /// Def. 3.4.1(3c), the full cocycle condition: for all i, j, k with Ω_ji ∩ Ω_jk ≠ ∅,
@@ -123,7 +120,7 @@ pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
 /// also sampled directly and pulled back with φ_ij (relying on 3(b), checked separately), so
 /// that small intersections are hit.
 pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         "D3.4.1(3c)",
         "cocycle: domain inclusion and φ_ki = φ_kj∘φ_ji",
     )
@@ -160,9 +157,8 @@ pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                     if !(g.in_gluing_domain(j, i, &y) && g.in_gluing_domain(j, k, &y)) {
                         continue;
                     }
-                    r.examined += 1;
                     if !g.in_gluing_domain(i, k, x) {
-                        r.offend(|| {
+                        r.holds(false, || {
                             Witness::new(
                                 format!(
                                     "(i,j,k)=({i},{j},{k}): x = {} ∈ φ_{j}{i}⁻¹(Ω_{j}{i} ∩ Ω_{j}{k}) but x ∉ Ω_{i}{k} (domain inclusion fails)",
@@ -174,27 +170,31 @@ pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                         continue;
                     }
                     let (Some(z1), Some(z2)) = (g.phi(k, i, x), g.phi(k, j, &y)) else {
+                        // x ∈ Ω_ik and φ_ji(x) ∈ Ω_jk: both sides are claimed defined.
+                        r.error(OnError::Offence, UNDEFINED, || {
+                            Witness::new(
+                                format!("(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) or φ_{k}{j}(φ_{j}{i}(x)) undefined", fmt_point(x)),
+                                json!({"kind": "undefined", "i": i, "j": j, "k": k, "x": point_json(x)}),
+                            )
+                        });
                         continue;
                     };
                     let d = dist(&z1, &z2);
                     let t = tol::<G::S>(norm(&z1).max(norm(x))) * g.amplification();
-                    track(&mut r, d, t);
-                    if d > t {
-                        r.offend(|| {
-                            Witness::new(
-                                format!(
-                                    "(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}(φ_{j}{i}(x)) = {}",
-                                    fmt_point(x), fmt_point(&z1), fmt_point(&z2)
-                                ),
-                                json!({"kind": "equation", "i": i, "j": j, "k": k, "x": point_json(x), "lhs": point_json(&z1), "rhs": point_json(&z2), "deviation": d}),
-                            )
-                        });
-                    }
+                    r.deviation_within(d, t, || {
+                        Witness::new(
+                            format!(
+                                "(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}(φ_{j}{i}(x)) = {}",
+                                fmt_point(x), fmt_point(&z1), fmt_point(&z2)
+                            ),
+                            json!({"kind": "equation", "i": i, "j": j, "k": k, "x": point_json(x), "lhs": point_json(&z1), "rhs": point_json(&z2), "deviation": d}),
+                        )
+                    });
                 }
             }
         }
     }
-    r
+    r.finish("")
 }
 
 /// App. A.2, the Grimm–Hughes proto-manifold cocycle condition: for all x ∈ Ω_ij ∩ Ω_ik,
@@ -216,7 +216,7 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
     } else {
         ("CA.2-GH", "Grimm–Hughes cocycle (where both sides defined)")
     };
-    let mut r = CheckResult::new(id, name).with_note("sampled over all triples (i, j, k)");
+    let mut r = Check::new(id, name).with_note("sampled over all triples (i, j, k)");
     r.seed = Some(cfg.seed);
     let mut rng = cfg.rng(if strict { 8 } else { 7 });
     let ids = g.indices();
@@ -230,7 +230,6 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
                     if !(g.in_gluing_domain(i, j, x) && g.in_gluing_domain(i, k, x)) {
                         continue;
                     }
-                    r.examined += 1;
                     let y = g.phi(j, i, x);
                     let rhs = y.as_ref().and_then(|y| g.phi(k, j, y));
                     let lhs = g.phi(k, i, x);
@@ -238,27 +237,26 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
                         (Some(z1), Some(z2)) => {
                             let d = dist(&z1, &z2);
                             let t = tol::<G::S>(norm(&z1).max(norm(x))) * g.amplification();
-                            track(&mut r, d, t);
-                            if d > t {
-                                r.offend(|| {
-                                    Witness::new(
-                                        format!("(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}∘φ_{j}{i}(x) = {}", fmt_point(x), fmt_point(&z1), fmt_point(&z2)),
-                                        json!({"kind": "equation", "i": i, "j": j, "k": k, "x": point_json(x), "deviation": d}),
-                                    )
-                                });
-                            }
+                            r.deviation_within(d, t, || {
+                                Witness::new(
+                                    format!("(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}∘φ_{j}{i}(x) = {}", fmt_point(x), fmt_point(&z1), fmt_point(&z2)),
+                                    json!({"kind": "equation", "i": i, "j": j, "k": k, "x": point_json(x), "deviation": d}),
+                                )
+                            });
                         }
-                        (_, None) if strict => r.offend(|| {
+                        (_, None) if strict => r.holds(false, || {
                             Witness::new(
                                 format!("(i,j,k)=({i},{j},{k}): x = {} ∈ Ω_{i}{j} ∩ Ω_{i}{k} but φ_{k}{j}∘φ_{j}{i}(x) undefined (φ_{j}{i}(x) ∉ Ω_{j}{k})", fmt_point(x)),
                                 json!({"kind": "rhs_undefined", "i": i, "j": j, "k": k, "x": point_json(x)}),
                             )
                         }),
-                        _ => {}
+                        // Where a side is undefined the non-strict reading requires nothing;
+                        // the sample still counts as examined.
+                        _ => r.examined(1),
                     }
                 }
             }
         }
     }
-    r
+    r.finish("")
 }

@@ -2,7 +2,7 @@
 
 use super::SampleConfig;
 use crate::gluing::data::{fmt_point, norm, point_json, GluingData, Point};
-use crate::report::{CheckResult, Witness};
+use crate::report::{Check, CheckResult, Witness};
 use num_traits::Float;
 use serde_json::json;
 
@@ -39,7 +39,7 @@ fn open_at<S: Float, const N: usize>(
 
 /// Def. 3.4.1(1): I ≠ ∅; every Ω_i is non-empty and open; Ω_i ∩ Ω_j = ∅ for i ≠ j.
 pub fn check_1<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(1)", "p-domains non-empty, open, disjoint").with_note(
+    let mut r = Check::new("D3.4.1(1)", "p-domains non-empty, open, disjoint").with_note(
         "sampled: openness = axis neighbours at some h (down to the resolution at p) inside",
     );
     r.seed = Some(cfg.seed);
@@ -90,13 +90,13 @@ pub fn check_1<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> C
             }
         }
     }
-    r
+    r.finish("")
 }
 
 /// Def. 3.4.1(2): Ω_ij is an open subset of Ω_i, Ω_ii = Ω_i, and Ω_ij ≠ ∅ ⇔ Ω_ji ≠ ∅.
 pub fn check_2<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(2)", "Ω_ij ⊆ Ω_i open, Ω_ii = Ω_i, K symmetric")
-        .with_note("sampled");
+    let mut r =
+        Check::new("D3.4.1(2)", "Ω_ij ⊆ Ω_i open, Ω_ii = Ω_i, K symmetric").with_note("sampled");
     r.seed = Some(cfg.seed);
     let mut rng = cfg.rng(2);
     let ids = g.indices();
@@ -160,5 +160,5 @@ pub fn check_2<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> C
             }
         }
     }
-    r
+    r.finish("")
 }

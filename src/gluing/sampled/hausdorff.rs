@@ -12,7 +12,7 @@
 
 use super::{sampled_k, SampleConfig};
 use crate::gluing::data::{dist, fmt_point, from_f64, point_json, to_f64, GluingData, Idx, Point};
-use crate::report::{CheckResult, Witness};
+use crate::report::{Check, CheckResult, Witness};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;
@@ -141,7 +141,7 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
     g: &G,
     cfg: &SampleConfig,
 ) -> (CheckResult, Vec<SampledSeparation>) {
-    let mut r = CheckResult::new("D3.4.1(4)", "Hausdorff condition (separating balls)");
+    let mut r = Check::new("D3.4.1(4)", "Hausdorff condition (separating balls)");
     r.seed = Some(cfg.seed);
     let scale = g.scale();
     let thr = SEPARATION_FACTOR * scale;
@@ -178,6 +178,25 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
                         .collect()
                 })
                 .collect();
+            // Rule 1 of the harness: a non-finite image is an offence (a NaN distance would
+            // otherwise read as "nothing sampled near x" below).
+            if let Some(z) = images
+                .iter()
+                .flatten()
+                .find(|z| !z.iter().all(|c| to_f64(*c).is_finite()))
+            {
+                r.holds(false, || {
+                    Witness::new(
+                        format!(
+                            "(i,j)=({i},{j}): φ_{j}{i} near x = {} is not finite: {}",
+                            fmt_point(x),
+                            fmt_point(z)
+                        ),
+                        json!({"kind": "non_finite", "i": i, "j": j, "x": point_json(x)}),
+                    )
+                });
+                continue;
+            }
             for y in &ys_x {
                 r.examined += 1;
                 let m: Vec<f64> = images
@@ -235,7 +254,7 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
         if listed.is_empty() { "" } else { "; radii " },
         listed.join("; ")
     );
-    (r, seps)
+    (r.finish(""), seps)
 }
 
 /// Def. 3.4.1(4), sampled (see [`check_4_with_radii`]).

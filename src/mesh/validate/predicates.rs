@@ -3,7 +3,7 @@
 //! the exact determinant, which is all these tests use. Inputs must be finite.
 //!
 //! Shewchuk's arithmetic is exact only while no intermediate product overflows or underflows
-//! (issue 8: the `validate` fuzz target found a self-intersection verdict that depended on the
+//! (SPEC `X-fuzz`: the `validate` fuzz target found a self-intersection verdict that depended on the
 //! face order for a vertex at z = −8.5e305). Outside [`SAFE_MIN`, `SAFE_MAX`] the sign is
 //! computed with exact rationals instead (every finite f64 is a dyadic rational, so exact big integers suffice).
 

@@ -1,0 +1,199 @@
+//! Results and the certificate format (serde), and its rendering as check results.
+
+use super::*;
+
+// ---------------------------------------------------------------------------------------------
+// Results and certificates.
+// ---------------------------------------------------------------------------------------------
+
+/// Outcome of one prover run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Outcome {
+    /// Proven on the whole stated set (no unresolved boxes).
+    Certified,
+    /// Proven outside the unresolved boxes (their number and δ reported).
+    CertifiedOutsideDelta,
+    /// A counterexample box was found.
+    Refuted,
+    /// Neither (budget exhausted away from a tight boundary).
+    Inconclusive,
+}
+
+/// A counterexample: the centre of a box on which the property fails for every point.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CertWitness {
+    /// The point, in the chart named by `text`.
+    pub point: [f64; 2],
+    /// The point, its chart and what fails there.
+    pub text: String,
+    /// The f64 evaluator of `construction::maps` confirms the failure at `point`.
+    pub f64_confirms: bool,
+    /// The MPFR (256-bit) evaluator confirms it.
+    pub mp_confirms: bool,
+}
+
+/// The result of one property for one configuration.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PropertyResult {
+    /// The configuration.
+    pub key: ConfigKey,
+    /// SPEC ID, e.g. `L4.2.2(cert)`.
+    pub property: String,
+    /// How the proof ended (certified, possibly outside δ; refuted; inconclusive).
+    pub outcome: Outcome,
+    /// What exactly was proven (or refuted).
+    pub statement: String,
+    /// Proven bound (meaning in `statement`), if any.
+    pub bound: Option<f64>,
+    /// Tight bound at box centres (point intervals), if measured.
+    pub centre_bound: Option<f64>,
+    /// δ: the largest diameter (in the chart) of an unresolved box.
+    pub delta: Option<f64>,
+    /// Boxes evaluated by branch and bound.
+    pub boxes: u64,
+    /// Deepest subdivision level reached.
+    pub max_depth: u32,
+    /// Boxes left undecided: at the maximum depth, or pending when the box budget ran out.
+    pub unresolved: u64,
+    /// The counterexample, when refuted.
+    pub witness: Option<CertWitness>,
+    /// Time spent proving this result, in ms.
+    pub millis: u64,
+}
+
+impl PropertyResult {
+    /// As a report row.
+    pub fn to_check_result(&self) -> CheckResult {
+        let verdict = match self.outcome {
+            Outcome::Certified => Verdict::Holds,
+            Outcome::CertifiedOutsideDelta => Verdict::HoldsRestricted {
+                domain: format!(
+                    "outside {} unresolved boxes of diameter ≤ {:.1e}",
+                    self.unresolved,
+                    self.delta.unwrap_or(0.0)
+                ),
+            },
+            Outcome::Refuted => Verdict::Fails,
+            Outcome::Inconclusive => Verdict::Skipped {
+                reason: "prover budget exhausted".into(),
+            },
+        };
+        let witnesses = self
+            .witness
+            .iter()
+            .map(|w| {
+                Witness::new(
+                    w.text.clone(),
+                    serde_json::json!({"point": w.point, "f64": w.f64_confirms, "mp": w.mp_confirms}),
+                )
+            })
+            .collect::<Vec<_>>();
+        // Through the harness: a certificate that examined no box is skipped, never "holds".
+        let r = CheckResult {
+            id: self.property.clone(),
+            name: format!("{} [{}]", self.statement, self.key),
+            verdict,
+            offenders: witnesses.len() as u64,
+            witnesses,
+            examined: self.boxes,
+            eval_errors: 0,
+            seed: None,
+            worst_deviation: self.bound,
+            tolerance: self.delta,
+            note: self.statement.clone(),
+        };
+        crate::report::Check::from_result(r).finish("")
+    }
+}
+
+/// A certificate file: all results of one run (or a merge of shards).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Certificate {
+    /// File format tag, `pseudomanifold-certificate/1`.
+    pub format: String,
+    /// M: every configuration with degrees 3..=M is in scope.
+    pub max_degree: u32,
+    /// [`Model::name`] of the construction proven.
+    pub model: String,
+    /// `(k, n)` for a shard, `None` for a complete run or a merge.
+    pub shard: Option<(usize, usize)>,
+    /// Number of configurations proven (summed over the shards of a merge).
+    pub configs: usize,
+    /// One result per (configuration, property).
+    pub results: Vec<PropertyResult>,
+    /// Wall-clock time of the run, in ms (the largest shard's for a merge).
+    pub wall_millis: u64,
+    /// Worker threads used (the first shard's for a merge).
+    pub jobs: usize,
+    /// Statements shared by many results, by property: a result whose `statement` is empty
+    /// in the file has this one ([`Certificate::compact`], [`Certificate::expand`]).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub statements: std::collections::BTreeMap<String, String>,
+}
+
+impl Certificate {
+    /// Move each property's most common statement into `statements` and clear it in the
+    /// results that share it (the file format; statements are long, results many).
+    pub fn compact(&mut self) {
+        use std::collections::BTreeMap;
+        let mut counts: BTreeMap<(&str, &str), usize> = BTreeMap::new();
+        for r in &self.results {
+            *counts.entry((&r.property, &r.statement)).or_default() += 1;
+        }
+        let mut best: BTreeMap<String, (usize, String)> = BTreeMap::new();
+        for ((p, st), n) in counts {
+            let e = best.entry(p.to_string()).or_insert((0, String::new()));
+            if n > e.0 {
+                *e = (n, st.to_string());
+            }
+        }
+        for r in &mut self.results {
+            if best
+                .get(&r.property)
+                .is_some_and(|(_, st)| *st == r.statement)
+            {
+                r.statement.clear();
+            }
+        }
+        self.statements
+            .extend(best.into_iter().map(|(p, (_, st))| (p, st)));
+    }
+    /// Undo [`Certificate::compact`]: fill empty statements from `statements`.
+    pub fn expand(&mut self) {
+        for r in &mut self.results {
+            if r.statement.is_empty() {
+                if let Some(st) = self.statements.get(&r.property) {
+                    r.statement = st.clone();
+                }
+            }
+        }
+    }
+}
+
+/// Errors of the certificate tools.
+#[derive(Debug, thiserror::Error)]
+pub enum CertifyError {
+    /// A certificate or summary file could not be read or written.
+    #[error("I/O error on {path}: {source}")]
+    Io {
+        /// The file.
+        path: String,
+        /// The underlying I/O error.
+        source: std::io::Error,
+    },
+    /// A certificate file is not valid certificate JSON (or a certificate could not be serialised).
+    #[error("malformed certificate {path}: {source}")]
+    Json {
+        /// The file.
+        path: String,
+        /// The JSON error.
+        source: serde_json::Error,
+    },
+    /// Certificates to merge disagree (max degree, model), overlap, or none was given.
+    #[error("certificates do not fit together: {0}")]
+    Mismatch(String),
+    /// An invalid command-line value (`--shard`, `--max-degree`) or thread-pool setup failure.
+    #[error("bad argument: {0}")]
+    BadArg(String),
+}

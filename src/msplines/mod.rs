@@ -1,0 +1,26 @@
+//! Manifold splines (Gu, He, Qin 2006; `../shared/seeds/003_*`): the affine atlas of a closed
+//! mesh built from a holomorphic 1-form (Sec. 5), its zero points (Sec. 5.3), the atlas as a
+//! set of gluing data (Def. 3.4.1 of the PPM report) so the general checkers judge it, and
+//! the triangular B-spline / polar-form statements of Sec. 3.1 decided in exact rationals.
+//! SPEC.md IDs carry the prefix `MS-`.
+//!
+//! Data flows one way: [`homology`] (tree–cotree) → [`harmonic`] (cotangent Laplacian) →
+//! [`hodge`] (conjugate, ω) → [`zeros`] → [`atlas`] → [`view`] (gluing data) → checks.
+
+pub mod atlas;
+pub mod atlas_checks;
+pub mod circle;
+pub mod claims;
+pub mod cochain;
+pub mod error;
+pub mod harmonic;
+pub mod hodge;
+pub mod homology;
+pub mod pipeline;
+pub mod polar;
+pub mod polar_checks;
+pub mod view;
+pub mod zeros;
+
+pub use error::MsError;
+pub use pipeline::{forms, run, MsReport, Options};

@@ -1,0 +1,373 @@
+//! The check harness: the one sample → evaluate → measure → witness accumulator every checker
+//! (mesh, gluing, construction, surface, certify) records its findings with.
+//!
+//! The rules, stated once (developers' guide: "a check that cannot fail is a defect"):
+//!
+//! 1. **A non-finite deviation is an offence.** [`Check::deviation`] treats NaN and ±∞ as
+//!    outside every tolerance and records the worst deviation as +∞. Comparisons are written
+//!    `!(d <= tol)`, never `d > tol`, and maxima with [`dev_max`], never `f64::max` (which
+//!    drops a NaN).
+//! 2. **An evaluation error is counted, never dropped.** [`Check::error`] takes an explicit
+//!    [`OnError`] rule: an error where the statement claims the map is defined is an
+//!    offence with a witness ([`OnError::Offence`]); an error that only says the sample lies
+//!    outside the statement's domain is a skipped sample ([`OnError::Skip`]), counted in
+//!    [`CheckResult::eval_errors`] and named in the note.
+//! 3. **Zero examined samples is `Skipped`**, never `Holds` ([`Check::finish`]).
+//! 4. **A statement's as-written and restricted forms are one [`Restricted`] pair**: the same
+//!    samples feed both, the restricted one only on its domain, and the restricted verdict is
+//!    `HoldsRestricted { domain }` exactly when the restriction is a real one.
+
+use super::{CheckResult, Verdict, Witness};
+
+/// What an evaluation error means for the statement being checked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OnError {
+    /// The statement claims the evaluation succeeds here: the error is an offence.
+    Offence,
+    /// The error says the sample lies outside the statement's domain: the sample is skipped
+    /// (counted and named in the note, not examined).
+    Skip,
+}
+
+/// The larger of two deviations, NaN-propagating (unlike `f64::max`, which returns the other
+/// operand when one is NaN and so hides a NaN from every later comparison).
+pub fn dev_max(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b.is_nan() {
+        f64::NAN
+    } else {
+        a.max(b)
+    }
+}
+
+/// Rule 1 for an interval enclosure `[lo, hi]` of a deviation at a point: it refutes the
+/// bound `tol` when it surely exceeds it (`lo > tol`) or when it is not a finite enclosure
+/// (an empty or unbounded enclosure of a point evaluation is a NaN or an overflow).
+pub fn enclosure_exceeds(lo: f64, hi: f64, tol: f64) -> bool {
+    !(lo <= tol && lo.is_finite() && hi.is_finite())
+}
+
+/// Accumulates the result of one check under the rules of this module.
+#[derive(Debug, Clone)]
+pub struct Check {
+    r: CheckResult,
+    worst: Option<f64>,
+    first_skip: Option<String>,
+}
+
+impl Check {
+    /// A check of the statement `id` ("D4.1.5", "T5.4.1", …) with a short name.
+    pub fn new(id: impl Into<String>, name: impl Into<String>) -> Self {
+        Check {
+            r: CheckResult::new(id, name),
+            worst: None,
+            first_skip: None,
+        }
+    }
+
+    /// Adopt a result assembled elsewhere (e.g. from a certificate) so that [`Check::finish`]
+    /// applies the rules to it.
+    pub fn from_result(r: CheckResult) -> Self {
+        let worst = r.worst_deviation;
+        Check {
+            r,
+            worst,
+            first_skip: None,
+        }
+    }
+
+    /// A sampled, numerical check: its seed and its (fixed) tolerance.
+    pub fn sampled(id: impl Into<String>, name: impl Into<String>, seed: u64, tol: f64) -> Self {
+        Check::new(id, name).with_seed(seed).with_tolerance(tol)
+    }
+
+    /// Sets the sampler's seed.
+    pub fn with_seed(mut self, seed: u64) -> Self {
+        self.r.seed = Some(seed);
+        self
+    }
+
+    /// Sets the note (kept by `finish("")`).
+    pub fn with_note(mut self, note: impl Into<String>) -> Self {
+        self.r.note = note.into();
+        self
+    }
+
+    /// Sets the fixed tolerance [`Check::deviation`] compares with.
+    pub fn with_tolerance(mut self, tol: f64) -> Self {
+        self.r.tolerance = Some(tol);
+        self
+    }
+
+    /// The fixed tolerance (0 when none was set).
+    pub fn tol(&self) -> f64 {
+        self.r.tolerance.unwrap_or(0.0)
+    }
+
+    /// The result so far (read-only).
+    pub fn result(&self) -> &CheckResult {
+        &self.r
+    }
+
+    /// Examine one deviation against the fixed tolerance. Rule 1: a non-finite deviation is an
+    /// offence.
+    pub fn deviation(&mut self, d: f64, w: impl FnOnce() -> Witness) {
+        let tol = self.tol();
+        self.deviation_within(d, tol, w);
+    }
+
+    /// Examine one deviation against a per-sample tolerance `tol` (the reported tolerance is the
+    /// largest one used). Rule 1: a non-finite deviation is an offence.
+    pub fn deviation_within(&mut self, d: f64, tol: f64, w: impl FnOnce() -> Witness) {
+        self.r.examined += 1;
+        self.r.tolerance = Some(self.r.tolerance.map_or(tol, |t| t.max(tol)));
+        let shown = if d.is_finite() { d } else { f64::INFINITY };
+        self.worst = Some(self.worst.map_or(shown, |x| x.max(shown)));
+        if !(d.is_finite() && d <= tol) {
+            self.r.offend(w);
+        }
+    }
+
+    /// Examine one decided condition.
+    pub fn holds(&mut self, ok: bool, w: impl FnOnce() -> Witness) {
+        self.r.examined += 1;
+        if !ok {
+            self.r.offend(w);
+        }
+    }
+
+    /// Count `n` examined elements of an exact check (offences are recorded by
+    /// [`Check::offend`]).
+    pub fn examined(&mut self, n: u64) {
+        self.r.examined += n;
+    }
+
+    /// Record an offence not tied to one examined sample (a failed precondition, an empty
+    /// witness search).
+    pub fn offend(&mut self, w: impl FnOnce() -> Witness) {
+        self.r.offend(w);
+    }
+
+    /// Rule 2: an evaluation failed. Counted always; by `rule` an offence (the witness is
+    /// recorded, and the sample counts as examined) or a skipped sample (named in the note).
+    pub fn error(
+        &mut self,
+        rule: OnError,
+        err: impl std::fmt::Display,
+        w: impl FnOnce() -> Witness,
+    ) {
+        self.r.eval_errors += 1;
+        match rule {
+            OnError::Offence => {
+                self.r.examined += 1;
+                self.r.offend(w);
+            }
+            OnError::Skip => {
+                if self.first_skip.is_none() {
+                    self.first_skip = Some(err.to_string());
+                }
+            }
+        }
+    }
+
+    /// [`Check::deviation`] of an evaluated deviation, or [`Check::error`] with `rule`.
+    pub fn measure<E: std::fmt::Display>(
+        &mut self,
+        d: Result<f64, E>,
+        rule: OnError,
+        w: impl FnOnce() -> Witness,
+    ) {
+        match d {
+            Ok(d) => self.deviation(d, w),
+            Err(e) => self.error(rule, e, w),
+        }
+    }
+
+    /// The verdict is `Fails` so far.
+    pub fn failed(&self) -> bool {
+        self.r.failed()
+    }
+
+    /// Mark the result as a measurement, not a claim of the paper: offences become a warning.
+    pub fn finish_as_warning(self, note: impl Into<String>) -> CheckResult {
+        let mut r = self.finish(note);
+        if r.failed() {
+            r.verdict = Verdict::Warning;
+        }
+        r
+    }
+
+    /// Close the check with its note (an empty `note` keeps the note already set). Rule 3: nothing examined (and nothing failed) is
+    /// `Skipped`; rule 2: skipped evaluation errors are named in the note.
+    pub fn finish(mut self, note: impl Into<String>) -> CheckResult {
+        let mut note: String = note.into();
+        if note.is_empty() {
+            note = std::mem::take(&mut self.r.note);
+        }
+        if self.worst.is_none() && self.r.tolerance.is_some() {
+            self.worst = Some(0.0);
+        }
+        if self.worst.is_some() {
+            self.r.worst_deviation = self.worst;
+        }
+        if let Some(first) = &self.first_skip {
+            let skipped = format!(
+                "{} sample(s) skipped: evaluation outside the statement's domain (first: {first})",
+                self.r.eval_errors
+            );
+            note = if note.is_empty() {
+                skipped
+            } else {
+                format!("{note}; {skipped}")
+            };
+        }
+        self.r.note = note;
+        if self.r.examined == 0
+            && matches!(
+                self.r.verdict,
+                Verdict::Holds | Verdict::HoldsRestricted { .. }
+            )
+        {
+            self.r.verdict = Verdict::Skipped {
+                reason: if self.r.eval_errors > 0 {
+                    "every sample failed to evaluate; nothing was examined".into()
+                } else {
+                    "no sample fell in the domain of the statement".into()
+                },
+            };
+        }
+        self.r
+    }
+}
+
+/// Exact (non-sampled) checkers fill the result's fields directly while they count elements;
+/// [`Check::finish`] still applies rule 3 to them.
+impl std::ops::Deref for Check {
+    type Target = CheckResult;
+    fn deref(&self) -> &CheckResult {
+        &self.r
+    }
+}
+
+impl std::ops::DerefMut for Check {
+    fn deref_mut(&mut self) -> &mut CheckResult {
+        &mut self.r
+    }
+}
+
+/// Rule 4: the as-written statement and its restriction, checked on the same samples. The
+/// restricted result has the ID `"{id}[restricted]"`.
+#[derive(Debug, Clone)]
+pub struct Restricted {
+    /// The statement as written.
+    pub all: Check,
+    /// The statement on its restricted domain.
+    pub restricted: Check,
+}
+
+impl Restricted {
+    /// Both checks of statement `id`, sampled with `seed`, at tolerance `tol`.
+    pub fn sampled(id: &str, name: &str, seed: u64, tol: f64) -> Self {
+        Restricted {
+            all: Check::sampled(id, name, seed, tol),
+            restricted: Check::sampled(format!("{id}[restricted]"), name, seed, tol),
+        }
+    }
+
+    /// Examine one deviation: always for the statement as written, and for the restriction when
+    /// the sample lies in its domain.
+    pub fn deviation(&mut self, d: f64, in_domain: bool, w: impl Fn() -> Witness) {
+        self.all.deviation(d, &w);
+        if in_domain {
+            self.restricted.deviation(d, w);
+        }
+    }
+
+    /// Examine one decided condition on both.
+    pub fn holds(&mut self, ok: bool, in_domain: bool, w: impl Fn() -> Witness) {
+        self.all.holds(ok, &w);
+        if in_domain {
+            self.restricted.holds(ok, w);
+        }
+    }
+
+    /// Close both. The restricted result reads `HoldsRestricted { domain }` when it holds and
+    /// `is_restriction` (the domain is smaller than the stated one); otherwise it keeps the
+    /// as-written verdict vocabulary.
+    pub fn finish(self, note: String, domain: String, is_restriction: bool) -> Vec<CheckResult> {
+        let all = self.all.finish(note.clone());
+        let mut res = self.restricted.finish(note);
+        if is_restriction && res.verdict == Verdict::Holds {
+            res.verdict = Verdict::HoldsRestricted { domain };
+        }
+        vec![all, res]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::json;
+
+    fn w() -> Witness {
+        Witness::new("w", json!({}))
+    }
+
+    #[test]
+    fn nan_and_infinite_deviations_are_offences() {
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let mut c = Check::sampled("X", "x", 1, 1.0);
+            c.deviation(0.5, w);
+            c.deviation(bad, w);
+            let r = c.finish("");
+            assert!(r.failed(), "{bad} must fail");
+            assert_eq!(r.offenders, 1);
+            assert_eq!(r.worst_deviation, Some(f64::INFINITY));
+        }
+        assert!(dev_max(f64::NAN, 1.0).is_nan() && dev_max(1.0, f64::NAN).is_nan());
+    }
+
+    #[test]
+    fn errors_are_counted_by_rule() {
+        let mut c = Check::sampled("X", "x", 1, 1.0);
+        c.error(OnError::Offence, "boom", w);
+        let r = c.finish("");
+        assert!(r.failed());
+        assert_eq!(r.eval_errors, 1);
+
+        let mut c = Check::sampled("X", "x", 1, 1.0);
+        c.deviation(0.0, w);
+        c.error(OnError::Skip, "outside", w);
+        let r = c.finish("n");
+        assert_eq!(r.verdict, Verdict::Holds);
+        assert_eq!(r.eval_errors, 1);
+        assert!(r.note.contains("1 sample(s) skipped") && r.note.contains("outside"));
+
+        let mut c = Check::sampled("X", "x", 1, 1.0);
+        c.error(OnError::Skip, "outside", w);
+        assert!(matches!(c.finish("").verdict, Verdict::Skipped { .. }));
+    }
+
+    #[test]
+    fn nothing_examined_is_skipped() {
+        let r = Check::new("X", "x").finish("");
+        assert!(matches!(r.verdict, Verdict::Skipped { .. }));
+        let p = Restricted::sampled("X", "x", 1, 1.0).finish(String::new(), "d".into(), true);
+        assert!(p
+            .iter()
+            .all(|r| matches!(r.verdict, Verdict::Skipped { .. })));
+    }
+
+    #[test]
+    fn restricted_pair() {
+        let mut p = Restricted::sampled("X", "x", 1, 1.0);
+        p.deviation(2.0, false, w);
+        p.deviation(0.5, true, w);
+        let v = p.finish(String::new(), "d".into(), true);
+        assert!(v[0].failed());
+        assert_eq!(v[1].id, "X[restricted]");
+        assert_eq!(
+            v[1].verdict,
+            Verdict::HoldsRestricted { domain: "d".into() }
+        );
+    }
+}

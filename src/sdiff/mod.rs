@@ -1,0 +1,20 @@
+//! Simplicial diffeomorphisms (Mello–Velho, seed 004): K-invariant maps of a planar triangle
+//! complex — monotonic (Eq. (9)), polynomial (Eq. (10)) and rational (Eq. (11)) — and the
+//! exact decision of their central claims: det DX > 0 on every closed simplex by Bernstein
+//! coefficients over ℚ (independently by intervals), K-invariance and agreement on shared
+//! faces as polynomial identities, and the curved isocurves 𝒪 = X⁻¹(f̂⁻¹(c)) of Sec. 4.
+//!
+//! Entry points: [`complex::validate`] (a planar complex with boundary), [`params::read`] and
+//! [`params::MapSpec::build`] (the map), [`checks::check_all`], [`iso::isocurves`], and the
+//! seeded claim searches of [`claims`]. SPEC IDs: `SD-…`.
+
+pub mod checks;
+pub mod claims;
+pub mod complex;
+pub mod interval;
+pub mod inverse;
+pub mod iso;
+pub mod maps;
+pub mod params;
+pub mod poly;
+pub mod positivity;

@@ -1,0 +1,260 @@
+//! Manifold splines (Gu–He–Qin, seed 003): SPEC rows `MS-*`. Torus first (no zero point, a
+//! translation atlas, every Def. 3.4.1 condition), then genus 2 (zero points, the claims about
+//! their number), genus 0 refused, the exact Sec. 3.1 statements and the Fig. 7 example.
+
+use pseudomanifold::gluing::data::GluingData;
+use pseudomanifold::gluing::sampled::{check_all, SampleConfig};
+use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
+use pseudomanifold::mesh::validate::validate;
+use pseudomanifold::mesh::{generate, SimplicialSurface};
+use pseudomanifold::msplines::atlas::build;
+use pseudomanifold::msplines::atlas_checks as ac;
+use pseudomanifold::msplines::circle::{self, CircleSplines};
+use pseudomanifold::msplines::homology::check_cocycles_closed;
+use pseudomanifold::msplines::polar_checks as pc;
+use pseudomanifold::msplines::view::AtlasView;
+use pseudomanifold::msplines::zeros::locate;
+use pseudomanifold::msplines::{claims, forms, run, MsError, Options};
+use pseudomanifold::report::{CheckResult, Verdict};
+use std::path::Path;
+
+fn torus(n: u32, m: u32) -> SimplicialSurface {
+    validate(&generate::torus(n, m)).surface.expect("generated torus is a simplicial surface")
+}
+
+fn eight() -> SimplicialSurface {
+    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/eight.off");
+    let raw = read_mesh(&p, &ReadOptions::default()).expect("eight.off reads");
+    validate(&raw).surface.expect("eight.off is a simplicial surface")
+}
+
+fn find<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
+    rs.iter().find(|r| r.id == id).unwrap_or_else(|| panic!("no check {id}"))
+}
+
+fn holds(r: &CheckResult) -> bool {
+    matches!(r.verdict, Verdict::Holds | Verdict::HoldsRestricted { .. })
+}
+
+#[test]
+fn ms_t2_genus_zero_is_refused_with_a_typed_error_citing_thm_2() {
+    let k = validate(&generate::octahedron()).surface.expect("octahedron");
+    let err = forms(&k).expect_err("genus 0 must be refused");
+    assert!(matches!(err, MsError::GenusZero { .. }));
+    assert!(err.to_string().contains("Thm. 2"), "{err}");
+}
+
+#[test]
+fn ms_h1_ms_h2_ms_h3_torus_bases_exact_and_planted_cocycle_fault_caught() {
+    let k = torus(12, 8);
+    let (rep, fm, _) = run(&k, &Options::default()).expect("torus runs");
+    assert_eq!(rep.genus, 1);
+    for id in ["MS-H1", "MS-H2", "MS-H3"] {
+        assert!(holds(find(&rep.checks, id)), "{:?}", find(&rep.checks, id));
+    }
+    assert_eq!(rep.intersection.len(), 2);
+    assert_eq!(rep.intersection[0][1].abs(), 1);
+    // Planted: flip the value of one edge of τ_0.
+    let mut bad = fm.homology.cocycles.clone();
+    let e = bad[0].iter().position(|&x| x != 0).expect("τ_0 ≠ 0");
+    bad[0][e] = -bad[0][e] + 1;
+    let r = check_cocycles_closed(&k, &fm.ei, &bad);
+    assert!(r.failed() && !r.witnesses.is_empty());
+}
+
+#[test]
+fn ms_5_2_3_ms_5_2_3_closed_ms_5_2_4_closed_harmonic_residual_and_closedness_hold_and_nan_is_caught() {
+    let k = torus(12, 8);
+    let (rep, mut fm, _) = run(&k, &Options::default()).expect("torus runs");
+    for id in ["MS-5.2(3)", "MS-5.2(3)-closed", "MS-5.2(4)-closed"] {
+        let r = find(&rep.checks, id);
+        assert!(holds(r), "{r:?}");
+    }
+    fm.harmonic.backward_error = f64::NAN;
+    assert!(pseudomanifold::msplines::harmonic::check_harmonic_residual(&k, &fm.harmonic).failed());
+    fm.harmonic.forms[0][3] = f64::NAN;
+    let r = pseudomanifold::msplines::harmonic::check_closed(&k, &fm.ei, &fm.harmonic.forms, &fm.h_magnitude, "MS-5.2(3)-closed", "h");
+    assert!(r.failed());
+}
+
+#[test]
+fn ms_d8_ms_d9_ms_d10_ms_5_2_4_starstar_cauchy_riemann_defect_shrinks_under_refinement() {
+    let coarse = forms(&torus(12, 8)).expect("coarse");
+    let fine = forms(&torus(24, 16)).expect("fine");
+    let cr = |f: &pseudomanifold::msplines::pipeline::Forms| f.conjugate.cr_defect.iter().copied().fold(0.0, f64::max);
+    assert!(cr(&fine) < cr(&coarse), "CR defect {} → {}", cr(&coarse), cr(&fine));
+    assert!(fine.conjugate.star_star_defect < coarse.conjugate.star_star_defect.max(1e-12));
+    assert!(fine.conjugate.star_star_defect < 0.05, "{}", fine.conjugate.star_star_defect);
+}
+
+#[test]
+fn ms_d11_ms_c1_ms_gb_ms_5_3_torus_has_no_zero_every_winding_one() {
+    let k = torus(12, 8);
+    let (rep, _, _) = run(&k, &Options::default()).expect("torus");
+    assert!(rep.zeros.is_empty());
+    for id in ["MS-C1", "MS-GB", "MS-5.3", "MS-T4(index)", "MS-T4(count)"] {
+        let r = find(&rep.checks, id);
+        assert!(holds(r), "{r:?}");
+    }
+}
+
+#[test]
+fn ms_t4_index_planted_conjugate_form_gives_negative_windings() {
+    let k = torus(12, 8);
+    let fm = forms(&k).expect("torus");
+    let om = fm.omega(0).expect("ω").conjugated();
+    let z = locate(&k, &fm.ei, &om);
+    let r = claims::check_indices(&z);
+    assert!(r.failed() && !r.witnesses.is_empty());
+    // Gauss–Bonnet still balances: every face flipped.
+    assert!(!claims::check_gauss_bonnet(&z, 1, k.num_faces()).failed());
+    // ω_y := ω_x: images degenerate, so the identity cannot be decided.
+    let mut flat = fm.omega(0).expect("ω");
+    flat.y = flat.x.clone();
+    let z = locate(&k, &fm.ei, &flat);
+    assert!(matches!(claims::check_gauss_bonnet(&z, 1, k.num_faces()).verdict, Verdict::Skipped { .. }));
+    assert!(claims::check_decided(&z).failed() || !z.ambiguous_faces.is_empty());
+}
+
+#[test]
+fn ms_d4_ms_d6_ms_d7_ms_t4_atlas_ms_gd_torus_translation_atlas_and_def_3_4_1_all_hold() {
+    let k = torus(12, 8);
+    let (rep, _, _) = run(&k, &Options::default()).expect("torus");
+    for r in &rep.checks {
+        assert!(!r.failed() || r.id == "MS-5.4(6)", "{r:?}");
+    }
+    assert!(!rep.failed(), "only the documented erratum MS-5.4(6) may fail");
+    for id in ["MS-5.4(4)", "MS-D4", "MS-D7", "MS-T4(atlas)", "MS-5.4(6)-corrected", "D3.4.1(1)", "D3.4.1(2)", "D3.4.1(3)", "D3.4.1(3a)", "D3.4.1(3b)", "D3.4.1(3c)", "D3.4.1(4)"] {
+        let r = find(&rep.checks, id);
+        assert!(holds(r) && r.examined > 0, "{r:?}");
+    }
+}
+
+#[test]
+fn ms_5_4_6_ms_5_4_6_corrected_step_six_as_written_has_the_wrong_sign() {
+    let k = torus(12, 8);
+    let (rep, _, _) = run(&k, &Options::default()).expect("torus");
+    let r = find(&rep.checks, "MS-5.4(6)");
+    assert!(r.failed() && !r.witnesses.is_empty(), "{r:?}");
+}
+
+#[test]
+fn ms_t4_atlas_planted_non_translation_transition_is_caught_by_def_3_4_1() {
+    let k = torus(12, 8);
+    let fm = forms(&k).expect("torus");
+    let om = fm.omega(0).expect("ω");
+    let at = build(&k, &fm.ei, &om, &[], 1).expect("atlas");
+    let cfg = SampleConfig { seed: 7, n: 24 };
+    // Planted: φ_βα rotated by 0.1 rad about the chart origin for one chart α.
+    let view = AtlasView::neighbourhood(&k, &at, 0).with_phi_override(Box::new(|_b: u32, a: u32, p: [f64; 2]| {
+        (a == 0).then(|| {
+            let (s, c) = 0.1f64.sin_cos();
+            [c * p[0] - s * p[1], s * p[0] + c * p[1]]
+        })
+    }));
+    assert!(view.indices().len() > 1);
+    let rs = check_all(&view, &cfg);
+    assert!(rs.iter().any(|r| r.failed() && (r.id.starts_with("D3.4.1(3") || r.id.starts_with("D3.4.1(3b)"))), "{rs:?}");
+}
+
+#[test]
+fn ms_5_4_4_wide_charts_on_a_thin_torus_fail_with_a_period_witness() {
+    // k = 3 rings on a 6 × 4 torus wrap around the short handle: the union is no disk and
+    // the developing map meets itself shifted by a period of ω.
+    let k = torus(6, 4);
+    let fm = forms(&k).expect("torus");
+    let om = fm.omega(0).expect("ω");
+    let at = build(&k, &fm.ei, &om, &[], 3).expect("atlas");
+    assert!(ac::check_union_disks(&k, &fm.ei, &at).failed());
+    let d4 = ac::check_charts_injective(&at);
+    assert!(d4.failed() && !d4.witnesses.is_empty());
+}
+
+#[test]
+fn ms_t4_count_ms_3_4_3_ms_c2_genus_two_zero_points() {
+    let k = eight();
+    let (rep, _, _) = run(&k, &Options::default()).expect("eight runs");
+    assert_eq!(rep.genus, 2);
+    for id in ["MS-H1", "MS-H2", "MS-H3", "MS-5.2(3)", "MS-C1", "MS-5.3"] {
+        let r = find(&rep.checks, id);
+        assert!(holds(r), "{r:?}");
+    }
+    eprintln!("{}", pseudomanifold::report::render_text(&rep.checks));
+    // Finding (SPEC MS-T4(index), MS-3.4.3): the discrete ω_0 of this coarse mesh has no vertex
+    // of winding ≥ 2 but one of winding 0 (vertex 100) and flipped faces; Gauss–Bonnet still
+    // balances exactly, and Cor. 1 holds (a singular vertex exists).
+    assert!(holds(find(&rep.checks, "MS-GB")));
+    assert!(holds(find(&rep.checks, "MS-T4(count)")));
+    let idx = find(&rep.checks, "MS-T4(index)");
+    assert!(rep.zeros.len() as i64 <= 2 && (!rep.zeros.is_empty() || (idx.failed() && !idx.witnesses.is_empty())));
+    assert!(matches!(find(&rep.checks, "MS-C2").verdict, Verdict::Skipped { .. }));
+}
+
+#[test]
+fn ms_p3_ms_d1_ms_d12_ms_l1_1_1_ms_3_1_3_2_ms_3_1_3_3_ms_3_1_3_4_ms_3_1_3_5_polar_forms_and_b_patches_exact() {
+    for (k, seed) in [(2usize, 1u64), (3, 2)] {
+        for r in pc::check_all(k, seed) {
+            assert!(!r.failed(), "{r:?}");
+            assert!(r.examined > 0, "{r:?}");
+        }
+    }
+}
+
+#[test]
+fn ms_l1_1_2_ms_t1_planted_non_affine_transition_gives_a_witness() {
+    let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(3);
+    let kc = pc::random_clouds(&mut rng, 3);
+    let r = pc::check_lemma_1_1_necessity(&kc, &pc::planted_non_affine, 3, 10);
+    assert!(!r.failed() && r.note.contains("witness"), "{r:?}");
+    // An affine φ admits no witness: the check reports failure (the lemma's premise is gone).
+    let affine = |x: &pc_q2::Q2| [&x[0] * pc_q2::q(2, 1) + &x[1], x[1].clone()];
+    let r = pc::check_lemma_1_1_necessity(&kc, &affine, 3, 5);
+    assert!(r.failed());
+    // Def. 1 catches the planted map.
+    assert!(pc::check_def1(&pc::planted_non_affine, 3, 10).failed());
+}
+
+mod pc_q2 {
+    pub use pseudomanifold::msplines::polar::{q, Q2};
+}
+
+#[test]
+fn ms_p3_ms_d2_planted_unsymmetrised_blossom_is_caught() {
+    let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(5);
+    let mut p = pc::random_poly(&mut rng, 3);
+    p.unsymmetrised = true;
+    assert!(pc::check_blossom(&p, 5, 6).failed());
+}
+
+#[test]
+fn ms_f7_ms_d13_1_ms_d13_2_ms_f7_c2_ms_d5_circle_example_decided_exactly() {
+    // As written (charts of ±2 knots): the gluing data are fine, but the chart lacks knots.
+    let paper = CircleSplines::example(9, 2);
+    let rs = circle::check_all(&paper);
+    for r in rs.iter().filter(|r| r.id.starts_with("MS-F7:")) {
+        assert!(!r.failed(), "{r:?}");
+    }
+    let d13 = rs.iter().find(|r| r.id == "MS-D13(1)").expect("D13");
+    assert!(d13.failed() && !d13.witnesses.is_empty());
+    assert!(!rs.iter().find(|r| r.id == "MS-F7-C2").expect("C2").failed());
+    assert!(rs.iter().find(|r| r.id == "MS-D5").expect("D5").failed());
+    assert!(matches!(rs.iter().find(|r| r.id == "MS-D13(2)").expect("D13(2)").verdict, Verdict::Skipped { .. }));
+    // Corrected: charts of ±4 knots hold every condition.
+    let wide = CircleSplines::example(11, 4);
+    for r in circle::check_all(&wide) {
+        if r.id != "MS-D5" {
+            assert!(!r.failed(), "{r:?}");
+        }
+        if r.id == "MS-D13(2)" {
+            assert!(r.examined > 0, "{r:?}");
+        }
+    }
+}
+
+#[test]
+fn ms_f7_c2_planted_wrong_transition_shows_a_jump() {
+    let c = CircleSplines::example(9, 2);
+    assert!(!circle::check_c2(&c).failed());
+    let r = circle::check_c2_with(&c, &pseudomanifold::msplines::polar::q(1, 7));
+    assert!(r.failed() && !r.witnesses.is_empty());
+}
