@@ -55,6 +55,11 @@ printf '%s\n' '{"op":"set_precision","bits":64}' '{"op":"eval","face":3,"bary":[
 printf '%s\n' '{"op":"set_profile","profile":"authors-code"}' '{"op":"theta","v":0,"p":[0.3,0.1]}' > "$o/theta"
 printf '%s\n' '{"op":"theta_derivatives","v":0,"p":[0.3,0.1],"order":2}' '{"op":"gamma","v":0,"p":[0.5,0.1]}' > "$o/derivatives"
 printf '%s\n' '{"op":"psi","v":0,"p":[3.0,0.1]}' '{"op":"psi_control","v":1}' > "$o/psi"
+# Adversarial-sweep inputs: derivatives at an edge midpoint (ξ near H₂ of a neighbour),
+# membership at 1024+ bits (unit roundoff below 2^-1023), out-of-simplex barycentrics.
+printf '%s\n' '{"op":"eval","face":1,"bary":[0.5,0.5,0]}' '{"op":"theta_derivatives","v":0,"p":[2.4997998108697437e-17,-0.408248290463863],"order":3}' > "$o/adv_edge_midpoint"
+printf '%s\n' '{"op":"set_precision","bits":1024}' '{"op":"member","u":0,"w":1,"p":[0.3,0.1],"test":"literal"}' '{"op":"set_precision","bits":4096}' '{"op":"phi","u":0,"w":1,"p":[0.3,0.1]}' > "$o/adv_precision_1024"
+printf '%s\n' '{"op":"eval","face":1,"bary":[-0.5,1.5,0]}' '{"op":"eval","face":1,"bary":[1e308,1e308,-1e308]}' > "$o/adv_bad_barycentric"
 # Gluing files: the bundled examples.
 for f in "$root"/examples/gluing/*.toml; do [ -f "$f" ] && cp "$f" "$c/gluing_file/"; done
 # Structured targets start from a few random byte strings (libFuzzer grows them).

@@ -134,8 +134,8 @@ enum Command {
         x: f64,
         /// y coordinate of p in Ω_u.
         y: f64,
-        /// MPFR precision in bits.
-        #[arg(long, default_value_t = 256)]
+        /// MPFR precision in bits (2..=65536).
+        #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(2..=65536))]
         bits: u32,
         #[arg(long)]
         json: bool,

@@ -97,6 +97,17 @@ fn frame(s: &mut String, m: u32, panel: usize, title: &str) {
 
 /// Render the figure for degrees (m_u, m_w); the edge [u, w] has label 0 at both ends.
 pub fn render_svg(m_u: u32, m_w: u32) -> Result<String, super::ConfigError> {
+    // Each of the m gluing domains is drawn with a fixed number of points (~10 kB of SVG):
+    // an unbounded degree is unbounded memory.
+    const MAX_FIGURE_DEGREE: u32 = 1024;
+    for m in [m_u, m_w] {
+        if m > MAX_FIGURE_DEGREE {
+            return Err(super::ConfigError::DegreeTooLarge {
+                m,
+                limit: MAX_FIGURE_DEGREE,
+            });
+        }
+    }
     let e = EdgeConfig::new(m_u, 0, m_w, 0)?;
     let mut s = String::new();
     let _ = writeln!(

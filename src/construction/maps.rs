@@ -116,6 +116,14 @@ pub enum ConfigError {
     /// [`TriangleConfig::orientation`]); the message gives the three steps.
     #[error("triangle labels are not consistent with one fan orientation: {0}")]
     NotAFan(String),
+    /// A degree too large for the requested output (a figure draws all m gluing domains).
+    #[error("degree {m} exceeds the limit {limit} of this output")]
+    DegreeTooLarge {
+        /// The offending degree.
+        m: u32,
+        /// The largest accepted degree.
+        limit: u32,
+    },
 }
 
 /// Smallest admissible degree (Chapter 4: "the degree of every vertex ... is at least three").
@@ -697,7 +705,7 @@ pub trait Ppm<S: Scalar>: Sync {
             Err(MapError::AtOrigin) => return Trit::False,
             Err(_) => return Trit::Unknown,
         };
-        let tol = S::from_f64(roundtrip_tolerance(e, p.x.epsilon()), p.prec());
+        let tol = S::from_f64(roundtrip_tolerance(e, 1.0), p.prec()).mul(&p.x.unit_roundoff());
         let close = back.sub(p).norm2().le(&tol.sqr());
         in_u.and(in_w).and(close)
     }

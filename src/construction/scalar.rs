@@ -92,9 +92,22 @@ pub trait Scalar: Clone + Debug + Send + Sync + 'static {
     fn to_f64(&self) -> f64;
     /// Significand bits of this value.
     fn precision_bits(&self) -> u32;
-    /// Unit roundoff `2^-precision_bits` of this value's precision, as `f64`.
+    /// Unit roundoff `2^-precision_bits` of this value's precision, as `f64`: exact down to
+    /// 2^-1074 (the smallest subnormal; `2f64.powi(-bits)` overflows 2^bits and gives 0 from
+    /// 1024 bits on), 0 beyond. Decisions at any precision use [`Scalar::unit_roundoff`].
     fn epsilon(&self) -> f64 {
-        (2.0f64).powi(-(self.precision_bits() as i32))
+        pow2_neg_f64(self.precision_bits())
+    }
+    /// Unit roundoff `2^-precision_bits` in this scalar type (exact: a power of two), so that
+    /// tolerances of decisions scale with the precision at any precision.
+    fn unit_roundoff(&self) -> Self {
+        let prec = self.precision_bits();
+        let step = Self::from_f64(pow2_neg_f64(64), prec);
+        let mut u = Self::from_i64(1, prec);
+        for _ in 0..prec / 64 {
+            u = u.mul(&step);
+        }
+        u.mul(&Self::from_f64(pow2_neg_f64(prec % 64), prec))
     }
 
     /// self + o, rounded (for `Mp`: at the larger precision).
@@ -154,6 +167,15 @@ pub trait Scalar: Clone + Debug + Send + Sync + 'static {
     /// `p/q` at the precision of `self`.
     fn like_ratio(&self, p: i64, q: i64) -> Self {
         Self::from_ratio(p, q, self.precision_bits())
+    }
+}
+
+/// 2^-k as `f64`, built from its bits (exact for k ≤ 1074, 0 beyond).
+pub fn pow2_neg_f64(k: u32) -> f64 {
+    match k {
+        0..=1022 => f64::from_bits(u64::from(1023 - k) << 52),
+        1023..=1074 => f64::from_bits(1u64 << (1074 - k)),
+        _ => 0.0,
     }
 }
 

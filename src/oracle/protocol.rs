@@ -255,7 +255,8 @@ impl From<SurfaceError> for OracleError {
             SurfaceError::NoSuchVertex(_)
             | SurfaceError::NoSuchFace(_)
             | SurfaceError::NoSuchEdge(..)
-            | SurfaceError::MissingDegree(_) => OracleError::Mesh(e.to_string()),
+            | SurfaceError::MissingDegree(_)
+            | SurfaceError::LevelTooLarge { .. } => OracleError::Mesh(e.to_string()),
             SurfaceError::NotInOmega { .. }
             | SurfaceError::BadBarycentric(_)
             | SurfaceError::Map(_) => OracleError::NotInDomain(e.to_string()),

@@ -51,6 +51,16 @@ pub fn canonical_point<S: SurfaceScalar>(bary: &[S; 3], c: &Consts<S>) -> P2<S> 
     P2::new(bary[1].mul(&half).add(&bary[2]), bary[1].mul(&c.s3h).neg())
 }
 
+/// The barycentric coordinates eval accepts: finite, ≥ 0 (−1e−12 tolerated) and summing to 1
+/// (±1e−9); NaN and ±∞ are refused.
+pub fn check_barycentric(b: [f64; 3]) -> Result<(), SurfaceError> {
+    let s = b[0] + b[1] + b[2];
+    if b.iter().any(|&x| !(x >= -1e-12) || !x.is_finite()) || !((s - 1.0).abs() <= 1e-9) {
+        return Err(SurfaceError::BadBarycentric(b));
+    }
+    Ok(())
+}
+
 impl Pps {
     /// g_v⁻¹ (Def. 4.1.6, stated inverse) followed by the rotation by +2πj/m_v; 0 ↦ 0.
     fn chart_inverse<S: SurfaceScalar>(
@@ -137,11 +147,7 @@ impl Pps {
         bary: &[S; 3],
         c: &Consts<S>,
     ) -> Result<EvalPoint<S>, SurfaceError> {
-        let b = bary.clone().map(|x| x.to_f64());
-        let s = b[0] + b[1] + b[2];
-        if b.iter().any(|&x| !(x >= -1e-12)) || (s - 1.0).abs() > 1e-9 {
-            return Err(SurfaceError::BadBarycentric(b));
-        }
+        check_barycentric(bary.clone().map(|x| x.to_f64()))?;
         let [u, w, x] = self.face(f)?;
         let qp = canonical_point(bary, c);
         let chart = self.choose_chart(&qp, c);

@@ -117,6 +117,7 @@ impl Pps {
         bary: [f64; 3],
         c: &Consts<Jet<f64, L>>,
     ) -> Result<(Chart, VertexId, SurfacePoint), SurfaceError> {
+        super::eval::check_barycentric(bary)?;
         let cf = self.consts_f64();
         let qp = super::eval::canonical_point(&bary, cf);
         let chart = self.choose_chart(&qp, cf);

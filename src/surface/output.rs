@@ -59,20 +59,47 @@ pub struct SamplePattern {
     pub faces: Vec<[u32; 3]>,
 }
 
-/// The midpoint-subdivision pattern of Sec. 6.2 at `level` (at most 12): the barycentric grid
+/// Memory budget of one sampling (positions, normals, curvatures, triangles and the pattern).
+pub const SAMPLE_MEMORY_LIMIT: u128 = 8 << 30;
+
+/// Estimated (points, bytes) of the Sec. 6.2 sampling of `faces` triangles at `level`: each
+/// face contributes at most (2^N + 1)(2^N + 2)/2 points and 4^N triangles; a point costs ~96
+/// bytes (position, normal, two curvatures, its eval argument and index entry), a triangle 12.
+pub fn sample_estimate(faces: usize, level: u32) -> (u128, u128) {
+    let n = 1u128 << level.min(100);
+    let f = faces as u128;
+    let points = f * (n + 1) * (n + 2) / 2;
+    (points, points * 96 + f * n * n * 12)
+}
+
+/// The midpoint-subdivision pattern of Sec. 6.2 at `level`: the barycentric grid
 /// (k, i, j)/2^level of every face, a point on an edge or corner of K listed once (through the
-/// first face that reaches it), so the triangles close up.
+/// first face that reaches it), so the triangles close up. A level whose estimated output
+/// exceeds [`SAMPLE_MEMORY_LIMIT`] is refused with [`SurfaceError::LevelTooLarge`].
 pub fn sample_pattern(pps: &Pps, level: u32) -> Result<SamplePattern, SurfaceError> {
     let faces = (0..pps.num_faces())
         .map(|f| pps.face(FaceId(f as u32)))
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(sample_pattern_faces(&faces, level))
+    sample_pattern_faces(&faces, level)
 }
 
 /// [`sample_pattern`] for any list of faces (corner triples in their stored order): shared
-/// by the constructions that sample through eval(σ, λ, μ, ν).
-pub fn sample_pattern_faces(faces: &[[crate::mesh::VertexId; 3]], level: u32) -> SamplePattern {
-    let n = 1u32 << level.min(12);
+/// by the constructions that sample through eval(σ, λ, μ, ν). Refuses a level whose estimated
+/// output exceeds [`SAMPLE_MEMORY_LIMIT`] with [`SurfaceError::LevelTooLarge`].
+pub fn sample_pattern_faces(
+    faces: &[[crate::mesh::VertexId; 3]],
+    level: u32,
+) -> Result<SamplePattern, SurfaceError> {
+    let (points, bytes) = sample_estimate(faces.len(), level);
+    if level > 30 || bytes > SAMPLE_MEMORY_LIMIT {
+        return Err(SurfaceError::LevelTooLarge {
+            level,
+            points,
+            bytes,
+            limit: SAMPLE_MEMORY_LIMIT,
+        });
+    }
+    let n = 1u32 << level;
     let nf = faces.len();
     let mut index: HashMap<Key, u32> = HashMap::new();
     let mut out = SamplePattern {
@@ -129,7 +156,7 @@ pub fn sample_pattern_faces(faces: &[[crate::mesh::VertexId; 3]], level: u32) ->
             }
         }
     }
-    out
+    Ok(out)
 }
 
 /// Which per-vertex attributes a sampling computes: each costs more than the one before
@@ -288,16 +315,43 @@ pub fn robust_range(xs: &[f64]) -> f64 {
 /// Write the sampled mesh: `.obj` (v, vn, f a//a), `.off` (NOFF: positions and normals),
 /// `.ply` (ascii: x y z nx ny nz red green blue gaussian_curvature mean_curvature; colours
 /// from the mean curvature, clipped at its 98th percentile). Attributes that were not
-/// computed ([`Attributes`]) are left out.
+/// computed ([`Attributes`]) are left out. Any other extension is refused (`InvalidInput`).
+/// The file is written next to `path` under a temporary name and renamed into place, so a
+/// failed write never leaves a truncated `path`.
 pub fn write_mesh_with_attributes(path: &Path, m: &SampledMesh) -> std::io::Result<()> {
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
         .unwrap_or("")
         .to_ascii_lowercase();
-    let file = std::fs::File::create(path)?;
-    let mut w = std::io::BufWriter::new(file);
-    match ext.as_str() {
+    if !matches!(ext.as_str(), "obj" | "off" | "ply") {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            format!(
+                "unknown output format {:?} for {}: use .obj, .off or .ply",
+                ext,
+                path.display()
+            ),
+        ));
+    }
+    let mut tmp_name = path.file_name().unwrap_or_default().to_os_string();
+    tmp_name.push(format!(".{}.partial", std::process::id()));
+    let tmp = path.with_file_name(tmp_name);
+    let written = std::fs::File::create(&tmp)
+        .and_then(|file| write_body(std::io::BufWriter::new(file), &ext, m))
+        .and_then(|()| std::fs::rename(&tmp, path));
+    if written.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    written
+}
+
+fn write_body(
+    mut w: std::io::BufWriter<std::fs::File>,
+    ext: &str,
+    m: &SampledMesh,
+) -> std::io::Result<()> {
+    match ext {
         "obj" => {
             writeln!(
                 w,
@@ -387,5 +441,5 @@ pub fn write_mesh_with_attributes(path: &Path, m: &SampledMesh) -> std::io::Resu
             }
         }
     }
-    w.flush()
+    w.into_inner().map_err(|e| e.into_error())?.sync_all()
 }

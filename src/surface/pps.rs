@@ -63,6 +63,19 @@ pub enum SurfaceError {
     /// The denominator Σ_u Γ_uv(p) of θ_v at p ∈ Ω_v is not decided positive (names v).
     #[error("Σ_u Γ_uv(p) is not decided positive (zero, negative, NaN or an enclosure containing 0) at p in Ω_{0}: θ undefined")]
     ZeroWeight(VertexId),
+    /// Sec. 6.2 sampling at a level whose output would not fit the memory budget (no silent
+    /// clamp: the estimate is reported).
+    #[error("sampling level {level} would produce about {points} points and need about {bytes} bytes (limit {limit} bytes, Sec. 6.2 sampling); choose a lower --level")]
+    LevelTooLarge {
+        /// The requested subdivision level.
+        level: u32,
+        /// Estimated number of output vertices.
+        points: u128,
+        /// Estimated memory of the sampled mesh in bytes.
+        bytes: u128,
+        /// The budget in bytes.
+        limit: u128,
+    },
     /// A Chapter 4 map failed (Π at the origin, or undecided).
     #[error("map: {0}")]
     Map(#[from] MapError),

@@ -38,14 +38,33 @@ pub fn xi_of_sq<S: SurfaceScalar>(k: &XiConsts<S>, t2: &S) -> S {
     xi_open(k, &t)
 }
 
-/// Def. 5.3.1 on (H₁, H₂), the non-constant branch.
+/// Def. 5.3.1 on (H₁, H₂), the non-constant branch, as the logistic function
+/// ξ = 1/(1 + e^{2s}) = e^{−2s}/(1 + e^{−2s}), evaluated with the exponent ≤ 0 only: near H₂
+/// (s → +∞) the literal form's e^{2s} overflows (f64 already where 2s > 709.8), and its
+/// derivatives become ∞/∞ = NaN although ξ is C^∞ and flat there. With e^{−2|s|} ≤ 1 every
+/// term of the value and of the jet's derivatives stays finite.
 fn xi_open<S: SurfaceScalar>(k: &XiConsts<S>, t: &S) -> S {
     let prec = t.precision_bits();
     let one = S::from_i64(1, prec);
     let hh = t.sub(&k.h1).div(&k.h2.sub(&k.h1));
+    // t² < H₂² and t² > H₁² do not imply 0 < H < 1 after rounding (t = √(t²) and the division
+    // round): at H ≥ 1 the literal form takes √0 or √(negative) and every derivative is NaN.
+    // ξ is flat at both ends (all derivatives vanish), so the constant is the exact limit.
+    if one.le(&hh).is_true() {
+        return S::from_i64(0, prec);
+    }
+    if hh.sign() != Some(std::cmp::Ordering::Greater) && hh.sign().is_some() {
+        return one;
+    }
     let s = one.div(&one.sub(&hh).sqrt()).sub(&one.div(&hh.sqrt()));
-    let e = s.mul(&S::from_i64(2, prec)).exp();
-    one.div(&one.add(&e))
+    let two = S::from_i64(2, prec);
+    if s.sign() == Some(std::cmp::Ordering::Greater) {
+        let e = s.mul(&two).neg().exp();
+        e.div(&one.add(&e))
+    } else {
+        let e = s.mul(&two).exp();
+        one.div(&one.add(&e))
+    }
 }
 
 /// Def. 5.3.1: ξ(t) for any real t.

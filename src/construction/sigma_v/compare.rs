@@ -84,7 +84,7 @@ pub fn compare(
 ) -> Result<CompareReport, String> {
     let pps = Pps::build(k, target, PpsOptions::default());
     let faces: Vec<_> = k.faces().map(|f| k.face(f)).collect();
-    let pat = sample_pattern_faces(&faces, level);
+    let pat = sample_pattern_faces(&faces, level).map_err(|e| e.to_string())?;
     let (mut lo, mut hi) = ([f64::MAX; 3], [f64::MIN; 3]);
     for v in k.vertices() {
         let p = k.position(v);

@@ -78,6 +78,10 @@ pub enum SigmaVError {
     /// Σγ at a point of Ω_i not decided positive (names the corner).
     #[error("Σγ is not decided positive at a point of Ω of corner {0}")]
     ZeroWeight(u32),
+    /// A sampling level whose output would exceed the memory limit of Sec. 6.2 sampling
+    /// (`surface::output::SAMPLE_MEMORY_LIMIT`).
+    #[error("sampling level {0} would exceed the sampling memory limit")]
+    LevelTooLarge(u32),
 }
 
 /// The (σ, v)-indexed gluing data of a simplicial surface (mesh tables only; the scalar

@@ -388,7 +388,10 @@ impl SigmaVPps {
         let faces: Vec<_> = (0..self.gluing.num_faces())
             .map(|f| self.gluing.face_corners(FaceId(f as u32)))
             .collect::<Result<_, _>>()?;
-        let pat = sample_pattern_faces(&faces, level);
+        let pat = sample_pattern_faces(&faces, level).map_err(|e| match e {
+            crate::surface::SurfaceError::LevelTooLarge { level, .. } => SigmaVError::LevelTooLarge(level),
+            _ => SigmaVError::LevelTooLarge(level),
+        })?;
         let cj = self.consts::<Jet<f64>>(53);
         let res: Vec<Result<_, SigmaVError>> = pat
             .points
