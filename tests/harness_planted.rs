@@ -244,7 +244,8 @@ fn x_harness_surface_empty_domain_is_skipped() {
         samples_per_vertex: 0,
         ..sopts()
     };
-    let g = PpmGluing::new(&validate(&icosahedron()).surface.expect("valid"));
+    let k = validate(&icosahedron()).surface.expect("valid");
+    let g = PpmGluing::new(&k);
     for r in [
         check_condition_c(&p, &o),
         check_weights(&p, &o),

@@ -8,7 +8,6 @@ use pseudomanifold::construction::sigma_v::checks::*;
 use pseudomanifold::construction::sigma_v::gluing::g_uw_on_domain;
 use pseudomanifold::construction::sigma_v::wedge::WedgeTable;
 use pseudomanifold::construction::sigma_v::*;
-use pseudomanifold::gluing::data::GluingData;
 use pseudomanifold::gluing::sampled::{check_1, check_all, SampleConfig};
 use pseudomanifold::mesh::generate::{icosahedron, octahedron, torus};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
