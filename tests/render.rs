@@ -233,8 +233,13 @@ fn c6_2_curvature_continuity_pps_continuous_across_edges_pn_not() {
         // Continuous: the jump shrinks with ε (linearly: ×1/10; asked ≤ ×1/5) and vanishes on
         // the edge up to rounding; PN's does not shrink (≥ ×1/2) and stays O(1) on the edge.
         assert!(p4 <= p3 / 5.0, "{name}: PPS jump does not shrink: {p3} → {p4}");
-        assert!(n4 >= n3 / 2.0, "{name}: PN jump shrinks: {n3} → {n4}");
-        assert!(n0 > 1e3 * p0, "{name}: PN jump on the edge {n0} not ≫ PPS {p0}");
+        // PN's jump is a property of the mesh: on the icosahedron every edge is a mirror
+        // symmetry of the PN surface, so K agrees across it (measured 6e-16); the claim is
+        // asserted where no such symmetry holds.
+        if name != "icosahedron" {
+            assert!(n4 >= n3 / 2.0, "{name}: PN jump shrinks: {n3} → {n4}");
+            assert!(n0 > 1e3 * p0, "{name}: PN jump on the edge {n0} not ≫ PPS {p0}");
+        }
     }
 }
 

@@ -66,10 +66,14 @@ pub const SAMPLE_MEMORY_LIMIT: u128 = 8 << 30;
 /// face contributes at most (2^N + 1)(2^N + 2)/2 points and 4^N triangles; a point costs ~96
 /// bytes (position, normal, two curvatures, its eval argument and index entry), a triangle 12.
 pub fn sample_estimate(faces: usize, level: u32) -> (u128, u128) {
+    // Saturating: the estimate only has to exceed any limit when the true count does.
     let n = 1u128 << level.min(100);
     let f = faces as u128;
-    let points = f * (n + 1) * (n + 2) / 2;
-    (points, points * 96 + f * n * n * 12)
+    let points = f.saturating_mul(n + 1).saturating_mul(n + 2) / 2;
+    let bytes = points
+        .saturating_mul(96)
+        .saturating_add(f.saturating_mul(n).saturating_mul(n).saturating_mul(12));
+    (points, bytes)
 }
 
 /// The midpoint-subdivision pattern of Sec. 6.2 at `level`: the barycentric grid
