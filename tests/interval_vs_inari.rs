@@ -79,6 +79,9 @@ fn check_unary(
         );
         for x in [a, b, 0.5 * (a + b)] {
             let v = pt(&rug::Float::with_val(256, x));
+            if v.is_nan() {
+                continue; // x outside the function's domain (sqrt, acos): no point value to enclose
+            }
             assert!(
                 v >= r.inf() && v <= r.sup(),
                 "{name}({x}) = {v} ∉ [{}, {}]",
