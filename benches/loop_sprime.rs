@@ -28,8 +28,14 @@ const PAPER: [(&str, u32, f64, f64); 4] = [
 
 fn meshes() -> Vec<(String, SimplicialSurface)> {
     let mut v = vec![
-        ("icosahedron".to_string(), validate(&icosahedron()).surface.expect("ico")),
-        ("torus 20k".to_string(), validate(&torus(100, 100)).surface.expect("torus")),
+        (
+            "icosahedron".to_string(),
+            validate(&icosahedron()).surface.expect("ico"),
+        ),
+        (
+            "torus 20k".to_string(),
+            validate(&torus(100, 100)).surface.expect("torus"),
+        ),
     ];
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good");
     for name in ["cube.obj", "bob_small.ply", "bunny.off", "koala.obj"] {
@@ -72,7 +78,10 @@ fn median(mut v: Vec<f64>) -> f64 {
 }
 
 fn quick() {
-    let runs: usize = std::env::var("LOOP_RUNS").ok().and_then(|s| s.parse().ok()).unwrap_or(3);
+    let runs: usize = std::env::var("LOOP_RUNS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3);
     let time = |f: &dyn Fn()| {
         median(
             (0..runs)
@@ -84,7 +93,10 @@ fn quick() {
                 .collect(),
         )
     };
-    println!("threads: {}; median of {runs} runs", rayon::current_num_threads());
+    println!(
+        "threads: {}; median of {runs} runs",
+        rayon::current_num_threads()
+    );
     println!("| mesh | n_v | PN (ms) | Loop (ms) | Loop/PN |");
     println!("|---|---|---|---|---|");
     for (name, k) in &meshes() {
@@ -94,7 +106,11 @@ fn quick() {
         let lp = time(&|| {
             std::hint::black_box(build_loop(k));
         });
-        println!("| {name} | {} | {pn:.1} | {lp:.1} | {:.3} |", k.num_vertices(), lp / pn);
+        println!(
+            "| {name} | {} | {pn:.1} | {lp:.1} | {:.3} |",
+            k.num_vertices(),
+            lp / pn
+        );
     }
     println!("\nPaper, Table 6.2 (single core, 3.2 GHz Xeon):");
     for (m, nv, pn, lp) in PAPER {
@@ -120,14 +136,19 @@ fn bench(c: &mut Criterion) {
     let mut g = c.benchmark_group("loop_sprime");
     g.sample_size(10);
     for (name, k) in &meshes() {
-        g.bench_function(format!("construction PN {name}"), |b| b.iter(|| build_pn(k)));
-        g.bench_function(format!("construction Loop {name}"), |b| b.iter(|| build_loop(k)));
+        g.bench_function(format!("construction PN {name}"), |b| {
+            b.iter(|| build_pn(k))
+        });
+        g.bench_function(format!("construction Loop {name}"), |b| {
+            b.iter(|| build_loop(k))
+        });
         let s = LoopSurface::new(k).expect("Loop S′");
         let pts = points(k, 100_000);
         g.throughput(Throughput::Elements(pts.len() as u64));
-        g.bench_function(format!("S′ eval f64 {name} 100k points (1 thread)"), |b| {
-            b.iter(|| eval_all(k, &s, &pts))
-        });
+        g.bench_function(
+            format!("S′ eval f64 {name} 100k points (1 thread)"),
+            |b| b.iter(|| eval_all(k, &s, &pts)),
+        );
         g.throughput(Throughput::Elements(1));
     }
     g.finish();

@@ -17,7 +17,9 @@ use pseudomanifold::msplines::{forms, run, Options};
 use std::path::Path;
 
 fn corpus(name: &str) -> Option<SimplicialSurface> {
-    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good").join(name);
+    let p = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../shared/meshes/good")
+        .join(name);
     validate(&read_mesh(&p, &ReadOptions::default()).ok()?).surface
 }
 
@@ -37,21 +39,33 @@ fn main() {
                     .collect()
             })
             .collect();
-        c.bench_function("koala: cotan Laplacian factor + 2 solves (forms step, genus 0)", |b| {
-            b.iter(|| harmonic_forms(&k, &ei, &taus).expect("solve"))
-        });
+        c.bench_function(
+            "koala: cotan Laplacian factor + 2 solves (forms step, genus 0)",
+            |b| b.iter(|| harmonic_forms(&k, &ei, &taus).expect("solve")),
+        );
     }
-    let mut cases = vec![("torus 20k".to_string(), validate(&torus(100, 100)).surface.expect("torus"))];
-    for name in ["torus.obj", "eight.off", "skull_low_resolution.obj", "boot.obj"] {
+    let mut cases = vec![(
+        "torus 20k".to_string(),
+        validate(&torus(100, 100)).surface.expect("torus"),
+    )];
+    for name in [
+        "torus.obj",
+        "eight.off",
+        "skull_low_resolution.obj",
+        "boot.obj",
+    ] {
         if let Some(k) = corpus(name) {
             cases.push((name.to_string(), k));
         }
     }
     for (name, k) in &cases {
-        c.bench_function(&format!("{name}: harmonic + holomorphic forms"), |b| b.iter(|| forms(k).expect("forms")));
-        c.bench_function(&format!("{name}: whole pipeline (forms, zeros, atlas, checks)"), |b| {
-            b.iter(|| run(k, &Options::default()).expect("run"))
+        c.bench_function(&format!("{name}: harmonic + holomorphic forms"), |b| {
+            b.iter(|| forms(k).expect("forms"))
         });
+        c.bench_function(
+            &format!("{name}: whole pipeline (forms, zeros, atlas, checks)"),
+            |b| b.iter(|| run(k, &Options::default()).expect("run")),
+        );
     }
     c.final_summary();
 }

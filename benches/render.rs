@@ -47,7 +47,12 @@ fn bench(c: &mut Criterion) {
                 height: 1024,
                 ..RenderOptions::default()
             };
-            render_scene(&scene, &o).expect("render").0.to_png().expect("png").len()
+            render_scene(&scene, &o)
+                .expect("render")
+                .0
+                .to_png()
+                .expect("png")
+                .len()
         })
     });
     for attrs in [
@@ -64,18 +69,21 @@ fn bench(c: &mut Criterion) {
             })
         });
     }
-    g.bench_function(format!("sample {name} level 2 order-3 jets (before)"), |b| {
-        let pattern = sample_pattern(&pps, 2).expect("pattern");
-        let cj: Consts<Jet<f64>> = pps.consts(53);
-        b.iter(|| {
-            pattern
-                .points
-                .par_iter()
-                .map(|s| pps.eval_geometry(s.face, s.bary, &cj).map(|x| x.2.gaussian))
-                .filter(|r| r.is_ok())
-                .count()
-        })
-    });
+    g.bench_function(
+        format!("sample {name} level 2 order-3 jets (before)"),
+        |b| {
+            let pattern = sample_pattern(&pps, 2).expect("pattern");
+            let cj: Consts<Jet<f64>> = pps.consts(53);
+            b.iter(|| {
+                pattern
+                    .points
+                    .par_iter()
+                    .map(|s| pps.eval_geometry(s.face, s.bary, &cj).map(|x| x.2.gaussian))
+                    .filter(|r| r.is_ok())
+                    .count()
+            })
+        },
+    );
     g.finish();
 }
 

@@ -37,7 +37,10 @@ fn x_adv_01_nan_normals_at_edge_midpoints_r_xi_finite() {
     let t = km.h2.value().mul(&Mp::from_f64(1.0 - 1e-60, 256));
     let (x, _) = Jet::variables(t, Mp::from_i64(0, 256));
     let j = xi(&km, &x);
-    assert!(j.c.iter().all(|c| c.to_f64().is_finite()), "Mp ξ jet: {j:?}");
+    assert!(
+        j.c.iter().all(|c| c.to_f64().is_finite()),
+        "Mp ξ jet: {j:?}"
+    );
 
     // The sampled octahedron: every normal a unit vector, every curvature finite.
     let k = surface(&octahedron());
@@ -46,7 +49,10 @@ fn x_adv_01_nan_normals_at_edge_midpoints_r_xi_finite() {
     for (i, n) in m.normals.iter().enumerate() {
         let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
         assert!((len - 1.0).abs() < 1e-9, "vertex {i}: normal {n:?}");
-        assert!(m.gaussian[i].is_finite() && m.mean[i].is_finite(), "vertex {i}");
+        assert!(
+            m.gaussian[i].is_finite() && m.mean[i].is_finite(),
+            "vertex {i}"
+        );
     }
     let cj = pps.consts::<Jet<f64>>(53);
     let (_, _, g) = pps
@@ -62,7 +68,10 @@ fn x_adv_01_nan_normals_at_edge_midpoints_r_xi_finite() {
 #[test]
 fn x_adv_02_precision_1024_breaks_membership_r_unit_roundoff() {
     use pseudomanifold::construction::{in_omega_uw, EdgeConfig, Trit, P2};
-    assert_eq!(Mp::from_i64(1, 1024).epsilon(), 0.5f64.powi(1000) * 0.5f64.powi(24));
+    assert_eq!(
+        Mp::from_i64(1, 1024).epsilon(),
+        0.5f64.powi(1000) * 0.5f64.powi(24)
+    );
     assert!(Mp::from_i64(1, 1024).epsilon() > 0.0);
     let one = Mp::from_i64(1, 4000);
     // The backend may round the precision up (astro-float: to a multiple of 64 bits).
@@ -73,7 +82,11 @@ fn x_adv_02_precision_1024_breaks_membership_r_unit_roundoff() {
     for _ in 0..62 {
         u = u.mul(&Mp::from_f64(2f64.powi(64), 4000));
     }
-    assert_eq!(u.to_f64(), 2f64.powi(64 * 62 - p), "unit roundoff at {p} bits is 2^-{p}");
+    assert_eq!(
+        u.to_f64(),
+        2f64.powi(64 * 62 - p),
+        "unit roundoff at {p} bits is 2^-{p}"
+    );
     for (mu, mw) in [(6, 6), (5, 7), (9, 4)] {
         let e = EdgeConfig::new(mu, 0, mw, 0).expect("config");
         let mut inside = 0;
@@ -90,7 +103,11 @@ fn x_adv_02_precision_1024_breaks_membership_r_unit_roundoff() {
                     inside += 1;
                 }
                 for bits in [1023, 1024, 1100, 4096] {
-                    assert_eq!(at(bits), base, "({x}, {y}) at {bits} bits, m = ({mu}, {mw})");
+                    assert_eq!(
+                        at(bits),
+                        base,
+                        "({x}, {y}) at {bits} bits, m = ({mu}, {mw})"
+                    );
                 }
             }
         }
@@ -107,22 +124,36 @@ fn x_adv_12_sample_level_clamped_silently() {
     let pps = build(&k);
     for level in [13, 14, 31, u32::MAX] {
         match sample_pattern(&pps, level) {
-            Err(SurfaceError::LevelTooLarge { level: l, bytes, .. }) => {
+            Err(SurfaceError::LevelTooLarge {
+                level: l, bytes, ..
+            }) => {
                 assert_eq!(l, level);
                 assert!(bytes > SAMPLE_MEMORY_LIMIT || level > 30);
             }
-            other => panic!("level {level}: expected LevelTooLarge, got {:?}", other.map(|p| p.points.len())),
+            other => panic!(
+                "level {level}: expected LevelTooLarge, got {:?}",
+                other.map(|p| p.points.len())
+            ),
         }
     }
     let p = sample_pattern(&pps, 3).expect("level 3");
-    assert_eq!(p.points.len(), 8 * 64 / 2 + 2, "octahedron level 3: 4^3·F/2 + 2 points");
+    assert_eq!(
+        p.points.len(),
+        8 * 64 / 2 + 2,
+        "octahedron level 3: 4^3·F/2 + 2 points"
+    );
     assert!(sample_estimate(8, 3).0 >= p.points.len() as u128);
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
         .args(["figure", "--degrees", "4294967295,5", "-o"])
         .arg(std::env::temp_dir().join("x_adv_12.svg"))
         .output()
         .expect("run ppm");
-    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 /// `ppm eval` accepted NaN, ±∞ and out-of-simplex barycentrics (printing NaN into JSON);
@@ -139,7 +170,10 @@ fn x_adv_13_eval_accepts_nan_barycentrics() {
         [2.0, 2.0, 2.0],
     ] {
         assert!(
-            matches!(pps.eval_geometry(FaceId(1), b, &cj), Err(SurfaceError::BadBarycentric(_))),
+            matches!(
+                pps.eval_geometry(FaceId(1), b, &cj),
+                Err(SurfaceError::BadBarycentric(_))
+            ),
             "{b:?} accepted"
         );
     }
@@ -150,7 +184,11 @@ fn x_adv_13_eval_accepts_nan_barycentrics() {
         .output()
         .expect("run ppm");
     assert_eq!(out.status.code(), Some(1));
-    assert!(out.stdout.is_empty(), "{}", String::from_utf8_lossy(&out.stdout));
+    assert!(
+        out.stdout.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
     for bits in ["0", "1"] {
         let out = std::process::Command::new(bin)
             .args(["eval-map", mesh, "0", "1", "0.3", "0.1", "--bits", bits])
@@ -183,7 +221,9 @@ fn x_adv_14_failed_write_leaves_truncated_file() {
     assert_eq!(std::fs::read_to_string(&target).expect("read"), "previous");
     std::fs::remove_dir(&blocker).expect("rm");
     write_mesh_with_attributes(&target, &m).expect("write");
-    assert!(std::fs::read_to_string(&target).expect("read").starts_with("NOFF"));
+    assert!(std::fs::read_to_string(&target)
+        .expect("read")
+        .starts_with("NOFF"));
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -11,7 +11,8 @@ use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, RawMesh, SimplicialSurface, VertexId};
 use pseudomanifold::report::CheckResult;
 use pseudomanifold::surface::loop_subdiv::checks::{
-    check_edges, check_normals, check_vertices, radius, run_loop_checks, JetSource, LoopCheckOptions, COND,
+    check_edges, check_normals, check_vertices, radius, run_loop_checks, JetSource,
+    LoopCheckOptions, COND,
 };
 use pseudomanifold::surface::loop_subdiv::stam::PatchJet;
 use pseudomanifold::surface::loop_subdiv::{LoopError, LoopSurface, MAX_VALENCE};
@@ -19,7 +20,9 @@ use rand::{Rng, SeedableRng};
 use std::path::Path;
 
 fn surface(raw: &RawMesh) -> SimplicialSurface {
-    validate(raw).surface.expect("fixture is a simplicial surface")
+    validate(raw)
+        .surface
+        .expect("fixture is a simplicial surface")
 }
 
 fn load(p: &Path) -> SimplicialSurface {
@@ -49,7 +52,8 @@ fn assert_no_failure(rs: &[CheckResult], what: &str) {
 }
 
 #[test]
-fn loop_c0_vertex_loop_limit_mask_loop_normal_mask_loop_c0_edge_loop_c1_edge_loop_c2_edge_hold_on_fixtures() {
+fn loop_c0_vertex_loop_limit_mask_loop_normal_mask_loop_c0_edge_loop_c1_edge_loop_c2_edge_hold_on_fixtures(
+) {
     let mut meshes: Vec<(String, SimplicialSurface)> = common::bundled_good()
         .iter()
         .map(|p| (p.display().to_string(), load(p)))
@@ -89,7 +93,12 @@ fn loop_valence_above_max_is_a_typed_error() {
 #[test]
 fn loop_mp_eval_f64_matches_mp256() {
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(17);
-    for raw in [generate::icosahedron(), generate::tetrahedron(), bipyramid(7), generate::torus(6, 5)] {
+    for raw in [
+        generate::icosahedron(),
+        generate::tetrahedron(),
+        bipyramid(7),
+        generate::torus(6, 5),
+    ] {
         let k = surface(&raw);
         let s = LoopSurface::new(&k).expect("Loop surface");
         let tol = COND * f64::EPSILON * radius(&k);
@@ -97,16 +106,27 @@ fn loop_mp_eval_f64_matches_mp256() {
             let f = FaceId(rng.gen_range(0..k.num_faces() as u32));
             let c = k.face(f);
             let (a, b): (f64, f64) = (rng.gen(), rng.gen());
-            let (a, b) = if a + b > 1.0 { (1.0 - a, 1.0 - b) } else { (a, b) };
+            let (a, b) = if a + b > 1.0 {
+                (1.0 - a, 1.0 - b)
+            } else {
+                (a, b)
+            };
             // Also points very close to a corner (deep tiles).
-            for bary in [[1.0 - a - b, a, b], [1.0 - a * 1e-9 - b * 1e-9, a * 1e-9, b * 1e-9]] {
+            for bary in [
+                [1.0 - a - b, a, b],
+                [1.0 - a * 1e-9 - b * 1e-9, a * 1e-9, b * 1e-9],
+            ] {
                 let pf = s.jet::<f64>(f, c, &bary, false).expect("f64").p;
                 let bm = bary.map(|x| Mp::new(256, x));
                 let pm = s.jet::<Mp>(f, c, &bm, false).expect("mp").p;
                 for d in 0..3 {
                     use pseudomanifold::construction::Scalar;
                     let e = (pf[d] - pm[d].to_f64()).abs();
-                    assert!(e <= tol, "face {} bary {bary:?}: |f64 − mp| = {e:e} > {tol:e}", f.0);
+                    assert!(
+                        e <= tol,
+                        "face {} bary {bary:?}: |f64 − mp| = {e:e} > {tol:e}",
+                        f.0
+                    );
                 }
             }
         }
@@ -120,7 +140,13 @@ struct Fault<'a> {
 }
 
 impl JetSource for Fault<'_> {
-    fn jet(&self, f: FaceId, c: [VertexId; 3], b: [f64; 3], d: bool) -> Result<PatchJet<f64>, LoopError> {
+    fn jet(
+        &self,
+        f: FaceId,
+        c: [VertexId; 3],
+        b: [f64; 3],
+        d: bool,
+    ) -> Result<PatchJet<f64>, LoopError> {
         let mut j = self.s.jet::<f64>(f, c, &b, d)?;
         match self.kind {
             // Wrong map: one face displaced.
@@ -156,19 +182,33 @@ fn loop_c0_edge_loop_c2_edge_planted_faults_caught() {
         let mut rs = check_vertices(&k, &src, &opts);
         rs.push(check_normals(&k, &src, &opts));
         rs.extend(check_edges(&k, &src, &opts));
-        let failed: Vec<&str> = rs.iter().filter(|r| r.failed()).map(|r| r.id.as_str()).collect();
+        let failed: Vec<&str> = rs
+            .iter()
+            .filter(|r| r.failed())
+            .map(|r| r.id.as_str())
+            .collect();
         let want: &[&str] = match kind {
             0..=3 => &["LOOP-C0-edge"],
             _ => &["LOOP-C2-edge"],
         };
         for w in want {
-            assert!(failed.contains(w), "fault {kind}: {w} not reported (failed: {failed:?})");
+            assert!(
+                failed.contains(w),
+                "fault {kind}: {w} not reported (failed: {failed:?})"
+            );
         }
         for r in rs.iter().filter(|r| r.failed()) {
-            assert!(!r.witnesses.is_empty(), "fault {kind}: {} without witness", r.id);
+            assert!(
+                !r.witnesses.is_empty(),
+                "fault {kind}: {} without witness",
+                r.id
+            );
         }
         if kind == 4 {
-            assert!(!failed.contains(&"LOOP-C0-edge"), "fault 4 touches only ∂uu");
+            assert!(
+                !failed.contains(&"LOOP-C0-edge"),
+                "fault 4 touches only ∂uu"
+            );
         }
     }
     // Empty domain: nothing examined is "skipped", never "holds".
@@ -177,7 +217,11 @@ fn loop_c0_edge_loop_c2_edge_planted_faults_caught() {
         ..opts
     };
     for r in check_edges(&k, &s, &none) {
-        assert!(matches!(r.verdict, pseudomanifold::report::Verdict::Skipped { .. }), "{}", r.id);
+        assert!(
+            matches!(r.verdict, pseudomanifold::report::Verdict::Skipped { .. }),
+            "{}",
+            r.id
+        );
     }
 }
 
@@ -193,7 +237,10 @@ fn read_table(p: &Path) -> Option<Vec<Row>> {
     let text = std::fs::read_to_string(p).ok()?;
     let mut out = vec![];
     for line in text.lines().skip(1) {
-        let v: Vec<f64> = line.split('\t').map(|x| x.parse().unwrap_or(f64::NAN)).collect();
+        let v: Vec<f64> = line
+            .split('\t')
+            .map(|x| x.parse().unwrap_or(f64::NAN))
+            .collect();
         if v.len() != 10 {
             continue;
         }
@@ -232,7 +279,10 @@ fn loop_authors_sprime_and_loop_authors_pps_tables() {
     for name in ["torus", "eight_loop1", "spot_loop1", "bunny_loop1"] {
         let (Some(rows), Ok(raw)) = (
             read_table(&dir.join(format!("loop/{name}.tsv"))),
-            read_mesh(&dir.join(format!("meshes/{name}.off")), &ReadOptions::default()),
+            read_mesh(
+                &dir.join(format!("meshes/{name}.off")),
+                &ReadOptions::default(),
+            ),
         ) else {
             eprintln!("note: authors' Loop table {name} not present; skipped");
             continue;
@@ -254,14 +304,29 @@ fn loop_authors_sprime_and_loop_authors_pps_tables() {
             let f = FaceId(r.face);
             let file = raw.faces[r.face as usize].map(VertexId);
             let p = s.jet::<f64>(f, file, &r.bary, false).expect("S′").p;
-            ds.push(((0..3).map(|d| (p[d] - r.sprime[d]).powi(2)).sum::<f64>().sqrt(), i));
+            ds.push((
+                (0..3)
+                    .map(|d| (p[d] - r.sprime[d]).powi(2))
+                    .sum::<f64>()
+                    .sqrt(),
+                i,
+            ));
             let stored = k.face(f);
             let b: [f64; 3] = std::array::from_fn(|j| {
-                let at = file.iter().position(|&v| v == stored[j]).expect("same corners");
+                let at = file
+                    .iter()
+                    .position(|&v| v == stored[j])
+                    .expect("same corners");
                 r.bary[at]
             });
             let q = pps.eval_f64(f, b).expect("PPS");
-            dp.push(((0..3).map(|d| (q[d] - r.pps[d]).powi(2)).sum::<f64>().sqrt(), i));
+            dp.push((
+                (0..3)
+                    .map(|d| (q[d] - r.pps[d]).powi(2))
+                    .sum::<f64>()
+                    .sqrt(),
+                i,
+            ));
         }
         let (ms, ps, ws) = stats(ds);
         let (mp, pp, wp) = stats(dp);
@@ -298,12 +363,27 @@ fn loop_pps_c_chapter5_rows_and_c6_2_mimics_with_loop_sprime() {
         };
         let pn = run(SurfaceKind::Pn);
         let lp = run(SurfaceKind::Loop);
-        let pn_failed: Vec<&str> = pn.iter().filter(|r| r.failed()).map(|r| r.id.as_str()).collect();
+        let pn_failed: Vec<&str> = pn
+            .iter()
+            .filter(|r| r.failed())
+            .map(|r| r.id.as_str())
+            .collect();
         for r in &lp {
-            assert!(!r.failed() || pn_failed.contains(&r.id.as_str()), "{} fails only with Loop S′: {:?}", r.id, r.witnesses);
+            assert!(
+                !r.failed() || pn_failed.contains(&r.id.as_str()),
+                "{} fails only with Loop S′: {:?}",
+                r.id,
+                r.witnesses
+            );
         }
-        let m = lp.iter().find(|r| r.id == "C6.2-mimics").expect("C6.2-mimics row");
-        assert!(m.examined > 0 && m.worst_deviation.is_some_and(f64::is_finite), "{m:?}");
+        let m = lp
+            .iter()
+            .find(|r| r.id == "C6.2-mimics")
+            .expect("C6.2-mimics row");
+        assert!(
+            m.examined > 0 && m.worst_deviation.is_some_and(f64::is_finite),
+            "{m:?}"
+        );
         eprintln!("{}", m.note);
         assert!(lp.iter().any(|r| r.id == "LOOP-C2-edge"));
     }

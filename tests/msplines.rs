@@ -19,17 +19,23 @@ use pseudomanifold::report::{CheckResult, Verdict};
 use std::path::Path;
 
 fn torus(n: u32, m: u32) -> SimplicialSurface {
-    validate(&generate::torus(n, m)).surface.expect("generated torus is a simplicial surface")
+    validate(&generate::torus(n, m))
+        .surface
+        .expect("generated torus is a simplicial surface")
 }
 
 fn eight() -> SimplicialSurface {
     let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/eight.off");
     let raw = read_mesh(&p, &ReadOptions::default()).expect("eight.off reads");
-    validate(&raw).surface.expect("eight.off is a simplicial surface")
+    validate(&raw)
+        .surface
+        .expect("eight.off is a simplicial surface")
 }
 
 fn find<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
-    rs.iter().find(|r| r.id == id).unwrap_or_else(|| panic!("no check {id}"))
+    rs.iter()
+        .find(|r| r.id == id)
+        .unwrap_or_else(|| panic!("no check {id}"))
 }
 
 fn holds(r: &CheckResult) -> bool {
@@ -38,7 +44,9 @@ fn holds(r: &CheckResult) -> bool {
 
 #[test]
 fn ms_t2_genus_zero_is_refused_with_a_typed_error_citing_thm_2() {
-    let k = validate(&generate::octahedron()).surface.expect("octahedron");
+    let k = validate(&generate::octahedron())
+        .surface
+        .expect("octahedron");
     let err = forms(&k).expect_err("genus 0 must be refused");
     assert!(matches!(err, MsError::GenusZero { .. }));
     assert!(err.to_string().contains("Thm. 2"), "{err}");
@@ -63,7 +71,8 @@ fn ms_h1_ms_h2_ms_h3_torus_bases_exact_and_planted_cocycle_fault_caught() {
 }
 
 #[test]
-fn ms_5_2_3_ms_5_2_3_closed_ms_5_2_4_closed_harmonic_residual_and_closedness_hold_and_nan_is_caught() {
+fn ms_5_2_3_ms_5_2_3_closed_ms_5_2_4_closed_harmonic_residual_and_closedness_hold_and_nan_is_caught(
+) {
     let k = torus(12, 8);
     let (rep, mut fm, _) = run(&k, &Options::default()).expect("torus runs");
     for id in ["MS-5.2(3)", "MS-5.2(3)-closed", "MS-5.2(4)-closed"] {
@@ -73,7 +82,14 @@ fn ms_5_2_3_ms_5_2_3_closed_ms_5_2_4_closed_harmonic_residual_and_closedness_hol
     fm.harmonic.backward_error = f64::NAN;
     assert!(pseudomanifold::msplines::harmonic::check_harmonic_residual(&k, &fm.harmonic).failed());
     fm.harmonic.forms[0][3] = f64::NAN;
-    let r = pseudomanifold::msplines::harmonic::check_closed(&k, &fm.ei, &fm.harmonic.forms, &fm.h_magnitude, "MS-5.2(3)-closed", "h");
+    let r = pseudomanifold::msplines::harmonic::check_closed(
+        &k,
+        &fm.ei,
+        &fm.harmonic.forms,
+        &fm.h_magnitude,
+        "MS-5.2(3)-closed",
+        "h",
+    );
     assert!(r.failed());
 }
 
@@ -81,10 +97,21 @@ fn ms_5_2_3_ms_5_2_3_closed_ms_5_2_4_closed_harmonic_residual_and_closedness_hol
 fn ms_d8_ms_d9_ms_d10_ms_5_2_4_starstar_cauchy_riemann_defect_shrinks_under_refinement() {
     let coarse = forms(&torus(12, 8)).expect("coarse");
     let fine = forms(&torus(24, 16)).expect("fine");
-    let cr = |f: &pseudomanifold::msplines::pipeline::Forms| f.conjugate.cr_defect.iter().copied().fold(0.0, f64::max);
-    assert!(cr(&fine) < cr(&coarse), "CR defect {} → {}", cr(&coarse), cr(&fine));
+    let cr = |f: &pseudomanifold::msplines::pipeline::Forms| {
+        f.conjugate.cr_defect.iter().copied().fold(0.0, f64::max)
+    };
+    assert!(
+        cr(&fine) < cr(&coarse),
+        "CR defect {} → {}",
+        cr(&coarse),
+        cr(&fine)
+    );
     assert!(fine.conjugate.star_star_defect < coarse.conjugate.star_star_defect.max(1e-12));
-    assert!(fine.conjugate.star_star_defect < 0.05, "{}", fine.conjugate.star_star_defect);
+    assert!(
+        fine.conjugate.star_star_defect < 0.05,
+        "{}",
+        fine.conjugate.star_star_defect
+    );
 }
 
 #[test]
@@ -112,7 +139,10 @@ fn ms_t4_index_planted_conjugate_form_gives_negative_windings() {
     let mut flat = fm.omega(0).expect("ω");
     flat.y = flat.x.clone();
     let z = locate(&k, &fm.ei, &flat);
-    assert!(matches!(claims::check_gauss_bonnet(&z, 1, k.num_faces()).verdict, Verdict::Skipped { .. }));
+    assert!(matches!(
+        claims::check_gauss_bonnet(&z, 1, k.num_faces()).verdict,
+        Verdict::Skipped { .. }
+    ));
     assert!(claims::check_decided(&z).failed() || !z.ambiguous_faces.is_empty());
 }
 
@@ -123,8 +153,24 @@ fn ms_d4_ms_d6_ms_d7_ms_t4_atlas_ms_gd_torus_translation_atlas_and_def_3_4_1_all
     for r in &rep.checks {
         assert!(!r.failed() || r.id == "MS-5.4(6)", "{r:?}");
     }
-    assert!(!rep.failed(), "only the documented erratum MS-5.4(6) may fail");
-    for id in ["MS-5.4(4)", "MS-D4", "MS-D7", "MS-T4(atlas)", "MS-5.4(6)-corrected", "D3.4.1(1)", "D3.4.1(2)", "D3.4.1(3)", "D3.4.1(3a)", "D3.4.1(3b)", "D3.4.1(3c)", "D3.4.1(4)"] {
+    assert!(
+        !rep.failed(),
+        "only the documented erratum MS-5.4(6) may fail"
+    );
+    for id in [
+        "MS-5.4(4)",
+        "MS-D4",
+        "MS-D7",
+        "MS-T4(atlas)",
+        "MS-5.4(6)-corrected",
+        "D3.4.1(1)",
+        "D3.4.1(2)",
+        "D3.4.1(3)",
+        "D3.4.1(3a)",
+        "D3.4.1(3b)",
+        "D3.4.1(3c)",
+        "D3.4.1(4)",
+    ] {
         let r = find(&rep.checks, id);
         assert!(holds(r) && r.examined > 0, "{r:?}");
     }
@@ -146,12 +192,14 @@ fn ms_t4_atlas_planted_non_translation_transition_is_caught_by_def_3_4_1() {
     let at = build(&k, &fm.ei, &om, &[], 1).expect("atlas");
     let cfg = SampleConfig { seed: 7, n: 24 };
     // Planted: φ_βα rotated by 0.1 rad about the chart origin for one chart α.
-    let view = AtlasView::neighbourhood(&k, &at, 0).with_phi_override(Box::new(|_b: u32, a: u32, p: [f64; 2]| {
-        (a == 0).then(|| {
-            let (s, c) = 0.1f64.sin_cos();
-            [c * p[0] - s * p[1], s * p[0] + c * p[1]]
-        })
-    }));
+    let view = AtlasView::neighbourhood(&k, &at, 0).with_phi_override(Box::new(
+        |_b: u32, a: u32, p: [f64; 2]| {
+            (a == 0).then(|| {
+                let (s, c) = 0.1f64.sin_cos();
+                [c * p[0] - s * p[1], s * p[0] + c * p[1]]
+            })
+        },
+    ));
     assert!(view.indices().len() > 1);
     let rs = check_all(&view, &cfg);
     assert!(rs.iter().any(|r| r.failed() && (r.id.starts_with("D3.4.1(3") || r.id.starts_with("D3.4.1(3b)"))), "{rs:?}");
@@ -186,12 +234,19 @@ fn ms_t4_count_ms_3_4_3_ms_c2_genus_two_zero_points() {
     assert!(holds(find(&rep.checks, "MS-GB")));
     assert!(holds(find(&rep.checks, "MS-T4(count)")));
     let idx = find(&rep.checks, "MS-T4(index)");
-    assert!(rep.zeros.len() as i64 <= 2 && (!rep.zeros.is_empty() || (idx.failed() && !idx.witnesses.is_empty())));
-    assert!(matches!(find(&rep.checks, "MS-C2").verdict, Verdict::Skipped { .. }));
+    assert!(
+        rep.zeros.len() as i64 <= 2
+            && (!rep.zeros.is_empty() || (idx.failed() && !idx.witnesses.is_empty()))
+    );
+    assert!(matches!(
+        find(&rep.checks, "MS-C2").verdict,
+        Verdict::Skipped { .. }
+    ));
 }
 
 #[test]
-fn ms_p3_ms_d1_ms_d12_ms_l1_1_1_ms_3_1_3_2_ms_3_1_3_3_ms_3_1_3_4_ms_3_1_3_5_polar_forms_and_b_patches_exact() {
+fn ms_p3_ms_d1_ms_d12_ms_l1_1_1_ms_3_1_3_2_ms_3_1_3_3_ms_3_1_3_4_ms_3_1_3_5_polar_forms_and_b_patches_exact(
+) {
     for (k, seed) in [(2usize, 1u64), (3, 2)] {
         for r in pc::check_all(k, seed) {
             assert!(!r.failed(), "{r:?}");
@@ -238,7 +293,13 @@ fn ms_f7_ms_d13_1_ms_d13_2_ms_f7_c2_ms_d5_circle_example_decided_exactly() {
     assert!(d13.failed() && !d13.witnesses.is_empty());
     assert!(!rs.iter().find(|r| r.id == "MS-F7-C2").expect("C2").failed());
     assert!(rs.iter().find(|r| r.id == "MS-D5").expect("D5").failed());
-    assert!(matches!(rs.iter().find(|r| r.id == "MS-D13(2)").expect("D13(2)").verdict, Verdict::Skipped { .. }));
+    assert!(matches!(
+        rs.iter()
+            .find(|r| r.id == "MS-D13(2)")
+            .expect("D13(2)")
+            .verdict,
+        Verdict::Skipped { .. }
+    ));
     // Corrected: charts of ±4 knots hold every condition.
     let wide = CircleSplines::example(11, 4);
     for r in circle::check_all(&wide) {

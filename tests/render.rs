@@ -20,7 +20,9 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 fn surface(raw: pseudomanifold::mesh::raw::RawMesh) -> SimplicialSurface {
-    validate(&raw).surface.expect("generated mesh is a simplicial surface")
+    validate(&raw)
+        .surface
+        .expect("generated mesh is a simplicial surface")
 }
 
 /// Area of the convex hull of 2-D points (Andrew's monotone chain, shoelace formula).
@@ -92,7 +94,14 @@ fn r_silhouette_convex_mesh_covers_its_projected_hull_within_1_percent() {
     let scene = mesh_scene(&k);
     let mut worst: f64 = 0.0;
     for (az, el) in [(0.0, 0.0), (30.0, 20.0), (75.0, -40.0), (200.0, 60.0)] {
-        let e = silhouette_error(&scene, &scene, View { azimuth: az, elevation: el });
+        let e = silhouette_error(
+            &scene,
+            &scene,
+            View {
+                azimuth: az,
+                elevation: el,
+            },
+        );
         println!("view ({az}, {el}): |pixels − hull| / hull = {e:.2e}");
         worst = worst.max(e);
     }
@@ -126,7 +135,10 @@ fn sphere_deviation(theta: impl Fn(&[Jet<f64>]) -> Vec<Jet<f64>>, scale: f64) ->
     let mut rng = ChaCha8Rng::seed_from_u64(19);
     let (mut dk, mut dh, mut sign) = (0.0f64, 0.0f64, 0.0);
     for _ in 0..500 {
-        let (r, a): (f64, f64) = (2.0 * rng.gen::<f64>().sqrt(), rng.gen_range(0.0..std::f64::consts::TAU));
+        let (r, a): (f64, f64) = (
+            2.0 * rng.gen::<f64>().sqrt(),
+            rng.gen_range(0.0..std::f64::consts::TAU),
+        );
         let (x, y) = Jet::<f64>::variables(r * a.cos(), r * a.sin());
         let v = theta(&[x, y]);
         let j: [Jet<f64>; 3] = std::array::from_fn(|d| v[d].scale(&scale));
@@ -144,7 +156,11 @@ fn sphere_deviation(theta: impl Fn(&[Jet<f64>]) -> Vec<Jet<f64>>, scale: f64) ->
 #[test]
 fn r_sphere_curvature_stereographic_charts_give_k_1_and_h_1() {
     for (name, chart, expect_sign) in [
-        ("φ_N⁻¹", phi_north_inv::<Jet<f64>> as fn(&[Jet<f64>]) -> Vec<Jet<f64>>, 1.0),
+        (
+            "φ_N⁻¹",
+            phi_north_inv::<Jet<f64>> as fn(&[Jet<f64>]) -> Vec<Jet<f64>>,
+            1.0,
+        ),
         ("φ_S⁻¹", phi_south_inv::<Jet<f64>>, -1.0),
     ] {
         let (dk, dh, sign) = sphere_deviation(chart, 1.0);
@@ -159,7 +175,10 @@ fn r_sphere_curvature_stereographic_charts_give_k_1_and_h_1() {
 fn r_sphere_curvature_planted_radius_2_is_caught() {
     let (dk, dh, _) = sphere_deviation(phi_north_inv::<Jet<f64>>, 2.0);
     println!("radius 2: |K − 1| = {dk}, ||H| − 1| = {dh}");
-    assert!(dk > 0.7 && dh > 0.4, "a sphere of radius 2 passed as the unit sphere");
+    assert!(
+        dk > 0.7 && dh > 0.4,
+        "a sphere of radius 2 passed as the unit sphere"
+    );
 }
 
 fn pps_of(k: &SimplicialSurface) -> (PnTriangles, Pps) {
@@ -211,7 +230,10 @@ fn jumps(k: &SimplicialSurface, pn: &PnTriangles, pps: &Pps, eps: f64) -> (f64, 
             let ((p1, n1), (p2, n2)) = (side(f1), side(f2));
             jp = jp.max((p1 - p2).abs());
             jn = jn.max((n1 - n2).abs());
-            assert!(jp.is_finite() && jn.is_finite(), "NaN curvature at edge {a}-{b}");
+            assert!(
+                jp.is_finite() && jn.is_finite(),
+                "NaN curvature at edge {a}-{b}"
+            );
         }
     }
     (jp, jn)
@@ -232,13 +254,19 @@ fn c6_2_curvature_continuity_pps_continuous_across_edges_pn_not() {
         );
         // Continuous: the jump shrinks with ε (linearly: ×1/10; asked ≤ ×1/5) and vanishes on
         // the edge up to rounding; PN's does not shrink (≥ ×1/2) and stays O(1) on the edge.
-        assert!(p4 <= p3 / 5.0, "{name}: PPS jump does not shrink: {p3} → {p4}");
+        assert!(
+            p4 <= p3 / 5.0,
+            "{name}: PPS jump does not shrink: {p3} → {p4}"
+        );
         // PN's jump is a property of the mesh: on the icosahedron every edge is a mirror
         // symmetry of the PN surface, so K agrees across it (measured 6e-16); the claim is
         // asserted where no such symmetry holds.
         if name != "icosahedron" {
             assert!(n4 >= n3 / 2.0, "{name}: PN jump shrinks: {n3} → {n4}");
-            assert!(n0 > 1e3 * p0, "{name}: PN jump on the edge {n0} not ≫ PPS {p0}");
+            assert!(
+                n0 > 1e3 * p0,
+                "{name}: PN jump on the edge {n0} not ≫ PPS {p0}"
+            );
         }
     }
 }
@@ -273,7 +301,10 @@ fn r_normal_sign_planted_flip_darkens_the_shading_and_is_reported() {
     let (dark, _) = lit_luminance(&flipped);
     let r = check_orientation(&flipped);
     println!("mean red level of the surface: {good:.1} (normals as computed), {dark:.1} (flipped); flipped: {} of {} corners disagree, worst {:?}", r.disagreeing, r.checked, r.worst);
-    assert!(dark < 0.5 * good, "flipping the normals did not darken the picture");
+    assert!(
+        dark < 0.5 * good,
+        "flipping the normals did not darken the picture"
+    );
     assert!(r.flipped() && r.disagreeing == r.checked);
     let w = r.worst.expect("witness");
     assert!(w.cosine < -0.9, "witness {w:?}");
@@ -283,14 +314,25 @@ fn r_normal_sign_planted_flip_darkens_the_shading_and_is_reported() {
 fn r_deterministic_same_scene_same_png_bytes() {
     let k = surface(torus(10, 7));
     let (pn, pps) = pps_of(&k);
-    for scene in [sprime_scene(&k, &pn, 2), pps_scene(&pps, 2, true).expect("sample")] {
+    for scene in [
+        sprime_scene(&k, &pn, 2),
+        pps_scene(&pps, 2, true).expect("sample"),
+    ] {
         let o = RenderOptions {
             width: 160,
             height: 120,
             ..RenderOptions::default()
         };
-        let a = render_scene(&scene, &o).expect("render").0.to_png().expect("png");
-        let b = render_scene(&scene, &o).expect("render").0.to_png().expect("png");
+        let a = render_scene(&scene, &o)
+            .expect("render")
+            .0
+            .to_png()
+            .expect("png");
+        let b = render_scene(&scene, &o)
+            .expect("render")
+            .0
+            .to_png()
+            .expect("png");
         assert_eq!(a, b);
         assert!(a.starts_with(b"\x89PNG\r\n\x1a\n"));
     }
@@ -333,7 +375,10 @@ fn r_sampling_attributes_agree_whatever_is_computed() {
         dp = dp.max(d(full.positions[i], nrm.positions[i]));
         dn = dn.max(d(full.normals[i], nrm.normals[i]));
     }
-    println!("{} points: max position difference {dp:e}, normal difference {dn:e}", full.positions.len());
+    println!(
+        "{} points: max position difference {dp:e}, normal difference {dn:e}",
+        full.positions.len()
+    );
     // Same operations on the value and first-order parts: equal up to a few ulps.
     assert!(dp <= 1e-13 && dn <= 1e-13, "{dp} {dn}");
 }

@@ -13,7 +13,9 @@ use pseudomanifold::sdiff::{interval, iso};
 use std::path::{Path, PathBuf};
 
 fn data(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sdiff").join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/sdiff")
+        .join(name)
 }
 
 fn square() -> PlanarComplex {
@@ -29,7 +31,9 @@ fn load(name: &str) -> (PlanarComplex, params::MapSpec, ComplexMap) {
 }
 
 fn by_id<'a>(r: &'a [CheckResult], id: &str) -> &'a CheckResult {
-    r.iter().find(|c| c.id == id).unwrap_or_else(|| panic!("no check {id}"))
+    r.iter()
+        .find(|c| c.id == id)
+        .unwrap_or_else(|| panic!("no check {id}"))
 }
 
 fn run(name: &str) -> Vec<CheckResult> {
@@ -75,8 +79,18 @@ fn sd_e10_positivity_certifies_refutes_and_stays_bounded() {
     // A positive polynomial touching zero only in the interior cannot be certified: the budget
     // bounds the work and the answer says so (never a guess).
     let tight = s.mul(&s).add(&t.mul(&t));
-    let d = decide(&tight, Strictness::Positive, Budget { max_depth: 4, max_pieces: 200 });
-    assert!(matches!(d, Decision::Unresolved { .. } | Decision::Refuted { .. }), "{d:?}");
+    let d = decide(
+        &tight,
+        Strictness::Positive,
+        Budget {
+            max_depth: 4,
+            max_pieces: 200,
+        },
+    );
+    assert!(
+        matches!(d, Decision::Unresolved { .. } | Decision::Refuted { .. }),
+        "{d:?}"
+    );
 }
 
 // ---- the complex ------------------------------------------------------------------------
@@ -88,7 +102,13 @@ fn sd_k_validator_accepts_a_complex_with_boundary_and_rejects_planted_faults() {
     assert_eq!(k.triangles.len(), 3);
     assert!(rep.iter().all(|r| !r.failed()));
     use pseudomanifold::mesh::raw::RawMesh;
-    let pts = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0], [0.2, 0.2, 0.0]];
+    let pts = vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.2, 0.2, 0.0],
+    ];
     // clockwise triangle
     let cw = RawMesh::from_arrays(pts.clone(), vec![[0, 2, 1]]);
     match validate(&cw) {
@@ -105,7 +125,16 @@ fn sd_k_validator_accepts_a_complex_with_boundary_and_rejects_planted_faults() {
         other => panic!("{other:?}"),
     }
     // an edge in three triangles, an unused vertex, z ≠ 0, NaN
-    let three = RawMesh::from_arrays(vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, -1.0, 0.0], [9.0, 9.0, 0.0]], vec![[0, 1, 2], [1, 0, 3], [0, 1, 2]]);
+    let three = RawMesh::from_arrays(
+        vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, -1.0, 0.0],
+            [9.0, 9.0, 0.0],
+        ],
+        vec![[0, 1, 2], [1, 0, 3], [0, 1, 2]],
+    );
     match validate(&three) {
         Err(ComplexError::Invalid(r)) => {
             assert!(by_id(&r, "SD-K-facets").failed());
@@ -113,11 +142,26 @@ fn sd_k_validator_accepts_a_complex_with_boundary_and_rejects_planted_faults() {
         }
         other => panic!("{other:?}"),
     }
-    let lifted = RawMesh::from_arrays(vec![[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], vec![[0, 1, 2]]);
-    assert!(matches!(validate(&lifted), Err(ComplexError::NotPlanar { .. })));
-    let nan = RawMesh::from_arrays(vec![[f64::NAN, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], vec![[0, 1, 2]]);
-    assert!(matches!(validate(&nan), Err(ComplexError::NotFinite { .. })));
-    assert!(matches!(validate(&RawMesh::from_arrays(pts, vec![])), Err(ComplexError::Empty)));
+    let lifted = RawMesh::from_arrays(
+        vec![[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        vec![[0, 1, 2]],
+    );
+    assert!(matches!(
+        validate(&lifted),
+        Err(ComplexError::NotPlanar { .. })
+    ));
+    let nan = RawMesh::from_arrays(
+        vec![[f64::NAN, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        vec![[0, 1, 2]],
+    );
+    assert!(matches!(
+        validate(&nan),
+        Err(ComplexError::NotFinite { .. })
+    ));
+    assert!(matches!(
+        validate(&RawMesh::from_arrays(pts, vec![])),
+        Err(ComplexError::Empty)
+    ));
 }
 
 // ---- checks on maps of a complex -------------------------------------------------------
@@ -127,14 +171,31 @@ fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_sd_l101_inverse_hold_for_the_bund
     for name in ["quadratic.toml", "rational.toml", "monotonic.toml"] {
         let r = run(name);
         for c in &r {
-            assert!(matches!(c.verdict, Verdict::Holds | Verdict::Skipped { .. }), "{name}: {} {:?} {:?}", c.id, c.verdict, c.witnesses);
+            assert!(
+                matches!(c.verdict, Verdict::Holds | Verdict::Skipped { .. }),
+                "{name}: {} {:?} {:?}",
+                c.id,
+                c.verdict,
+                c.witnesses
+            );
         }
-        for id in ["SD-D1(faces)", "SD-D1(inside)", "SD-L99", "SD-L101(det)", "SD-L101(edges)", "SD-L131"] {
+        for id in [
+            "SD-D1(faces)",
+            "SD-D1(inside)",
+            "SD-L99",
+            "SD-L101(det)",
+            "SD-L101(edges)",
+            "SD-L131",
+        ] {
             assert_eq!(by_id(&r, id).verdict, Verdict::Holds, "{name}: {id}");
             assert!(by_id(&r, id).examined > 0);
         }
         assert_eq!(by_id(&r, "SD-L101(interval)").offenders, 0, "{name}");
-        assert_eq!(by_id(&r, "SD-L101(inverse)").verdict, Verdict::Holds, "{name}");
+        assert_eq!(
+            by_id(&r, "SD-L101(inverse)").verdict,
+            Verdict::Holds,
+            "{name}"
+        );
     }
 }
 
@@ -143,7 +204,11 @@ fn sd_d1_faces_sd_l137_adjusted_planted_control_point_off_its_edge_is_caught() {
     let r = run("planted_off_face.toml");
     let c = by_id(&r, "SD-D1(faces)");
     assert!(c.failed());
-    assert!(c.witnesses[0].text.contains("[0, 1]"), "{}", c.witnesses[0].text);
+    assert!(
+        c.witnesses[0].text.contains("[0, 1]"),
+        "{}",
+        c.witnesses[0].text
+    );
     // The point below the edge drives x^2 negative on σ's neighbour side: X(σ) ⊄ σ somewhere.
     assert!(by_id(&r, "SD-L137(adjusted)").failed());
 }
@@ -153,11 +218,16 @@ fn sd_l99_planted_disagreement_on_a_shared_edge_is_caught() {
     let r = run("planted_disagree.toml");
     let c = by_id(&r, "SD-L99");
     assert!(c.failed(), "{c:?}");
-    assert!(c.witnesses[0].text.contains("edge (0,2)"), "{}", c.witnesses[0].text);
+    assert!(
+        c.witnesses[0].text.contains("edge (0,2)"),
+        "{}",
+        c.witnesses[0].text
+    );
 }
 
 #[test]
-fn sd_l101_det_sd_l101_edges_planted_fold_is_refuted_exactly_and_the_interval_route_does_not_certify_it() {
+fn sd_l101_det_sd_l101_edges_planted_fold_is_refuted_exactly_and_the_interval_route_does_not_certify_it(
+) {
     let r = run("planted_fold.toml");
     let det = by_id(&r, "SD-L101(det)");
     assert!(det.failed(), "{det:?}");
@@ -169,7 +239,10 @@ fn sd_l101_det_sd_l101_edges_planted_fold_is_refuted_exactly_and_the_interval_ro
 fn sd_e11_hyp_planted_negative_weight_is_caught() {
     let r = run("planted_negative_weight.toml");
     assert!(by_id(&r, "SD-E11(hyp)").failed());
-    assert!(by_id(&r, "SD-L101(det)").failed(), "a negative weight at an edge point of a quadratic folds or zeroes D");
+    assert!(
+        by_id(&r, "SD-L101(det)").failed(),
+        "a negative weight at an edge point of a quadratic folds or zeroes D"
+    );
 }
 
 #[test]
@@ -183,7 +256,10 @@ fn sd_e9_hyp_planted_g_with_negative_derivative_and_g0_nonzero_are_caught() {
     assert!(h.failed());
     assert!(h.witnesses.iter().any(|w| w.text.contains("g(0)")));
     assert!(h.witnesses.iter().any(|w| w.text.contains("g'(")));
-    assert!(by_id(&r, "SD-D1(faces)").failed(), "g(0) ≠ 0 breaks face preservation");
+    assert!(
+        by_id(&r, "SD-D1(faces)").failed(),
+        "g(0) ≠ 0 breaks face preservation"
+    );
 }
 
 #[test]
@@ -212,13 +288,23 @@ fn sd_params_errors_name_the_file_and_entry() {
         ("family = \"polynomial\"\ndegree = 1\nbogus = 3\n", "bogus"),
     ];
     for (text, needle) in cases {
-        let e = params::parse(text, p).err().unwrap_or_else(|| panic!("accepted {text}"));
+        let e = params::parse(text, p)
+            .err()
+            .unwrap_or_else(|| panic!("accepted {text}"));
         let msg = e.to_string();
         assert!(msg.starts_with("p.toml") && msg.contains(needle), "{msg}");
     }
     // names no face of K: vertices 3 and 4 share no triangle
-    let spec = params::parse("family = \"polynomial\"\ndegree = 2\n[[control]]\nat = [3, 4]\npoint = [\"1\", \"1\"]\n", p).unwrap();
-    assert!(spec.build(&k, p).unwrap_err().to_string().contains("names no face"));
+    let spec = params::parse(
+        "family = \"polynomial\"\ndegree = 2\n[[control]]\nat = [3, 4]\npoint = [\"1\", \"1\"]\n",
+        p,
+    )
+    .unwrap();
+    assert!(spec
+        .build(&k, p)
+        .unwrap_err()
+        .to_string()
+        .contains("names no face"));
 }
 
 // ---- the claims of Sec. 3 --------------------------------------------------------------
@@ -227,24 +313,51 @@ const SAMPLES: usize = 60;
 
 #[test]
 fn sd_l141_adjusted_quadratic_maps_are_injective() {
-    let s = search(SAMPLES, 141, Budget::default(), |r| claims::random_adjusted(2, r));
-    let c = claims::universal("SD-L141", "adjusted quadratic ⇒ injective", &s, SAMPLES, 141);
+    let s = search(SAMPLES, 141, Budget::default(), |r| {
+        claims::random_adjusted(2, r)
+    });
+    let c = claims::universal(
+        "SD-L141",
+        "adjusted quadratic ⇒ injective",
+        &s,
+        SAMPLES,
+        141,
+    );
     assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
     assert_eq!(s.certified as usize, SAMPLES);
 }
 
 #[test]
 fn sd_l146_fixed_non_solitary_cubic_is_injective_for_any_solitary_point() {
-    let s = search(SAMPLES, 146, Budget::default(), claims::random_fixed_solitary3);
-    let c = claims::universal("SD-L146", "fixed non-solitary ⇒ injective", &s, SAMPLES, 146);
+    let s = search(
+        SAMPLES,
+        146,
+        Budget::default(),
+        claims::random_fixed_solitary3,
+    );
+    let c = claims::universal(
+        "SD-L146",
+        "fixed non-solitary ⇒ injective",
+        &s,
+        SAMPLES,
+        146,
+    );
     assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
 }
 
 #[test]
 fn sd_l161_rational_fixed_points_positive_weights_are_injective() {
     for n in 1..=4 {
-        let s = search(SAMPLES / 2, 161 + n as u64, Budget::default(), |r| claims::random_rational_fixed(n, r));
-        let c = claims::universal("SD-L161", "rational, fixed, q > 0 ⇒ injective", &s, SAMPLES / 2, 161);
+        let s = search(SAMPLES / 2, 161 + n as u64, Budget::default(), |r| {
+            claims::random_rational_fixed(n, r)
+        });
+        let c = claims::universal(
+            "SD-L161",
+            "rational, fixed, q > 0 ⇒ injective",
+            &s,
+            SAMPLES / 2,
+            161,
+        );
         assert_eq!(c.verdict, Verdict::Holds, "n = {n}: {c:?}");
     }
 }
@@ -287,8 +400,21 @@ fn sd_l139_adjusted_quartic_can_be_non_injective_witness() {
     set(&mut b, [2, 2, 0], qr(1, 1000));
     set(&mut b, [1, 3, 0], qr(1, 1000));
     let m = SimplexMap::polynomial(n, b);
-    let s = claims::Search { certified: 0, refuted: vec![("edge fold".into(), claims::det_decision(&m, Budget::default()))], unresolved: 0 };
-    let c = claims::existential("SD-L139", "adjusted and non-injective for degree > 3", &s, 1, 0);
+    let s = claims::Search {
+        certified: 0,
+        refuted: vec![(
+            "edge fold".into(),
+            claims::det_decision(&m, Budget::default()),
+        )],
+        unresolved: 0,
+    };
+    let c = claims::existential(
+        "SD-L139",
+        "adjusted and non-injective for degree > 3",
+        &s,
+        1,
+        0,
+    );
     assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
     assert_eq!(c.witnesses.len(), 1);
 }
@@ -297,12 +423,26 @@ fn sd_l139_adjusted_quartic_can_be_non_injective_witness() {
 fn sd_l139_degree_3_adjusted_search_for_non_injective_maps() {
     // The paper says adjusted maps can fail injectivity "if degree greater than 3"; read as
     // "degree ≤ 3 adjusted maps are injective" this is searched here, exactly.
-    let s = search(SAMPLES, 139, Budget::default(), |r| claims::random_adjusted(3, r));
-    let c = claims::universal("SD-L139", "adjusted cubic ⇒ injective (implied reading)", &s, SAMPLES, 139);
+    let s = search(SAMPLES, 139, Budget::default(), |r| {
+        claims::random_adjusted(3, r)
+    });
+    let c = claims::universal(
+        "SD-L139",
+        "adjusted cubic ⇒ injective (implied reading)",
+        &s,
+        SAMPLES,
+        139,
+    );
     // Recorded in SPEC.md; a refutation here is a finding with a witness, not a test failure.
-    eprintln!("{}", pseudomanifold::report::render_text(std::slice::from_ref(&c)));
+    eprintln!(
+        "{}",
+        pseudomanifold::report::render_text(std::slice::from_ref(&c))
+    );
     assert_eq!(c.examined as usize, SAMPLES);
-    assert!(!matches!(c.verdict, Verdict::Skipped { .. }), "all samples decided");
+    assert!(
+        !matches!(c.verdict, Verdict::Skipped { .. }),
+        "all samples decided"
+    );
 }
 
 #[test]
@@ -323,13 +463,18 @@ fn sd_l101_interval_route_agrees_with_the_exact_route_on_random_maps() {
                 assert!(lower_bound > 0.0);
             }
             (true, _) => exact_only += 1,
-            (false, interval::IntervalVerdict::Certified { .. }) => panic!("interval certifies a refuted map: {ex:?}"),
+            (false, interval::IntervalVerdict::Certified { .. }) => {
+                panic!("interval certifies a refuted map: {ex:?}")
+            }
             (false, _) => {}
         }
     }
     // Measured: 25 of 40 (the other 15 only exactly: the natural interval extension's
     // dependency overestimate near det's minimum within the box budget).
-    assert!(both >= 20, "intervals certified {both} of 40 ({exact_only} exact only)");
+    assert!(
+        both >= 20,
+        "intervals certified {both} of 40 ({exact_only} exact only)"
+    );
 }
 
 // ---- curved isocurves (Sec. 4) -----------------------------------------------------------
@@ -353,5 +498,8 @@ fn sd_l168_curved_isocurve_has_the_topology_of_the_linear_one() {
 fn sd_l168_level_at_a_vertex_is_a_typed_error() {
     let (k, _, cm) = load("quadratic.toml");
     let f = vec![q(0), q(1), q(1), q(-1), q(2)];
-    assert!(matches!(iso::isocurves(&k, &cm, &f, &q(0)), Err(iso::IsoError::LevelAtVertex { vertex: 0, .. })));
+    assert!(matches!(
+        iso::isocurves(&k, &cm, &f, &q(0)),
+        Err(iso::IsoError::LevelAtVertex { vertex: 0, .. })
+    ));
 }

@@ -267,8 +267,7 @@ pub fn main() -> ExitCode {
                 worst,
                 json,
             ),
-            (Some(table), None) => {
-                oracle::run_diff(
+            (Some(table), None) => oracle::run_diff(
                 &mesh,
                 &table,
                 bits,
@@ -276,8 +275,7 @@ pub fn main() -> ExitCode {
                 worst,
                 json,
                 &sprime,
-            )
-            }
+            ),
             (None, None) => {
                 eprintln!("error: give a TABLE of answers or --surface FILE");
                 ExitCode::from(2)

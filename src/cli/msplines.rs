@@ -60,10 +60,21 @@ fn check(a: &MsCheckArgs) -> ExitCode {
         }
     };
     let Some(k) = validate(&raw).surface else {
-        eprintln!("error: {} is not a simplicial surface (run `ppm check` for details)", a.file.display());
+        eprintln!(
+            "error: {} is not a simplicial surface (run `ppm check` for details)",
+            a.file.display()
+        );
         return ExitCode::from(2);
     };
-    let opt = Options { ring: a.ring, form: a.form, sample: SampleConfig { seed: a.seed, n: a.samples }, views: a.views };
+    let opt = Options {
+        ring: a.ring,
+        form: a.form,
+        sample: SampleConfig {
+            seed: a.seed,
+            n: a.samples,
+        },
+        views: a.views,
+    };
     let (rep, _, _) = match run(&k, &opt) {
         Ok(x) => x,
         Err(e) => {
@@ -80,13 +91,28 @@ fn check(a: &MsCheckArgs) -> ExitCode {
             }
         }
     } else {
-        println!("{}: V = {}, E = {}, F = {}, genus {}", rep.file, rep.counts[0], rep.counts[1], rep.counts[2], rep.genus);
-        println!("intersection matrix of the cocycle basis: {:?}", rep.intersection);
+        println!(
+            "{}: V = {}, E = {}, F = {}, genus {}",
+            rep.file, rep.counts[0], rep.counts[1], rep.counts[2], rep.genus
+        );
+        println!(
+            "intersection matrix of the cocycle basis: {:?}",
+            rep.intersection
+        );
         println!("zero points (vertex, order): {:?}", rep.zeros);
-        println!("atlas: {} charts, {} overlapping pairs (k = {})", rep.charts, rep.pairs, a.ring);
-        println!("time: forms {:.3} s, zeros + atlas {:.3} s, checks {:.3} s", rep.seconds[0], rep.seconds[1], rep.seconds[2]);
+        println!(
+            "atlas: {} charts, {} overlapping pairs (k = {})",
+            rep.charts, rep.pairs, a.ring
+        );
+        println!(
+            "time: forms {:.3} s, zeros + atlas {:.3} s, checks {:.3} s",
+            rep.seconds[0], rep.seconds[1], rep.seconds[2]
+        );
         print!("{}", render_text(&rep.checks));
-        println!("documented errata (fail as written, corrected rows checked): {:?}", crate::msplines::pipeline::ERRATA);
+        println!(
+            "documented errata (fail as written, corrected rows checked): {:?}",
+            crate::msplines::pipeline::ERRATA
+        );
     }
     if rep.failed() {
         ExitCode::from(1)

@@ -75,7 +75,8 @@ fn parse_size(s: &str) -> Result<(u32, u32), RenderError> {
 }
 
 fn load(file: &std::path::Path) -> Result<SimplicialSurface, RenderError> {
-    let raw = read_mesh(file, &ReadOptions::default()).map_err(|e| RenderError::Mesh(e.to_string()))?;
+    let raw =
+        read_mesh(file, &ReadOptions::default()).map_err(|e| RenderError::Mesh(e.to_string()))?;
     validate(&raw).surface.ok_or_else(|| {
         RenderError::Mesh(format!(
             "{} is not a simplicial surface (run `ppm check` for details)",
@@ -106,7 +107,10 @@ fn pn_only(surface: &str) -> Result<(), RenderError> {
     }
 }
 
-fn scenes(a: &RenderArgs, notes: &mut Vec<String>) -> Result<(Vec<Panel>, Option<([f64; 3], [f64; 3])>), RenderError> {
+fn scenes(
+    a: &RenderArgs,
+    notes: &mut Vec<String>,
+) -> Result<(Vec<Panel>, Option<([f64; 3], [f64; 3])>), RenderError> {
     if a.input_is_samples {
         let raw = read_mesh(&a.file, &ReadOptions::default())
             .map_err(|e| RenderError::Mesh(e.to_string()))?;
@@ -125,7 +129,10 @@ fn scenes(a: &RenderArgs, notes: &mut Vec<String>) -> Result<(Vec<Panel>, Option
         return Err(RenderError::Mesh(format!("--level {level}: at most 8")));
     }
     let profile = Profile::parse(&a.profile).ok_or_else(|| {
-        RenderError::Mesh(format!("unknown --profile {:?} (paper | authors-code)", a.profile))
+        RenderError::Mesh(format!(
+            "unknown --profile {:?} (paper | authors-code)",
+            a.profile
+        ))
     })?;
     pn_only(&a.surface)?;
     // Curvature costs order-2 jets: skip it when the picture is not coloured.
@@ -206,10 +213,16 @@ fn describe(r: &RenderReport) -> String {
         o.disagreeing, o.checked
     );
     if let Some(w) = o.worst {
-        s += &format!(" (worst cos {:.3} at triangle {}, vertex {})", w.cosine, w.face, w.vertex);
+        s += &format!(
+            " (worst cos {:.3} at triangle {}, vertex {})",
+            w.cosine, w.face, w.vertex
+        );
     }
     if r.skipped_triangles > 0 {
-        s += &format!("\n  {} triangles with non-finite corners skipped", r.skipped_triangles);
+        s += &format!(
+            "\n  {} triangles with non-finite corners skipped",
+            r.skipped_triangles
+        );
     }
     s
 }
@@ -291,7 +304,10 @@ pub fn run(a: RenderArgs) -> ExitCode {
         return ExitCode::from(2);
     }
     if a.json {
-        println!("{}", serde_json::json!({ "output": a.output, "panels": reports }));
+        println!(
+            "{}",
+            serde_json::json!({ "output": a.output, "panels": reports })
+        );
     } else {
         for n in &notes {
             println!("ppm render: {n}");

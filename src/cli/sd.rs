@@ -54,12 +54,27 @@ enum SdCommand {
     },
 }
 
-fn load(mesh: &Path, params_path: &Path) -> Result<(complex::PlanarComplex, params::MapSpec, params::ComplexMap, Vec<CheckResult>), String> {
+fn load(
+    mesh: &Path,
+    params_path: &Path,
+) -> Result<
+    (
+        complex::PlanarComplex,
+        params::MapSpec,
+        params::ComplexMap,
+        Vec<CheckResult>,
+    ),
+    String,
+> {
     let raw = read_mesh(mesh, &ReadOptions::default()).map_err(|e| e.to_string())?;
     let (k, rep) = match complex::validate(&raw) {
         Ok(x) => x,
         Err(complex::ComplexError::Invalid(rep)) => {
-            return Err(format!("{}: not a planar simplicial complex\n{}", mesh.display(), render_text(&rep)))
+            return Err(format!(
+                "{}: not a planar simplicial complex\n{}",
+                mesh.display(),
+                render_text(&rep)
+            ))
         }
         Err(e) => return Err(format!("{}: {e}", mesh.display())),
     };
@@ -90,9 +105,17 @@ fn emit(results: &[CheckResult], json: bool) -> ExitCode {
 /// Runs `ppm sd …`.
 pub fn run(a: SdArgs) -> ExitCode {
     match a.cmd {
-        SdCommand::Check { mesh, params, json, seed } => match load(&mesh, &params) {
+        SdCommand::Check {
+            mesh,
+            params,
+            json,
+            seed,
+        } => match load(&mesh, &params) {
             Ok((k, _, cm, mut rep)) => {
-                let opts = checks::Options { seed, ..Default::default() };
+                let opts = checks::Options {
+                    seed,
+                    ..Default::default()
+                };
                 rep.extend(checks::check_all(&k, &cm, &opts));
                 emit(&rep, json)
             }
@@ -101,7 +124,13 @@ pub fn run(a: SdArgs) -> ExitCode {
                 ExitCode::from(2)
             }
         },
-        SdCommand::Iso { mesh, params: p, output, linear, json } => {
+        SdCommand::Iso {
+            mesh,
+            params: p,
+            output,
+            linear,
+            json,
+        } => {
             let (k, spec, cm, _) = match load(&mesh, &p) {
                 Ok(x) => x,
                 Err(e) => {
@@ -110,7 +139,10 @@ pub fn run(a: SdArgs) -> ExitCode {
                 }
             };
             let Some((f, c)) = spec.iso.clone() else {
-                eprintln!("error: {}: no [iso] table (f per vertex and the level c)", p.display());
+                eprintln!(
+                    "error: {}: no [iso] table (f per vertex and the level c)",
+                    p.display()
+                );
                 return ExitCode::from(2);
             };
             match iso::isocurves(&k, &cm, &f, &c) {
@@ -131,23 +163,63 @@ pub fn run(a: SdArgs) -> ExitCode {
                 }
             }
         }
-        SdCommand::Claims { samples, seed, json } => {
+        SdCommand::Claims {
+            samples,
+            seed,
+            json,
+        } => {
             let b = Budget::default();
             let mut out = Vec::new();
             let s = claims::search(samples, seed, b, |r| claims::random_adjusted(2, r));
-            out.push(claims::universal("SD-L141", "Sec. 3.2: adjusted quadratic maps are injective", &s, samples, seed));
+            out.push(claims::universal(
+                "SD-L141",
+                "Sec. 3.2: adjusted quadratic maps are injective",
+                &s,
+                samples,
+                seed,
+            ));
             let s = claims::search(samples, seed, b, |r| claims::random_adjusted(3, r));
-            out.push(claims::universal("SD-L139", "Sec. 3.2 (implied): adjusted cubic maps are injective", &s, samples, seed));
+            out.push(claims::universal(
+                "SD-L139",
+                "Sec. 3.2 (implied): adjusted cubic maps are injective",
+                &s,
+                samples,
+                seed,
+            ));
             let s = claims::search(samples, seed, b, |r| claims::random_adjusted(4, r));
-            out.push(claims::existential("SD-L139", "Sec. 3.2: an adjusted quartic can be non-injective", &s, samples, seed));
+            out.push(claims::existential(
+                "SD-L139",
+                "Sec. 3.2: an adjusted quartic can be non-injective",
+                &s,
+                samples,
+                seed,
+            ));
             let s = claims::search(samples, seed, b, claims::random_fixed_solitary3);
-            out.push(claims::universal("SD-L146", "Sec. 3.2: fixed non-solitary ⇒ injective (cubic, 2-D)", &s, samples, seed));
+            out.push(claims::universal(
+                "SD-L146",
+                "Sec. 3.2: fixed non-solitary ⇒ injective (cubic, 2-D)",
+                &s,
+                samples,
+                seed,
+            ));
             for n in 1..=4 {
                 let s = claims::search(samples, seed, b, |r| claims::random_rational_fixed(n, r));
-                out.push(claims::universal("SD-L161", &format!("Sec. 3.3: fixed points, q > 0 ⇒ injective (n = {n})"), &s, samples, seed));
+                out.push(claims::universal(
+                    "SD-L161",
+                    &format!("Sec. 3.3: fixed points, q > 0 ⇒ injective (n = {n})"),
+                    &s,
+                    samples,
+                    seed,
+                ));
             }
             let s = claims::search(samples, seed, b, claims::random_monotonic);
-            out.push(claims::universal("SD-L115", "Sec. 3.1: monotonic ⇒ injective", &s, samples, seed));
+            out.push(claims::universal(
+                "SD-L115",
+                "Sec. 3.1: monotonic ⇒ injective",
+                &s,
+                samples,
+                seed,
+            ));
             emit(&out, json)
         }
     }

@@ -77,11 +77,19 @@ fn ring_faces(k: &SimplicialSurface, v: VertexId, ring: u32) -> BTreeSet<FaceId>
             }
         }
     }
-    dist.keys().flat_map(|&u| k.faces_around(u).iter().copied()).collect()
+    dist.keys()
+        .flat_map(|&u| k.faces_around(u).iter().copied())
+        .collect()
 }
 
 /// Develop ω over `faces` starting at the first face that contains `centre` (centre ↦ 0).
-pub fn develop(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, centre: VertexId, faces: &BTreeSet<FaceId>) -> Chart {
+pub fn develop(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    om: &OneForm,
+    centre: VertexId,
+    faces: &BTreeSet<FaceId>,
+) -> Chart {
     let mut img: BTreeMap<FaceId, [P2; 3]> = BTreeMap::new();
     let mut mag: BTreeMap<FaceId, f64> = BTreeMap::new();
     let mut defect: f64 = 0.0;
@@ -151,7 +159,9 @@ pub fn develop(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, centre: Vert
                 }
             }
             let Some(cg) = third else { continue };
-            let Some(hb) = k.halfedge(b, gv[cg]) else { continue };
+            let Some(hb) = k.halfedge(b, gv[cg]) else {
+                continue;
+            };
             let d = om.at(ei, hb);
             let pb = t[(c + 1) % 3];
             let cand = [pb[0] + d[0], pb[1] + d[1]];
@@ -166,7 +176,10 @@ pub fn develop(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, centre: Vert
                 }
             };
             img.insert(g, tg);
-            mag.insert(g, m0 + d[0].abs() + d[1].abs() + om.mag[ei.edge(hb).0 as usize]);
+            mag.insert(
+                g,
+                m0 + d[0].abs() + d[1].abs() + om.mag[ei.edge(hb).0 as usize],
+            );
             q.push_back(g);
         }
     }
@@ -179,11 +192,23 @@ pub fn develop(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, centre: Vert
         }
     }
     let unreached = faces.len() - img.len();
-    Chart { centre, faces: img, path_magnitude: mag, develop_defect: defect, unreached }
+    Chart {
+        centre,
+        faces: img,
+        path_magnitude: mag,
+        develop_defect: defect,
+        unreached,
+    }
 }
 
 /// Sec. 5.4 steps (1)–(5): remove the zeros' faces, build one chart per surviving vertex.
-pub fn build(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, zeros: &[VertexId], ring: u32) -> Result<Atlas, MsError> {
+pub fn build(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    om: &OneForm,
+    zeros: &[VertexId],
+    ring: u32,
+) -> Result<Atlas, MsError> {
     if !(1..=4).contains(&ring) {
         return Err(MsError::RingRadius { k: ring });
     }
@@ -196,7 +221,10 @@ pub fn build(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, zeros: &[Verte
     let zset: BTreeSet<VertexId> = zeros.iter().copied().collect();
     let mut charts = Vec::new();
     for v in k.vertices().filter(|v| !zset.contains(v)) {
-        let faces: BTreeSet<FaceId> = ring_faces(k, v, ring).into_iter().filter(|f| !removed[f.idx()]).collect();
+        let faces: BTreeSet<FaceId> = ring_faces(k, v, ring)
+            .into_iter()
+            .filter(|f| !removed[f.idx()])
+            .collect();
         if faces.is_empty() {
             continue;
         }
@@ -212,15 +240,29 @@ pub fn build(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, zeros: &[Verte
     for (f, cs) in charts_of_face.iter().enumerate() {
         for (i, &a) in cs.iter().enumerate() {
             for &b in &cs[i + 1..] {
-                pairs.entry((a.min(b), a.max(b))).or_default().push(FaceId(f as u32));
+                pairs
+                    .entry((a.min(b), a.max(b)))
+                    .or_default()
+                    .push(FaceId(f as u32));
             }
         }
     }
-    Ok(Atlas { k_ring: ring, zeros: zeros.to_vec(), removed, charts, charts_of_face, pairs })
+    Ok(Atlas {
+        k_ring: ring,
+        zeros: zeros.to_vec(),
+        removed,
+        charts,
+        charts_of_face,
+        pairs,
+    })
 }
 
 /// χ of the closed union of a face set: V − E + F.
-pub fn euler_of_faces(k: &SimplicialSurface, ei: &EdgeIndex, faces: impl Iterator<Item = FaceId>) -> i64 {
+pub fn euler_of_faces(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    faces: impl Iterator<Item = FaceId>,
+) -> i64 {
     let (mut vs, mut es, mut nf) = (BTreeSet::new(), BTreeSet::new(), 0i64);
     for f in faces {
         nf += 1;

@@ -23,13 +23,29 @@ pub fn check_union_disks(k: &SimplicialSurface, ei: &EdgeIndex, at: &Atlas) -> C
     for &(a, b) in at.pairs.keys() {
         r.examined += 1;
         let (ca, cb) = (&at.charts[a as usize], &at.charts[b as usize]);
-        let faces = ca.faces.keys().chain(cb.faces.keys().filter(|f| !ca.faces.contains_key(f))).copied();
+        let faces = ca
+            .faces
+            .keys()
+            .chain(cb.faces.keys().filter(|f| !ca.faces.contains_key(f)))
+            .copied();
         let chi = euler_of_faces(k, ei, faces);
         if chi != 1 {
-            r.offend(|| Witness::new(format!("charts at vertices {} and {}: χ(U_α ∪ U_β) = {chi}", ca.centre, cb.centre), json!({"alpha": a, "beta": b, "chi": chi})));
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "charts at vertices {} and {}: χ(U_α ∪ U_β) = {chi}",
+                        ca.centre, cb.centre
+                    ),
+                    json!({"alpha": a, "beta": b, "chi": chi}),
+                )
+            });
         }
     }
-    r.with_note(format!("{} overlapping pairs, k = {}; exact (combinatorial)", at.pairs.len(), at.k_ring))
+    r.with_note(format!(
+        "{} overlapping pairs, k = {}; exact (combinatorial)",
+        at.pairs.len(),
+        at.k_ring
+    ))
 }
 
 /// Do the open triangles s and t overlap? Exact: disjoint interiors iff an edge line of one
@@ -37,7 +53,10 @@ pub fn check_union_disks(k: &SimplicialSurface, ei: &EdgeIndex, at: &Atlas) -> C
 fn interiors_overlap(s: &[P2; 3], t: &[P2; 3]) -> bool {
     let sep = |a: &[P2; 3], b: &[P2; 3]| {
         let o = orient2d(c(a[0]), c(a[1]), c(a[2])).signum();
-        (0..3).any(|i| b.iter().all(|&p| orient2d(c(a[i]), c(a[(i + 1) % 3]), c(p)) * o <= 0.0))
+        (0..3).any(|i| {
+            b.iter()
+                .all(|&p| orient2d(c(a[i]), c(a[(i + 1) % 3]), c(p)) * o <= 0.0)
+        })
     };
     !(sep(s, t) || sep(t, s))
 }
@@ -46,14 +65,25 @@ fn interiors_overlap(s: &[P2; 3], t: &[P2; 3]) -> bool {
 /// oriented (exact), pairwise interior-disjoint (exact), and the developing map consistent
 /// (a vertex reached along two paths lands on one point up to rounding).
 pub fn check_charts_injective(at: &Atlas) -> CheckResult {
-    let mut r = CheckResult::new("MS-D4", "charts φ_α injective (oriented, non-overlapping images)");
+    let mut r = CheckResult::new(
+        "MS-D4",
+        "charts φ_α injective (oriented, non-overlapping images)",
+    );
     let mut worst: f64 = 0.0;
     for (a, ch) in at.charts.iter().enumerate() {
         r.examined += 1;
         let tris: Vec<(&FaceId, &[P2; 3])> = ch.faces.iter().collect();
         for (f, t) in &tris {
             if orient2d(c(t[0]), c(t[1]), c(t[2])) <= 0.0 {
-                r.offend(|| Witness::new(format!("chart at vertex {}: image of face {f} not positively oriented", ch.centre), json!({"chart": a, "face": f.0, "kind": "orientation"})));
+                r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "chart at vertex {}: image of face {f} not positively oriented",
+                            ch.centre
+                        ),
+                        json!({"chart": a, "face": f.0, "kind": "orientation"}),
+                    )
+                });
             }
         }
         for i in 0..tris.len() {
@@ -103,7 +133,9 @@ pub fn translations(at: &Atlas) -> Vec<PairTranslation> {
             let t = [tb[0][0] - ta[0][0], tb[0][1] - ta[0][1]];
             let (mut dev, mut tol, mut wf) = (0.0f64, 0.0f64, f0);
             for f in common {
-                let (Some(ta), Some(tb)) = (ca.faces.get(f), cb.faces.get(f)) else { continue };
+                let (Some(ta), Some(tb)) = (ca.faces.get(f), cb.faces.get(f)) else {
+                    continue;
+                };
                 let m = ca.path_magnitude.get(f).copied().unwrap_or(0.0)
                     + cb.path_magnitude.get(f).copied().unwrap_or(0.0)
                     + ca.path_magnitude.get(&f0).copied().unwrap_or(0.0)
@@ -117,14 +149,23 @@ pub fn translations(at: &Atlas) -> Vec<PairTranslation> {
                     }
                 }
             }
-            Some(PairTranslation { pair: (a, b), t, deviation: dev, tolerance: tol, worst_face: wf })
+            Some(PairTranslation {
+                pair: (a, b),
+                t,
+                deviation: dev,
+                tolerance: tol,
+                worst_face: wf,
+            })
         })
         .collect()
 }
 
 /// Thm. 4: every transition φ_αβ is a translation (checked, not assumed).
 pub fn check_translations(at: &Atlas, tr: &[PairTranslation]) -> CheckResult {
-    let mut r = CheckResult::new("MS-T4(atlas)", "transitions are translations (Thm. 4, eq. (9))");
+    let mut r = CheckResult::new(
+        "MS-T4(atlas)",
+        "transitions are translations (Thm. 4, eq. (9))",
+    );
     let mut worst: f64 = 0.0;
     let mut worst_tol: f64 = 0.0;
     for p in tr {
@@ -146,28 +187,46 @@ pub fn check_translations(at: &Atlas, tr: &[PairTranslation]) -> CheckResult {
 /// Def. 7: every transition is affine — the per-face affine maps of φ_β∘φ_α⁻¹ on the
 /// common faces all agree with the one fitted on the first common face.
 pub fn check_affine(at: &Atlas) -> CheckResult {
-    let mut r = CheckResult::new("MS-D7", "transitions affine (Def. 7): one (A, b) on all of U_α ∩ U_β");
+    let mut r = CheckResult::new(
+        "MS-D7",
+        "transitions affine (Def. 7): one (A, b) on all of U_α ∩ U_β",
+    );
     let mut worst: f64 = 0.0;
     for (&(a, b), common) in &at.pairs {
         r.examined += 1;
         let (ca, cb) = (&at.charts[a as usize], &at.charts[b as usize]);
         let Some(f0) = common.first() else { continue };
-        let (Some(ta), Some(tb)) = (ca.faces.get(f0), cb.faces.get(f0)) else { continue };
+        let (Some(ta), Some(tb)) = (ca.faces.get(f0), cb.faces.get(f0)) else {
+            continue;
+        };
         let Some((m, off, cond)) = fit_affine(ta, tb) else {
-            r.offend(|| Witness::new(format!("pair ({a},{b}): degenerate image of face {f0}"), json!({"alpha": a, "beta": b})));
+            r.offend(|| {
+                Witness::new(
+                    format!("pair ({a},{b}): degenerate image of face {f0}"),
+                    json!({"alpha": a, "beta": b}),
+                )
+            });
             continue;
         };
         let scale = ca.radius().max(cb.radius()).max(f64::MIN_POSITIVE);
         let mag = common
             .iter()
-            .map(|f| ca.path_magnitude.get(f).copied().unwrap_or(0.0) + cb.path_magnitude.get(f).copied().unwrap_or(0.0))
+            .map(|f| {
+                ca.path_magnitude.get(f).copied().unwrap_or(0.0)
+                    + cb.path_magnitude.get(f).copied().unwrap_or(0.0)
+            })
             .fold(0.0, f64::max);
         let tol = 64.0 * f64::EPSILON * (1.0 + cond) * (scale + mag);
         for f in common {
-            let (Some(ta), Some(tb)) = (ca.faces.get(f), cb.faces.get(f)) else { continue };
+            let (Some(ta), Some(tb)) = (ca.faces.get(f), cb.faces.get(f)) else {
+                continue;
+            };
             for i in 0..3 {
                 let p = ta[i];
-                let q = [m[0][0] * p[0] + m[0][1] * p[1] + off[0], m[1][0] * p[0] + m[1][1] * p[1] + off[1]];
+                let q = [
+                    m[0][0] * p[0] + m[0][1] * p[1] + off[0],
+                    m[1][0] * p[0] + m[1][1] * p[1] + off[1],
+                ];
                 let d = (q[0] - tb[i][0]).hypot(q[1] - tb[i][1]);
                 worst = if d.is_nan() { f64::NAN } else { worst.max(d) };
                 if !(d <= tol) {
@@ -182,8 +241,14 @@ pub fn check_affine(at: &Atlas) -> CheckResult {
 
 /// The affine map sending triangle s onto t: (A, b, condition number of s's edge matrix).
 pub fn fit_affine(s: &[P2; 3], t: &[P2; 3]) -> Option<([[f64; 2]; 2], P2, f64)> {
-    let (s1, s2) = ([s[1][0] - s[0][0], s[1][1] - s[0][1]], [s[2][0] - s[0][0], s[2][1] - s[0][1]]);
-    let (t1, t2) = ([t[1][0] - t[0][0], t[1][1] - t[0][1]], [t[2][0] - t[0][0], t[2][1] - t[0][1]]);
+    let (s1, s2) = (
+        [s[1][0] - s[0][0], s[1][1] - s[0][1]],
+        [s[2][0] - s[0][0], s[2][1] - s[0][1]],
+    );
+    let (t1, t2) = (
+        [t[1][0] - t[0][0], t[1][1] - t[0][1]],
+        [t[2][0] - t[0][0], t[2][1] - t[0][1]],
+    );
     let det = s1[0] * s2[1] - s2[0] * s1[1];
     if det == 0.0 || !det.is_finite() {
         return None;
@@ -191,10 +256,19 @@ pub fn fit_affine(s: &[P2; 3], t: &[P2; 3]) -> Option<([[f64; 2]; 2], P2, f64)> 
     // S⁻¹ = [[s2y, −s2x], [−s1y, s1x]] / det; A = T S⁻¹.
     let inv = [[s2[1] / det, -s2[0] / det], [-s1[1] / det, s1[0] / det]];
     let m = [
-        [t1[0] * inv[0][0] + t2[0] * inv[1][0], t1[0] * inv[0][1] + t2[0] * inv[1][1]],
-        [t1[1] * inv[0][0] + t2[1] * inv[1][0], t1[1] * inv[0][1] + t2[1] * inv[1][1]],
+        [
+            t1[0] * inv[0][0] + t2[0] * inv[1][0],
+            t1[0] * inv[0][1] + t2[0] * inv[1][1],
+        ],
+        [
+            t1[1] * inv[0][0] + t2[1] * inv[1][0],
+            t1[1] * inv[0][1] + t2[1] * inv[1][1],
+        ],
     ];
-    let off = [t[0][0] - m[0][0] * s[0][0] - m[0][1] * s[0][1], t[0][1] - m[1][0] * s[0][0] - m[1][1] * s[0][1]];
+    let off = [
+        t[0][0] - m[0][0] * s[0][0] - m[0][1] * s[0][1],
+        t[0][1] - m[1][0] * s[0][0] - m[1][1] * s[0][1],
+    ];
     let ns = (s1[0].powi(2) + s1[1].powi(2) + s2[0].powi(2) + s2[1].powi(2)).sqrt();
     let ni = (inv[0][0].powi(2) + inv[0][1].powi(2) + inv[1][0].powi(2) + inv[1][1].powi(2)).sqrt();
     Some((m, off, ns * ni))
@@ -202,22 +276,34 @@ pub fn fit_affine(s: &[P2; 3], t: &[P2; 3]) -> Option<([[f64; 2]; 2], P2, f64)> 
 
 /// Sec. 5.4 step (6) as written: "φ_αβ = ∫_{p_α}^{p_β} ω" read as the translation vector of
 /// φ_αβ = φ_β∘φ_α⁻¹ (Def. 7). `literal = false` checks the corrected sign −∫_{p_α}^{p_β} ω.
-pub fn check_step6(k: &SimplicialSurface, at: &Atlas, tr: &[PairTranslation], literal: bool) -> CheckResult {
+pub fn check_step6(
+    k: &SimplicialSurface,
+    at: &Atlas,
+    tr: &[PairTranslation],
+    literal: bool,
+) -> CheckResult {
     let (id, name) = if literal {
-        ("MS-5.4(6)", "step (6) as written: φ_αβ translates by +∫_{p_α}^{p_β} ω")
+        (
+            "MS-5.4(6)",
+            "step (6) as written: φ_αβ translates by +∫_{p_α}^{p_β} ω",
+        )
     } else {
-        ("MS-5.4(6)-corrected", "corrected: φ_αβ = φ_β∘φ_α⁻¹ translates by −∫_{p_α}^{p_β} ω")
+        (
+            "MS-5.4(6)-corrected",
+            "corrected: φ_αβ = φ_β∘φ_α⁻¹ translates by −∫_{p_α}^{p_β} ω",
+        )
     };
     let mut r = CheckResult::new(id, name);
     let mut worst: f64 = 0.0;
     for p in tr {
         let (ca, cb) = (&at.charts[p.pair.0 as usize], &at.charts[p.pair.1 as usize]);
         // ∫_{p_α}^{p_β} ω along a path in U_α: φ_α(p_β), read from any face of U_α at p_β.
-        let Some(int) = ca
-            .faces
-            .iter()
-            .find_map(|(f, t)| k.face(*f).iter().position(|&v| v == cb.centre).map(|i| t[i]))
-        else {
+        let Some(int) = ca.faces.iter().find_map(|(f, t)| {
+            k.face(*f)
+                .iter()
+                .position(|&v| v == cb.centre)
+                .map(|i| t[i])
+        }) else {
             continue;
         };
         r.examined += 1;
@@ -248,7 +334,11 @@ pub fn merge(acc: &mut Vec<CheckResult>, new: Vec<CheckResult>) {
                     }
                 }
                 a.worst_deviation = match (a.worst_deviation, n.worst_deviation) {
-                    (Some(x), Some(y)) => Some(if x.is_nan() || y.is_nan() { f64::NAN } else { x.max(y) }),
+                    (Some(x), Some(y)) => Some(if x.is_nan() || y.is_nan() {
+                        f64::NAN
+                    } else {
+                        x.max(y)
+                    }),
                     (x, y) => x.or(y),
                 };
                 a.tolerance = match (a.tolerance, n.tolerance) {
@@ -257,7 +347,9 @@ pub fn merge(acc: &mut Vec<CheckResult>, new: Vec<CheckResult>) {
                 };
                 if n.verdict.is_failure() {
                     a.verdict = Verdict::Fails;
-                } else if matches!(a.verdict, Verdict::Skipped { .. }) && !matches!(n.verdict, Verdict::Skipped { .. }) {
+                } else if matches!(a.verdict, Verdict::Skipped { .. })
+                    && !matches!(n.verdict, Verdict::Skipped { .. })
+                {
                     a.verdict = n.verdict;
                 }
             }
@@ -268,7 +360,12 @@ pub fn merge(acc: &mut Vec<CheckResult>, new: Vec<CheckResult>) {
 
 /// Def. 3.4.1 by the sampled checkers, on the neighbourhood views of `views` charts chosen
 /// by the seed (all charts when there are fewer).
-pub fn check_gluing_data(k: &SimplicialSurface, at: &Atlas, cfg: &SampleConfig, views: usize) -> Vec<CheckResult> {
+pub fn check_gluing_data(
+    k: &SimplicialSurface,
+    at: &Atlas,
+    cfg: &SampleConfig,
+    views: usize,
+) -> Vec<CheckResult> {
     let n = at.charts.len();
     let mut chosen: Vec<u32> = (0..n as u32).collect();
     if n > views {
@@ -286,7 +383,12 @@ pub fn check_gluing_data(k: &SimplicialSurface, at: &Atlas, cfg: &SampleConfig, 
         merge(&mut acc, check_all(&v, cfg));
     }
     for r in &mut acc {
-        r.note = format!("{} (on {} neighbourhood views of {n} charts, seed {})", r.note, chosen.len(), cfg.seed);
+        r.note = format!(
+            "{} (on {} neighbourhood views of {n} charts, seed {})",
+            r.note,
+            chosen.len(),
+            cfg.seed
+        );
     }
     acc
 }

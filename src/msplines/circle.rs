@@ -42,9 +42,25 @@ impl CircleSplines {
             knots.push(s.clone());
             s += q(3 + (i as i64 * 5) % 7, 4);
         }
-        let ab = (0..n).map(|i| (q(1000 * i as i64, 1), q(2 + i as i64 % 3, 3))).collect();
-        let control = (0..n).map(|i| [q(((i * 7) % 11) as i64 - 5, 2), q(((i * 3) % 5) as i64 - 2, 1)]).collect();
-        CircleSplines { length: s, knots, eps: q(1, 16), half_width, ab, control }
+        let ab = (0..n)
+            .map(|i| (q(1000 * i as i64, 1), q(2 + i as i64 % 3, 3)))
+            .collect();
+        let control = (0..n)
+            .map(|i| {
+                [
+                    q(((i * 7) % 11) as i64 - 5, 2),
+                    q(((i * 3) % 5) as i64 - 2, 1),
+                ]
+            })
+            .collect();
+        CircleSplines {
+            length: s,
+            knots,
+            eps: q(1, 16),
+            half_width,
+            ab,
+            control,
+        }
     }
     fn n(&self) -> usize {
         self.knots.len()
@@ -86,7 +102,10 @@ impl CircleSplines {
                 let (ljo, hj) = self.chart_arc(j);
                 for m in -1i64..=1 {
                     let shift = &self.length * q(m, 1);
-                    let (a, b) = ((&ljo + &shift).max(lo.clone()), (&hj + &shift).min(hi.clone()));
+                    let (a, b) = (
+                        (&ljo + &shift).max(lo.clone()),
+                        (&hj + &shift).min(hi.clone()),
+                    );
                     if a >= b {
                         continue;
                     }
@@ -123,7 +142,10 @@ pub fn check_gluing(c: &CircleSplines) -> Vec<CheckResult> {
 /// control polygon C_i = {c_{i−2}, …, c_{i+2}}"; every knot t_{j−2..j+2} of those c_j must lie
 /// in U_i to have chart coordinates there (decided exactly).
 pub fn check_knots_in_chart(c: &CircleSplines) -> CheckResult {
-    let mut r = CheckResult::new("MS-D13(1)", "Fig. 7: knots of C_i lie in U_i (Def. 13(1); exact)");
+    let mut r = CheckResult::new(
+        "MS-D13(1)",
+        "Fig. 7: knots of C_i lie in U_i (Def. 13(1); exact)",
+    );
     for i in 0..c.n() {
         let (lo, hi) = c.chart_arc(i);
         for j in -2i64..=2 {
@@ -144,7 +166,11 @@ pub fn check_knots_in_chart(c: &CircleSplines) -> CheckResult {
 type Poly = Vec<Q>;
 
 fn padd(a: &Poly, b: &Poly) -> Poly {
-    (0..a.len().max(b.len())).map(|i| a.get(i).cloned().unwrap_or_else(Q::zero) + b.get(i).cloned().unwrap_or_else(Q::zero)).collect()
+    (0..a.len().max(b.len()))
+        .map(|i| {
+            a.get(i).cloned().unwrap_or_else(Q::zero) + b.get(i).cloned().unwrap_or_else(Q::zero)
+        })
+        .collect()
 }
 fn pmul(a: &Poly, b: &Poly) -> Poly {
     let mut out = vec![Q::zero(); a.len() + b.len() - 1];
@@ -159,7 +185,11 @@ fn pscale(a: &Poly, s: &Q) -> Poly {
     a.iter().map(|x| x * s).collect()
 }
 fn pderiv(a: &Poly) -> Poly {
-    a.iter().enumerate().skip(1).map(|(i, x)| x * q(i as i64, 1)).collect()
+    a.iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, x)| x * q(i as i64, 1))
+        .collect()
 }
 fn peval(a: &Poly, x: &Q) -> Q {
     a.iter().rev().fold(Q::zero(), |acc, c| acc * x + c)
@@ -204,7 +234,9 @@ impl CircleSplines {
     pub fn piece_in(&self, chart: usize, o: i64) -> [Poly; 2] {
         let i = (chart as i64 + o).rem_euclid(self.n() as i64) as usize;
         // Chart coordinates of t_{i−3} … t_{i+4}; knot index 3 is t_i.
-        let x: Vec<Q> = (-3i64..=4).map(|d| self.phi(chart, &self.t(chart, o + d))).collect();
+        let x: Vec<Q> = (-3i64..=4)
+            .map(|d| self.phi(chart, &self.t(chart, o + d)))
+            .collect();
         let mut out = [vec![Q::zero()], vec![Q::zero()]];
         for jd in -1i64..=2 {
             // c_{i+jd} has knots t_{i+jd−2..i+jd+2}: starting index 3 + jd − 2 in x.
@@ -228,7 +260,10 @@ pub fn check_c2(c: &CircleSplines) -> CheckResult {
 /// [`check_c2`] with the transition shifted by `fault` (planted-fault tests: a wrong
 /// transition must show up as a jump).
 pub fn check_c2_with(c: &CircleSplines, fault: &Q) -> CheckResult {
-    let mut r = CheckResult::new("MS-F7-C2", "Fig. 7: the cubic spline on S¹ is C² at every knot (exact)");
+    let mut r = CheckResult::new(
+        "MS-F7-C2",
+        "Fig. 7: the cubic spline on S¹ is C² at every knot (exact)",
+    );
     let mut c3_jumps = 0;
     for i in 0..c.n() {
         let j = (i + 1) % c.n();
@@ -257,7 +292,10 @@ pub fn check_c2_with(c: &CircleSplines, fault: &Q) -> CheckResult {
             }
         }
     }
-    r.with_note(format!("third derivative jumps at {c3_jumps} of {} joint components (so exactly C², not C³)", 2 * c.n()))
+    r.with_note(format!(
+        "third derivative jumps at {c3_jumps} of {} joint components (so exactly C², not C³)",
+        2 * c.n()
+    ))
 }
 
 /// Def. 13(2) on Fig. 7: where a piece's knots t_{j−3..j+4} lie in both U_i and U_{i+1}, the
@@ -265,7 +303,10 @@ pub fn check_c2_with(c: &CircleSplines, fault: &Q) -> CheckResult {
 /// as the piece computed in chart i (exact). Pieces with a knot outside either chart are
 /// skipped and counted (that is Def. 13(1)).
 pub fn check_d13_2(c: &CircleSplines) -> CheckResult {
-    let mut r = CheckResult::new("MS-D13(2)", "Fig. 7: F_α = F_β∘φ_αβ on the overlap (Def. 13(2); exact)");
+    let mut r = CheckResult::new(
+        "MS-D13(2)",
+        "Fig. 7: F_α = F_β∘φ_αβ on the overlap (Def. 13(2); exact)",
+    );
     let mut skipped = 0;
     for i in 0..c.n() {
         let j = (i + 1) % c.n();
@@ -292,15 +333,28 @@ pub fn check_d13_2(c: &CircleSplines) -> CheckResult {
                 let pulled = pcompose_affine(&pj[comp], &slope, &off);
                 let diff = padd(&pi[comp], &pscale(&pulled, &-Q::one()));
                 if diff.iter().any(|x| !x.is_zero()) {
-                    r.offend(|| Witness::new(format!("charts {i}, {j}: piece {} component {comp} differs", (i as i64 + o).rem_euclid(c.n() as i64)), json!({"chart": i, "piece_offset": o})));
+                    r.offend(|| {
+                        Witness::new(
+                            format!(
+                                "charts {i}, {j}: piece {} component {comp} differs",
+                                (i as i64 + o).rem_euclid(c.n() as i64)
+                            ),
+                            json!({"chart": i, "piece_offset": o}),
+                        )
+                    });
                 }
             }
         }
     }
     if r.examined == 0 {
-        r.verdict = crate::report::Verdict::Skipped { reason: "no piece has all its knots in two neighbouring charts (Def. 13(1) fails)".into() };
+        r.verdict = crate::report::Verdict::Skipped {
+            reason: "no piece has all its knots in two neighbouring charts (Def. 13(1) fails)"
+                .into(),
+        };
     }
-    r.with_note(format!("{skipped} (chart, piece) pairs skipped: a knot outside a chart"))
+    r.with_note(format!(
+        "{skipped} (chart, piece) pairs skipped: a knot outside a chart"
+    ))
 }
 
 /// Def. 5 as written: φ_xy∘φ_yz = φ_xz with φ_xy : φ_x(U_x∩U_y) → φ_y(U_x∩U_y). The left side
@@ -308,7 +362,10 @@ pub fn check_d13_2(c: &CircleSplines) -> CheckResult {
 /// p-domains are disjoint: the witness is a point where the literal composition is undefined
 /// (the corrected order φ_yz∘φ_xy = φ_xz is Def. 3.4.1(3c), checked by `check_gluing`).
 pub fn check_def5_literal(c: &CircleSplines) -> CheckResult {
-    let mut r = CheckResult::new("MS-D5", "Def. 5 cocycle φ_xy∘φ_yz = φ_xz, composition order as written");
+    let mut r = CheckResult::new(
+        "MS-D5",
+        "Def. 5 cocycle φ_xy∘φ_yz = φ_xz, composition order as written",
+    );
     let g = c.gluing();
     let n = c.n() as u32;
     'outer: for x in 0..n {

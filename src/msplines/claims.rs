@@ -10,41 +10,76 @@ use serde_json::json;
 
 /// Sec. 5.3: every vertex's winding number is decided (ω[v, w] ≠ 0, origin off the polygon).
 pub fn check_decided(z: &ZeroSet) -> CheckResult {
-    let mut r = CheckResult::new("MS-5.3", "zero test decided at every vertex (exact winding numbers)");
+    let mut r = CheckResult::new(
+        "MS-5.3",
+        "zero test decided at every vertex (exact winding numbers)",
+    );
     r.examined = z.windings.len() as u64;
     for v in &z.undecided {
-        r.offend(|| Witness::new(format!("vertex {v}: φ(v) lies on the image polygon of its link"), json!({"vertex": v.0})));
+        r.offend(|| {
+            Witness::new(
+                format!("vertex {v}: φ(v) lies on the image polygon of its link"),
+                json!({"vertex": v.0}),
+            )
+        });
     }
-    r.with_note(format!("{} zero points (w_v ≥ 2), Σ order {}", z.zeros.len(), z.zeros.iter().map(|x| x.1).sum::<i64>()))
+    r.with_note(format!(
+        "{} zero points (w_v ≥ 2), Σ order {}",
+        z.zeros.len(),
+        z.zeros.iter().map(|x| x.1).sum::<i64>()
+    ))
 }
 
 /// Discrete Gauss–Bonnet (our identity, exact): the image angles of a positively oriented face
 /// sum to π and of a flipped one to −π, so Σ_v w_v = F/2 − F⁻ and, with F/2 − V = 2g − 2,
 /// Σ_v (w_v − 1) = 2g − 2 − F⁻.
 pub fn check_gauss_bonnet(z: &ZeroSet, genus: usize, faces: usize) -> CheckResult {
-    let mut r = CheckResult::new("MS-GB", "Σ_v (w_v − 1) = 2g − 2 − F⁻ (discrete Gauss–Bonnet, exact)");
+    let mut r = CheckResult::new(
+        "MS-GB",
+        "Σ_v (w_v − 1) = 2g − 2 − F⁻ (discrete Gauss–Bonnet, exact)",
+    );
     r.examined = z.windings.len() as u64 + faces as u64;
     if !z.undecided.is_empty() || !z.ambiguous_faces.is_empty() {
         r.verdict = Verdict::Skipped {
-            reason: format!("{} undecided windings, {} faces with degenerate or inconsistent image", z.undecided.len(), z.ambiguous_faces.len()),
+            reason: format!(
+                "{} undecided windings, {} faces with degenerate or inconsistent image",
+                z.undecided.len(),
+                z.ambiguous_faces.len()
+            ),
         };
         return r;
     }
     let lhs = z.total_order();
     let rhs = 2 * genus as i64 - 2 - z.flipped_faces as i64;
     if lhs != rhs {
-        r.offend(|| Witness::new(format!("Σ(w_v − 1) = {lhs} but 2g − 2 − F⁻ = {rhs}"), json!({"lhs": lhs, "rhs": rhs})));
+        r.offend(|| {
+            Witness::new(
+                format!("Σ(w_v − 1) = {lhs} but 2g − 2 − F⁻ = {rhs}"),
+                json!({"lhs": lhs, "rhs": rhs}),
+            )
+        });
     }
-    r.with_note(format!("Σ(w_v − 1) = {lhs}, g = {genus}, F⁻ = {}", z.flipped_faces))
+    r.with_note(format!(
+        "Σ(w_v − 1) = {lhs}, g = {genus}, F⁻ = {}",
+        z.flipped_faces
+    ))
 }
 
 /// Proof of Thm. 4: "the singularities [of ω_x] can only have negative indices": the index of
 /// ω_x at v is 1 − w_v, so every vertex must have w_v ≥ 1.
 pub fn check_indices(z: &ZeroSet) -> CheckResult {
-    let mut r = CheckResult::new("MS-T4(index)", "indices of ω_x ≤ 0: every w_v ≥ 1 (proof of Thm. 4)");
+    let mut r = CheckResult::new(
+        "MS-T4(index)",
+        "indices of ω_x ≤ 0: every w_v ≥ 1 (proof of Thm. 4)",
+    );
     r.examined = z.windings.len() as u64;
     for &(v, w) in &z.non_positive {
-        r.offend(|| Witness::new(format!("vertex {v}: w_v = {w}, index 1 − w_v = {} > 0", 1 - w), json!({"vertex": v.0, "winding": w})));
+        r.offend(|| {
+            Witness::new(
+                format!("vertex {v}: w_v = {w}, index 1 − w_v = {} > 0", 1 - w),
+                json!({"vertex": v.0, "winding": w}),
+            )
+        });
     }
     r
 }
@@ -56,7 +91,12 @@ pub fn check_count_bound(z: &ZeroSet, genus: usize) -> CheckResult {
     let bound = 2 * genus as i64 - 2;
     let n = z.zeros.len() as i64;
     if n > bound {
-        r.offend(|| Witness::new(format!("|Z| = {n} > 2g − 2 = {bound}"), json!({"zeros": n, "bound": bound})));
+        r.offend(|| {
+            Witness::new(
+                format!("|Z| = {n} > 2g − 2 = {bound}"),
+                json!({"zeros": n, "bound": bound}),
+            )
+        });
     }
     r.with_note(format!("|Z| = {n}, 2g − 2 = {bound}"))
 }
@@ -64,17 +104,27 @@ pub fn check_count_bound(z: &ZeroSet, genus: usize) -> CheckResult {
 /// Sec. 3.4.3: "a holomorphic one-form has 2g − 2 zero points in principle": counted with
 /// multiplicity (Σ (w_v − 1) over zeros) and as distinct points.
 pub fn check_zero_count(z: &ZeroSet, genus: usize) -> CheckResult {
-    let mut r = CheckResult::new("MS-3.4.3", "ω has 2g − 2 zero points (with multiplicity; distinct reported)");
+    let mut r = CheckResult::new(
+        "MS-3.4.3",
+        "ω has 2g − 2 zero points (with multiplicity; distinct reported)",
+    );
     let want = 2 * genus as i64 - 2;
     let with_mult: i64 = z.zeros.iter().map(|x| x.1).sum();
     let distinct = z.zeros.len() as i64;
     r.examined = z.windings.len() as u64;
     if with_mult != want {
-        r.offend(|| Witness::new(format!("Σ orders of zeros = {with_mult} ≠ 2g − 2 = {want}"), json!({"with_multiplicity": with_mult, "want": want})));
+        r.offend(|| {
+            Witness::new(
+                format!("Σ orders of zeros = {with_mult} ≠ 2g − 2 = {want}"),
+                json!({"with_multiplicity": with_mult, "want": want}),
+            )
+        });
     } else if distinct != want {
         r.verdict = Verdict::HoldsRestricted { domain: format!("counted with multiplicity only: {distinct} distinct zero points carry total order {want}") };
     }
-    r.with_note(format!("{distinct} distinct, {with_mult} with multiplicity, 2g − 2 = {want}"))
+    r.with_note(format!(
+        "{distinct} distinct, {with_mult} with multiplicity, 2g − 2 = {want}"
+    ))
 }
 
 /// Cor. 1 (and Sec. 3.3/Thm. 2 for the torus): singular points exist iff the surface is not a
@@ -85,11 +135,21 @@ pub fn check_cor1(z: &ZeroSet, genus: usize) -> CheckResult {
     if genus == 1 {
         for (v, w) in &z.windings {
             if *w != Winding::Decided(1) {
-                r.offend(|| Witness::new(format!("torus vertex {v}: winding {w:?} ≠ 1"), json!({"vertex": v.0})));
+                r.offend(|| {
+                    Witness::new(
+                        format!("torus vertex {v}: winding {w:?} ≠ 1"),
+                        json!({"vertex": v.0}),
+                    )
+                });
             }
         }
     } else if z.zeros.is_empty() && z.non_positive.is_empty() {
-        r.offend(|| Witness::new(format!("genus {genus} but no singular vertex"), json!({"genus": genus})));
+        r.offend(|| {
+            Witness::new(
+                format!("genus {genus} but no singular vertex"),
+                json!({"genus": genus}),
+            )
+        });
     }
     r
 }
@@ -98,7 +158,10 @@ pub fn check_cor1(z: &ZeroSet, genus: usize) -> CheckResult {
 /// surfaces (Fig. 9 double-covers a genus-0 surface with boundaries), so only the achieved
 /// number is reported.
 pub fn check_cor2(z: &ZeroSet, genus: usize) -> CheckResult {
-    let mut r = CheckResult::new("MS-C2", "one singular point suffices (Cor. 2): not constructive");
+    let mut r = CheckResult::new(
+        "MS-C2",
+        "one singular point suffices (Cor. 2): not constructive",
+    );
     r.examined = z.windings.len() as u64;
     r.verdict = Verdict::Skipped {
         reason: format!("existence claim without a construction for closed surfaces; this ω (genus {genus}) has {} singular points", z.zeros.len()),

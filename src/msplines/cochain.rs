@@ -79,7 +79,13 @@ impl EdgeIndex {
         self.isign(h) * form[self.edge(h).0 as usize]
     }
     /// ω[u, w] for the edge from u to w, if it exists.
-    pub fn eval_uv(&self, k: &SimplicialSurface, form: &[f64], u: VertexId, w: VertexId) -> Option<f64> {
+    pub fn eval_uv(
+        &self,
+        k: &SimplicialSurface,
+        form: &[f64],
+        u: VertexId,
+        w: VertexId,
+    ) -> Option<f64> {
         k.halfedge(u, w).map(|h| self.eval(form, h))
     }
 }

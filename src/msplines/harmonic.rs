@@ -38,7 +38,10 @@ pub fn cotan_weights(k: &SimplicialSurface, ei: &EdgeIndex) -> Result<Vec<f64>, 
             ];
             let cot = dot / (cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]).sqrt();
             if !cot.is_finite() {
-                return Err(MsError::NonFiniteWeight { file: file_name(k), face: f.0 });
+                return Err(MsError::NonFiniteWeight {
+                    file: file_name(k),
+                    face: f.0,
+                });
             }
             w[ei.edge(h).0 as usize] += 0.5 * cot;
         }
@@ -58,7 +61,11 @@ pub struct Harmonic {
 }
 
 /// Solve for the harmonic representatives of the integer cocycles `taus`.
-pub fn harmonic_forms(k: &SimplicialSurface, ei: &EdgeIndex, taus: &[Vec<i64>]) -> Result<Harmonic, MsError> {
+pub fn harmonic_forms(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    taus: &[Vec<i64>],
+) -> Result<Harmonic, MsError> {
     let w = cotan_weights(k, ei)?;
     let verts: Vec<VertexId> = k.vertices().collect();
     let mut row = vec![usize::MAX; k.vertex_slots()];
@@ -84,9 +91,15 @@ pub fn harmonic_forms(k: &SimplicialSurface, ei: &EdgeIndex, taus: &[Vec<i64>]) 
     }
     trip.extend(diag.iter().enumerate().map(|(i, &d)| (i, i, d)));
     let file = file_name(k);
-    let fact = |reason: String| MsError::Factorisation { file: file.clone(), reason };
-    let mat = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &trip).map_err(|e| fact(format!("{e:?}")))?;
-    let chol = mat.sp_cholesky(Side::Lower).map_err(|e| fact(format!("{e:?}")))?;
+    let fact = |reason: String| MsError::Factorisation {
+        file: file.clone(),
+        reason,
+    };
+    let mat = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &trip)
+        .map_err(|e| fact(format!("{e:?}")))?;
+    let chol = mat
+        .sp_cholesky(Side::Lower)
+        .map_err(|e| fact(format!("{e:?}")))?;
     let m = taus.len();
     // b_i = Σ_j w_ij τ[i, j], accumulated over edges.
     let rhs_of = |tau: &dyn Fn(usize) -> f64| {
@@ -171,7 +184,11 @@ pub fn harmonic_forms(k: &SimplicialSurface, ei: &EdgeIndex, taus: &[Vec<i64>]) 
                 .collect()
         })
         .collect();
-    Ok(Harmonic { forms, weights: w, backward_error })
+    Ok(Harmonic {
+        forms,
+        weights: w,
+        backward_error,
+    })
 }
 
 /// Tolerance of the componentwise backward error: 64·ε·(d_max + 1), d_max the largest vertex
@@ -184,13 +201,21 @@ pub fn backward_tolerance(k: &SimplicialSurface) -> f64 {
 /// MS-D-harm: the solve's componentwise backward error (harmonicity residual, δh = 0 at
 /// every vertex up to rounding) is within its tolerance.
 pub fn check_harmonic_residual(k: &SimplicialSurface, h: &Harmonic) -> CheckResult {
-    let mut r = CheckResult::new("MS-5.2(3)", "harmonic: Lf = b solved (componentwise backward error)");
+    let mut r = CheckResult::new(
+        "MS-5.2(3)",
+        "harmonic: Lf = b solved (componentwise backward error)",
+    );
     let tol = backward_tolerance(k);
     r.examined = (h.forms.len() * k.num_vertices()) as u64;
     r.worst_deviation = Some(h.backward_error);
     r.tolerance = Some(tol);
     if !(h.backward_error <= tol) {
-        r.offend(|| Witness::new(format!("backward error {:.3e} > {tol:.3e}", h.backward_error), json!({"backward_error": h.backward_error})));
+        r.offend(|| {
+            Witness::new(
+                format!("backward error {:.3e} > {tol:.3e}", h.backward_error),
+                json!({"backward_error": h.backward_error}),
+            )
+        });
     }
     r.with_note("sparse Cholesky (faer, AMD) + one refinement step; tol = 64·ε·(max degree + 1)")
 }
@@ -198,7 +223,14 @@ pub fn check_harmonic_residual(k: &SimplicialSurface, h: &Harmonic) -> CheckResu
 /// Face closure of real 1-forms up to rounding. `mags[k][e]` bounds the magnitudes the value of
 /// form k on edge e was computed from (|τ| for h = τ + df, Σ|λ||h| for a combination), so the
 /// per-face tolerance 64·ε·Σ(|ω| + mag) covers the rounding of the computation.
-pub fn check_closed(k: &SimplicialSurface, ei: &EdgeIndex, forms: &[Vec<f64>], mags: &[Vec<f64>], id: &str, what: &str) -> CheckResult {
+pub fn check_closed(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    forms: &[Vec<f64>],
+    mags: &[Vec<f64>],
+    id: &str,
+    what: &str,
+) -> CheckResult {
     let mut r = CheckResult::new(id, format!("{what} closed: face sums 0 up to rounding"));
     let mut worst: f64 = 0.0;
     let mut worst_tol: f64 = 0.0;
@@ -209,7 +241,12 @@ pub fn check_closed(k: &SimplicialSurface, ei: &EdgeIndex, forms: &[Vec<f64>], m
             let vals = hs.map(|h| ei.eval(form, h));
             let mag: f64 = hs
                 .iter()
-                .map(|&h| mags.get(idx).and_then(|m| m.get(ei.edge(h).0 as usize)).copied().unwrap_or(0.0))
+                .map(|&h| {
+                    mags.get(idx)
+                        .and_then(|m| m.get(ei.edge(h).0 as usize))
+                        .copied()
+                        .unwrap_or(0.0)
+                })
                 .sum();
             let s = vals[0] + vals[1] + vals[2];
             let tol = 64.0 * f64::EPSILON * (vals[0].abs() + vals[1].abs() + vals[2].abs() + mag);
@@ -218,7 +255,12 @@ pub fn check_closed(k: &SimplicialSurface, ei: &EdgeIndex, forms: &[Vec<f64>], m
                 worst_tol = tol;
             }
             if !(s.abs() <= tol) {
-                r.offend(|| Witness::new(format!("form {idx}: face {f} sums to {s:.3e} > {tol:.3e}"), json!({"form": idx, "face": f.0, "sum": s, "tol": tol})));
+                r.offend(|| {
+                    Witness::new(
+                        format!("form {idx}: face {f} sums to {s:.3e} > {tol:.3e}"),
+                        json!({"form": idx, "face": f.0, "sum": s, "tol": tol}),
+                    )
+                });
             }
         }
     }

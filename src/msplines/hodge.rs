@@ -19,7 +19,11 @@ fn dot(a: V3, b: V3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 fn cross(a: V3, b: V3) -> V3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 
 /// Geometry of one face: edge vectors e1 = x1 − x0, e2 = x2 − x0, unit normal, area.
@@ -40,15 +44,28 @@ impl FaceFrame {
         let (e1, e2) = (sub(b, a), sub(c, a));
         let cr = cross(e1, e2);
         let len = dot(cr, cr).sqrt();
-        FaceFrame { e1, e2, n: [cr[0] / len, cr[1] / len, cr[2] / len], area: 0.5 * len }
+        FaceFrame {
+            e1,
+            e2,
+            n: [cr[0] / len, cr[1] / len, cr[2] / len],
+            area: 0.5 * len,
+        }
     }
     /// g_f: the in-plane vector with ⟨g, e1⟩ = a01 and ⟨g, e2⟩ = a02.
     pub fn gradient(&self, a01: f64, a02: f64) -> V3 {
-        let (g11, g12, g22) = (dot(self.e1, self.e1), dot(self.e1, self.e2), dot(self.e2, self.e2));
+        let (g11, g12, g22) = (
+            dot(self.e1, self.e1),
+            dot(self.e1, self.e2),
+            dot(self.e2, self.e2),
+        );
         let det = g11 * g22 - g12 * g12;
         let s = (g22 * a01 - g12 * a02) / det;
         let t = (g11 * a02 - g12 * a01) / det;
-        [s * self.e1[0] + t * self.e2[0], s * self.e1[1] + t * self.e2[1], s * self.e1[2] + t * self.e2[2]]
+        [
+            s * self.e1[0] + t * self.e2[0],
+            s * self.e1[1] + t * self.e2[1],
+            s * self.e1[2] + t * self.e2[2],
+        ]
     }
     /// n × g.
     pub fn rotate(&self, g: V3) -> V3 {
@@ -80,7 +97,12 @@ pub struct Conjugate {
 }
 
 /// Compute ∗h_k for every harmonic basis form.
-pub fn conjugate(k: &SimplicialSurface, ei: &EdgeIndex, h: &[Vec<f64>], h_mag: &[Vec<f64>]) -> Conjugate {
+pub fn conjugate(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    h: &[Vec<f64>],
+    h_mag: &[Vec<f64>],
+) -> Conjugate {
     let m = h.len();
     let mut gram = DMatrix::<f64>::zeros(m, m);
     let mut rot = DMatrix::<f64>::zeros(m, m);
@@ -99,8 +121,14 @@ pub fn conjugate(k: &SimplicialSurface, ei: &EdgeIndex, h: &[Vec<f64>], h_mag: &
     let sv = gram.clone().singular_values();
     let gram_condition = sv.max() / sv.min();
     // Column k of G⁻¹R holds Λ_k.
-    let sol = gram.clone().lu().solve(&rot).unwrap_or_else(|| DMatrix::from_element(m, m, f64::NAN));
-    let lambda: Vec<Vec<f64>> = (0..m).map(|kk| (0..m).map(|mm| sol[(mm, kk)]).collect()).collect();
+    let sol = gram
+        .clone()
+        .lu()
+        .solve(&rot)
+        .unwrap_or_else(|| DMatrix::from_element(m, m, f64::NAN));
+    let lambda: Vec<Vec<f64>> = (0..m)
+        .map(|kk| (0..m).map(|mm| sol[(mm, kk)]).collect())
+        .collect();
     let ne = ei.len();
     let mut star = vec![vec![0.0; ne]; m];
     let mut star_magnitude = vec![vec![0.0; ne]; m];
@@ -115,7 +143,11 @@ pub fn conjugate(k: &SimplicialSurface, ei: &EdgeIndex, h: &[Vec<f64>], h_mag: &
     }
     let lm = DMatrix::from_fn(m, m, |a, b| lambda[a][b]);
     let sq = &lm * &lm + DMatrix::<f64>::identity(m, m);
-    let star_star_defect = sq.iter().fold(0.0f64, |a, &x| if x.is_nan() { f64::NAN } else { a.max(x.abs()) });
+    let star_star_defect =
+        sq.iter().fold(
+            0.0f64,
+            |a, &x| if x.is_nan() { f64::NAN } else { a.max(x.abs()) },
+        );
     let cr_defect = (0..m)
         .map(|kk| {
             let (mut num, mut den) = (0.0, 0.0);
@@ -130,7 +162,14 @@ pub fn conjugate(k: &SimplicialSurface, ei: &EdgeIndex, h: &[Vec<f64>], h_mag: &
             (num / den).sqrt()
         })
         .collect();
-    Conjugate { lambda, star, star_magnitude, star_star_defect, cr_defect, gram_condition }
+    Conjugate {
+        lambda,
+        star,
+        star_magnitude,
+        star_star_defect,
+        cr_defect,
+        gram_condition,
+    }
 }
 
 /// A holomorphic 1-form ω = ω_x + iω_y stored per edge (Sec. 6.1: half-edge → ℝ²).
@@ -151,13 +190,31 @@ impl OneForm {
     }
     /// c·ω for a complex c = (re, im): (a + ib)(x + iy).
     pub fn scaled(&self, c: [f64; 2]) -> OneForm {
-        let x = self.x.iter().zip(&self.y).map(|(x, y)| c[0] * x - c[1] * y).collect();
-        let y = self.x.iter().zip(&self.y).map(|(x, y)| c[1] * x + c[0] * y).collect();
+        let x = self
+            .x
+            .iter()
+            .zip(&self.y)
+            .map(|(x, y)| c[0] * x - c[1] * y)
+            .collect();
+        let y = self
+            .x
+            .iter()
+            .zip(&self.y)
+            .map(|(x, y)| c[1] * x + c[0] * y)
+            .collect();
         let s = c[0].abs() + c[1].abs();
-        OneForm { x, y, mag: self.mag.iter().map(|m| s * m).collect() }
+        OneForm {
+            x,
+            y,
+            mag: self.mag.iter().map(|m| s * m).collect(),
+        }
     }
     /// The complex conjugate ω̄ = ω_x − iω_y (anti-holomorphic: a planted fault).
     pub fn conjugated(&self) -> OneForm {
-        OneForm { x: self.x.clone(), y: self.y.iter().map(|v| -v).collect(), mag: self.mag.clone() }
+        OneForm {
+            x: self.x.clone(),
+            y: self.y.iter().map(|v| -v).collect(),
+            mag: self.mag.clone(),
+        }
     }
 }

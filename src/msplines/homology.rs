@@ -43,7 +43,10 @@ pub fn tree_cotree(k: &SimplicialSurface, ei: &EdgeIndex) -> Result<Homology, Ms
     let file = file_name(k);
     let verts: Vec<VertexId> = k.vertices().collect();
     let Some(&root) = verts.first() else {
-        return Err(MsError::Disconnected { file, components: 0 });
+        return Err(MsError::Disconnected {
+            file,
+            components: 0,
+        });
     };
     // Primal BFS tree: parent half-edge pointing *into* each vertex.
     let mut in_tree = vec![false; ei.len()];
@@ -66,7 +69,10 @@ pub fn tree_cotree(k: &SimplicialSurface, ei: &EdgeIndex) -> Result<Homology, Ms
     }
     if order.len() != verts.len() {
         let comps = count_components(k);
-        return Err(MsError::Disconnected { file, components: comps });
+        return Err(MsError::Disconnected {
+            file,
+            components: comps,
+        });
     }
     let chi = verts.len() as i64 - ei.len() as i64 + k.num_faces() as i64;
     let genus = (2 - chi) / 2;
@@ -177,7 +183,11 @@ fn count_components(k: &SimplicialSurface) -> usize {
 
 /// MS-H1 (Sec. 6.1, face condition ω[v0,v1]+ω[v1,v2]+ω[v2,v0] = 0): every τ_k is closed,
 /// decided exactly (integer values).
-pub fn check_cocycles_closed(k: &SimplicialSurface, ei: &EdgeIndex, forms: &[Vec<i64>]) -> CheckResult {
+pub fn check_cocycles_closed(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    forms: &[Vec<i64>],
+) -> CheckResult {
     let mut r = CheckResult::new("MS-H1", "cocycles τ_k closed (face sums 0, exact integers)");
     for (idx, tau) in forms.iter().enumerate() {
         for f in k.faces() {
@@ -220,7 +230,11 @@ pub fn check_periods(h: &Homology, ei: &EdgeIndex) -> CheckResult {
 
 /// The intersection (cup-product) matrix ∫ τ_k ∧ τ_l = Σ_f ½(τ_k[01]τ_l[12] − τ_k[12]τ_l[01])
 /// of closed integer cochains, times two (so it stays an integer).
-pub fn intersection_matrix_doubled(k: &SimplicialSurface, ei: &EdgeIndex, forms: &[Vec<i64>]) -> Vec<Vec<i128>> {
+pub fn intersection_matrix_doubled(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    forms: &[Vec<i64>],
+) -> Vec<Vec<i128>> {
     let n = forms.len();
     let mut m = vec![vec![0i128; n]; n];
     for f in k.faces() {
@@ -243,7 +257,11 @@ pub fn intersection_matrix_doubled(k: &SimplicialSurface, ei: &EdgeIndex, forms:
 
 /// MS-H3: the intersection matrix of the cocycle basis is an integer, skew-symmetric,
 /// unimodular matrix (Poincaré duality), decided exactly (rational Gaussian elimination).
-pub fn check_intersection(k: &SimplicialSurface, ei: &EdgeIndex, forms: &[Vec<i64>]) -> (CheckResult, Vec<Vec<i64>>) {
+pub fn check_intersection(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    forms: &[Vec<i64>],
+) -> (CheckResult, Vec<Vec<i64>>) {
     let mut r = CheckResult::new("MS-H3", "intersection matrix integer, skew, det ±1 (exact)");
     let m2 = intersection_matrix_doubled(k, ei, forms);
     let n = m2.len();
@@ -253,17 +271,32 @@ pub fn check_intersection(k: &SimplicialSurface, ei: &EdgeIndex, forms: &[Vec<i6
             r.examined += 1;
             let v = m2[a][b];
             if v % 2 != 0 {
-                r.offend(|| Witness::new(format!("entry ({a},{b}) = {v}/2 not an integer"), json!({"a": a, "b": b, "twice": v as i64})));
+                r.offend(|| {
+                    Witness::new(
+                        format!("entry ({a},{b}) = {v}/2 not an integer"),
+                        json!({"a": a, "b": b, "twice": v as i64}),
+                    )
+                });
             }
             m[a][b] = (v / 2) as i64;
             if m2[a][b] != -m2[b][a] {
-                r.offend(|| Witness::new(format!("entry ({a},{b}) ≠ −({b},{a})"), json!({"a": a, "b": b})));
+                r.offend(|| {
+                    Witness::new(
+                        format!("entry ({a},{b}) ≠ −({b},{a})"),
+                        json!({"a": a, "b": b}),
+                    )
+                });
             }
         }
     }
     let det = determinant(&m);
     if det.abs() != BigRational::one() {
-        r.offend(|| Witness::new(format!("det = {det}, not ±1"), json!({"det": det.to_string()})));
+        r.offend(|| {
+            Witness::new(
+                format!("det = {det}, not ±1"),
+                json!({"det": det.to_string()}),
+            )
+        });
     }
     (r.with_note(format!("{n}×{n}, det = {det}")), m)
 }
@@ -273,7 +306,11 @@ pub fn determinant(m: &[Vec<i64>]) -> BigRational {
     let n = m.len();
     let mut a: Vec<Vec<BigRational>> = m
         .iter()
-        .map(|row| row.iter().map(|&x| BigRational::from_integer(BigInt::from(x))).collect())
+        .map(|row| {
+            row.iter()
+                .map(|&x| BigRational::from_integer(BigInt::from(x)))
+                .collect()
+        })
         .collect();
     let mut det = BigRational::one();
     for c in 0..n {

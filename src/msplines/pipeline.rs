@@ -8,7 +8,9 @@ use super::cochain::EdgeIndex;
 use super::error::MsError;
 use super::harmonic::{check_closed, check_harmonic_residual, harmonic_forms, Harmonic};
 use super::hodge::{conjugate, Conjugate, OneForm};
-use super::homology::{check_cocycles_closed, check_intersection, check_periods, file_name, tree_cotree, Homology};
+use super::homology::{
+    check_cocycles_closed, check_intersection, check_periods, file_name, tree_cotree, Homology,
+};
 use super::zeros::{locate, ZeroSet};
 use crate::gluing::sampled::SampleConfig;
 use crate::mesh::SimplicialSurface;
@@ -32,7 +34,15 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Options { ring: 1, form: 0, sample: SampleConfig { seed: 0x5eed, n: 24 }, views: 64 }
+        Options {
+            ring: 1,
+            form: 0,
+            sample: SampleConfig {
+                seed: 0x5eed,
+                n: 24,
+            },
+            views: 64,
+        }
     }
 }
 
@@ -57,10 +67,21 @@ impl Forms {
     pub fn omega(&self, kk: usize) -> Option<OneForm> {
         let x = self.harmonic.forms.get(kk)?.clone();
         let y = self.conjugate.star.get(kk)?.clone();
-        let mag: Vec<f64> = (0..x.len()).map(|e| self.h_magnitude[kk][e] + self.conjugate.star_magnitude[kk][e]).collect();
+        let mag: Vec<f64> = (0..x.len())
+            .map(|e| self.h_magnitude[kk][e] + self.conjugate.star_magnitude[kk][e])
+            .collect();
         let om = OneForm { x, y, mag };
-        let mean = om.x.iter().zip(&om.y).map(|(a, b)| a.hypot(*b)).sum::<f64>() / om.x.len().max(1) as f64;
-        Some(if mean > 0.0 && mean.is_finite() { om.scaled([1.0 / mean, 0.0]) } else { om })
+        let mean =
+            om.x.iter()
+                .zip(&om.y)
+                .map(|(a, b)| a.hypot(*b))
+                .sum::<f64>()
+                / om.x.len().max(1) as f64;
+        Some(if mean > 0.0 && mean.is_finite() {
+            om.scaled([1.0 / mean, 0.0])
+        } else {
+            om
+        })
     }
 }
 
@@ -69,9 +90,19 @@ pub fn forms(k: &SimplicialSurface) -> Result<Forms, MsError> {
     let ei = EdgeIndex::new(k);
     let homology = tree_cotree(k, &ei)?;
     let harmonic = harmonic_forms(k, &ei, &homology.cocycles)?;
-    let h_magnitude: Vec<Vec<f64>> = homology.cocycles.iter().map(|t| t.iter().map(|&x| (x as f64).abs()).collect()).collect();
+    let h_magnitude: Vec<Vec<f64>> = homology
+        .cocycles
+        .iter()
+        .map(|t| t.iter().map(|&x| (x as f64).abs()).collect())
+        .collect();
     let conjugate = conjugate(k, &ei, &harmonic.forms, &h_magnitude);
-    Ok(Forms { ei, homology, harmonic, conjugate, h_magnitude })
+    Ok(Forms {
+        ei,
+        homology,
+        harmonic,
+        conjugate,
+        h_magnitude,
+    })
 }
 
 /// Everything a run found.
@@ -106,7 +137,9 @@ pub const ERRATA: &[&str] = &["MS-5.4(6)"];
 impl MsReport {
     /// A check other than a documented erratum failed.
     pub fn failed(&self) -> bool {
-        self.checks.iter().any(|c| c.failed() && !ERRATA.contains(&c.id.as_str()))
+        self.checks
+            .iter()
+            .any(|c| c.failed() && !ERRATA.contains(&c.id.as_str()))
     }
 }
 
@@ -118,13 +151,18 @@ fn measured(id: &str, name: &str, value: f64, note: String) -> CheckResult {
     if value.is_nan() {
         r.offend(|| Witness::new(format!("{name}: NaN"), json!({})));
     } else {
-        r.verdict = Verdict::HoldsRestricted { domain: "discrete: a measured defect, shrinking under refinement (tests)".into() };
+        r.verdict = Verdict::HoldsRestricted {
+            domain: "discrete: a measured defect, shrinking under refinement (tests)".into(),
+        };
     }
     r.with_note(note)
 }
 
 /// The whole Sec. 5.1 pipeline, steps (1)–(4), with every check.
-pub fn run(k: &SimplicialSurface, opt: &Options) -> Result<(MsReport, Forms, Option<Atlas>), MsError> {
+pub fn run(
+    k: &SimplicialSurface,
+    opt: &Options,
+) -> Result<(MsReport, Forms, Option<Atlas>), MsError> {
     let t0 = Instant::now();
     let fm = forms(k)?;
     let t1 = t0.elapsed().as_secs_f64();
@@ -136,11 +174,43 @@ pub fn run(k: &SimplicialSurface, opt: &Options) -> Result<(MsReport, Forms, Opt
     let (inter_check, inter) = check_intersection(k, ei, &fm.homology.cocycles);
     checks.push(inter_check);
     checks.push(check_harmonic_residual(k, &fm.harmonic));
-    checks.push(check_closed(k, ei, &fm.harmonic.forms, &fm.h_magnitude, "MS-5.2(3)-closed", "harmonic h_k"));
-    checks.push(check_closed(k, ei, &fm.conjugate.star, &fm.conjugate.star_magnitude, "MS-5.2(4)-closed", "conjugate ∗h_k"));
-    checks.push(measured("MS-5.2(4)-starstar", "∗∗ = −1: max |Λ² + I|", fm.conjugate.star_star_defect, format!("Gram condition {:.3e}", fm.conjugate.gram_condition)));
-    let cr = fm.conjugate.cr_defect.iter().copied().fold(0.0, |a: f64, b| if b.is_nan() { f64::NAN } else { a.max(b) });
-    checks.push(measured("MS-D10", "ω_y = n × ω_x (Sec. 3.4.2): relative L² Cauchy–Riemann defect", cr, "worst over the basis".into()));
+    checks.push(check_closed(
+        k,
+        ei,
+        &fm.harmonic.forms,
+        &fm.h_magnitude,
+        "MS-5.2(3)-closed",
+        "harmonic h_k",
+    ));
+    checks.push(check_closed(
+        k,
+        ei,
+        &fm.conjugate.star,
+        &fm.conjugate.star_magnitude,
+        "MS-5.2(4)-closed",
+        "conjugate ∗h_k",
+    ));
+    checks.push(measured(
+        "MS-5.2(4)-starstar",
+        "∗∗ = −1: max |Λ² + I|",
+        fm.conjugate.star_star_defect,
+        format!("Gram condition {:.3e}", fm.conjugate.gram_condition),
+    ));
+    let cr = fm
+        .conjugate
+        .cr_defect
+        .iter()
+        .copied()
+        .fold(
+            0.0,
+            |a: f64, b| if b.is_nan() { f64::NAN } else { a.max(b) },
+        );
+    checks.push(measured(
+        "MS-D10",
+        "ω_y = n × ω_x (Sec. 3.4.2): relative L² Cauchy–Riemann defect",
+        cr,
+        "worst over the basis".into(),
+    ));
     let Some(om) = fm.omega(opt.form.min(fm.harmonic.forms.len().saturating_sub(1))) else {
         return Err(MsError::GenusZero { file: file_name(k) });
     };
@@ -155,7 +225,13 @@ pub fn run(k: &SimplicialSurface, opt: &Options) -> Result<(MsReport, Forms, Opt
         claims::check_cor1(&z, g),
         claims::check_cor2(&z, g),
     ]);
-    let zero_vs: Vec<_> = z.zeros.iter().map(|x| x.0).chain(z.non_positive.iter().map(|x| x.0)).chain(z.undecided.iter().copied()).collect();
+    let zero_vs: Vec<_> = z
+        .zeros
+        .iter()
+        .map(|x| x.0)
+        .chain(z.non_positive.iter().map(|x| x.0))
+        .chain(z.undecided.iter().copied())
+        .collect();
     let at = build(k, ei, &om, &zero_vs, opt.ring)?;
     let t2 = t0.elapsed().as_secs_f64();
     let tr = ac::translations(&at);

@@ -76,14 +76,20 @@ impl ProductPoly {
         let mut total = Q::zero();
         for (c, ls) in &self.terms {
             if self.unsymmetrised {
-                total += ls.iter().zip(us).fold(c.clone(), |acc, (l, u)| acc * l.at(u));
+                total += ls
+                    .iter()
+                    .zip(us)
+                    .fold(c.clone(), |acc, (l, u)| acc * l.at(u));
                 continue;
             }
             let perms = permutations(self.k);
             let n = perms.len() as i64;
             let mut s = Q::zero();
             for p in &perms {
-                s += p.iter().enumerate().fold(Q::one(), |acc, (i, &pi)| acc * ls[i].at(&us[pi]));
+                s += p
+                    .iter()
+                    .enumerate()
+                    .fold(Q::one(), |acc, (i, &pi)| acc * ls[i].at(&us[pi]));
             }
             total += c * s / q(n, 1);
         }
@@ -114,32 +120,50 @@ pub fn multi_indices(n: usize) -> Vec<[usize; 3]> {
 
 /// Barycentric coordinates of u with respect to [a, b, c], or None if degenerate.
 pub fn barycentric(t: [&Q2; 3], u: &Q2) -> Option<[Q; 3]> {
-    let det = |p: &Q2, q1: &Q2, r: &Q2| (&q1[0] - &p[0]) * (&r[1] - &p[1]) - (&r[0] - &p[0]) * (&q1[1] - &p[1]);
+    let det = |p: &Q2, q1: &Q2, r: &Q2| {
+        (&q1[0] - &p[0]) * (&r[1] - &p[1]) - (&r[0] - &p[0]) * (&q1[1] - &p[1])
+    };
     let d = det(t[0], t[1], t[2]);
     if d.is_zero() {
         return None;
     }
-    Some([det(u, t[1], t[2]) / &d, det(t[0], u, t[2]) / &d, det(t[0], t[1], u) / &d])
+    Some([
+        det(u, t[1], t[2]) / &d,
+        det(t[0], u, t[2]) / &d,
+        det(t[0], t[1], u) / &d,
+    ])
 }
 
 impl KnotClouds {
     /// X^β of eq. (2): the first β_i knots of each cloud (|β| = k knots).
     pub fn x_beta(&self, b: &[usize; 3]) -> Vec<Q2> {
-        (0..3).flat_map(|i| self.clouds[i][..b[i]].iter().cloned()).collect()
+        (0..3)
+            .flat_map(|i| self.clouds[i][..b[i]].iter().cloned())
+            .collect()
     }
     /// Δ^β = [t_{0,β0}, t_{1,β1}, t_{2,β2}].
     pub fn delta(&self, b: &[usize; 3]) -> [&Q2; 3] {
-        [&self.clouds[0][b[0]], &self.clouds[1][b[1]], &self.clouds[2][b[2]]]
+        [
+            &self.clouds[0][b[0]],
+            &self.clouds[1][b[1]],
+            &self.clouds[2][b[2]],
+        ]
     }
     /// Every knot transformed by `phi`.
     pub fn mapped(&self, phi: &dyn Fn(&Q2) -> Q2) -> KnotClouds {
-        KnotClouds { k: self.k, clouds: self.clouds.clone().map(|c| c.iter().map(phi).collect()) }
+        KnotClouds {
+            k: self.k,
+            clouds: self.clouds.clone().map(|c| c.iter().map(phi).collect()),
+        }
     }
     /// Recurrence (4): F(u) = C_0^k(u) from the poles `pole(β)`, |β| = k. None when some
     /// Δ^β is degenerate.
     pub fn eval(&self, pole: &dyn Fn(&[usize; 3]) -> Q, u: &Q2) -> Option<Q> {
         let k = self.k;
-        let mut c: Vec<([usize; 3], Q)> = multi_indices(k).into_iter().map(|b| (b, pole(&b))).collect();
+        let mut c: Vec<([usize; 3], Q)> = multi_indices(k)
+            .into_iter()
+            .map(|b| (b, pole(&b)))
+            .collect();
         for v in 0..k {
             let n = k - v - 1;
             let mut next = Vec::new();

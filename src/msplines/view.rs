@@ -54,12 +54,21 @@ fn locate(t: &[P2; 3], p: P2) -> Option<[f64; 3]> {
 impl<'a> AtlasView<'a> {
     /// The view on the charts `ids` (chart indices of `atlas`).
     pub fn new(k: &'a SimplicialSurface, atlas: &'a Atlas, ids: Vec<u32>) -> Self {
-        let ids: Vec<u32> = ids.into_iter().filter(|&i| (i as usize) < atlas.charts.len()).collect();
+        let ids: Vec<u32> = ids
+            .into_iter()
+            .filter(|&i| (i as usize) < atlas.charts.len())
+            .collect();
         let radius = ids
             .iter()
             .map(|&i| atlas.charts[i as usize].radius())
             .fold(0.0, f64::max);
-        AtlasView { k, atlas, ids, radius: if radius > 0.0 { radius } else { 1.0 }, phi_override: None }
+        AtlasView {
+            k,
+            atlas,
+            ids,
+            radius: if radius > 0.0 { radius } else { 1.0 },
+            phi_override: None,
+        }
     }
     /// Chart α and every chart overlapping it.
     pub fn neighbourhood(k: &'a SimplicialSurface, atlas: &'a Atlas, alpha: u32) -> Self {
@@ -68,7 +77,13 @@ impl<'a> AtlasView<'a> {
             debug_assert_eq!(a, alpha);
             ids.push(b);
         }
-        ids.extend(atlas.pairs.keys().filter(|(_, b)| *b == alpha).map(|(a, _)| *a));
+        ids.extend(
+            atlas
+                .pairs
+                .keys()
+                .filter(|(_, b)| *b == alpha)
+                .map(|(a, _)| *a),
+        );
         ids.sort_unstable();
         ids.dedup();
         Self::new(k, atlas, ids)
@@ -85,7 +100,10 @@ impl<'a> AtlasView<'a> {
         let r = self.rank(i)?;
         let side = (self.ids.len() as f64).sqrt().ceil().max(1.0) as usize;
         let half = (side / 2) as f64;
-        Some([COPY_SPACING * ((r % side) as f64 - half), COPY_SPACING * ((r / side) as f64 - half)])
+        Some([
+            COPY_SPACING * ((r % side) as f64 - half),
+            COPY_SPACING * ((r / side) as f64 - half),
+        ])
     }
     /// Global (view) coordinates → chart coordinates φ_α.
     fn to_local(&self, i: Idx, p: &P2) -> Option<P2> {
@@ -115,7 +133,12 @@ impl<'a> AtlasView<'a> {
             let around: Vec<FaceId> = match on.as_slice() {
                 [a, b2] => {
                     let (u, w) = (vs[*a], vs[*b2]);
-                    self.k.faces_around(u).iter().copied().filter(|g| self.k.face(*g).contains(&w)).collect()
+                    self.k
+                        .faces_around(u)
+                        .iter()
+                        .copied()
+                        .filter(|g| self.k.face(*g).contains(&w))
+                        .collect()
                 }
                 [a] => self.k.faces_around(vs[*a]).to_vec(),
                 _ => vec![],
@@ -139,16 +162,22 @@ impl GluingData<2> for AtlasView<'_> {
     }
 
     fn in_p_domain(&self, i: Idx, p: &Point<f64, 2>) -> bool {
-        self.to_local(i, p).is_some_and(|q| self.find(i, q, &|_| true).is_some())
+        self.to_local(i, p)
+            .is_some_and(|q| self.find(i, q, &|_| true).is_some())
     }
 
     fn in_gluing_domain(&self, i: Idx, j: Idx, p: &Point<f64, 2>) -> bool {
         if i == j {
             return self.in_p_domain(i, p);
         }
-        let (Some(q), Some(_)) = (self.to_local(i, p), self.rank(j)) else { return false };
-        let Some(common) = self.common(i, j) else { return false };
-        self.find(i, q, &|f| common.binary_search(&f).is_ok()).is_some()
+        let (Some(q), Some(_)) = (self.to_local(i, p), self.rank(j)) else {
+            return false;
+        };
+        let Some(common) = self.common(i, j) else {
+            return false;
+        };
+        self.find(i, q, &|f| common.binary_search(&f).is_ok())
+            .is_some()
     }
 
     fn phi(&self, j: Idx, i: Idx, p: &Point<f64, 2>) -> Option<Point<f64, 2>> {
@@ -173,19 +202,29 @@ impl GluingData<2> for AtlasView<'_> {
     }
 
     fn sample_p_domain(&self, i: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<Point<f64, 2>> {
-        let Some(ch) = self.atlas.charts.get(i as usize) else { return vec![] };
+        let Some(ch) = self.atlas.charts.get(i as usize) else {
+            return vec![];
+        };
         let faces: Vec<FaceId> = ch.faces.keys().copied().collect();
         self.sample_faces(i, &faces, rng, n)
     }
 
-    fn sample_gluing_domain(&self, i: Idx, j: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<Point<f64, 2>> {
+    fn sample_gluing_domain(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<f64, 2>> {
         if i == j {
             return self.sample_p_domain(i, rng, n);
         }
         if self.rank(j).is_none() {
             return vec![];
         }
-        let Some(common) = self.common(i, j) else { return vec![] };
+        let Some(common) = self.common(i, j) else {
+            return vec![];
+        };
         let common = common.clone();
         self.sample_faces(i, &common, rng, n)
             .into_iter()
@@ -194,8 +233,18 @@ impl GluingData<2> for AtlasView<'_> {
     }
 
     /// Points of ∂Ω_ij ∩ Ω_i: on the edges between a common face and a face of U_i ∖ U_j.
-    fn gluing_boundary_points(&self, i: Idx, j: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<Point<f64, 2>> {
-        let (Some(ch), Some(common), Some(_)) = (self.atlas.charts.get(i as usize), self.common(i, j), self.rank(j)) else {
+    fn gluing_boundary_points(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<f64, 2>> {
+        let (Some(ch), Some(common), Some(_)) = (
+            self.atlas.charts.get(i as usize),
+            self.common(i, j),
+            self.rank(j),
+        ) else {
             return vec![];
         };
         let mut edges = Vec::new();
@@ -204,7 +253,12 @@ impl GluingData<2> for AtlasView<'_> {
             let vs = self.k.face(f);
             for cc in 0..3 {
                 let (u, w) = (vs[cc], vs[(cc + 1) % 3]);
-                let other = self.k.faces_around(u).iter().copied().find(|g| *g != f && self.k.face(*g).contains(&w));
+                let other = self
+                    .k
+                    .faces_around(u)
+                    .iter()
+                    .copied()
+                    .find(|g| *g != f && self.k.face(*g).contains(&w));
                 if let Some(g) = other {
                     if ch.faces.contains_key(&g) && common.binary_search(&g).is_err() {
                         edges.push((t[cc], t[(cc + 1) % 3]));
@@ -233,7 +287,9 @@ impl GluingData<2> for AtlasView<'_> {
 impl AtlasView<'_> {
     /// Uniform samples in random faces of chart i, plus points near the faces' edges.
     fn sample_faces(&self, i: Idx, faces: &[FaceId], rng: &mut ChaCha8Rng, n: usize) -> Vec<P2> {
-        let Some(ch) = self.atlas.charts.get(i as usize) else { return vec![] };
+        let Some(ch) = self.atlas.charts.get(i as usize) else {
+            return vec![];
+        };
         if faces.is_empty() {
             return vec![];
         }

@@ -36,7 +36,12 @@ pub fn winding_number(pts: &[[f64; 2]]) -> Winding {
         let (a, b) = (pts[i], pts[(i + 1) % n]);
         let s = orient2d(c(a), c(b), c(o));
         // The origin on the closed segment [a, b].
-        if s == 0.0 && a[0].min(b[0]) <= 0.0 && 0.0 <= a[0].max(b[0]) && a[1].min(b[1]) <= 0.0 && 0.0 <= a[1].max(b[1]) {
+        if s == 0.0
+            && a[0].min(b[0]) <= 0.0
+            && 0.0 <= a[0].max(b[0])
+            && a[1].min(b[1]) <= 0.0
+            && 0.0 <= a[1].max(b[1])
+        {
             return Winding::OnPolygon;
         }
         if a[1] <= 0.0 {
@@ -51,7 +56,12 @@ pub fn winding_number(pts: &[[f64; 2]]) -> Winding {
 }
 
 /// The image polygon of v's link under ω: ω[v, w_i] in the counterclockwise link order.
-pub fn link_image(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm, v: VertexId) -> Vec<[f64; 2]> {
+pub fn link_image(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    om: &OneForm,
+    v: VertexId,
+) -> Vec<[f64; 2]> {
     k.outgoing(v).iter().map(|&h| om.at(ei, h)).collect()
 }
 
@@ -104,7 +114,14 @@ pub fn locate(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm) -> ZeroSet {
             ambiguous_faces.push(f);
         }
     }
-    ZeroSet { windings, zeros, non_positive, undecided, flipped_faces, ambiguous_faces }
+    ZeroSet {
+        windings,
+        zeros,
+        non_positive,
+        undecided,
+        flipped_faces,
+        ambiguous_faces,
+    }
 }
 
 impl ZeroSet {

@@ -525,7 +525,9 @@ impl Session {
                         )));
                     }
                     self.sigma_v = Some(super::sigma_v::SigmaVOracle::new(kappa));
-                    Ok(Response::plain(json!({"construction": "sigma-v", "kappa": kappa})))
+                    Ok(Response::plain(
+                        json!({"construction": "sigma-v", "kappa": kappa}),
+                    ))
                 }
                 other => Err(OracleError::Malformed(format!(
                     "unknown construction {other:?} (expected \"vertex\" or \"sigma-v\")"

@@ -71,7 +71,14 @@ pub struct Camera {
 impl Camera {
     /// The camera for `view` that fits the box [lo, hi] (all 8 corners) into the image with a
     /// margin of `margin` (fraction of each side).
-    pub fn fit(lo: [f64; 3], hi: [f64; 3], view: View, width: u32, height: u32, margin: f64) -> Camera {
+    pub fn fit(
+        lo: [f64; 3],
+        hi: [f64; 3],
+        view: View,
+        width: u32,
+        height: u32,
+        margin: f64,
+    ) -> Camera {
         let towards = view.towards_viewer();
         let a = view.azimuth.to_radians();
         let right = [a.cos(), 0.0, -a.sin()];
@@ -85,9 +92,21 @@ impl Camera {
             ey = ey.max(dot(r, up).abs());
         }
         let usable = 1.0 - 2.0 * margin;
-        let sx = if ex > 0.0 { usable * f64::from(width) / (2.0 * ex) } else { f64::INFINITY };
-        let sy = if ey > 0.0 { usable * f64::from(height) / (2.0 * ey) } else { f64::INFINITY };
-        let scale = if sx.min(sy).is_finite() { sx.min(sy) } else { 1.0 };
+        let sx = if ex > 0.0 {
+            usable * f64::from(width) / (2.0 * ex)
+        } else {
+            f64::INFINITY
+        };
+        let sy = if ey > 0.0 {
+            usable * f64::from(height) / (2.0 * ey)
+        } else {
+            f64::INFINITY
+        };
+        let scale = if sx.min(sy).is_finite() {
+            sx.min(sy)
+        } else {
+            1.0
+        };
         Camera {
             right,
             up,

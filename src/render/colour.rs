@@ -92,7 +92,11 @@ impl ColourRange {
     /// The robust range of `values` ([`ROBUST_PERCENTILES`], nearest rank), or None when no
     /// value is finite.
     pub fn robust<'a>(values: impl IntoIterator<Item = &'a f64>) -> Option<ColourRange> {
-        let mut v: Vec<f64> = values.into_iter().copied().filter(|x| x.is_finite()).collect();
+        let mut v: Vec<f64> = values
+            .into_iter()
+            .copied()
+            .filter(|x| x.is_finite())
+            .collect();
         if v.is_empty() {
             return None;
         }
@@ -116,9 +120,17 @@ impl ColourRange {
             return None;
         }
         let t = if x > 0.0 {
-            if self.hi > 0.0 { x / self.hi } else { f64::INFINITY }
+            if self.hi > 0.0 {
+                x / self.hi
+            } else {
+                f64::INFINITY
+            }
         } else if x < 0.0 {
-            if self.lo < 0.0 { x / -self.lo } else { f64::NEG_INFINITY }
+            if self.lo < 0.0 {
+                x / -self.lo
+            } else {
+                f64::NEG_INFINITY
+            }
         } else {
             0.0
         };

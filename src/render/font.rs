@@ -20,7 +20,11 @@ pub fn text_width(text: &str, scale: u32) -> u32 {
 pub fn draw_text(img: &mut Image, x: i64, y: i64, text: &str, scale: u32, rgb: [u8; 3]) {
     let s = i64::from(scale);
     for (n, ch) in text.chars().enumerate() {
-        let code = if ch.is_ascii() { ch as usize } else { '?' as usize };
+        let code = if ch.is_ascii() {
+            ch as usize
+        } else {
+            '?' as usize
+        };
         let glyph = BASIC_LEGACY[code];
         let gx = x + n as i64 * 8 * s;
         for (row, bits) in glyph.iter().enumerate() {

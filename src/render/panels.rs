@@ -20,7 +20,14 @@ pub fn side_by_side(panels: &[(String, Image)], scale: u32) -> Image {
     for (caption, img) in panels {
         let tw = i64::from(text_width(caption, scale));
         let cx = x + (i64::from(img.width) - tw) / 2;
-        draw_text(&mut out, cx.max(x), i64::from(4 * scale), caption, scale, [0, 0, 0]);
+        draw_text(
+            &mut out,
+            cx.max(x),
+            i64::from(4 * scale),
+            caption,
+            scale,
+            [0, 0, 0],
+        );
         out.blit(img, x, i64::from(ch));
         x += i64::from(img.width);
     }

@@ -94,7 +94,10 @@ pub fn values(scene: &Scene, colour: ColourBy) -> Result<Option<&[f64]>, RenderE
 }
 
 /// Render `scene` (validated first) and report.
-pub fn render_scene(scene: &Scene, o: &RenderOptions) -> Result<(Image, RenderReport), RenderError> {
+pub fn render_scene(
+    scene: &Scene,
+    o: &RenderOptions,
+) -> Result<(Image, RenderReport), RenderError> {
     scene.validate()?;
     let vals = values(scene, o.colour)?;
     let range = match (vals, o.range) {
@@ -150,7 +153,11 @@ pub fn render_scene(scene: &Scene, o: &RenderOptions) -> Result<(Image, RenderRe
                 }
                 _ => PLAIN,
             };
-            img.put(i64::from(x), i64::from(y), to_rgb8(lit(base, brightness(n, light))));
+            img.put(
+                i64::from(x),
+                i64::from(y),
+                to_rgb8(lit(base, brightness(n, light))),
+            );
         }
     }
     let (mut outside_range, mut undefined) = (0, 0);

@@ -10,9 +10,9 @@ use crate::mesh::raw::RawMesh;
 use crate::mesh::vec3::{cross, sub};
 use crate::mesh::SimplicialSurface;
 use crate::surface::geometry::from_jet;
+use crate::surface::jet::Jet2;
 use crate::surface::output::{sample_surface_with, Attributes};
 use crate::surface::target::eval_cubic;
-use crate::surface::jet::Jet2;
 use crate::surface::{PnTriangles, Pps};
 
 /// K drawn flat: every triangle with its own three vertices and its geometric normal.
@@ -41,7 +41,11 @@ fn grid(level: u32) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
     for i in 0..=n {
         for j in 0..=(n - i) {
             let nn = f64::from(n);
-            pts.push([f64::from(n - i - j) / nn, f64::from(i) / nn, f64::from(j) / nn]);
+            pts.push([
+                f64::from(n - i - j) / nn,
+                f64::from(i) / nn,
+                f64::from(j) / nn,
+            ]);
         }
     }
     let mut tris = Vec::new();

@@ -48,7 +48,10 @@ fn corner(i: usize) -> [Q; 2] {
 /// I^k = 0 are a basis, so x^k vanishes there iff every q_I b_I[k] with I^k = 0 is zero (for
 /// Eq. (9): iff g_k(0) = 0).
 pub fn faces_preserved(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
-    let mut r = CheckResult::new("SD-D1(faces)", "Def. 1: X maps every edge of σ into itself (exact)");
+    let mut r = CheckResult::new(
+        "SD-D1(faces)",
+        "Def. 1: X maps every edge of σ into itself (exact)",
+    );
     for (f, m) in cm.maps.iter().enumerate() {
         r.examined += 1;
         match m.family {
@@ -79,16 +82,33 @@ pub fn faces_preserved(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
 
 /// Def. 1 (L79) inside: X(σ) ⊂ σ, i.e. every x^c ≥ 0 on σ (given D > 0), decided exactly.
 pub fn maps_into_simplex(cm: &ComplexMap, budget: Budget) -> CheckResult {
-    let mut r = CheckResult::new("SD-D1(inside)", "Def. 1: X(σ) ⊂ σ, all x^c ≥ 0 on σ (exact)");
+    let mut r = CheckResult::new(
+        "SD-D1(inside)",
+        "Def. 1: X(σ) ⊂ σ, all x^c ≥ 0 on σ (exact)",
+    );
     let mut unresolved = 0u64;
     for (f, m) in cm.maps.iter().enumerate() {
         for c in 0..3 {
             r.examined += 1;
             // x^c = N_c / D: sign of N_c·D.
-            let p = if m.family == Family::Polynomial { m.num[c].clone() } else { m.num[c].mul(&m.den) };
+            let p = if m.family == Family::Polynomial {
+                m.num[c].clone()
+            } else {
+                m.num[c].mul(&m.den)
+            };
             match decide(&p, Strictness::NonNegative, budget) {
                 Decision::Certified { .. } => {}
-                Decision::Refuted { point, value_f64, point_f64, .. } => r.offend(|| Witness::new(format!("triangle {f}: x^{c}·D = {value_f64:.3e} < 0 at w = {point_f64:?}"), json!({"triangle": f, "component": c, "w": point, "value": value_f64}))),
+                Decision::Refuted {
+                    point,
+                    value_f64,
+                    point_f64,
+                    ..
+                } => r.offend(|| {
+                    Witness::new(
+                        format!("triangle {f}: x^{c}·D = {value_f64:.3e} < 0 at w = {point_f64:?}"),
+                        json!({"triangle": f, "component": c, "w": point, "value": value_f64}),
+                    )
+                }),
                 Decision::Unresolved { .. } => unresolved += 1,
             }
         }
@@ -108,7 +128,10 @@ fn inconclusive(r: &mut CheckResult, unresolved: u64) {
 /// Mello–Velho Sec. 3 (L99): two triangles sharing an edge define the same X on it. Exact
 /// polynomial identity of (Σ N_c v_c)·D' and (Σ N'_c v'_c)·D in the edge parameter.
 pub fn shared_edges_agree(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
-    let mut r = CheckResult::new("SD-L99", "adjacent triangles define the same X on their common edge (exact)");
+    let mut r = CheckResult::new(
+        "SD-L99",
+        "adjacent triangles define the same X on their common edge (exact)",
+    );
     for (a, b, f, g) in k.interior_edges() {
         r.examined += 1;
         let ef = edge_image(k, &cm.maps[f], f, a, b);
@@ -121,7 +144,10 @@ pub fn shared_edges_agree(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
             if !diff.is_zero() {
                 // A nonzero polynomial of degree d has ≤ d roots: one of d + 1 points differs.
                 let d = diff.deg();
-                let u = (0..=d as i64).map(|j| qr(j, d.max(1) as i64)).find(|u| !diff.eval(u, &q(0)).is_zero()).unwrap_or_else(|| qr(1, 2));
+                let u = (0..=d as i64)
+                    .map(|j| qr(j, d.max(1) as i64))
+                    .find(|u| !diff.eval(u, &q(0)).is_zero())
+                    .unwrap_or_else(|| qr(1, 2));
                 let xf = to_f64(&(ef.0[axis].eval(&u, &q(0)) / ef.1.eval(&u, &q(0))));
                 let xg = to_f64(&(eg.0[axis].eval(&u, &q(0)) / eg.1.eval(&u, &q(0))));
                 r.offend(|| Witness::new(format!("edge ({a},{b}) at u = {u}: triangle {f} gives coordinate {axis} = {xf:.17}, triangle {g} gives {xg:.17}"), json!({"edge": [a, b], "u": u.to_string(), "triangles": [f, g], "values": [xf, xg]})));
@@ -130,7 +156,9 @@ pub fn shared_edges_agree(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped { reason: "the complex has no interior edge".into() };
+        r.verdict = Verdict::Skipped {
+            reason: "the complex has no interior edge".into(),
+        };
     }
     r
 }
@@ -156,7 +184,10 @@ fn edge_image(k: &PlanarComplex, m: &SimplexMap, f: usize, a: u32, b: u32) -> ([
 /// Sec. 3 (L101): det DX > 0 on every closed triangle, decided exactly (Bernstein coefficients
 /// over ℚ with subdivision), with D > 0 decided first for Eqs. (9) and (11).
 pub fn det_positive_exact(cm: &ComplexMap, budget: Budget) -> (CheckResult, Vec<Decision>) {
-    let mut r = CheckResult::new("SD-L101(det)", "det DX > 0 on every closed triangle (exact Bernstein certificate)");
+    let mut r = CheckResult::new(
+        "SD-L101(det)",
+        "det DX > 0 on every closed triangle (exact Bernstein certificate)",
+    );
     let mut decisions = Vec::new();
     let mut unresolved = 0u64;
     let mut zero_on_boundary = 0u64;
@@ -165,9 +196,19 @@ pub fn det_positive_exact(cm: &ComplexMap, budget: Budget) -> (CheckResult, Vec<
         r.examined += 1;
         if m.family != Family::Polynomial {
             let dd = decide(&m.den, Strictness::Positive, budget);
-            if let Decision::Refuted { point_f64, value_f64, .. } = &dd {
+            if let Decision::Refuted {
+                point_f64,
+                value_f64,
+                ..
+            } = &dd
+            {
                 let (p, v) = (*point_f64, *value_f64);
-                r.offend(|| Witness::new(format!("triangle {f}: the denominator D = {v:.3e} ≤ 0 at w = {p:?}"), json!({"triangle": f, "w": p, "D": v})));
+                r.offend(|| {
+                    Witness::new(
+                        format!("triangle {f}: the denominator D = {v:.3e} ≤ 0 at w = {p:?}"),
+                        json!({"triangle": f, "w": p, "D": v}),
+                    )
+                });
                 decisions.push(dd);
                 continue;
             }
@@ -182,13 +223,25 @@ pub fn det_positive_exact(cm: &ComplexMap, budget: Budget) -> (CheckResult, Vec<
             Decision::Certified { lower_bound, .. } => {
                 worst = Some(worst.map_or(*lower_bound, |w: f64| w.min(*lower_bound)));
             }
-            Decision::Refuted { point, point_f64, value, value_f64 } => {
+            Decision::Refuted {
+                point,
+                point_f64,
+                value,
+                value_f64,
+            } => {
                 let on_boundary = point.iter().any(|x| x == "0");
                 if on_boundary && value == "0" {
                     zero_on_boundary += 1;
                 }
                 let (pt, p, v, vf) = (point.clone(), *point_f64, value.clone(), *value_f64);
-                r.offend(|| Witness::new(format!("triangle {f}: det DX numerator = {v} (≈ {vf:.3e}) ≤ 0 at w = {p:?}"), json!({"triangle": f, "w": pt, "value": v})));
+                r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "triangle {f}: det DX numerator = {v} (≈ {vf:.3e}) ≤ 0 at w = {p:?}"
+                        ),
+                        json!({"triangle": f, "w": pt, "value": v}),
+                    )
+                });
             }
             Decision::Unresolved { .. } => unresolved += 1,
         }
@@ -205,7 +258,10 @@ pub fn det_positive_exact(cm: &ComplexMap, budget: Budget) -> (CheckResult, Vec<
 /// The interval route for det DX > 0 and its agreement with the exact route: an interval
 /// certificate where the exact route refutes is a defect of one of them.
 pub fn det_positive_interval(cm: &ComplexMap, exact: &[Decision], boxes: usize) -> CheckResult {
-    let mut r = CheckResult::new("SD-L101(interval)", "det DX > 0 by interval branch-and-bound, and agreement with the exact route");
+    let mut r = CheckResult::new(
+        "SD-L101(interval)",
+        "det DX > 0 by interval branch-and-bound, and agreement with the exact route",
+    );
     let mut unknown = 0u64;
     for (f, m) in cm.maps.iter().enumerate() {
         r.examined += 1;
@@ -221,14 +277,19 @@ pub fn det_positive_interval(cm: &ComplexMap, exact: &[Decision], boxes: usize) 
         }
     }
     if unknown > 0 {
-        r.note = format!("{unknown} triangle(s) certified exactly but not by intervals within {boxes} boxes");
+        r.note = format!(
+            "{unknown} triangle(s) certified exactly but not by intervals within {boxes} boxes"
+        );
     }
     r
 }
 
 /// Sec. 3.2 "adjusted" (L137): χ(b_I) = χ(I), i.e. c_I lies in the open face supp I.
 pub fn adjusted(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
-    let mut r = CheckResult::new("SD-L137(adjusted)", "Sec. 3.2: every control point lies in the open face of its multi-index");
+    let mut r = CheckResult::new(
+        "SD-L137(adjusted)",
+        "Sec. 3.2: every control point lies in the open face of its multi-index",
+    );
     for (f, m) in cm.maps.iter().enumerate() {
         if m.family == Family::Monotonic {
             continue;
@@ -236,7 +297,13 @@ pub fn adjusted(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
         for (idx, i) in multi_indices(m.degree).into_iter().enumerate() {
             r.examined += 1;
             let b = &m.control[idx];
-            let ok = (0..3).all(|c| if i[c] > 0 { b[c].is_positive() } else { b[c].is_zero() });
+            let ok = (0..3).all(|c| {
+                if i[c] > 0 {
+                    b[c].is_positive()
+                } else {
+                    b[c].is_zero()
+                }
+            });
             if !ok {
                 let key = super::params::MapSpec::global_key(k, f, i);
                 r.offend(|| Witness::new(format!("triangle {f}: c_I for {key:?} has barycentric coordinates ({}, {}, {})", b[0], b[1], b[2]), json!({"triangle": f, "multiset": key})));
@@ -244,30 +311,60 @@ pub fn adjusted(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped { reason: "not a polynomial or rational map".into() };
+        r.verdict = Verdict::Skipped {
+            reason: "not a polynomial or rational map".into(),
+        };
     }
     r
 }
 
 /// Sec. 3.1 hypotheses (L111): every g_v has g_v(0) = 0 and g_v' > 0 on [0, 1] (exact).
 pub fn monotone_hypotheses(cm: &ComplexMap, budget: Budget) -> CheckResult {
-    let mut r = CheckResult::new("SD-E9(hyp)", "Eq. (9): g_i(0) = 0 and g_i' > 0 on [0, 1] (exact)");
+    let mut r = CheckResult::new(
+        "SD-E9(hyp)",
+        "Eq. (9): g_i(0) = 0 and g_i' > 0 on [0, 1] (exact)",
+    );
     let seg = [[q(0), q(0)], [q(1), q(0)], [q(1), q(0)]];
     for (f, m) in cm.maps.iter().enumerate() {
         for (c, g) in m.g.iter().enumerate() {
             r.examined += 1;
             if !g.at_zero().is_zero() {
-                r.offend(|| Witness::new(format!("triangle {f}, local vertex {c}: g(0) = {}", g.at_zero()), json!({"triangle": f, "local": c})));
+                r.offend(|| {
+                    Witness::new(
+                        format!("triangle {f}, local vertex {c}: g(0) = {}", g.at_zero()),
+                        json!({"triangle": f, "local": c}),
+                    )
+                });
                 continue;
             }
-            let d = decide_on(&g.as_poly2().ds(), seg.clone(), Strictness::Positive, budget);
-            if let Decision::Refuted { point_f64, value_f64, .. } = d {
-                r.offend(|| Witness::new(format!("triangle {f}, local vertex {c}: g'({}) = {value_f64:.3e} ≤ 0", point_f64[1]), json!({"triangle": f, "local": c, "t": point_f64[1], "g_prime": value_f64})));
+            let d = decide_on(
+                &g.as_poly2().ds(),
+                seg.clone(),
+                Strictness::Positive,
+                budget,
+            );
+            if let Decision::Refuted {
+                point_f64,
+                value_f64,
+                ..
+            } = d
+            {
+                r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "triangle {f}, local vertex {c}: g'({}) = {value_f64:.3e} ≤ 0",
+                            point_f64[1]
+                        ),
+                        json!({"triangle": f, "local": c, "t": point_f64[1], "g_prime": value_f64}),
+                    )
+                });
             }
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped { reason: "not a monotonic map".into() };
+        r.verdict = Verdict::Skipped {
+            reason: "not a monotonic map".into(),
+        };
     }
     r
 }
@@ -281,11 +378,18 @@ pub fn weights_positive(cm: &ComplexMap) -> CheckResult {
         }
         r.examined += m.weights.len() as u64;
         if let Some((i, w)) = m.first_nonpositive_weight() {
-            r.offend(|| Witness::new(format!("triangle {f}: weight {i} is {w}"), json!({"triangle": f, "index": i, "weight": w.to_string()})));
+            r.offend(|| {
+                Witness::new(
+                    format!("triangle {f}: weight {i} is {w}"),
+                    json!({"triangle": f, "index": i, "weight": w.to_string()}),
+                )
+            });
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped { reason: "not a rational map".into() };
+        r.verdict = Verdict::Skipped {
+            reason: "not a rational map".into(),
+        };
     }
     r
 }
@@ -294,7 +398,10 @@ pub fn weights_positive(cm: &ComplexMap) -> CheckResult {
 /// an increasing map of the edge parameter (exact), so X|∂σ is a homeomorphism of ∂σ; with
 /// det DX > 0 inside, X|σ is then a bijection by the argument principle.
 pub fn edges_monotone(k: &PlanarComplex, cm: &ComplexMap, budget: Budget) -> CheckResult {
-    let mut r = CheckResult::new("SD-L101(edges)", "X restricted to every edge is strictly increasing in the edge parameter (exact)");
+    let mut r = CheckResult::new(
+        "SD-L101(edges)",
+        "X restricted to every edge is strictly increasing in the edge parameter (exact)",
+    );
     let mut unresolved = 0u64;
     let seg = [[q(0), q(0)], [q(1), q(0)], [q(1), q(0)]];
     for (f, m) in cm.maps.iter().enumerate() {
@@ -308,7 +415,11 @@ pub fn edges_monotone(k: &PlanarComplex, cm: &ComplexMap, budget: Budget) -> Che
             let p = nb.ds().mul(&d).sub(&nb.mul(&d.ds()));
             match decide_on(&p, seg.clone(), Strictness::Positive, budget) {
                 Decision::Certified { .. } => {}
-                Decision::Refuted { point_f64, value_f64, .. } => {
+                Decision::Refuted {
+                    point_f64,
+                    value_f64,
+                    ..
+                } => {
                     let (a, b) = (k.triangles[f][la], k.triangles[f][lb]);
                     r.offend(|| Witness::new(format!("triangle {f}, edge ({a}→{b}) at u = {}: derivative numerator {value_f64:.3e} ≤ 0", point_f64[1]), json!({"triangle": f, "edge": [a, b], "u": point_f64[1]})));
                 }
@@ -322,13 +433,23 @@ pub fn edges_monotone(k: &PlanarComplex, cm: &ComplexMap, budget: Budget) -> Che
 
 /// Partition of unity (Eq. (1), L131): Σ_c x^c ≡ 1, i.e. Σ_c N_c − D is the zero polynomial.
 pub fn partition_of_unity(cm: &ComplexMap) -> CheckResult {
-    let mut r = CheckResult::new("SD-L131", "Eq. (1) for x: Σ_c x^c ≡ 1 (exact polynomial identity)");
+    let mut r = CheckResult::new(
+        "SD-L131",
+        "Eq. (1) for x: Σ_c x^c ≡ 1 (exact polynomial identity)",
+    );
     for (f, m) in cm.maps.iter().enumerate() {
         r.examined += 1;
         let d = m.unity_defect();
         if !d.is_zero() {
             let v = to_f64(&(d.eval(&qr(1, 3), &qr(1, 3)) / m.den.eval(&qr(1, 3), &qr(1, 3))));
-            r.offend(|| Witness::new(format!("triangle {f}: Σ x^c − 1 is not identically 0 (at the centroid: {v:.3e})"), json!({"triangle": f, "at_centroid": v})));
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "triangle {f}: Σ x^c − 1 is not identically 0 (at the centroid: {v:.3e})"
+                    ),
+                    json!({"triangle": f, "at_centroid": v}),
+                )
+            });
         }
     }
     r
@@ -349,6 +470,10 @@ pub fn check_all(k: &PlanarComplex, cm: &ComplexMap, opts: &Options) -> Vec<Chec
     let (det, decisions) = det_positive_exact(cm, opts.budget);
     out.push(det);
     out.push(det_positive_interval(cm, &decisions, opts.interval_boxes));
-    out.push(super::inverse::inversion_spot_check(cm, opts.seed, opts.inversion_samples));
+    out.push(super::inverse::inversion_spot_check(
+        cm,
+        opts.seed,
+        opts.inversion_samples,
+    ));
     out
 }

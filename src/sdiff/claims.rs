@@ -34,7 +34,12 @@ pub fn det_decision(m: &SimplexMap, budget: Budget) -> Decision {
 }
 
 /// Runs `samples` maps from `gen` through [`det_decision`].
-pub fn search(samples: usize, seed: u64, budget: Budget, mut gen: impl FnMut(&mut ChaCha8Rng) -> (String, SimplexMap)) -> Search {
+pub fn search(
+    samples: usize,
+    seed: u64,
+    budget: Budget,
+    mut gen: impl FnMut(&mut ChaCha8Rng) -> (String, SimplexMap),
+) -> Search {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut s = Search::default();
     for _ in 0..samples {
@@ -72,7 +77,10 @@ pub fn open_face_point(rng: &mut ChaCha8Rng, supp: [bool; 3]) -> [Q; 3] {
 
 /// An adjusted polynomial map of degree n with random control points (Sec. 3.2).
 pub fn random_adjusted(n: usize, rng: &mut ChaCha8Rng) -> (String, SimplexMap) {
-    let control: Vec<[Q; 3]> = multi_indices(n).into_iter().map(|i| open_face_point(rng, i.map(|k| k > 0))).collect();
+    let control: Vec<[Q; 3]> = multi_indices(n)
+        .into_iter()
+        .map(|i| open_face_point(rng, i.map(|k| k > 0)))
+        .collect();
     (describe(&control), SimplexMap::polynomial(n, control))
 }
 
@@ -87,24 +95,48 @@ pub fn random_fixed_solitary3(rng: &mut ChaCha8Rng) -> (String, SimplexMap) {
 /// Degree n rational map with fixed control points and random positive weights in [1/100, 100].
 pub fn random_rational_fixed(n: usize, rng: &mut ChaCha8Rng) -> (String, SimplexMap) {
     let control = SimplexMap::fixed_control(n);
-    let weights: Vec<Q> = control.iter().map(|_| match rng.gen_range(0..6) {
-        0 => qr(1, 100),
-        1 => q(100),
-        _ => qr(rng.gen_range(1..1000), 97),
-    }).collect();
-    let desc = format!("n = {n}, weights {:?}", weights.iter().map(|w| w.to_string()).collect::<Vec<_>>());
+    let weights: Vec<Q> = control
+        .iter()
+        .map(|_| match rng.gen_range(0..6) {
+            0 => qr(1, 100),
+            1 => q(100),
+            _ => qr(rng.gen_range(1..1000), 97),
+        })
+        .collect();
+    let desc = format!(
+        "n = {n}, weights {:?}",
+        weights.iter().map(|w| w.to_string()).collect::<Vec<_>>()
+    );
     (desc, SimplexMap::rational(n, control, weights))
 }
 
 /// Monotonic map with random g_i(t) = a t + b t² + c t³, a > 0, b, c ≥ 0 (so g' > 0 on [0, 1]).
 pub fn random_monotonic(rng: &mut ChaCha8Rng) -> (String, SimplexMap) {
-    let g = [(); 3].map(|_| Poly1(vec![q(0), unit_open(rng) * q(10), unit_open(rng) * q(10), unit_open(rng) * q(10)]));
-    let desc = format!("{:?}", g.iter().map(|p| p.0.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>());
+    let g = [(); 3].map(|_| {
+        Poly1(vec![
+            q(0),
+            unit_open(rng) * q(10),
+            unit_open(rng) * q(10),
+            unit_open(rng) * q(10),
+        ])
+    });
+    let desc = format!(
+        "{:?}",
+        g.iter()
+            .map(|p| p.0.iter().map(|x| x.to_string()).collect::<Vec<_>>())
+            .collect::<Vec<_>>()
+    );
     (desc, SimplexMap::monotonic(g))
 }
 
 fn describe(control: &[[Q; 3]]) -> String {
-    format!("{:?}", control.iter().map(|b| b.iter().map(|x| x.to_string()).collect::<Vec<_>>()).collect::<Vec<_>>())
+    format!(
+        "{:?}",
+        control
+            .iter()
+            .map(|b| b.iter().map(|x| x.to_string()).collect::<Vec<_>>())
+            .collect::<Vec<_>>()
+    )
 }
 
 /// A universal claim as a [`CheckResult`]: holds when no sample refutes it.
@@ -113,14 +145,32 @@ pub fn universal(id: &str, name: &str, s: &Search, samples: usize, seed: u64) ->
     r.seed = Some(seed);
     r.examined = samples as u64;
     for (desc, d) in &s.refuted {
-        if let Decision::Refuted { point_f64, value_f64, point, value } = d {
-            r.offend(|| Witness::new(format!("det DX = {value_f64:.3e} ≤ 0 at w = {point_f64:?} for control {desc}"), json!({"w": point, "value": value, "map": desc})));
+        if let Decision::Refuted {
+            point_f64,
+            value_f64,
+            point,
+            value,
+        } = d
+        {
+            r.offend(|| {
+                Witness::new(
+                    format!("det DX = {value_f64:.3e} ≤ 0 at w = {point_f64:?} for control {desc}"),
+                    json!({"w": point, "value": value, "map": desc}),
+                )
+            });
         }
     }
     if s.unresolved > 0 && !r.failed() {
-        r.verdict = Verdict::Skipped { reason: format!("{} samples unresolved", s.unresolved) };
+        r.verdict = Verdict::Skipped {
+            reason: format!("{} samples unresolved", s.unresolved),
+        };
     }
-    r.note = format!("{} certified exactly, {} refuted, {} unresolved", s.certified, s.refuted.len(), s.unresolved);
+    r.note = format!(
+        "{} certified exactly, {} refuted, {} unresolved",
+        s.certified,
+        s.refuted.len(),
+        s.unresolved
+    );
     r
 }
 
@@ -131,15 +181,39 @@ pub fn existential(id: &str, name: &str, s: &Search, samples: usize, seed: u64) 
     let mut r = CheckResult::new(id, name);
     r.seed = Some(seed);
     r.examined = samples as u64;
-    let hit = s.refuted.iter().find(|(_, d)| matches!(d, Decision::Refuted { value_f64, .. } if *value_f64 < 0.0));
+    let hit = s
+        .refuted
+        .iter()
+        .find(|(_, d)| matches!(d, Decision::Refuted { value_f64, .. } if *value_f64 < 0.0));
     match hit {
-        Some((desc, Decision::Refuted { point, point_f64, value_f64, .. })) => {
-            r.witnesses.push(Witness::new(format!("adjusted map with det DX = {value_f64:.3e} < 0 at w = {point_f64:?}: {desc}"), json!({"w": point, "map": desc})));
+        Some((
+            desc,
+            Decision::Refuted {
+                point,
+                point_f64,
+                value_f64,
+                ..
+            },
+        )) => {
+            r.witnesses.push(Witness::new(
+                format!(
+                    "adjusted map with det DX = {value_f64:.3e} < 0 at w = {point_f64:?}: {desc}"
+                ),
+                json!({"w": point, "map": desc}),
+            ));
         }
         _ => {
-            r.verdict = Verdict::Skipped { reason: format!("no example among {samples} samples (the search is not a proof of absence)") };
+            r.verdict = Verdict::Skipped {
+                reason: format!(
+                    "no example among {samples} samples (the search is not a proof of absence)"
+                ),
+            };
         }
     }
-    r.note = format!("{} certified, {} with det ≤ 0 somewhere", s.certified, s.refuted.len());
+    r.note = format!(
+        "{} certified, {} with det ≤ 0 somewhere",
+        s.certified,
+        s.refuted.len()
+    );
     r
 }

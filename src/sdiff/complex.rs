@@ -78,7 +78,10 @@ pub fn validate(raw: &RawMesh) -> Result<(PlanarComplex, Vec<CheckResult>), Comp
             });
         }
         // Finite doubles are exact rationals.
-        points.push([from_f64(p[0]).unwrap_or_default(), from_f64(p[1]).unwrap_or_default()]);
+        points.push([
+            from_f64(p[0]).unwrap_or_default(),
+            from_f64(p[1]).unwrap_or_default(),
+        ]);
     }
     let nv = points.len();
     let mut report = Vec::new();
@@ -88,16 +91,29 @@ pub fn validate(raw: &RawMesh) -> Result<(PlanarComplex, Vec<CheckResult>), Comp
     for (f, t) in raw.faces.iter().enumerate() {
         range.examined += 1;
         if t.iter().any(|&v| v as usize >= nv) {
-            range.offend(|| Witness::new(format!("{} names vertex {:?} of {nv}", raw.describe_face(f), t), serde_json::json!({"face": f})));
+            range.offend(|| {
+                Witness::new(
+                    format!("{} names vertex {:?} of {nv}", raw.describe_face(f), t),
+                    serde_json::json!({"face": f}),
+                )
+            });
         } else if t[0] == t[1] || t[1] == t[2] || t[0] == t[2] {
-            range.offend(|| Witness::new(format!("{} repeats a vertex {:?}", raw.describe_face(f), t), serde_json::json!({"face": f})));
+            range.offend(|| {
+                Witness::new(
+                    format!("{} repeats a vertex {:?}", raw.describe_face(f), t),
+                    serde_json::json!({"face": f}),
+                )
+            });
         } else {
             ok_faces.push(f);
         }
     }
     report.push(range);
 
-    let mut pure = CheckResult::new("SD-K-pure", "purity: every vertex is a vertex of some triangle");
+    let mut pure = CheckResult::new(
+        "SD-K-pure",
+        "purity: every vertex is a vertex of some triangle",
+    );
     let mut used = vec![false; nv];
     for &f in &ok_faces {
         for &v in &raw.faces[f] {
@@ -107,24 +123,48 @@ pub fn validate(raw: &RawMesh) -> Result<(PlanarComplex, Vec<CheckResult>), Comp
     for (v, u) in used.iter().enumerate() {
         pure.examined += 1;
         if !u {
-            pure.offend(|| Witness::new(format!("{} is in no triangle", raw.describe_vertex(v)), serde_json::json!({"vertex": v})));
+            pure.offend(|| {
+                Witness::new(
+                    format!("{} is in no triangle", raw.describe_vertex(v)),
+                    serde_json::json!({"vertex": v}),
+                )
+            });
         }
     }
     report.push(pure);
 
-    let mut orientation = CheckResult::new("SD-K-orientation", "every triangle is positively oriented (exact sign)");
+    let mut orientation = CheckResult::new(
+        "SD-K-orientation",
+        "every triangle is positively oriented (exact sign)",
+    );
     for &f in &ok_faces {
         orientation.examined += 1;
         let t = raw.faces[f];
-        let o = orient(&points[t[0] as usize], &points[t[1] as usize], &points[t[2] as usize]);
+        let o = orient(
+            &points[t[0] as usize],
+            &points[t[1] as usize],
+            &points[t[2] as usize],
+        );
         if !o.is_positive() {
-            let what = if o.is_zero() { "degenerate (collinear)" } else { "clockwise" };
-            orientation.offend(|| Witness::new(format!("{} is {what}", raw.describe_face(f)), serde_json::json!({"face": f, "twice_area": o.to_string()})));
+            let what = if o.is_zero() {
+                "degenerate (collinear)"
+            } else {
+                "clockwise"
+            };
+            orientation.offend(|| {
+                Witness::new(
+                    format!("{} is {what}", raw.describe_face(f)),
+                    serde_json::json!({"face": f, "twice_area": o.to_string()}),
+                )
+            });
         }
     }
     report.push(orientation);
 
-    let mut facets = CheckResult::new("SD-K-facets", "every edge is a face of at most two triangles");
+    let mut facets = CheckResult::new(
+        "SD-K-facets",
+        "every edge is a face of at most two triangles",
+    );
     let mut edges: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
     for &f in &ok_faces {
         let t = raw.faces[f];
@@ -139,7 +179,12 @@ pub fn validate(raw: &RawMesh) -> Result<(PlanarComplex, Vec<CheckResult>), Comp
         facets.examined += 1;
         let fs = &edges[&e];
         if fs.len() > 2 {
-            facets.offend(|| Witness::new(format!("edge {:?} is in {} triangles: {:?}", e, fs.len(), fs), serde_json::json!({"edge": e, "faces": fs})));
+            facets.offend(|| {
+                Witness::new(
+                    format!("edge {:?} is in {} triangles: {:?}", e, fs.len(), fs),
+                    serde_json::json!({"edge": e, "faces": fs}),
+                )
+            });
         }
     }
     report.push(facets);
@@ -175,7 +220,10 @@ fn interiors_meet(a: &[[Q; 2]; 3], b: &[[Q; 2]; 3]) -> bool {
 }
 
 fn overlap_check(raw: &RawMesh, points: &[[Q; 2]], faces: &[usize]) -> CheckResult {
-    let mut r = CheckResult::new("SD-K-overlap", "no two triangles have intersecting interiors (exact)");
+    let mut r = CheckResult::new(
+        "SD-K-overlap",
+        "no two triangles have intersecting interiors (exact)",
+    );
     // Sweep over x: bounding boxes sorted by their left end.
     let bbox = |f: usize| {
         let t = raw.faces[f];
@@ -213,7 +261,16 @@ fn overlap_check(raw: &RawMesh, points: &[[Q; 2]], faces: &[usize]) -> CheckResu
                 continue; // reported by the orientation check
             }
             if interiors_meet(&ta, &tb) {
-                r.offend(|| Witness::new(format!("{} and {} overlap", raw.describe_face(f), raw.describe_face(g)), serde_json::json!({"faces": [f, g]})));
+                r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "{} and {} overlap",
+                            raw.describe_face(f),
+                            raw.describe_face(g)
+                        ),
+                        serde_json::json!({"faces": [f, g]}),
+                    )
+                });
             }
         }
         active.push(cur);
@@ -222,7 +279,9 @@ fn overlap_check(raw: &RawMesh, points: &[[Q; 2]], faces: &[usize]) -> CheckResu
         r.note = "no two triangles have overlapping bounding boxes".into();
     }
     if faces.len() <= 1 {
-        r.verdict = Verdict::Skipped { reason: "fewer than two triangles".into() };
+        r.verdict = Verdict::Skipped {
+            reason: "fewer than two triangles".into(),
+        };
     }
     r
 }

@@ -86,7 +86,11 @@ pub fn det_enclosure(m: &SimplexMap, s: I, t: I) -> I {
                 ds[c] = gd * a;
                 dt[c] = gd * b;
             }
-            let (dv, dds, ddt) = (v[0] + v[1] + v[2], ds[0] + ds[1] + ds[2], dt[0] + dt[1] + dt[2]);
+            let (dv, dds, ddt) = (
+                v[0] + v[1] + v[2],
+                ds[0] + ds[1] + ds[2],
+                dt[0] + dt[1] + dt[2],
+            );
             return quotient_det([v[1], v[2], dv], [ds[1], ds[2], dds], [dt[1], dt[2], ddt]);
         }
         Family::Polynomial | Family::Rational => {
@@ -162,7 +166,11 @@ pub fn certify_det(m: &SimplexMap, max_boxes: usize) -> IntervalVerdict {
         if boxes > max_boxes {
             return IntervalVerdict::Unknown { boxes };
         }
-        let d = det_enclosure(m, I::try_from((s0, s1)).unwrap_or(I::ENTIRE), I::try_from((t0, t1)).unwrap_or(I::ENTIRE));
+        let d = det_enclosure(
+            m,
+            I::try_from((s0, s1)).unwrap_or(I::ENTIRE),
+            I::try_from((t0, t1)).unwrap_or(I::ENTIRE),
+        );
         if !d.is_empty() && d.inf() > 0.0 {
             lower = lower.min(d.inf());
             continue;

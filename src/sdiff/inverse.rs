@@ -35,13 +35,19 @@ pub fn newton(m: &SimplexMap, y: [f64; 2], start: [f64; 2]) -> Option<Preimage> 
             return None;
         }
         if res <= tolerance(m) {
-            return Some(Preimage { st: p, residual: res });
+            return Some(Preimage {
+                st: p,
+                residual: res,
+            });
         }
         let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
         if det == 0.0 || !det.is_finite() {
             return None;
         }
-        let d = [(j[1][1] * r[0] - j[0][1] * r[1]) / det, (-j[1][0] * r[0] + j[0][0] * r[1]) / det];
+        let d = [
+            (j[1][1] * r[0] - j[0][1] * r[1]) / det,
+            (-j[1][0] * r[0] + j[0][0] * r[1]) / det,
+        ];
         let mut step = 1.0;
         let mut next = [p[0] - d[0], p[1] - d[1]];
         while !inside(next) && step > 1e-6 {
@@ -55,13 +61,19 @@ pub fn newton(m: &SimplexMap, y: [f64; 2], start: [f64; 2]) -> Option<Preimage> 
     }
     let (x, _) = m.eval_f64_with_jacobian(p[0], p[1]);
     let res = (x[0] - y[0]).abs().max((x[1] - y[1]).abs());
-    Some(Preimage { st: p, residual: res })
+    Some(Preimage {
+        st: p,
+        residual: res,
+    })
 }
 
 /// Seeded spot check: for random targets y in each triangle, Newton from four starts; every
 /// converged start must give the same preimage (else two preimages: X is not injective).
 pub fn inversion_spot_check(cm: &ComplexMap, seed: u64, per_triangle: usize) -> CheckResult {
-    let mut r = CheckResult::new("SD-L101(inverse)", "X|σ⁻¹ by Newton from several starts reaches one preimage (seeded, f64)");
+    let mut r = CheckResult::new(
+        "SD-L101(inverse)",
+        "X|σ⁻¹ by Newton from several starts reaches one preimage (seeded, f64)",
+    );
     r.seed = Some(seed);
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
     let mut worst = 0.0f64;
@@ -77,14 +89,20 @@ pub fn inversion_spot_check(cm: &ComplexMap, seed: u64, per_triangle: usize) -> 
             let y = [a, b];
             r.examined += 1;
             let starts = [y, [0.2, 0.2], [0.6, 0.2], [0.2, 0.6]];
-            let sols: Vec<Preimage> = starts.iter().filter_map(|s| newton(m, y, *s)).filter(|p| p.residual <= tol).collect();
+            let sols: Vec<Preimage> = starts
+                .iter()
+                .filter_map(|s| newton(m, y, *s))
+                .filter(|p| p.residual <= tol)
+                .collect();
             if sols.is_empty() {
                 failed_to_converge += 1;
                 continue;
             }
             for p in &sols {
                 worst = worst.max(p.residual);
-                let d = (p.st[0] - sols[0].st[0]).abs().max((p.st[1] - sols[0].st[1]).abs());
+                let d = (p.st[0] - sols[0].st[0])
+                    .abs()
+                    .max((p.st[1] - sols[0].st[1]).abs());
                 if d > 1e-6 {
                     let (p0, p1) = (sols[0].st, p.st);
                     r.offend(|| Witness::new(format!("triangle {f}: y = {y:?} has two preimages (s,t) = {p0:?} and {p1:?}"), json!({"triangle": f, "y": y, "preimages": [p0, p1]})));
@@ -95,11 +113,15 @@ pub fn inversion_spot_check(cm: &ComplexMap, seed: u64, per_triangle: usize) -> 
     }
     r.worst_deviation = Some(worst);
     if failed_to_converge > 0 {
-        r.note = format!("Newton did not converge for {failed_to_converge} target(s) (counted as unexamined)");
+        r.note = format!(
+            "Newton did not converge for {failed_to_converge} target(s) (counted as unexamined)"
+        );
         r.examined -= failed_to_converge;
     }
     if r.examined == 0 {
-        r.verdict = crate::report::Verdict::Skipped { reason: "no target converged".into() };
+        r.verdict = crate::report::Verdict::Skipped {
+            reason: "no target converged".into(),
+        };
     }
     r
 }

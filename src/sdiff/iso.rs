@@ -107,16 +107,27 @@ fn edge_point(f: &[Q], c: &Q, a: u32, b: u32) -> Q {
 }
 
 /// Builds O and 𝒪 = X⁻¹(O) and checks them.
-pub fn isocurves(k: &PlanarComplex, cm: &ComplexMap, f: &[Q], c: &Q) -> Result<Isocurves, IsoError> {
+pub fn isocurves(
+    k: &PlanarComplex,
+    cm: &ComplexMap,
+    f: &[Q],
+    c: &Q,
+) -> Result<Isocurves, IsoError> {
     for (v, fv) in f.iter().enumerate() {
         if fv == c {
-            return Err(IsoError::LevelAtVertex { vertex: v, value: c.to_string() });
+            return Err(IsoError::LevelAtVertex {
+                vertex: v,
+                value: c.to_string(),
+            });
         }
     }
     let mut lin = Polylines::default();
     let mut cur = Polylines::default();
     let mut edge_ids: HashMap<(u32, u32), (usize, usize)> = HashMap::new();
-    let mut inv = CheckResult::new("SD-L168(inverse)", "every curved point is X|σ⁻¹ of its linear point, inside σ, to the printed tolerance");
+    let mut inv = CheckResult::new(
+        "SD-L168(inverse)",
+        "every curved point is X|σ⁻¹ of its linear point, inside σ, to the printed tolerance",
+    );
     let mut worst = 0.0f64;
     for (fi, t) in k.triangles.iter().enumerate() {
         let m = &cm.maps[fi];
@@ -132,13 +143,19 @@ pub fn isocurves(k: &PlanarComplex, cm: &ComplexMap, f: &[Q], c: &Q) -> Result<I
                     Some(&id) => id,
                     None => {
                         let u = edge_point(f, c, key.0, key.1);
-                        let (p0, p1) = (&k.points_f64[key.0 as usize], &k.points_f64[key.1 as usize]);
+                        let (p0, p1) =
+                            (&k.points_f64[key.0 as usize], &k.points_f64[key.1 as usize]);
                         let uf = to_f64(&u);
-                        lin.points.push([p0[0] + uf * (p1[0] - p0[0]), p0[1] + uf * (p1[1] - p0[1])]);
+                        lin.points
+                            .push([p0[0] + uf * (p1[0] - p0[0]), p0[1] + uf * (p1[1] - p0[1])]);
                         // Invert X on the edge: find u' with X(edge(u')) = edge(u).
-                        let (lo, hi) = (t.iter().position(|&v| v == key.0).unwrap_or(0), t.iter().position(|&v| v == key.1).unwrap_or(0));
+                        let (lo, hi) = (
+                            t.iter().position(|&v| v == key.0).unwrap_or(0),
+                            t.iter().position(|&v| v == key.1).unwrap_or(0),
+                        );
                         let up = invert_edge(m, lo, hi, uf);
-                        cur.points.push([p0[0] + up * (p1[0] - p0[0]), p0[1] + up * (p1[1] - p0[1])]);
+                        cur.points
+                            .push([p0[0] + up * (p1[0] - p0[0]), p0[1] + up * (p1[1] - p0[1])]);
                         let id = (lin.points.len() - 1, cur.points.len() - 1);
                         edge_ids.insert(key, id);
                         id
@@ -154,7 +171,10 @@ pub fn isocurves(k: &PlanarComplex, cm: &ComplexMap, f: &[Q], c: &Q) -> Result<I
         lin.segments.push([ia, ib]);
         // Interior samples of the piece θ, inverted by Newton in σ's chart.
         let bary = |p: [f64; 2]| -> [f64; 2] {
-            let q = [from_f64(p[0]).unwrap_or_default(), from_f64(p[1]).unwrap_or_default()];
+            let q = [
+                from_f64(p[0]).unwrap_or_default(),
+                from_f64(p[1]).unwrap_or_default(),
+            ];
             let w = k.barycentric(fi, &q);
             [to_f64(&w[1]), to_f64(&w[2])]
         };
@@ -169,10 +189,18 @@ pub fn isocurves(k: &PlanarComplex, cm: &ComplexMap, f: &[Q], c: &Q) -> Result<I
                     worst = worst.max(pre.residual);
                     let w = [1.0 - pre.st[0] - pre.st[1], pre.st[0], pre.st[1]];
                     if w.iter().any(|x| *x < -1e-12) {
-                        inv.offend(|| Witness::new(format!("triangle {fi}: preimage {w:?} is outside σ"), json!({"triangle": fi, "w": w})));
+                        inv.offend(|| {
+                            Witness::new(
+                                format!("triangle {fi}: preimage {w:?} is outside σ"),
+                                json!({"triangle": fi, "w": w}),
+                            )
+                        });
                     }
                     let tp = t.map(|v| k.points_f64[v as usize]);
-                    let p = [w[0] * tp[0][0] + w[1] * tp[1][0] + w[2] * tp[2][0], w[0] * tp[0][1] + w[1] * tp[1][1] + w[2] * tp[2][1]];
+                    let p = [
+                        w[0] * tp[0][0] + w[1] * tp[1][0] + w[2] * tp[2][0],
+                        w[0] * tp[0][1] + w[1] * tp[1][1] + w[2] * tp[2][1],
+                    ];
                     cur.points.push(p);
                     let id = cur.points.len() - 1;
                     cur.segments.push([prev, id]);
@@ -188,23 +216,41 @@ pub fn isocurves(k: &PlanarComplex, cm: &ComplexMap, f: &[Q], c: &Q) -> Result<I
     }
     inv.worst_deviation = Some(worst);
     if inv.examined == 0 {
-        inv.verdict = crate::report::Verdict::Skipped { reason: "the level set misses every triangle".into() };
+        inv.verdict = crate::report::Verdict::Skipped {
+            reason: "the level set misses every triangle".into(),
+        };
     }
     let mut topo = CheckResult::new("SD-L168", "Sec. 4: 𝒪 = X⁻¹(O) has the topology of O (components and closed loops) and no self-crossing");
     let (lc, ll) = lin.topology();
     let (cc, cl) = cur.topology();
     topo.examined = cur.segments.len() as u64;
     if (lc, ll) != (cc, cl) {
-        topo.offend(|| Witness::new(format!("O has {lc} components ({ll} closed), 𝒪 has {cc} ({cl} closed)"), json!({"linear": [lc, ll], "curved": [cc, cl]})));
+        topo.offend(|| {
+            Witness::new(
+                format!("O has {lc} components ({ll} closed), 𝒪 has {cc} ({cl} closed)"),
+                json!({"linear": [lc, ll], "curved": [cc, cl]}),
+            )
+        });
     }
     for (i, j) in crossing_segments(&cur) {
-        topo.offend(|| Witness::new(format!("curved segments {i} and {j} cross"), json!({"segments": [i, j]})));
+        topo.offend(|| {
+            Witness::new(
+                format!("curved segments {i} and {j} cross"),
+                json!({"segments": [i, j]}),
+            )
+        });
     }
     topo.note = format!("O: {lc} components, {ll} closed; 𝒪: {cc} components, {cl} closed");
     if topo.examined == 0 {
-        topo.verdict = crate::report::Verdict::Skipped { reason: "the level set misses every triangle".into() };
+        topo.verdict = crate::report::Verdict::Skipped {
+            reason: "the level set misses every triangle".into(),
+        };
     }
-    Ok(Isocurves { linear: lin, curved: cur, report: vec![inv, topo] })
+    Ok(Isocurves {
+        linear: lin,
+        curved: cur,
+        report: vec![inv, topo],
+    })
 }
 
 fn invert_edge(m: &super::maps::SimplexMap, la: usize, lb: usize, u: f64) -> f64 {
@@ -232,9 +278,20 @@ fn invert_edge(m: &super::maps::SimplexMap, la: usize, lb: usize, u: f64) -> f64
 /// Pairs of segments that cross properly (exact orientation signs on the f64 points), other
 /// than neighbours sharing an endpoint.
 fn crossing_segments(p: &Polylines) -> Vec<(usize, usize)> {
-    let q = |x: [f64; 2]| [from_f64(x[0]).unwrap_or_default(), from_f64(x[1]).unwrap_or_default()];
-    let orient = |a: &[Q; 2], b: &[Q; 2], c: &[Q; 2]| ((&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])).signum();
-    let segs: Vec<[[Q; 2]; 2]> = p.segments.iter().map(|e| [q(p.points[e[0]]), q(p.points[e[1]])]).collect();
+    let q = |x: [f64; 2]| {
+        [
+            from_f64(x[0]).unwrap_or_default(),
+            from_f64(x[1]).unwrap_or_default(),
+        ]
+    };
+    let orient = |a: &[Q; 2], b: &[Q; 2], c: &[Q; 2]| {
+        ((&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])).signum()
+    };
+    let segs: Vec<[[Q; 2]; 2]> = p
+        .segments
+        .iter()
+        .map(|e| [q(p.points[e[0]]), q(p.points[e[1]])])
+        .collect();
     let mut out = Vec::new();
     // Quadratic, bounded by the isocurve size (a few points per triangle); fine for the
     // complexes of the paper.

@@ -113,7 +113,11 @@ impl SimplexMap {
             g[2].compose(&Poly2::w(2)),
         ];
         let den = num[0].add(&num[1]).add(&num[2]);
-        let degree = g.iter().map(|p| p.0.len().saturating_sub(1)).max().unwrap_or(0);
+        let degree = g
+            .iter()
+            .map(|p| p.0.len().saturating_sub(1))
+            .max()
+            .unwrap_or(0);
         SimplexMap {
             family: Family::Monotonic,
             degree,
@@ -188,7 +192,10 @@ impl SimplexMap {
 
     /// The partition-of-unity defect Σ_c N_c − D (zero polynomial iff Eq. (1) holds for x).
     pub fn unity_defect(&self) -> Poly2 {
-        self.num[0].add(&self.num[1]).add(&self.num[2]).sub(&self.den)
+        self.num[0]
+            .add(&self.num[1])
+            .add(&self.num[2])
+            .sub(&self.den)
     }
 
     /// Is any weight non-positive (the hypothesis of the rational claim fails)?

@@ -170,7 +170,10 @@ fn parse_str(s: &str) -> Result<Q, String> {
     if s.len() > MAX_NUMBER_CHARS {
         return Err(format!("number longer than {MAX_NUMBER_CHARS} characters"));
     }
-    let int = |t: &str| t.parse::<BigInt>().map_err(|_| format!("'{t}' is not an integer"));
+    let int = |t: &str| {
+        t.parse::<BigInt>()
+            .map_err(|_| format!("'{t}' is not an integer"))
+    };
     if let Some((p, q)) = s.split_once('/') {
         let (p, q) = (int(p.trim())?, int(q.trim())?);
         if q == BigInt::from(0) {
@@ -183,8 +186,16 @@ fn parse_str(s: &str) -> Result<Q, String> {
             return Err(format!("'{s}': exponents are not accepted; write p/q"));
         }
         let neg = a.trim_start().starts_with('-');
-        let whole = if a.is_empty() || a == "-" || a == "+" { BigInt::from(0) } else { int(a)?.magnitude().clone().into() };
-        let frac = if b.is_empty() { BigInt::from(0) } else { int(b)? };
+        let whole = if a.is_empty() || a == "-" || a == "+" {
+            BigInt::from(0)
+        } else {
+            int(a)?.magnitude().clone().into()
+        };
+        let frac = if b.is_empty() {
+            BigInt::from(0)
+        } else {
+            int(b)?
+        };
         let den = num_traits::pow(BigInt::from(10), b.len());
         let mag = Q::new(whole * &den + frac, den);
         return Ok(if neg { -mag } else { mag });
@@ -194,34 +205,63 @@ fn parse_str(s: &str) -> Result<Q, String> {
 
 /// Reads and parses a parameter file.
 pub fn read(path: &Path) -> Result<MapSpec, ParamError> {
-    let meta = std::fs::metadata(path).map_err(|source| ParamError::Io { path: path.into(), source })?;
+    let meta = std::fs::metadata(path).map_err(|source| ParamError::Io {
+        path: path.into(),
+        source,
+    })?;
     if meta.len() > MAX_FILE_BYTES {
-        return Err(ParamError::TooLarge { path: path.into(), bytes: meta.len() });
+        return Err(ParamError::TooLarge {
+            path: path.into(),
+            bytes: meta.len(),
+        });
     }
-    let text = std::fs::read_to_string(path).map_err(|source| ParamError::Io { path: path.into(), source })?;
+    let text = std::fs::read_to_string(path).map_err(|source| ParamError::Io {
+        path: path.into(),
+        source,
+    })?;
     parse(&text, path)
 }
 
 /// Parses the text of a parameter file (`path` only names it in errors).
 pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
-    let raw: RawParams = toml::from_str(text).map_err(|e| ParamError::Syntax { path: path.into(), message: e.to_string() })?;
-    let bad = |entry: String, message: String| ParamError::Bad { path: path.into(), entry, message };
+    let raw: RawParams = toml::from_str(text).map_err(|e| ParamError::Syntax {
+        path: path.into(),
+        message: e.to_string(),
+    })?;
+    let bad = |entry: String, message: String| ParamError::Bad {
+        path: path.into(),
+        entry,
+        message,
+    };
     let family = match raw.family.as_str() {
         "polynomial" => FamilySpec::Polynomial,
         "rational" => FamilySpec::Rational,
         "monotonic" => FamilySpec::Monotonic,
-        other => return Err(bad("family".into(), format!("'{other}' is not polynomial, rational or monotonic"))),
+        other => {
+            return Err(bad(
+                "family".into(),
+                format!("'{other}' is not polynomial, rational or monotonic"),
+            ))
+        }
     };
     let degree = match (family, raw.degree) {
         (FamilySpec::Monotonic, _) => 0,
         (_, None) => return Err(bad("degree".into(), "required for this family".into())),
         (_, Some(0)) => return Err(bad("degree".into(), "must be at least 1".into())),
-        (_, Some(n)) if n > MAX_DEGREE => return Err(bad("degree".into(), format!("{n} is above the limit {MAX_DEGREE}"))),
+        (_, Some(n)) if n > MAX_DEGREE => {
+            return Err(bad(
+                "degree".into(),
+                format!("{n} is above the limit {MAX_DEGREE}"),
+            ))
+        }
         (_, Some(n)) => n,
     };
     let key = |at: &[u32], entry: &str| -> Result<Multiset, ParamError> {
         if at.len() != degree {
-            return Err(bad(entry.into(), format!("`at` has {} ids, the degree is {degree}", at.len())));
+            return Err(bad(
+                entry.into(),
+                format!("`at` has {} ids, the degree is {degree}", at.len()),
+            ));
         }
         let mut m = at.to_vec();
         m.sort_unstable();
@@ -231,14 +271,20 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
     for (k, c) in raw.control.iter().enumerate() {
         let entry = format!("control[{k}]");
         if family == FamilySpec::Monotonic {
-            return Err(bad(entry, "control points belong to the polynomial and rational families".into()));
+            return Err(bad(
+                entry,
+                "control points belong to the polynomial and rational families".into(),
+            ));
         }
         if c.point.len() != 2 {
             return Err(bad(entry, "`point` needs two coordinates".into()));
         }
         let x = parse_number(&c.point[0]).map_err(|m| bad(entry.clone(), m))?;
         let y = parse_number(&c.point[1]).map_err(|m| bad(entry.clone(), m))?;
-        if control.insert((c.triangle, key(&c.at, &entry)?), [x, y]).is_some() {
+        if control
+            .insert((c.triangle, key(&c.at, &entry)?), [x, y])
+            .is_some()
+        {
             return Err(bad(entry, "given twice".into()));
         }
     }
@@ -249,7 +295,10 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
             return Err(bad(entry, "weights belong to the rational family".into()));
         }
         let v = parse_number(&w.q).map_err(|m| bad(entry.clone(), m))?;
-        if weights.insert((w.triangle, key(&w.at, &entry)?), v).is_some() {
+        if weights
+            .insert((w.triangle, key(&w.at, &entry)?), v)
+            .is_some()
+        {
             return Err(bad(entry, "given twice".into()));
         }
     }
@@ -260,9 +309,17 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
             return Err(bad(entry, "g belongs to the monotonic family".into()));
         }
         if e.coeffs.is_empty() || e.coeffs.len() > MAX_DEGREE + 1 {
-            return Err(bad(entry, format!("needs 1 to {} coefficients", MAX_DEGREE + 1)));
+            return Err(bad(
+                entry,
+                format!("needs 1 to {} coefficients", MAX_DEGREE + 1),
+            ));
         }
-        let cs = e.coeffs.iter().map(parse_number).collect::<Result<Vec<_>, _>>().map_err(|m| bad(entry.clone(), m))?;
+        let cs = e
+            .coeffs
+            .iter()
+            .map(parse_number)
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|m| bad(entry.clone(), m))?;
         if g.insert(e.vertex, Poly1(cs)).is_some() {
             return Err(bad(entry, "given twice".into()));
         }
@@ -270,7 +327,11 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
     let iso = match raw.iso {
         None => None,
         Some(i) => {
-            let f = i.f.iter().map(parse_number).collect::<Result<Vec<_>, _>>().map_err(|m| bad("iso.f".into(), m))?;
+            let f =
+                i.f.iter()
+                    .map(parse_number)
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(|m| bad("iso.f".into(), m))?;
             let c = match &i.c {
                 Some(v) => parse_number(v).map_err(|m| bad("iso.c".into(), m))?,
                 None => Q::from_integer(0.into()),
@@ -278,7 +339,14 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
             Some((f, c))
         }
     };
-    Ok(MapSpec { family, degree, control, weights, g, iso })
+    Ok(MapSpec {
+        family,
+        degree,
+        control,
+        weights,
+        g,
+        iso,
+    })
 }
 
 /// The per-triangle maps defined by a spec on a complex.
@@ -292,34 +360,56 @@ impl MapSpec {
     /// Checks every key names vertices of the complex and a face of some triangle; then builds
     /// the per-triangle maps.
     pub fn build(&self, k: &PlanarComplex, path: &Path) -> Result<ComplexMap, ParamError> {
-        let bad = |entry: String, message: String| ParamError::Bad { path: path.into(), entry, message };
+        let bad = |entry: String, message: String| ParamError::Bad {
+            path: path.into(),
+            entry,
+            message,
+        };
         let nv = k.points.len() as u32;
         let faces_of = |m: &Multiset, tri: Option<usize>| -> bool {
-            k.triangles.iter().enumerate().any(|(f, t)| tri.map_or(true, |x| x == f) && m.iter().all(|v| t.contains(v)))
+            k.triangles
+                .iter()
+                .enumerate()
+                .any(|(f, t)| tri.map_or(true, |x| x == f) && m.iter().all(|v| t.contains(v)))
         };
         for ((tri, m), _) in &self.control {
             if let Some(f) = tri {
                 if *f >= k.triangles.len() {
-                    return Err(bad(format!("control at {m:?}"), format!("triangle {f} does not exist")));
+                    return Err(bad(
+                        format!("control at {m:?}"),
+                        format!("triangle {f} does not exist"),
+                    ));
                 }
             }
             if m.iter().any(|&v| v >= nv) || !faces_of(m, *tri) {
-                return Err(bad(format!("control at {m:?}"), "names no face of a triangle of K".into()));
+                return Err(bad(
+                    format!("control at {m:?}"),
+                    "names no face of a triangle of K".into(),
+                ));
             }
         }
         for ((tri, m), _) in &self.weights {
             if m.iter().any(|&v| v >= nv) || !faces_of(m, *tri) {
-                return Err(bad(format!("weight at {m:?}"), "names no face of a triangle of K".into()));
+                return Err(bad(
+                    format!("weight at {m:?}"),
+                    "names no face of a triangle of K".into(),
+                ));
             }
         }
         for v in self.g.keys() {
             if *v >= nv {
-                return Err(bad(format!("g at vertex {v}"), format!("the complex has {nv} vertices")));
+                return Err(bad(
+                    format!("g at vertex {v}"),
+                    format!("the complex has {nv} vertices"),
+                ));
             }
         }
         if let Some((f, _)) = &self.iso {
             if f.len() != nv as usize {
-                return Err(bad("iso.f".into(), format!("{} values for {nv} vertices", f.len())));
+                return Err(bad(
+                    "iso.f".into(),
+                    format!("{} values for {nv} vertices", f.len()),
+                ));
             }
         }
         let maps = (0..k.triangles.len()).map(|f| self.map_of(k, f)).collect();
@@ -329,7 +419,9 @@ impl MapSpec {
     /// The global multiset of a local multi-index in triangle f.
     pub fn global_key(k: &PlanarComplex, f: usize, i: [usize; 3]) -> Multiset {
         let t = k.triangles[f];
-        let mut m: Vec<u32> = (0..3).flat_map(|c| std::iter::repeat(t[c]).take(i[c])).collect();
+        let mut m: Vec<u32> = (0..3)
+            .flat_map(|c| std::iter::repeat(t[c]).take(i[c]))
+            .collect();
         m.sort_unstable();
         m
     }
@@ -348,12 +440,18 @@ impl MapSpec {
                 let mut weights = Vec::new();
                 for (idx, i) in multi_indices(n).into_iter().enumerate() {
                     let key = Self::global_key(k, f, i);
-                    let c = self.control.get(&(Some(f), key.clone())).or_else(|| self.control.get(&(None, key.clone())));
+                    let c = self
+                        .control
+                        .get(&(Some(f), key.clone()))
+                        .or_else(|| self.control.get(&(None, key.clone())));
                     control.push(match c {
                         Some(p) => k.barycentric(f, p),
                         None => fixed[idx].clone(),
                     });
-                    let w = self.weights.get(&(Some(f), key.clone())).or_else(|| self.weights.get(&(None, key)));
+                    let w = self
+                        .weights
+                        .get(&(Some(f), key.clone()))
+                        .or_else(|| self.weights.get(&(None, key)));
                     weights.push(w.cloned().unwrap_or_else(|| Q::from_integer(1.into())));
                 }
                 if self.family == FamilySpec::Polynomial {

@@ -248,7 +248,10 @@ impl Poly2 {
     /// From s^a t^b = w_1^a w_2^b (w_0 + w_1 + w_2)^{n−a−b}: the coefficient of B_(i,j,k) is
     /// Σ_{a≤j, b≤k} c_ab · multinom(n−a−b; i, j−a, k−b) / multinom(n; i, j, k).
     pub fn bernstein(&self, n: usize) -> Vec<Q> {
-        assert!(n >= self.deg, "Bernstein degree below the polynomial's degree");
+        assert!(
+            n >= self.deg,
+            "Bernstein degree below the polynomial's degree"
+        );
         multi_indices(n)
             .into_iter()
             .map(|[i, j, k]| {
@@ -259,8 +262,9 @@ impl Poly2 {
                         if x.is_zero() {
                             continue;
                         }
-                        acc += x * Q::new(multinomial(n - a - b, &[i, j - a, k - b]), BigInt::one())
-                            / Q::from_integer(multinomial(n, &[i, j, k]));
+                        acc +=
+                            x * Q::new(multinomial(n - a - b, &[i, j - a, k - b]), BigInt::one())
+                                / Q::from_integer(multinomial(n, &[i, j, k]));
                     }
                 }
                 acc
@@ -313,7 +317,11 @@ pub fn bernstein_basis(i: [usize; 3]) -> Poly2 {
 /// Nearest f64 of a rational (huge or tiny values saturate to ±∞ / 0 as f64 does).
 pub fn to_f64(x: &Q) -> f64 {
     use num_traits::ToPrimitive;
-    x.to_f64().unwrap_or(if x.is_negative() { f64::NEG_INFINITY } else { f64::INFINITY })
+    x.to_f64().unwrap_or(if x.is_negative() {
+        f64::NEG_INFINITY
+    } else {
+        f64::INFINITY
+    })
 }
 
 /// The exact rational value of a finite f64 (`None` for NaN/∞).

@@ -91,7 +91,11 @@ pub fn decide(p: &Poly2, strict: Strictness, budget: Budget) -> Decision {
 
 /// The reference triangle in the chart (s, t).
 pub fn reference_triangle() -> Tri {
-    [[qr(0, 1), qr(0, 1)], [qr(1, 1), qr(0, 1)], [qr(0, 1), qr(1, 1)]]
+    [
+        [qr(0, 1), qr(0, 1)],
+        [qr(1, 1), qr(0, 1)],
+        [qr(0, 1), qr(1, 1)],
+    ]
 }
 
 /// Decide on the triangle `tri` of the chart (s, t).

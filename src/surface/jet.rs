@@ -78,8 +78,12 @@ const fn mul_table(order: usize) -> ([(u8, u8, u8); 35], usize) {
 }
 
 /// The product tables of the orders 0..=3 (order 3: the full table of [`JET_ORDER`]).
-const MUL: [([(u8, u8, u8); 35], usize); 4] =
-    [mul_table(0), mul_table(1), mul_table(2), mul_table(JET_ORDER)];
+const MUL: [([(u8, u8, u8); 35], usize); 4] = [
+    mul_table(0),
+    mul_table(1),
+    mul_table(2),
+    mul_table(JET_ORDER),
+];
 
 /// A jet in two variables over the scalar `S` with `L` Taylor coefficients: total order 3 by
 /// default (L = 10); [`Jet2`] (L = 6) and [`Jet1`] (L = 3) truncate lower.

@@ -281,9 +281,9 @@ impl SPrime {
     ) -> Result<SPrime, crate::surface::loop_subdiv::LoopError> {
         Ok(match kind {
             SurfaceKind::Pn => SPrime::Pn(PnTriangles::new(k)),
-            SurfaceKind::Loop => SPrime::Loop(Box::new(
-                crate::surface::loop_subdiv::LoopSurface::new(k)?,
-            )),
+            SurfaceKind::Loop => {
+                SPrime::Loop(Box::new(crate::surface::loop_subdiv::LoopSurface::new(k)?))
+            }
         })
     }
     /// As [`SPrime::new`], with the PN vertex-normal rule of `profile` (the authors' code
@@ -295,9 +295,9 @@ impl SPrime {
     ) -> Result<SPrime, crate::surface::loop_subdiv::LoopError> {
         Ok(match kind {
             SurfaceKind::Pn => SPrime::Pn(PnTriangles::for_profile(k, profile)),
-            SurfaceKind::Loop => SPrime::Loop(Box::new(
-                crate::surface::loop_subdiv::LoopSurface::new(k)?,
-            )),
+            SurfaceKind::Loop => {
+                SPrime::Loop(Box::new(crate::surface::loop_subdiv::LoopSurface::new(k)?))
+            }
         })
     }
     /// Its kind.

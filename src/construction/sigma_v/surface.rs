@@ -389,7 +389,9 @@ impl SigmaVPps {
             .map(|f| self.gluing.face_corners(FaceId(f as u32)))
             .collect::<Result<_, _>>()?;
         let pat = sample_pattern_faces(&faces, level).map_err(|e| match e {
-            crate::surface::SurfaceError::LevelTooLarge { level, .. } => SigmaVError::LevelTooLarge(level),
+            crate::surface::SurfaceError::LevelTooLarge { level, .. } => {
+                SigmaVError::LevelTooLarge(level)
+            }
             _ => SigmaVError::LevelTooLarge(level),
         })?;
         let cj = self.consts::<Jet<f64>>(53);

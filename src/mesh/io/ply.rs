@@ -280,9 +280,7 @@ fn parse_header<'a>(ctx: &Ctx<'_>, lines: &mut Lines<'a>) -> Result<Header, Mesh
                     (ElemKind::Vertex, "x" | "y" | "z", Kind::List { .. }) => {
                         return Err(ctx.parse(at, format!("vertex property '{name}' is a list")))
                     }
-                    (ElemKind::Vertex, _, Kind::Scalar(_))
-                        if VERTEX_SCALARS.contains(&name) =>
-                    {
+                    (ElemKind::Vertex, _, Kind::Scalar(_)) if VERTEX_SCALARS.contains(&name) => {
                         Role::Kept(VERTEX_SCALARS.iter().position(|&n| n == name).unwrap_or(0))
                     }
                     (

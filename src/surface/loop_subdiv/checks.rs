@@ -33,11 +33,23 @@ pub const COND: f64 = 1024.0;
 /// What the checks evaluate: the Loop surface, or a planted fault in tests.
 pub trait JetSource: Sync {
     /// As [`LoopSurface::jet`] in f64.
-    fn jet(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3], derivs: bool) -> Result<PatchJet<f64>, LoopError>;
+    fn jet(
+        &self,
+        f: FaceId,
+        corners: [VertexId; 3],
+        bary: [f64; 3],
+        derivs: bool,
+    ) -> Result<PatchJet<f64>, LoopError>;
 }
 
 impl JetSource for LoopSurface {
-    fn jet(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3], derivs: bool) -> Result<PatchJet<f64>, LoopError> {
+    fn jet(
+        &self,
+        f: FaceId,
+        corners: [VertexId; 3],
+        bary: [f64; 3],
+        derivs: bool,
+    ) -> Result<PatchJet<f64>, LoopError> {
         LoopSurface::jet::<f64>(self, f, corners, &bary, derivs)
     }
 }
@@ -112,10 +124,22 @@ fn sample<T: Clone>(mut v: Vec<T>, max: usize, seed: u64) -> Vec<T> {
 }
 
 /// Offend with a witness; NaN deviations always offend.
-fn record(r: &mut CheckResult, dev: f64, tol: f64, text: impl FnOnce() -> String, data: serde_json::Value, worst: &mut (f64, f64)) {
+fn record(
+    r: &mut CheckResult,
+    dev: f64,
+    tol: f64,
+    text: impl FnOnce() -> String,
+    data: serde_json::Value,
+    worst: &mut (f64, f64),
+) {
     r.examined += 1;
     if dev.is_nan() || dev > tol {
-        r.offend(|| Witness::new(format!("{} (deviation {dev:.3e} > tolerance {tol:.3e})", text()), data));
+        r.offend(|| {
+            Witness::new(
+                format!("{} (deviation {dev:.3e} > tolerance {tol:.3e})", text()),
+                data,
+            )
+        });
     }
     if dev.is_nan() || dev / tol > worst.0 / worst.1 || worst.1 == 0.0 {
         *worst = (dev, tol);
@@ -137,22 +161,43 @@ fn finish(mut r: CheckResult, worst: (f64, f64), seed: Option<u64>, note: &str) 
 /// `LOOP-eigen`: residuals of the eigen-structure for the valences ≠ 6 of K (and 3..=12), in
 /// f64 (bound 64·K·ε) and at `mp_prec` bits for the valences of K (bound 64·K·2^-prec).
 pub fn check_eigen(valences: &[u32], mp_prec: u32) -> CheckResult {
-    let mut r = CheckResult::new("LOOP-eigen", "Aᵐ = block eigen-decomposition (Stam 1998, Sec. 4), f64 and MP");
+    let mut r = CheckResult::new(
+        "LOOP-eigen",
+        "Aᵐ = block eigen-decomposition (Stam 1998, Sec. 4), f64 and MP",
+    );
     let mut worst = (0.0, 1.0);
-    let mut list: Vec<u32> = (3..=12).chain(valences.iter().copied()).filter(|&n| n != 6).collect();
+    let mut list: Vec<u32> = (3..=12)
+        .chain(valences.iter().copied())
+        .filter(|&n| n != 6)
+        .collect();
     list.sort_unstable();
     list.dedup();
     for &n in &list {
         let kk = (n + 6) as f64;
         let tol = 64.0 * kk * f64::EPSILON;
         let res = EigenStructure::<f64>::new(n as usize, 53).map_or(f64::NAN, |e| e.residuals(6));
-        record(&mut r, res, tol, || format!("valence {n}, f64"), json!({"valence": n, "precision": 53}), &mut worst);
+        record(
+            &mut r,
+            res,
+            tol,
+            || format!("valence {n}, f64"),
+            json!({"valence": n, "precision": 53}),
+            &mut worst,
+        );
     }
     for &n in valences.iter().filter(|&&n| n != 6).take(6) {
         let kk = (n + 6) as f64;
         let tol = 64.0 * kk * 2f64.powi(-(mp_prec as i32));
-        let res = EigenStructure::<Mp>::new(n as usize, mp_prec).map_or(f64::NAN, |e| e.residuals(3));
-        record(&mut r, res, tol, || format!("valence {n}, {mp_prec} bits"), json!({"valence": n, "precision": mp_prec}), &mut worst);
+        let res =
+            EigenStructure::<Mp>::new(n as usize, mp_prec).map_or(f64::NAN, |e| e.residuals(3));
+        record(
+            &mut r,
+            res,
+            tol,
+            || format!("valence {n}, {mp_prec} bits"),
+            json!({"valence": n, "precision": mp_prec}),
+            &mut worst,
+        );
     }
     finish(r, worst, None, "max |entry| of S₁₁U − UΛ₁, UU⁻¹ − I, S₂₂W − WΛ₂, WW⁻¹ − I, B_kAᵐ − formula (m ≤ 6 f64, ≤ 3 MP)")
 }
@@ -189,29 +234,62 @@ fn fans(k: &SimplicialSurface, v: VertexId) -> Vec<(FaceId, [VertexId; 3])> {
 }
 
 /// `LOOP-C0-vertex` and `LOOP-limit-mask`.
-pub fn check_vertices(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopCheckOptions) -> Vec<CheckResult> {
+pub fn check_vertices(
+    k: &SimplicialSurface,
+    src: &dyn JetSource,
+    opts: &LoopCheckOptions,
+) -> Vec<CheckResult> {
     let rad = radius(k);
     let tol = COND * f64::EPSILON * rad;
-    let mut c0 = CheckResult::new("LOOP-C0-vertex", "every face around v gives the same point at v");
-    let mut mask = CheckResult::new("LOOP-limit-mask", "S′(v) = closed-form limit mask (3v + 8βΣrᵢ)/(3 + 8nβ)");
+    let mut c0 = CheckResult::new(
+        "LOOP-C0-vertex",
+        "every face around v gives the same point at v",
+    );
+    let mut mask = CheckResult::new(
+        "LOOP-limit-mask",
+        "S′(v) = closed-form limit mask (3v + 8βΣrᵢ)/(3 + 8nβ)",
+    );
     let (mut w0, mut w1) = ((0.0, tol), (0.0, tol));
-    let vs = sample(k.vertices().collect::<Vec<_>>(), opts.max_elements, opts.seed);
+    let vs = sample(
+        k.vertices().collect::<Vec<_>>(),
+        opts.max_elements,
+        opts.seed,
+    );
     for v in vs {
         let (lim, _) = masks(k, v);
         let mut first: Option<[f64; 3]> = None;
         for (f, c) in fans(k, v) {
-            let p = src.jet(f, c, [1.0, 0.0, 0.0], false).map_or([f64::NAN; 3], |j| j.p);
+            let p = src
+                .jet(f, c, [1.0, 0.0, 0.0], false)
+                .map_or([f64::NAN; 3], |j| j.p);
             let d0 = first.map_or(0.0, |q| norm(sub(p, q)));
             if first.is_none() {
                 first = Some(p);
             }
-            record(&mut c0, d0, tol, || format!("vertex {} from face {}", v.0, f.0), json!({"vertex": v.0, "face": f.0}), &mut w0);
+            record(
+                &mut c0,
+                d0,
+                tol,
+                || format!("vertex {} from face {}", v.0, f.0),
+                json!({"vertex": v.0, "face": f.0}),
+                &mut w0,
+            );
             let d1 = norm(sub(p, lim));
-            record(&mut mask, d1, tol, || format!("vertex {} (valence {}) from face {}", v.0, k.degree(v), f.0), json!({"vertex": v.0, "face": f.0, "eval": p, "mask": lim}), &mut w1);
+            record(
+                &mut mask,
+                d1,
+                tol,
+                || format!("vertex {} (valence {}) from face {}", v.0, k.degree(v), f.0),
+                json!({"vertex": v.0, "face": f.0, "eval": p, "mask": lim}),
+                &mut w1,
+            );
         }
     }
     let note = format!("tolerance {COND}·ε·R, R = {rad:.4e}");
-    vec![finish(c0, w0, Some(opts.seed), &note), finish(mask, w1, Some(opts.seed), &note)]
+    vec![
+        finish(c0, w0, Some(opts.seed), &note),
+        finish(mask, w1, Some(opts.seed), &note),
+    ]
 }
 
 /// Ratio ρ/λ₁ of the largest eigenvalue below λ₁ to λ₁ (rate at which the normal near an
@@ -233,14 +311,22 @@ pub fn normal_rate(n: u32) -> f64 {
 }
 
 /// `LOOP-normal-mask`: normals at vertices against t₁ × t₂.
-pub fn check_normals(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopCheckOptions) -> CheckResult {
+pub fn check_normals(
+    k: &SimplicialSurface,
+    src: &dyn JetSource,
+    opts: &LoopCheckOptions,
+) -> CheckResult {
     let mut r = CheckResult::new(
         "LOOP-normal-mask",
         "normal at v = t₁ × t₂ of the tangent masks; C¹ at extraordinary v (measured rate)",
     );
     let mut worst = (0.0, 1.0);
     let (k0, k1) = (4i32, 24i32);
-    let vs = sample(k.vertices().collect::<Vec<_>>(), opts.max_elements, opts.seed ^ 1);
+    let vs = sample(
+        k.vertices().collect::<Vec<_>>(),
+        opts.max_elements,
+        opts.seed ^ 1,
+    );
     for v in vs {
         let (_, nm) = masks(k, v);
         let n = k.degree(v);
@@ -249,12 +335,20 @@ pub fn check_normals(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopChec
                 let (dev, tol) = match src.jet(f, c, [1.0, 0.0, 0.0], true) {
                     Ok(PatchJet { d: Some(d), .. }) => {
                         let nn = cross(d[0], d[1]);
-                        let tol = COND * f64::EPSILON * norm(d[0]).max(norm(d[1])).powi(2) / norm(nn).max(f64::MIN_POSITIVE);
+                        let tol = COND * f64::EPSILON * norm(d[0]).max(norm(d[1])).powi(2)
+                            / norm(nn).max(f64::MIN_POSITIVE);
                         (angle(nn, nm), tol)
                     }
                     _ => (f64::NAN, 0.0),
                 };
-                record(&mut r, dev, tol, || format!("vertex {} (valence 6), face {}", v.0, f.0), json!({"vertex": v.0, "face": f.0}), &mut worst);
+                record(
+                    &mut r,
+                    dev,
+                    tol,
+                    || format!("vertex {} (valence 6), face {}", v.0, f.0),
+                    json!({"vertex": v.0, "face": f.0}),
+                    &mut worst,
+                );
             } else {
                 let ang = |kk: i32| -> f64 {
                     let d = 2f64.powi(-kk);
@@ -272,7 +366,9 @@ pub fn check_normals(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopChec
                     &mut r,
                     a1,
                     tol,
-                    || format!("vertex {} (valence {n}), face {}: angle {a0:.3e} at 2^-{k0}, {a1:.3e} at 2^-{k1}, rate {rate:.4}", v.0, f.0),
+                    || {
+                        format!("vertex {} (valence {n}), face {}: angle {a0:.3e} at 2^-{k0}, {a1:.3e} at 2^-{k1}, rate {rate:.4}", v.0, f.0)
+                    },
                     json!({"vertex": v.0, "face": f.0, "angle0": a0, "angle1": a1, "rate": rate}),
                     &mut worst,
                 );
@@ -290,15 +386,32 @@ pub fn check_normals(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopChec
 /// `LOOP-C0-edge`, `LOOP-C1-edge`, `LOOP-C2-edge`: across edges [a, b] with faces (a, b, c)
 /// and (b, a, d); on the lattice unfolding (s, t) the second face has (u, v) = (1 − s, −t), so
 /// C¹: ∂u₁ = −∂u₂, ∂v₁ = −∂v₂, and C²: ∂uu, ∂uv, ∂vv equal.
-pub fn check_edges(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopCheckOptions) -> Vec<CheckResult> {
+pub fn check_edges(
+    k: &SimplicialSurface,
+    src: &dyn JetSource,
+    opts: &LoopCheckOptions,
+) -> Vec<CheckResult> {
     let rad = radius(k);
     let mut rs = [
-        CheckResult::new("LOOP-C0-edge", "S′ continuous across edges (same point from both faces)"),
-        CheckResult::new("LOOP-C1-edge", "first derivatives agree across edges (lattice unfolding)"),
-        CheckResult::new("LOOP-C2-edge", "second derivatives agree across edges (lattice unfolding)"),
+        CheckResult::new(
+            "LOOP-C0-edge",
+            "S′ continuous across edges (same point from both faces)",
+        ),
+        CheckResult::new(
+            "LOOP-C1-edge",
+            "first derivatives agree across edges (lattice unfolding)",
+        ),
+        CheckResult::new(
+            "LOOP-C2-edge",
+            "second derivatives agree across edges (lattice unfolding)",
+        ),
     ];
     let mut worst = [(0.0, 1.0); 3];
-    let edges = sample(k.edges().collect::<Vec<_>>(), opts.max_elements, opts.seed ^ 2);
+    let edges = sample(
+        k.edges().collect::<Vec<_>>(),
+        opts.max_elements,
+        opts.seed ^ 2,
+    );
     for (a, b) in edges {
         let (Some(h1), Some(h2)) = (k.halfedge(a, b), k.halfedge(b, a)) else {
             continue;
@@ -316,7 +429,12 @@ pub fn check_edges(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopCheckO
         for t in ts {
             let j1 = src.jet(f1, [a, b, c], [1.0 - t, t, 0.0], true);
             let j2 = src.jet(f2, [b, a, d], [t, 1.0 - t, 0.0], true);
-            let wit = || format!("edge [{}, {}] at t = {t} (faces {}, {})", a.0, b.0, f1.0, f2.0);
+            let wit = || {
+                format!(
+                    "edge [{}, {}] at t = {t} (faces {}, {})",
+                    a.0, b.0, f1.0, f2.0
+                )
+            };
             let data = json!({"edge": [a.0, b.0], "t": t, "faces": [f1.0, f2.0]});
             let (j1, j2) = match (j1, j2) {
                 (Ok(x), Ok(y)) => (x, y),
@@ -358,7 +476,11 @@ pub fn check_edges(k: &SimplicialSurface, src: &dyn JetSource, opts: &LoopCheckO
 }
 
 /// Every Loop S′ check on K.
-pub fn run_loop_checks(k: &SimplicialSurface, s: &LoopSurface, opts: &LoopCheckOptions) -> Vec<CheckResult> {
+pub fn run_loop_checks(
+    k: &SimplicialSurface,
+    s: &LoopSurface,
+    opts: &LoopCheckOptions,
+) -> Vec<CheckResult> {
     let vals: Vec<u32> = s.stats.valences.keys().copied().collect();
     let mut out = vec![check_eigen(&vals, crate::construction::DEFAULT_MP_PREC)];
     out.extend(check_vertices(k, s, opts));
@@ -378,7 +500,10 @@ pub fn check_pps_distance(
     seed: u64,
 ) -> CheckResult {
     use rand::Rng;
-    let mut r = CheckResult::new("C6.2-mimics", "PPS ↔ S′ distance at eval samples (max / p99) [measured]");
+    let mut r = CheckResult::new(
+        "C6.2-mimics",
+        "PPS ↔ S′ distance at eval samples (max / p99) [measured]",
+    );
     let faces = sample(k.faces().collect::<Vec<_>>(), 2000, seed ^ 3);
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed ^ 3);
     let mut d: Vec<(f64, u32, [f64; 3])> = vec![];
@@ -395,7 +520,11 @@ pub fn check_pps_distance(
         ];
         for _ in 0..3 {
             let (a, b): (f64, f64) = (rng.gen(), rng.gen());
-            let (a, b) = if a + b > 1.0 { (1.0 - a, 1.0 - b) } else { (a, b) };
+            let (a, b) = if a + b > 1.0 {
+                (1.0 - a, 1.0 - b)
+            } else {
+                (a, b)
+            };
             bs.push([1.0 - a - b, a, b]);
         }
         for b in bs {
@@ -405,7 +534,12 @@ pub fn check_pps_distance(
             let dist = norm(sub(p, q));
             if dist.is_nan() {
                 nan += 1;
-                r.offend(|| Witness::new(format!("face {} at {b:?}: NaN", f.0), json!({"face": f.0, "bary": b})));
+                r.offend(|| {
+                    Witness::new(
+                        format!("face {} at {b:?}: NaN", f.0),
+                        json!({"face": f.0, "bary": b}),
+                    )
+                });
             } else {
                 d.push((dist, f.0, b));
             }
@@ -428,7 +562,10 @@ pub fn check_pps_distance(
         .unwrap_or((f64::NAN, f64::NAN));
     r.seed = Some(seed ^ 3);
     r.worst_deviation = Some(max);
-    let at = d.last().map(|x| format!("face {} at {:?}", x.1, x.2)).unwrap_or_default();
+    let at = d
+        .last()
+        .map(|x| format!("face {} at {:?}", x.1, x.2))
+        .unwrap_or_default();
     r.with_note(format!(
         "S′ = {}: max {max:.4e} ({:.3e} R), p99 {p99:.4e} ({:.3e} R), R = {rad:.4e}; worst {at}; the paper gives no bound",
         target.name(),

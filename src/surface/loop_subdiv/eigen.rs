@@ -153,7 +153,10 @@ impl<S: Scalar> EigenStructure<S> {
             let trig: Vec<(S, S)> = (0..ni).map(|i| cos_sin_2pi::<S>(w * i, ni, prec)).collect();
             for pick_sin in [false, true] {
                 let mut col = vec![zero.clone()];
-                col.extend(trig.iter().map(|(co, si)| if pick_sin { si.clone() } else { co.clone() }));
+                col.extend(
+                    trig.iter()
+                        .map(|(co, si)| if pick_sin { si.clone() } else { co.clone() }),
+                );
                 let mut row: Vec<S> = col.iter().map(|e| e.mul(&c(2, ni))).collect();
                 row[0] = zero.clone();
                 cols.push(col);
@@ -170,15 +173,23 @@ impl<S: Scalar> EigenStructure<S> {
             rows.push(row);
             lambda.push(c(1, 8));
         }
-        let u: Mat<S> = (0..=n).map(|i| cols.iter().map(|col| col[i].clone()).collect()).collect();
+        let u: Mat<S> = (0..=n)
+            .map(|i| cols.iter().map(|col| col[i].clone()).collect())
+            .collect();
         let u_inv = rows;
         let w = int_mat::<S>(&W, prec);
         let w_inv = int_mat::<S>(&W_INV, prec);
-        let s21: Mat<S> = matrices.a[n + 1..].iter().map(|r| r[..=n].to_vec()).collect();
+        let s21: Mat<S> = matrices.a[n + 1..]
+            .iter()
+            .map(|r| r[..=n].to_vec())
+            .collect();
         let g = matmul(&matmul(&w_inv, &s21, prec), &u, prec);
         let split = |k: usize| -> (Mat<S>, Mat<S>) {
             let bin: Mat<S> = matrices.pick[k].iter().map(|r| r[..=n].to_vec()).collect();
-            let bout: Mat<S> = matrices.pick[k].iter().map(|r| r[n + 1..].to_vec()).collect();
+            let bout: Mat<S> = matrices.pick[k]
+                .iter()
+                .map(|r| r[n + 1..].to_vec())
+                .collect();
             (matmul(&bin, &u, prec), matmul(&bout, &w, prec))
         };
         let (a1, b1) = split(0);
@@ -235,12 +246,24 @@ impl<S: Scalar> EigenStructure<S> {
             .map(|(p, l)| [p[0].mul(l), p[1].mul(l), p[2].mul(l)])
             .collect();
         // Dₘ per distinct μ (1/8, 1/16).
-        let d8: Vec<S> = self.lambda.iter().map(|l| divided_power(&self.mu[0], l, m, prec)).collect();
-        let d16: Vec<S> = self.lambda.iter().map(|l| divided_power(&self.mu[3], l, m, prec)).collect();
+        let d8: Vec<S> = self
+            .lambda
+            .iter()
+            .map(|l| divided_power(&self.mu[0], l, m, prec))
+            .collect();
+        let d16: Vec<S> = self
+            .lambda
+            .iter()
+            .map(|l| divided_power(&self.mu[3], l, m, prec))
+            .collect();
         let z: Vec<[S; 3]> = (0..5)
             .map(|a| {
                 let ma = powi(&self.mu[a], m, prec);
-                let mut acc = [cout[a][0].mul(&ma), cout[a][1].mul(&ma), cout[a][2].mul(&ma)];
+                let mut acc = [
+                    cout[a][0].mul(&ma),
+                    cout[a][1].mul(&ma),
+                    cout[a][2].mul(&ma),
+                ];
                 let dd = if a < 3 { &d8 } else { &d16 };
                 for (b, p) in cin.iter().enumerate() {
                     let w = self.g[a][b].mul(&dd[b]);
@@ -256,7 +279,11 @@ impl<S: Scalar> EigenStructure<S> {
             .collect();
         std::array::from_fn(|j| {
             let mut acc = z3();
-            for (w, p) in self.p1[k][j].iter().zip(&y).chain(self.p2[k][j].iter().zip(&z)) {
+            for (w, p) in self.p1[k][j]
+                .iter()
+                .zip(&y)
+                .chain(self.p2[k][j].iter().zip(&z))
+            {
                 for d in 0..3 {
                     acc[d] = acc[d].add(&w.mul(&p[d]));
                 }
@@ -372,6 +399,9 @@ mod tests {
         assert_eq!(*e.lambda.last().expect("λ"), 0.125);
         let e = EigenStructure::<f64>::new(3, 53).expect("eigen");
         assert_eq!(e.lambda[1], 0.0625);
-        assert_eq!(divided_power(&0.0625, &0.0625, 5, 53), 5.0 * 0.0625f64.powi(4));
+        assert_eq!(
+            divided_power(&0.0625, &0.0625, 5, 53),
+            5.0 * 0.0625f64.powi(4)
+        );
     }
 }

@@ -5,9 +5,9 @@ pub mod eigen;
 pub mod patch;
 pub mod regular;
 pub mod rules;
-pub mod topology;
 pub mod stam;
 pub mod surface;
+pub mod topology;
 
 pub use surface::{LoopError, LoopStats, LoopSurface, MAX_VALENCE};
 pub mod checks;

@@ -92,7 +92,11 @@ impl Refiner {
             let q = (p.0 / 2, p.1 / 2);
             axpy(&mut acc, &rat(5, 8), &self.point(level - 1, q)?);
             for d in DIRS {
-                axpy(&mut acc, &rat(1, 16), &self.point(level - 1, (q.0 + d.0, q.1 + d.1))?);
+                axpy(
+                    &mut acc,
+                    &rat(1, 16),
+                    &self.point(level - 1, (q.0 + d.0, q.1 + d.1))?,
+                );
             }
         } else {
             // Edge rule: the edge q → q + D[i]; the opposite vertices are q + D[i∓1].
@@ -122,14 +126,21 @@ impl Refiner {
         let mut acc = vec![BigRational::zero(); 12];
         axpy(&mut acc, &rat(1, 2), &self.point(level, p)?);
         for d in DIRS {
-            axpy(&mut acc, &rat(1, 12), &self.point(level, (p.0 + d.0, p.1 + d.1))?);
+            axpy(
+                &mut acc,
+                &rat(1, 12),
+                &self.point(level, (p.0 + d.0, p.1 + d.1))?,
+            );
         }
         Ok(acc)
     }
 }
 
 /// Solve the square system M X = B exactly (Gauss–Jordan); `None` if singular.
-fn solve_exact(mut m: Vec<Vec<BigRational>>, mut b: Vec<Vec<BigRational>>) -> Option<Vec<Vec<BigRational>>> {
+fn solve_exact(
+    mut m: Vec<Vec<BigRational>>,
+    mut b: Vec<Vec<BigRational>>,
+) -> Option<Vec<Vec<BigRational>>> {
     let n = m.len();
     for col in 0..n {
         let piv = (col..n).find(|&r| !m[r][col].is_zero())?;
@@ -175,7 +186,10 @@ fn compute_basis() -> Option<Vec<Vec<BigRational>>> {
             rows.push(
                 MONOMIALS
                     .iter()
-                    .map(|&(a, b)| num_traits::pow(x.clone(), a as usize) * num_traits::pow(y.clone(), b as usize))
+                    .map(|&(a, b)| {
+                        num_traits::pow(x.clone(), a as usize)
+                            * num_traits::pow(y.clone(), b as usize)
+                    })
                     .collect(),
             );
             rhs.push(r.limit(2, (i, j)).ok()?);
@@ -183,7 +197,11 @@ fn compute_basis() -> Option<Vec<Vec<BigRational>>> {
     }
     // rows: 15 × 15 Vandermonde; rhs: 15 × 12. Solution: 15 × 12 (monomial × net point).
     let sol = solve_exact(rows, rhs)?;
-    Some((0..12).map(|k| (0..15).map(|j| sol[j][k].clone()).collect()).collect())
+    Some(
+        (0..12)
+            .map(|k| (0..15).map(|j| sol[j][k].clone()).collect())
+            .collect(),
+    )
 }
 
 /// The limit value at level-`level` lattice point p as exact weights of the 12 net points
@@ -233,7 +251,9 @@ mod tests {
         MONOMIALS
             .iter()
             .zip(&b[k])
-            .map(|(&(a, e), c)| c * num_traits::pow(x.clone(), a as usize) * num_traits::pow(y.clone(), e as usize))
+            .map(|(&(a, e), c)| {
+                c * num_traits::pow(x.clone(), a as usize) * num_traits::pow(y.clone(), e as usize)
+            })
             .fold(BigRational::zero(), |s, t| s + t)
     }
 
@@ -244,7 +264,11 @@ mod tests {
             for j in 0..=(8 - i) {
                 let w = limit_weights_exact(3, (i, j)).expect("inside the net");
                 for (k, wk) in w.iter().enumerate() {
-                    assert_eq!(eval_exact(k, &rat(i, 8), &rat(j, 8)), *wk, "k={k} at ({i},{j})/8");
+                    assert_eq!(
+                        eval_exact(k, &rat(i, 8), &rat(j, 8)),
+                        *wk,
+                        "k={k} at ({i},{j})/8"
+                    );
                 }
             }
         }
@@ -254,8 +278,18 @@ mod tests {
     fn loop_regular_basis_partition_of_unity_and_limit_mask() {
         let b = basis_exact();
         for j in 0..15 {
-            let s: BigRational = b.iter().map(|r| r[j].clone()).fold(BigRational::zero(), |a, c| a + c);
-            assert_eq!(s, if j == 0 { BigRational::one() } else { BigRational::zero() });
+            let s: BigRational = b
+                .iter()
+                .map(|r| r[j].clone())
+                .fold(BigRational::zero(), |a, c| a + c);
+            assert_eq!(
+                s,
+                if j == 0 {
+                    BigRational::one()
+                } else {
+                    BigRational::zero()
+                }
+            );
         }
         assert_eq!(b[0][0], rat(1, 2));
         for r in &b[1..7] {

@@ -32,7 +32,8 @@ pub fn basis_in<S: Scalar>(prec: u32) -> Option<[[S; 15]; 12]> {
     if e.len() != 12 {
         return None;
     }
-    let mut out: [[S; 15]; 12] = std::array::from_fn(|_| std::array::from_fn(|_| S::from_i64(0, prec)));
+    let mut out: [[S; 15]; 12] =
+        std::array::from_fn(|_| std::array::from_fn(|_| S::from_i64(0, prec)));
     for (k, row) in e.iter().enumerate() {
         for (j, q) in row.iter().enumerate() {
             let (p, d) = ratio_to_i64(q)?;
@@ -174,7 +175,11 @@ pub fn extraordinary_jet<S: Scalar>(
     cin[0] = [c(0, 1), c(0, 1), c(0, 1)];
     for (a, ca) in cout.iter_mut().enumerate() {
         for d in 0..3 {
-            ca[d] = if a < 3 { ca[d].sub(&l[d]) } else { ca[d].add(&l[d]) };
+            ca[d] = if a < 3 {
+                ca[d].sub(&l[d])
+            } else {
+                ca[d].add(&l[d])
+            };
         }
     }
     let q = es.sub_net(k, n - 1, &cin, &cout);
@@ -194,7 +199,12 @@ pub fn extraordinary_jet<S: Scalar>(
 }
 
 /// [`regular_jet`] for f64 positions, without allocation (the hot path of the fit).
-pub fn regular_point_f64(basis: &[[f64; 15]; 12], net: &[[f64; 3]; 12], x: f64, y: f64) -> [f64; 3] {
+pub fn regular_point_f64(
+    basis: &[[f64; 15]; 12],
+    net: &[[f64; 3]; 12],
+    x: f64,
+    y: f64,
+) -> [f64; 3] {
     let (x2, y2) = (x * x, y * y);
     let (x3, y3) = (x2 * x, y2 * y);
     let m = [

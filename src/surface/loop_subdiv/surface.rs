@@ -28,7 +28,9 @@ pub const MAX_VALENCE: u32 = 512;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum LoopError {
     /// A vertex has a valence above [`MAX_VALENCE`].
-    #[error("vertex {vertex} has valence {valence} > {max} (Loop S′ evaluates valences 3..={max})")]
+    #[error(
+        "vertex {vertex} has valence {valence} > {max} (Loop S′ evaluates valences 3..={max})"
+    )]
     ValenceTooHigh {
         /// The vertex.
         vertex: u32,
@@ -121,7 +123,9 @@ pub struct LoopSurface {
 
 impl std::fmt::Debug for LoopSurface {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("LoopSurface").field("stats", &self.stats).finish()
+        f.debug_struct("LoopSurface")
+            .field("stats", &self.stats)
+            .finish()
     }
 }
 
@@ -159,8 +163,10 @@ impl Builder<'_> {
                     a: format!("{a:?}"),
                     b: format!("{b:?}"),
                 };
-                let c = crate::surface::loop_subdiv::topology::Topology::third(&t, a, b).ok_or_else(miss)?;
-                let d = crate::surface::loop_subdiv::topology::Topology::third(&t, b, a).ok_or_else(miss)?;
+                let c = crate::surface::loop_subdiv::topology::Topology::third(&t, a, b)
+                    .ok_or_else(miss)?;
+                let d = crate::surface::loop_subdiv::topology::Topology::third(&t, b, a)
+                    .ok_or_else(miss)?;
                 Stencil::Edge([a, b, c, d])
             }
         };
@@ -174,7 +180,11 @@ impl Builder<'_> {
 }
 
 /// The position of a stencil point in S.
-fn stencil_point<S: Scalar>(st: &Stencil, base: &dyn Fn(VertexId) -> [f64; 3], prec: u32) -> [S; 3] {
+fn stencil_point<S: Scalar>(
+    st: &Stencil,
+    base: &dyn Fn(VertexId) -> [f64; 3],
+    prec: u32,
+) -> [S; 3] {
     let bp = |v: VertexId| base(v).map(|x| S::from_f64(x, prec));
     let zero = S::from_i64(0, prec);
     let mut acc = [zero.clone(), zero.clone(), zero];
@@ -273,20 +283,25 @@ impl LoopSurface {
                         .map_err(err)?;
                     patches.push(Patch { valence, net: idx });
                 }
-                let arr: [Patch; 4] = patches
-                    .try_into()
-                    .map_err(|_| LoopError::Eigen(0))?;
+                let arr: [Patch; 4] = patches.try_into().map_err(|_| LoopError::Eigen(0))?;
                 Plan::Split(Box::new(arr))
             };
             plans.push(plan);
         }
         let mut pre: HashMap<CacheKey, Arc<dyn Any + Send + Sync>> = HashMap::new();
         for &n in stats.valences.keys() {
-            let es = EigenStructure::<f64>::new(n as usize, 53).ok_or(LoopError::Eigen(n as usize))?;
-            pre.insert((std::any::TypeId::of::<EigenStructure<f64>>(), n, 53), Arc::new(es));
+            let es =
+                EigenStructure::<f64>::new(n as usize, 53).ok_or(LoopError::Eigen(n as usize))?;
+            pre.insert(
+                (std::any::TypeId::of::<EigenStructure<f64>>(), n, 53),
+                Arc::new(es),
+            );
         }
         let basis = basis_in::<f64>(53).ok_or(LoopError::Eigen(6))?;
-        pre.insert((std::any::TypeId::of::<[[f64; 15]; 12]>(), 0, 53), Arc::new(basis));
+        pre.insert(
+            (std::any::TypeId::of::<[[f64; 15]; 12]>(), 0, 53),
+            Arc::new(basis),
+        );
         let basis_f64 = basis;
         Ok(LoopSurface {
             faces,
@@ -301,7 +316,12 @@ impl LoopSurface {
         })
     }
 
-    fn cached<T: Any + Send + Sync>(&self, n: u32, prec: u32, make: impl FnOnce() -> Option<T>) -> Option<Arc<T>> {
+    fn cached<T: Any + Send + Sync>(
+        &self,
+        n: u32,
+        prec: u32,
+        make: impl FnOnce() -> Option<T>,
+    ) -> Option<Arc<T>> {
         let key = (std::any::TypeId::of::<T>(), n, prec);
         if let Some(v) = self.pre.get(&key) {
             return v.clone().downcast::<T>().ok();
@@ -354,10 +374,13 @@ impl LoopSurface {
         // perm[i] = position in the caller's list of stored corner i.
         let mut perm = [0usize; 3];
         for (i, s) in stored.iter().enumerate() {
-            perm[i] = corners.iter().position(|c| c == s).ok_or(LoopError::WrongCorners {
-                face: f.0,
-                corners: corners.map(|c| c.0),
-            })?;
+            perm[i] = corners
+                .iter()
+                .position(|c| c == s)
+                .ok_or(LoopError::WrongCorners {
+                    face: f.0,
+                    corners: corners.map(|c| c.0),
+                })?;
         }
         if perm[0] == perm[1] || perm[1] == perm[2] || perm[0] == perm[2] {
             return Err(LoopError::WrongCorners {
@@ -390,13 +413,41 @@ impl LoopSurface {
                 };
                 // (sub-face index, its bary as ±2·bary + const).
                 let (j, parts) = if sb[0].lt(&half).is_false() {
-                    (0, [lin([(2, 0), (0, 0)], -1), lin([(2, 1), (0, 0)], 0), lin([(2, 2), (0, 0)], 0)])
+                    (
+                        0,
+                        [
+                            lin([(2, 0), (0, 0)], -1),
+                            lin([(2, 1), (0, 0)], 0),
+                            lin([(2, 2), (0, 0)], 0),
+                        ],
+                    )
                 } else if sb[1].lt(&half).is_false() {
-                    (1, [lin([(2, 1), (0, 0)], -1), lin([(2, 2), (0, 0)], 0), lin([(2, 0), (0, 0)], 0)])
+                    (
+                        1,
+                        [
+                            lin([(2, 1), (0, 0)], -1),
+                            lin([(2, 2), (0, 0)], 0),
+                            lin([(2, 0), (0, 0)], 0),
+                        ],
+                    )
                 } else if sb[2].lt(&half).is_false() {
-                    (2, [lin([(2, 2), (0, 0)], -1), lin([(2, 0), (0, 0)], 0), lin([(2, 1), (0, 0)], 0)])
+                    (
+                        2,
+                        [
+                            lin([(2, 2), (0, 0)], -1),
+                            lin([(2, 0), (0, 0)], 0),
+                            lin([(2, 1), (0, 0)], 0),
+                        ],
+                    )
                 } else {
-                    (3, [lin([(-2, 2), (0, 0)], 1), lin([(-2, 0), (0, 0)], 1), lin([(-2, 1), (0, 0)], 1)])
+                    (
+                        3,
+                        [
+                            lin([(-2, 2), (0, 0)], 1),
+                            lin([(-2, 0), (0, 0)], 1),
+                            lin([(-2, 1), (0, 0)], 1),
+                        ],
+                    )
                 };
                 let [p0, p1, p2] = parts;
                 (&ps[j], [p0.1, p1.1, p2.1], [p0.0, p1.0, p2.0], 0)
@@ -404,7 +455,11 @@ impl LoopSurface {
         };
         let (x, y) = (lb[(rot + 1) % 3].clone(), lb[(rot + 2) % 3].clone());
         let map: Affine = [la[(rot + 1) % 3], la[(rot + 2) % 3]];
-        let net: Vec<[S; 3]> = patch.net.iter().map(|&i| self.point::<S>(i, prec)).collect();
+        let net: Vec<[S; 3]> = patch
+            .net
+            .iter()
+            .map(|&i| self.point::<S>(i, prec))
+            .collect();
         let basis = self
             .cached(0, prec, || basis_in::<S>(prec))
             .ok_or(LoopError::Eigen(6))?;
@@ -437,18 +492,26 @@ impl LoopSurface {
 
     /// f64 position (the [`crate::surface::TargetSurface`] evaluation). Regular faces take an
     /// allocation-free path (same arithmetic as [`Self::jet`]).
-    pub fn eval_f64(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> Result<[f64; 3], LoopError> {
-        if let (Some(Plan::Direct { patch, .. }), Some(stored)) = (self.plans.get(f.idx()), self.corners(f)) {
+    pub fn eval_f64(
+        &self,
+        f: FaceId,
+        corners: [VertexId; 3],
+        bary: [f64; 3],
+    ) -> Result<[f64; 3], LoopError> {
+        if let (Some(Plan::Direct { patch, .. }), Some(stored)) =
+            (self.plans.get(f.idx()), self.corners(f))
+        {
             let sum = bary[0] + bary[1] + bary[2];
-            if patch.valence == 6
-                && bary.iter().all(|&x| x >= -1e-12)
-                && (sum - 1.0).abs() <= 1e-9
+            if patch.valence == 6 && bary.iter().all(|&x| x >= -1e-12) && (sum - 1.0).abs() <= 1e-9
             {
                 // Regular faces are gathered with rot = 0: x, y = bary of stored c₁, c₂.
                 let at = |s: VertexId| corners.iter().position(|&c| c == s);
-                if let (Some(i0), Some(i1), Some(i2)) = (at(stored[0]), at(stored[1]), at(stored[2])) {
+                if let (Some(i0), Some(i1), Some(i2)) =
+                    (at(stored[0]), at(stored[1]), at(stored[2]))
+                {
                     if i0 != i1 && i1 != i2 && i0 != i2 {
-                        let net: [[f64; 3]; 12] = std::array::from_fn(|j| self.pos[patch.net[j] as usize]);
+                        let net: [[f64; 3]; 12] =
+                            std::array::from_fn(|j| self.pos[patch.net[j] as usize]);
                         return Ok(regular_point_f64(&self.basis_f64, &net, bary[i1], bary[i2]));
                     }
                 }

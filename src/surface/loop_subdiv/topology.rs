@@ -36,7 +36,12 @@ fn third_or<T: Topology>(t: &T, a: T::P, b: T::P) -> Result<T::P, MissingTriangl
 
 /// The ring of v counter-clockwise from `start`: r₀ = start, r_{i+1} = third(v, rᵢ); at most
 /// `cap` vertices.
-pub fn ring<T: Topology>(t: &T, v: T::P, start: T::P, cap: usize) -> Result<Vec<T::P>, MissingTriangle> {
+pub fn ring<T: Topology>(
+    t: &T,
+    v: T::P,
+    start: T::P,
+    cap: usize,
+) -> Result<Vec<T::P>, MissingTriangle> {
     let mut r = vec![start];
     loop {
         let next = third_or(t, v, *r.last().unwrap_or(&start))?;
@@ -56,7 +61,13 @@ pub fn ring<T: Topology>(t: &T, v: T::P, start: T::P, cap: usize) -> Result<Vec<
 /// The net of the patch over the triangle (v, a, b): [v, r₀ = a, r₁ = b, r₂, …, r_{N−1},
 /// o₀, …, o₄] (N + 6 points; Stam's layout, [`super::regular::REGULAR_NET`] for N = 6).
 /// a and b must have valence 6 (checked: their rings must close after o₂ resp. o₄).
-pub fn gather_net<T: Topology>(t: &T, v: T::P, a: T::P, b: T::P, cap: usize) -> Result<Vec<T::P>, MissingTriangle> {
+pub fn gather_net<T: Topology>(
+    t: &T,
+    v: T::P,
+    a: T::P,
+    b: T::P,
+    cap: usize,
+) -> Result<Vec<T::P>, MissingTriangle> {
     let r = ring(t, v, a, cap)?;
     let n = r.len();
     if n < 3 || r[1] != b {
