@@ -7,7 +7,6 @@ use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::mesh::validate::validate;
 use crate::mesh::SimplicialSurface;
 use crate::report::render_text;
-use crate::surface::output::{edge_use_counts, write_mesh_with_attributes};
 use crate::surface::PnTriangles;
 use std::path::Path;
 use std::process::ExitCode;
@@ -129,21 +128,5 @@ pub fn run_sample(
             return ExitCode::from(1);
         }
     };
-    let (two, other) = edge_use_counts(&m.faces);
-    if let Err(e) = write_mesh_with_attributes(out, &m) {
-        eprintln!("error: writing {}: {e}", out.display());
-        return ExitCode::from(2);
-    }
-    if !quiet {
-        eprintln!(
-            "ppm sample: wrote {} ({} vertices, {} faces; {} edges in two faces, {} otherwise) in {:.2} s",
-            out.display(),
-            m.positions.len(),
-            m.faces.len(),
-            two,
-            other,
-            t0.elapsed().as_secs_f64()
-        );
-    }
-    ExitCode::SUCCESS
+    crate::surface::cli::write_sampled(out, &m, quiet, t0)
 }

@@ -1,6 +1,8 @@
 //! `ppm sample` and `ppm eval` (called from `crate::cli`).
 
-use super::output::{edge_use_counts, sample_surface_with, write_mesh_with_attributes, Attributes};
+use super::output::{
+    edge_use_counts, sample_surface_with, write_mesh_with_attributes, Attributes, SampledMesh,
+};
 use super::pps::{Pps, PpsOptions};
 use super::profile::Profile;
 use super::target::{SPrime, SurfaceKind};
@@ -95,8 +97,15 @@ pub fn run_sample(
             return ExitCode::from(1);
         }
     };
+    write_sampled(out, &m, quiet, t0)
+}
+
+/// Writes a sampled surface (atomically, see `write_mesh_with_attributes`) and reports its
+/// edge-use counts (watertight: every edge in two faces); shared by every construction's
+/// `ppm sample`.
+pub(crate) fn write_sampled(out: &Path, m: &SampledMesh, quiet: bool, t0: Instant) -> ExitCode {
     let (two, other) = edge_use_counts(&m.faces);
-    if let Err(e) = write_mesh_with_attributes(out, &m) {
+    if let Err(e) = write_mesh_with_attributes(out, m) {
         eprintln!("error: writing {}: {e}", out.display());
         return ExitCode::from(2);
     }
