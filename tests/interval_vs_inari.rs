@@ -98,7 +98,7 @@ fn check_unary(
 }
 
 #[test]
-fn interval_sqrt_sin_cos_acos_enclose_and_are_tight() {
+fn bk_iv_enclose_sqrt_sin_cos_acos_and_tight() {
     check_unary(
         "sqrt",
         Interval::sqrt,
@@ -142,7 +142,7 @@ fn interval_sqrt_sin_cos_acos_enclose_and_are_tight() {
 }
 
 #[test]
-fn interval_arithmetic_and_atan2_enclose_and_are_tight() {
+fn bk_iv_enclose_arithmetic_atan2_and_tight() {
     let mut rng = ChaCha8Rng::seed_from_u64(SEED);
     let mut worst = [0u64; 5];
     for _ in 0..N {

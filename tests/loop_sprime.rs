@@ -388,3 +388,132 @@ fn loop_pps_c_chapter5_rows_and_c6_2_mimics_with_loop_sprime() {
         assert!(lp.iter().any(|r| r.id == "LOOP-C2-edge"));
     }
 }
+
+fn point_max(r: &pseudomanifold::oracle::tsv_diff::TsvReport, name: &str) -> f64 {
+    let q = r
+        .quantities
+        .iter()
+        .find(|q| q.name == name)
+        .unwrap_or_else(|| panic!("no {name} columns"));
+    assert_eq!(q.point.errors, 0, "{name}: rows not evaluable");
+    assert!(q.point.count > 0, "{name}: nothing compared");
+    q.point.max
+}
+
+/// Defects D2 and D3 of the authors' Loop evaluator (docs/authors-code.md), modelled by the
+/// `authors-code` profile (`LoopSurface::with_authors_corner_clamp`), absent from `paper`.
+/// D2: `EvalStruct::eval_surf` replaces patch coordinates (v, w) that are both below 10⁻⁴ by
+/// (10⁻⁴, 10⁻⁴). D3: for valence 3 its Jordan-block power is off by one (test below). With
+/// both modelled, their S′ and their PPS are reproduced on every table — the fixture (every
+/// face within one ring of a valence-3 vertex) and, when ../shared is present, the four
+/// public Loop tables — to ≤ 1e-10 of the diagonal (measured: ≤ 4.4e-12 on the public tables,
+/// 1.7e-11 on the fixture, where Stam's tabulated eigen-structure that their code reads
+/// differs from ours, computed in closed form, in the last digits). Without the models the
+/// S′ deviation is ≥ 1e-6.
+#[test]
+fn loop_authors_d2_loop_authors_pps_their_tables_reproduced() {
+    use pseudomanifold::oracle::tsv_diff::diff_tsv_files_with;
+    use pseudomanifold::surface::{Profile, SurfaceKind};
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/authors_pps/loop");
+    let mut cases = vec![(
+        "tetrahedron_loop1".to_string(),
+        data.join("tetrahedron_loop1.off"),
+        data.join("tetrahedron_loop1.tsv"),
+    )];
+    let shared = std::env::var_os("PPM_SHARED")
+        .map(std::path::PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared"));
+    let dir = shared.join("reference/authors-pps");
+    for name in ["torus", "eight_loop1", "spot_loop1", "bunny_loop1"] {
+        let t = dir.join(format!("loop/{name}.tsv"));
+        if t.is_file() {
+            cases.push((name.to_string(), dir.join(format!("meshes/{name}.off")), t));
+        } else {
+            eprintln!("note: authors' Loop table {name} not present; skipped");
+        }
+    }
+    for (name, mesh, table) in cases {
+        let run =
+            |p| diff_tsv_files_with(&mesh, &table, p, SurfaceKind::Loop, 1e-9, 3).expect("diff");
+        let exact = run(Profile::Paper);
+        let theirs = run(Profile::AuthorsCode);
+        let (se, sa, pa) = (
+            point_max(&exact, "sprime"),
+            point_max(&theirs, "sprime"),
+            point_max(&theirs, "pps"),
+        );
+        println!(
+            "{name}: {} rows; S′ vs the exact limit {se:.2e}, vs the model of their evaluator {sa:.2e}; PPS {pa:.2e} (of the diagonal)",
+            theirs.rows
+        );
+        assert!(se >= 1e-6, "{name}: the defects should matter ({se:e})");
+        assert!(sa <= 1e-10, "{name}: S′ with D2, D3 modelled: {sa:e}");
+        assert!(pa <= 1e-10, "{name}: PPS with D2, D3 modelled: {pa:e}");
+    }
+}
+
+/// Defect D3 of the authors' Loop evaluator: near a vertex of valence 3 their S′ (Stam's
+/// eigen-structure file, which treats the subdivision matrix as diagonalisable; for valence 3
+/// it has a Jordan block at 1/16, `LOOP-eigen`) is not continuous: on both sides of the tile
+/// boundary v + w = 1/4 of Stam's evaluation, 2·10⁻⁹·t apart, their values jump by more than
+/// 1e-6 (the tetrahedron after one Loop step, face 0, towards its valence-3 corner:
+/// `tests/data/authors_pps/loop/tetrahedron_loop1_tile_boundaries.tsv`). The limit surface is
+/// continuous: ours moves by less than 1e-9 across every boundary, and every other jump of
+/// theirs is as small. Their deviation from ours there shrinks 16× per level.
+#[test]
+fn loop_authors_d3_valence3_their_sprime_jumps_at_a_tile_boundary() {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/authors_pps/loop");
+    let raw =
+        read_mesh(&data.join("tetrahedron_loop1.off"), &ReadOptions::default()).expect("mesh");
+    let k = surface(&raw);
+    let s = LoopSurface::new(&k).expect("Loop surface");
+    let rows = read_table(&data.join("tetrahedron_loop1_tile_boundaries.tsv")).expect("table");
+    assert_eq!(rows.len(), 16, "8 boundaries, both sides");
+    let dist = |a: [f64; 3], b: [f64; 3]| {
+        ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+    };
+    let ours = |r: &Row| {
+        let file = raw.faces[r.face as usize].map(VertexId);
+        s.jet::<f64>(FaceId(r.face), file, &r.bary, false)
+            .expect("S′")
+            .p
+    };
+    let mut big = vec![];
+    let mut deviation = vec![];
+    for pair in rows.chunks(2) {
+        let t = pair[0].bary[1];
+        let theirs_jump = dist(pair[0].sprime, pair[1].sprime);
+        let ours_jump = dist(ours(&pair[0]), ours(&pair[1]));
+        println!("t = {t:.9}: their S′ jumps {theirs_jump:.3e}, ours {ours_jump:.3e}");
+        assert!(
+            ours_jump < 1e-9,
+            "the limit surface is continuous: {ours_jump:e}"
+        );
+        if theirs_jump > 1e-6 {
+            big.push(t);
+        }
+        deviation.push(dist(ours(&pair[0]), pair[0].sprime));
+    }
+    // The model of their evaluator (authors-code profile) jumps the same way.
+    let model = LoopSurface::new(&k)
+        .expect("Loop surface")
+        .with_authors_corner_clamp(&k);
+    for r in &rows {
+        let file = raw.faces[r.face as usize].map(VertexId);
+        let m = model
+            .jet::<f64>(FaceId(r.face), file, &r.bary, false)
+            .expect("S′")
+            .p;
+        assert!(
+            dist(m, r.sprime) < 1e-10,
+            "model vs theirs at t = {}",
+            r.bary[1]
+        );
+    }
+    assert_eq!(big.len(), 1, "exactly one boundary jumps: {big:?}");
+    assert!((big[0] - 0.125).abs() < 1e-6, "at v + w = 1/4");
+    for w in deviation.windows(2).skip(1).take(4) {
+        println!("deviation {:.3e} → {:.3e}", w[0], w[1]);
+        assert!(w[1] < w[0] / 10.0, "shrinks by ~16 per level");
+    }
+}

@@ -376,7 +376,7 @@ fn meshes() -> Vec<(String, SimplicialSurface)> {
 }
 
 #[test]
-fn mp_backends_agree_on_every_oracle_quantity_at_256_bits() {
+fn bk_mp_agree_every_oracle_quantity_at_256_bits() {
     eprintln!(
         "bound: |x_astro − x_MPFR| ≤ 2^{AMP} · max(|x_MPFR,{P} − x_MPFR,{}|, 2^-{P} · max(|x|, 1)); seed {SEED}",
         2 * P
@@ -399,7 +399,7 @@ fn mp_backends_agree_on_every_oracle_quantity_at_256_bits() {
 }
 
 #[test]
-fn mp_backends_planted_wrong_pi_is_caught() {
+fn bk_mp_agree_planted_wrong_pi_is_caught() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/icosahedron_binary_le.ply");
     let k = validate(&read_mesh(&path, &ReadOptions::default()).expect("fixture"))
         .surface

@@ -263,6 +263,7 @@ pub fn main() -> ExitCode {
                 &mesh,
                 &table,
                 &profile,
+                &sprime,
                 tolerance.unwrap_or(1e-9),
                 worst,
                 json,

@@ -11,7 +11,7 @@ use crate::render::{
     render_scene, ColourBy, ColourRange, Image, RenderError, RenderOptions, RenderReport, Scene,
     View,
 };
-use crate::surface::{PnTriangles, Pps, PpsOptions, Profile};
+use crate::surface::{Pps, PpsOptions, Profile, SPrime, SurfaceKind};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -97,16 +97,6 @@ fn default_level(faces: usize) -> u32 {
         .unwrap_or(5)
 }
 
-fn pn_only(surface: &str) -> Result<(), RenderError> {
-    match surface {
-        "pn" => Ok(()),
-        "loop" => Err(RenderError::LoopUnavailable),
-        other => Err(RenderError::Mesh(format!(
-            "unknown --surface {other:?} (pn | loop)"
-        ))),
-    }
-}
-
 fn scenes(
     a: &RenderArgs,
     notes: &mut Vec<String>,
@@ -134,23 +124,30 @@ fn scenes(
             a.profile
         ))
     })?;
-    pn_only(&a.surface)?;
+    let kind = SurfaceKind::parse(&a.surface).ok_or_else(|| {
+        RenderError::Mesh(format!("unknown --surface {:?} (pn | loop)", a.surface))
+    })?;
     // Curvature costs order-2 jets: skip it when the picture is not coloured.
     let curvature = a.colour.as_deref() != Some("none");
     let frame = mesh_scene(&k).bbox();
-    let pn = PnTriangles::new(&k);
+    let sprime = SPrime::for_profile(kind, &k, profile)
+        .map_err(|e| RenderError::Mesh(format!("S′ = {}: {e}", kind.name())))?;
     let pps = || {
         Pps::build(
             &k,
-            &pn,
+            sprime.as_target(),
             PpsOptions {
                 profile,
                 ..PpsOptions::default()
             },
         )
     };
+    let sname = match kind {
+        SurfaceKind::Pn => "PN triangles",
+        SurfaceKind::Loop => "the Loop limit surface",
+    };
     notes.push(format!(
-        "{}: {} vertices, {} faces; level {level}; S′ = PN triangles; profile {}",
+        "{}: {} vertices, {} faces; level {level}; S′ = {sname}; profile {}",
         a.file.display(),
         k.num_vertices(),
         k.num_faces(),
@@ -159,18 +156,18 @@ fn scenes(
     let panels = if a.panels {
         vec![
             Panel {
-                caption: "S' = PN triangles".into(),
-                scene: sprime_scene(&k, &pn, level),
+                caption: format!("S' = {sname}"),
+                scene: sprime_scene(&k, &sprime, level),
             },
             Panel {
-                caption: "PPS from PN triangles".into(),
+                caption: format!("PPS from {sname}"),
                 scene: pps_scene(&pps(), level, curvature)?,
             },
         ]
     } else {
         let (caption, scene) = match a.what.as_str() {
             "mesh" => ("K", mesh_scene(&k)),
-            "sprime" => ("S'", sprime_scene(&k, &pn, level)),
+            "sprime" => ("S'", sprime_scene(&k, &sprime, level)),
             "pps" => ("PPS", pps_scene(&pps(), level, curvature)?),
             other => {
                 return Err(RenderError::Mesh(format!(

@@ -1,8 +1,8 @@
 //! `ppm diff --mesh M TABLE.tsv`: a table of eval and S′ points against ours
 //! (`crate::oracle::tsv_diff`).
 
-use crate::oracle::tsv_diff::{diff_tsv_files, render_tsv};
-use crate::surface::Profile;
+use crate::oracle::tsv_diff::{diff_tsv_files_with, render_tsv};
+use crate::surface::{Profile, SurfaceKind};
 use std::path::Path;
 use std::process::ExitCode;
 
@@ -21,6 +21,7 @@ pub fn run(
     mesh: &Path,
     table: &Path,
     profile: &str,
+    sprime: &str,
     tolerance: f64,
     worst: usize,
     json: bool,
@@ -29,11 +30,15 @@ pub fn run(
         eprintln!("error: unknown profile {profile:?} (paper | authors-code)");
         return ExitCode::from(2);
     };
+    let Some(kind) = SurfaceKind::parse(sprime) else {
+        eprintln!("error: unknown S′ {sprime:?} (pn | loop)");
+        return ExitCode::from(2);
+    };
     if tolerance.is_nan() || tolerance < 0.0 {
         eprintln!("error: --tolerance must be a non-negative number");
         return ExitCode::from(2);
     }
-    let r = match diff_tsv_files(mesh, table, profile, tolerance, worst) {
+    let r = match diff_tsv_files_with(mesh, table, profile, kind, tolerance, worst) {
         Ok(r) => r,
         Err(e) => {
             eprintln!("error: {e}");

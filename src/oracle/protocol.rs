@@ -642,18 +642,33 @@ impl Session {
                 }
                 // The stored corners: the file's order unless the validator reversed σ.
                 let corners = k.face(f);
-                let net = match &self.ch5()?.target {
-                    crate::surface::SPrime::Pn(pn) => pn.net(corners),
-                    crate::surface::SPrime::Loop(_) => {
-                        return Err(OracleError::Malformed(
-                            "sprime answers for the PN S′ only; send {\"op\":\"set_surface\",\"surface\":\"pn\"}".into(),
-                        ))
+                match &self.ch5()?.target {
+                    crate::surface::SPrime::Pn(pn) => {
+                        let net = pn.net(corners);
+                        let a = crate::surface::target::eval_cubic(&net, *bary);
+                        let bm = bary.map(|x| Mp::from_f64(x, bits));
+                        let b = crate::surface::target::eval_cubic_in(&net, &bm, bits);
+                        Ok(both(&a, &b, bits))
                     }
-                };
-                let a = crate::surface::target::eval_cubic(&net, *bary);
-                let bm = bary.map(|x| Mp::from_f64(x, bits));
-                let b = crate::surface::target::eval_cubic_in(&net, &bm, bits);
-                Ok(both(&a, &b, bits))
+                    crate::surface::SPrime::Loop(l) => {
+                        // The point the profile evaluates (the authors' corner clamp under
+                        // `authors-code`), in f64 and, exactly by Stam's method, in MPFR.
+                        let at = l.profile_bary(f, corners, *bary);
+                        let undefined = |e: crate::surface::loop_subdiv::LoopError| {
+                            OracleError::Undefined(e.to_string())
+                        };
+                        let a = l.eval_f64(f, corners, at).map_err(undefined)?;
+                        let bm = at.map(|x| Mp::from_f64(x, bits));
+                        let b = l.jet::<Mp>(f, corners, &bm, false).map_err(undefined)?.p;
+                        let mut r = both(&a, &b, bits);
+                        if at != *bary {
+                            r.info = Some(
+                                json!({ "evaluated_at": at, "why": "authors-code: their Loop evaluator's corner clamp (docs/authors-code.md, D2)" }),
+                            );
+                        }
+                        Ok(r)
+                    }
+                }
             }
             Request::Eval { face, bary } => {
                 if !bary.iter().all(|c| c.is_finite()) {

@@ -225,6 +225,8 @@ pub struct TsvReport {
     pub diagonal: f64,
     /// The profile the reference was built with.
     pub profile: String,
+    /// S′ of the reference (`pn-triangles` or `loop-limit`, the target's name).
+    pub sprime: String,
     /// The tolerance (relative to the diagonal).
     pub tolerance: f64,
     /// The compared quantities.
@@ -343,6 +345,7 @@ pub fn diff_rows(
         rows: rows.len(),
         diagonal: diag,
         profile: pps.options.profile.name().to_string(),
+        sprime: target.name().to_string(),
         tolerance,
         quantities,
         within_tolerance: within,
@@ -366,9 +369,19 @@ pub enum TsvDiffError {
         /// What went wrong.
         error: String,
     },
+    /// S′ could not be built for the mesh (e.g. a Loop valence above the supported maximum).
+    #[error("{mesh}: S′ = {kind}: {error}")]
+    SPrime {
+        /// The mesh file.
+        mesh: String,
+        /// The requested S′.
+        kind: String,
+        /// What went wrong.
+        error: String,
+    },
 }
 
-/// Read the mesh and the table, build S′ and the PPS with `profile`, compare.
+/// Read the mesh and the table, build S′ = PN triangles and the PPS with `profile`, compare.
 pub fn diff_tsv_files(
     mesh: &std::path::Path,
     table: &std::path::Path,
@@ -376,8 +389,28 @@ pub fn diff_tsv_files(
     tolerance: f64,
     worst: usize,
 ) -> Result<TsvReport, TsvDiffError> {
+    diff_tsv_files_with(
+        mesh,
+        table,
+        profile,
+        crate::surface::SurfaceKind::Pn,
+        tolerance,
+        worst,
+    )
+}
+
+/// As [`diff_tsv_files`] with S′ of kind `kind` (`SPrime::for_profile`: with `authors-code`
+/// the Loop S′ is what the authors' evaluator computes, docs/authors-code.md).
+pub fn diff_tsv_files_with(
+    mesh: &std::path::Path,
+    table: &std::path::Path,
+    profile: crate::surface::Profile,
+    kind: crate::surface::SurfaceKind,
+    tolerance: f64,
+    worst: usize,
+) -> Result<TsvReport, TsvDiffError> {
     use crate::mesh::io::{read_mesh, ReadOptions};
-    use crate::surface::{PnTriangles, PpsOptions};
+    use crate::surface::{PpsOptions, SPrime};
     let raw =
         read_mesh(mesh, &ReadOptions::default()).map_err(|e| TsvDiffError::Mesh(e.to_string()))?;
     let k = crate::mesh::validate::validate(&raw)
@@ -391,17 +424,27 @@ pub fn diff_tsv_files(
         path: table.display().to_string(),
         error: e.to_string(),
     })?;
-    let pn = PnTriangles::for_profile(&k, profile);
+    let sprime = SPrime::for_profile(kind, &k, profile).map_err(|e| TsvDiffError::SPrime {
+        mesh: mesh.display().to_string(),
+        kind: kind.name().to_string(),
+        error: e.to_string(),
+    })?;
     let pps = Pps::build(
         &k,
-        &pn,
+        sprime.as_target(),
         PpsOptions {
             profile,
             ..PpsOptions::default()
         },
     );
     Ok(diff_rows(
-        &k, &raw.faces, &pps, &pn, &rows, tolerance, worst,
+        &k,
+        &raw.faces,
+        &pps,
+        sprime.as_target(),
+        &rows,
+        tolerance,
+        worst,
     ))
 }
 
@@ -413,8 +456,8 @@ pub fn looks_like_tsv(text_start: &str) -> bool {
 /// The report as text.
 pub fn render_tsv(r: &TsvReport) -> String {
     let mut s = format!(
-        "rows {}, bounding-box diagonal {:.6e}, profile {}; deviations relative to the diagonal\n",
-        r.rows, r.diagonal, r.profile
+        "rows {}, bounding-box diagonal {:.6e}, profile {}, S′ {}; deviations relative to the diagonal\n",
+        r.rows, r.diagonal, r.profile, r.sprime
     );
     for q in &r.quantities {
         let what = if q.name == "pps" {

@@ -40,9 +40,6 @@ pub enum RenderError {
     /// Colouring by curvature was asked for a source that carries none.
     #[error("--colour {0}: this source carries no curvature (use --colour none)")]
     NoCurvature(&'static str),
-    /// The Loop limit surface as S′ is not in this build.
-    #[error("--surface loop: the Loop limit surface S′ (Sec. 6.2) is not available in this build; use --surface pn")]
-    LoopUnavailable,
     /// Evaluating the surface failed.
     #[error("surface: {0}")]
     Surface(#[from] SurfaceError),

@@ -8,12 +8,14 @@ use super::error::RenderError;
 use super::scene::Scene;
 use crate::mesh::raw::RawMesh;
 use crate::mesh::vec3::{cross, sub};
-use crate::mesh::SimplicialSurface;
-use crate::surface::geometry::from_jet;
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::surface::geometry::{from_derivatives, from_jet, SurfacePoint};
 use crate::surface::jet::Jet2;
+use crate::surface::loop_subdiv::stam::PatchJet;
+use crate::surface::loop_subdiv::LoopSurface;
 use crate::surface::output::{sample_surface_with, Attributes};
 use crate::surface::target::eval_cubic;
-use crate::surface::{PnTriangles, Pps};
+use crate::surface::{Pps, SPrime};
 
 /// K drawn flat: every triangle with its own three vertices and its geometric normal.
 pub fn mesh_scene(k: &SimplicialSurface) -> Scene {
@@ -60,11 +62,12 @@ fn grid(level: u32) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
     (pts, tris)
 }
 
-/// S′ = PN triangles, each patch b_σ sampled on the level-`level` grid with its own vertices
-/// (S′ is only C⁰ across edges: its normals and curvatures jump there, and the picture shows
-/// it). b_σ is parametrised by (s, t) ↦ b_σ(1 − s − t, s, t) over σ's corners in K's order, so
-/// the normal ∂_s b × ∂_t b follows K's orientation.
-pub fn sprime_scene(k: &SimplicialSurface, pn: &PnTriangles, level: u32) -> Scene {
+/// S′ (PN triangles or the Loop limit surface), each face's patch sampled on the level-`level`
+/// grid with its own vertices (PN triangles are only C⁰ across edges: their normals and
+/// curvatures jump there, and the picture shows it). The patch of σ is parametrised by
+/// (s, t) ↦ S′(σ; 1 − s − t, s, t) over σ's corners in K's order, so the normal ∂_s × ∂_t
+/// follows K's orientation.
+pub fn sprime_scene(k: &SimplicialSurface, sprime: &SPrime, level: u32) -> Scene {
     let (pts, tris) = grid(level);
     let mut s = Scene {
         gaussian: Some(Vec::new()),
@@ -72,17 +75,13 @@ pub fn sprime_scene(k: &SimplicialSurface, pn: &PnTriangles, level: u32) -> Scen
         ..Scene::default()
     };
     for f in k.faces() {
-        let net = pn.net(k.face(f));
+        let corners = k.face(f);
         let base = s.positions.len() as u32;
         for b in &pts {
-            let (x, y) = Jet2::<f64>::variables(b[1], b[2]);
-            let one = Jet2::<f64>::constant(1.0);
-            let bary = [
-                crate::construction::Scalar::sub(&crate::construction::Scalar::sub(&one, &x), &y),
-                x,
-                y,
-            ];
-            let g = from_jet(&eval_cubic(&net, bary));
+            let g = match sprime {
+                SPrime::Pn(pn) => pn_point(&pn.net(corners), b[1], b[2]),
+                SPrime::Loop(l) => loop_point(l, f, corners, b[1], b[2]),
+            };
             s.positions.push(g.point);
             s.normals.push(g.normal);
             if let (Some(kk), Some(h)) = (s.gaussian.as_mut(), s.mean.as_mut()) {
@@ -93,6 +92,42 @@ pub fn sprime_scene(k: &SimplicialSurface, pn: &PnTriangles, level: u32) -> Scen
         s.faces.extend(tris.iter().map(|t| t.map(|i| i + base)));
     }
     s
+}
+
+fn pn_point(net: &[[f64; 3]; 10], s: f64, t: f64) -> SurfacePoint {
+    let (x, y) = Jet2::<f64>::variables(s, t);
+    let one = Jet2::<f64>::constant(1.0);
+    let bary = [
+        crate::construction::Scalar::sub(&crate::construction::Scalar::sub(&one, &x), &y),
+        x,
+        y,
+    ];
+    from_jet(&eval_cubic(net, bary))
+}
+
+/// The Loop limit point with Stam's exact derivatives. At an extraordinary vertex the
+/// parametrization has derivative 0 or ∞ (Stam 1998, Sec. 5) although the surface has a
+/// tangent plane (`LOOP-normal-mask`): normal and curvature are then taken 1e-9 (in
+/// barycentric coordinates) towards the face's centroid, where the jet exists.
+fn loop_point(l: &LoopSurface, f: FaceId, corners: [VertexId; 3], s: f64, t: f64) -> SurfacePoint {
+    let jet = |b: [f64; 3]| l.jet::<f64>(f, corners, &b, true);
+    let b = [1.0 - s - t, s, t];
+    let nan = [f64::NAN; 3];
+    match jet(b) {
+        Ok(PatchJet { p, d: Some(d), .. }) => from_derivatives(p, d),
+        Ok(PatchJet { p, d: None, .. }) => {
+            let e = 1e-9;
+            let moved = b.map(|x| x * (1.0 - 3.0 * e) + e);
+            match jet(moved) {
+                Ok(PatchJet { d: Some(d), .. }) => SurfacePoint {
+                    point: p,
+                    ..from_derivatives(p, d)
+                },
+                _ => from_derivatives(p, [nan; 5]),
+            }
+        }
+        Err(_) => from_derivatives(nan, [nan; 5]),
+    }
 }
 
 /// The PPS sampled at `level` (Sec. 6.2) with θ's normals, and its curvatures when

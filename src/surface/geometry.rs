@@ -34,8 +34,16 @@ pub struct SurfacePoint {
 /// order-1 jet gives NaN curvatures).
 pub fn from_jet<const L: usize>(j: &[Jet<f64, L>; 3]) -> SurfacePoint {
     let g = |a: usize, b: usize| -> [f64; 3] { std::array::from_fn(|d| j[d].derivative(a, b)) };
-    let (xu, xv) = (g(1, 0), g(0, 1));
-    let (xuu, xuv, xvv) = (g(2, 0), g(1, 1), g(0, 2));
+    from_derivatives(
+        [*j[0].value(), *j[1].value(), *j[2].value()],
+        [g(1, 0), g(0, 1), g(2, 0), g(1, 1), g(0, 2)],
+    )
+}
+
+/// Normal and curvatures of a parametrization x(u, v) from its point and its derivatives
+/// `d` = [x_u, x_v, x_uu, x_uv, x_vv] (first and second fundamental forms).
+pub fn from_derivatives(point: [f64; 3], d: [[f64; 3]; 5]) -> SurfacePoint {
+    let [xu, xv, xuu, xuv, xvv] = d;
     let n = cross(xu, xv);
     let len = dot(n, n).sqrt();
     let normal = if len > 0.0 {
@@ -55,7 +63,7 @@ pub fn from_jet<const L: usize>(j: &[Jet<f64, L>; 3]) -> SurfacePoint {
         (f64::NAN, f64::NAN)
     };
     SurfacePoint {
-        point: [*j[0].value(), *j[1].value(), *j[2].value()],
+        point,
         du: xu,
         dv: xv,
         normal,

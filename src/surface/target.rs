@@ -286,8 +286,10 @@ impl SPrime {
             }
         })
     }
-    /// As [`SPrime::new`], with the PN vertex-normal rule of `profile` (the authors' code
-    /// averages unit face normals; see [`PnTriangles::for_profile`]).
+    /// As [`SPrime::new`], with what `profile` evaluates: for PN its vertex-normal rule (the
+    /// authors' code averages unit face normals; see [`PnTriangles::for_profile`]); for Loop,
+    /// with `authors-code`, their evaluator's corner clamp
+    /// ([`crate::surface::loop_subdiv::LoopSurface::with_authors_corner_clamp`]).
     pub fn for_profile(
         kind: SurfaceKind,
         k: &SimplicialSurface,
@@ -296,7 +298,11 @@ impl SPrime {
         Ok(match kind {
             SurfaceKind::Pn => SPrime::Pn(PnTriangles::for_profile(k, profile)),
             SurfaceKind::Loop => {
-                SPrime::Loop(Box::new(crate::surface::loop_subdiv::LoopSurface::new(k)?))
+                let l = crate::surface::loop_subdiv::LoopSurface::new(k)?;
+                SPrime::Loop(Box::new(match profile {
+                    Profile::Paper => l,
+                    Profile::AuthorsCode => l.with_authors_corner_clamp(k),
+                }))
             }
         })
     }

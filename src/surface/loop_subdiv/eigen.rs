@@ -236,6 +236,21 @@ impl<S: Scalar> EigenStructure<S> {
     /// The regular net of sub-triangle k (0, 1, 2 for Stam's 1, 2, 3) after m further steps:
     /// B_k Aᵐ C₀ from the eigen-coordinates of C₀.
     pub fn sub_net(&self, k: usize, m: u64, cin: &[[S; 3]], cout: &[[S; 3]]) -> [[S; 3]; 12] {
+        self.sub_net_as(k, m, cin, cout, false)
+    }
+
+    /// [`Self::sub_net`], or with `authors_jordan` what the authors' evaluator computes
+    /// (docs/authors-code.md, defect D3): for valence 3, where λ = μ = 1/16 and A has a
+    /// Jordan block, their `EvalStruct::eval_surf` takes the off-diagonal entry of Jᵐ as
+    /// (m − 1)·λ^(m−1) instead of m·λ^(m−1) for m ≥ 2.
+    pub fn sub_net_as(
+        &self,
+        k: usize,
+        m: u64,
+        cin: &[[S; 3]],
+        cout: &[[S; 3]],
+        authors_jordan: bool,
+    ) -> [[S; 3]; 12] {
         let prec = self.prec;
         let zero = S::from_i64(0, prec);
         let z3 = || [zero.clone(), zero.clone(), zero.clone()];
@@ -254,7 +269,15 @@ impl<S: Scalar> EigenStructure<S> {
         let d16: Vec<S> = self
             .lambda
             .iter()
-            .map(|l| divided_power(&self.mu[3], l, m, prec))
+            .map(|l| {
+                let d = divided_power(&self.mu[3], l, m, prec);
+                let coincident = l.sub(&self.mu[3]).sign() == Some(std::cmp::Ordering::Equal);
+                if authors_jordan && self.n == 3 && m >= 2 && coincident {
+                    d.sub(&powi(l, m - 1, prec))
+                } else {
+                    d
+                }
+            })
             .collect();
         let z: Vec<[S; 3]> = (0..5)
             .map(|a| {

@@ -133,6 +133,20 @@ pub fn extraordinary_jet<S: Scalar>(
     y: &S,
     derivs: bool,
 ) -> PatchJet<S> {
+    extraordinary_jet_as(es, basis, net, x, y, derivs, false)
+}
+
+/// [`extraordinary_jet`], or with `authors_jordan` the authors' evaluator's Jordan-block
+/// power for valence 3 ([`EigenStructure::sub_net_as`], defect D3).
+pub fn extraordinary_jet_as<S: Scalar>(
+    es: &EigenStructure<S>,
+    basis: &[[S; 15]; 12],
+    net: &[[S; 3]],
+    x: &S,
+    y: &S,
+    derivs: bool,
+    authors_jordan: bool,
+) -> PatchJet<S> {
     let prec = es.prec;
     let c = |p: i64, q: i64| S::from_ratio(p, q, prec);
     let t = x.add(y);
@@ -182,7 +196,7 @@ pub fn extraordinary_jet<S: Scalar>(
             };
         }
     }
-    let q = es.sub_net(k, n - 1, &cin, &cout);
+    let q = es.sub_net_as(k, n - 1, &cin, &cout, authors_jordan);
     let mut jet = regular_jet(basis, &q, &s.0, &s.1, derivs, prec);
     for d in 0..3 {
         jet.p[d] = jet.p[d].add(&l[d]);

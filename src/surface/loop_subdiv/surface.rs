@@ -12,7 +12,7 @@
 
 use super::eigen::EigenStructure;
 use super::rules::vertex_weights;
-use super::stam::{basis_in, extraordinary_jet, regular_jet, regular_point_f64, PatchJet};
+use super::stam::{basis_in, extraordinary_jet_as, regular_jet, regular_point_f64, PatchJet};
 use super::topology::{gather_net, ring, BaseTopology, MissingTriangle, SubPoint, SubTopology};
 use crate::construction::Scalar;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
@@ -117,9 +117,18 @@ pub struct LoopSurface {
     pre: HashMap<CacheKey, Arc<dyn Any + Send + Sync>>,
     cache: Mutex<HashMap<CacheKey, Arc<dyn Any + Send + Sync>>>,
     basis_f64: [[f64; 15]; 12],
+    /// The authors' corner rule ([`LoopSurface::with_authors_corner_clamp`]): per face, the
+    /// stored corner at the origin of their patch; `None` for the exact limit surface.
+    authors_origin: Option<Vec<u8>>,
     /// Counts of face kinds and valences.
     pub stats: LoopStats,
 }
+
+/// The parameter threshold of the authors' Loop evaluator (`EvalStruct::eval_surf` in
+/// `loop_eval.cpp` of siqueirafm/PPS): when both patch coordinates (v, w) are below it they
+/// are replaced by it, so a point within it of the patch origin is evaluated at
+/// (1 − 2·10⁻⁴, 10⁻⁴, 10⁻⁴) instead (docs/authors-code.md, defect D2).
+pub const AUTHORS_CORNER_CLAMP: f64 = 1e-4;
 
 impl std::fmt::Debug for LoopSurface {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -312,8 +321,61 @@ impl LoopSurface {
             pre,
             basis_f64,
             cache: Mutex::new(HashMap::new()),
+            authors_origin: None,
             stats,
         })
+    }
+
+    /// What the authors' code evaluates instead of the limit surface (profile `authors-code`),
+    /// defects D2 and D3 of docs/authors-code.md. D3: near a vertex of valence 3 their
+    /// Jordan-block power is off by one ([`super::eigen::EigenStructure::sub_net_as`]). D2:
+    /// each face's patch has its origin at the face's only corner of valence ≠ 6 — their
+    /// `PPSfromLOOP::build_surface_evaluator` tests the corners in file order (first if the
+    /// other two are regular, else second if first and third are, else third), so a regular
+    /// face has its origin at its first corner — and a point whose two other barycentric
+    /// coordinates are both below [`AUTHORS_CORNER_CLAMP`] is evaluated at the clamped point.
+    /// Their code refuses faces with two corners of valence ≠ 6; here the same rule picks the
+    /// third corner for them, as their tests would.
+    pub fn with_authors_corner_clamp(mut self, k: &SimplicialSurface) -> LoopSurface {
+        let origin = self
+            .faces
+            .iter()
+            .map(|c| {
+                let reg = |i: usize| k.degree(c[i]) == 6;
+                if reg(1) && reg(2) {
+                    0
+                } else if reg(0) && reg(2) {
+                    1
+                } else {
+                    2
+                }
+            })
+            .collect();
+        self.authors_origin = Some(origin);
+        self
+    }
+
+    /// The barycentric coordinates (w.r.t. `corners`) the authors' evaluator actually uses
+    /// for `bary` on face `f`; `bary` itself for the exact surface.
+    pub fn profile_bary(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> [f64; 3] {
+        let (Some(origin), Some(stored)) = (&self.authors_origin, self.corners(f)) else {
+            return bary;
+        };
+        let Some(&o) = origin.get(f.idx()) else {
+            return bary;
+        };
+        let Some(i) = corners.iter().position(|&c| c == stored[o as usize]) else {
+            return bary;
+        };
+        let (j, l) = ((i + 1) % 3, (i + 2) % 3);
+        if bary[j] < AUTHORS_CORNER_CLAMP && bary[l] < AUTHORS_CORNER_CLAMP {
+            let mut b = bary;
+            b[j] = AUTHORS_CORNER_CLAMP;
+            b[l] = AUTHORS_CORNER_CLAMP;
+            b[i] = 1.0 - 2.0 * AUTHORS_CORNER_CLAMP;
+            return b;
+        }
+        bary
     }
 
     fn cached<T: Any + Send + Sync>(
@@ -487,7 +549,15 @@ impl LoopSurface {
         let es = self
             .cached(n, prec, || EigenStructure::<S>::new(n as usize, prec))
             .ok_or(LoopError::Eigen(n as usize))?;
-        Ok(extraordinary_jet(&es, basis, net, x, y, derivs))
+        Ok(extraordinary_jet_as(
+            &es,
+            basis,
+            net,
+            x,
+            y,
+            derivs,
+            self.authors_origin.is_some(),
+        ))
     }
 
     /// f64 position (the [`crate::surface::TargetSurface`] evaluation). Regular faces take an
@@ -556,6 +626,7 @@ impl crate::surface::TargetSurface for LoopSurface {
     /// The exact limit point; NaN when the arguments are not a point of f (the fit then
     /// reports the NaN: the trait has no error channel).
     fn eval(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> [f64; 3] {
-        self.eval_f64(f, corners, bary).unwrap_or([f64::NAN; 3])
+        self.eval_f64(f, corners, self.profile_bary(f, corners, bary))
+            .unwrap_or([f64::NAN; 3])
     }
 }
