@@ -517,3 +517,72 @@ fn loop_authors_d3_valence3_their_sprime_jumps_at_a_tile_boundary() {
         assert!(w[1] < w[0] / 10.0, "shrinks by ~16 per level");
     }
 }
+
+/// The f64 hot path (per-patch nets projected once, `LoopSurface::eval_f64`) computes what
+/// the generic evaluation (`LoopSurface::jet::<f64>`) computes, on every kind of face:
+/// regular (torus), one extraordinary corner (tetrahedron after one Loop step, valence 3 with
+/// its Jordan block, and under the authors' model), split faces (icosahedron, bipyramids 4
+/// and 11), at seeded points and at points 2⁻²⁰…2⁻⁴⁰ from a corner (deep tiles). Bound
+/// 1024·ε·R (summation orders differ).
+#[test]
+fn loop_mp_fast_path_equals_the_generic_evaluation() {
+    let tet1 = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/authors_pps/loop/tetrahedron_loop1.off");
+    let raws = vec![
+        ("torus 6x5", generate::torus(6, 5)),
+        (
+            "tetrahedron_loop1",
+            read_mesh(&tet1, &ReadOptions::default()).expect("mesh"),
+        ),
+        ("icosahedron", generate::icosahedron()),
+        ("bipyramid 4", bipyramid(4)),
+        ("bipyramid 11", bipyramid(11)),
+    ];
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(17);
+    for (name, raw) in raws {
+        let k = surface(&raw);
+        let r = radius(&k);
+        let tol = 1024.0 * f64::EPSILON * r.max(1.0);
+        for authors in [false, true] {
+            let mut s = LoopSurface::new(&k).expect("Loop surface");
+            if authors {
+                s = s.with_authors_corner_clamp(&k);
+            }
+            let mut worst = 0.0f64;
+            let mut count = 0;
+            for f in k.faces() {
+                let c = k.face(f);
+                let mut pts: Vec<[f64; 3]> = (0..6)
+                    .map(|_| {
+                        let (a, b): (f64, f64) = (rng.gen(), rng.gen());
+                        let (a, b) = if a + b > 1.0 {
+                            (1.0 - a, 1.0 - b)
+                        } else {
+                            (a, b)
+                        };
+                        [1.0 - a - b, a, b]
+                    })
+                    .collect();
+                for e in [20, 30, 40] {
+                    let t = (2.0f64).powi(-e);
+                    pts.push([1.0 - 2.0 * t, t, t]);
+                    pts.push([t, 1.0 - 2.0 * t, t]);
+                }
+                pts.push([1.0, 0.0, 0.0]);
+                pts.push([0.5, 0.25, 0.25]);
+                for b in pts {
+                    let fast = s.eval_f64(f, c, b).expect("fast");
+                    let slow = s.jet::<f64>(f, c, &b, false).expect("generic").p;
+                    let d = (0..3)
+                        .map(|i| (fast[i] - slow[i]).abs())
+                        .fold(0.0, f64::max);
+                    assert!(d.is_finite(), "{name}: NaN at face {f:?} {b:?}");
+                    worst = worst.max(d);
+                    count += 1;
+                }
+            }
+            println!("{name} (authors model: {authors}): {count} points, max |fast − generic| {worst:.2e} (bound {tol:.2e})");
+            assert!(worst <= tol, "{name}: {worst:e} > {tol:e}");
+        }
+    }
+}

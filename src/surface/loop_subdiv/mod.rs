@@ -2,6 +2,7 @@
 //! any (σ, λ, μ, ν) of the base mesh by Stam's method (1998).
 
 pub mod eigen;
+mod fast;
 pub mod patch;
 pub mod regular;
 pub mod rules;

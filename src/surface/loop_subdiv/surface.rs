@@ -11,8 +11,9 @@
 //!   coordinates (2λ − 1, 2μ, 2ν) etc.; S′ stays one function of K's parameters.
 
 use super::eigen::EigenStructure;
+use super::fast::{FastPatch, FastPlan};
 use super::rules::vertex_weights;
-use super::stam::{basis_in, extraordinary_jet_as, regular_jet, regular_point_f64, PatchJet};
+use super::stam::{basis_in, extraordinary_jet_as, regular_jet, PatchJet};
 use super::topology::{gather_net, ring, BaseTopology, MissingTriangle, SubPoint, SubTopology};
 use crate::construction::Scalar;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
@@ -120,6 +121,9 @@ pub struct LoopSurface {
     /// The authors' corner rule ([`LoopSurface::with_authors_corner_clamp`]): per face, the
     /// stored corner at the origin of their patch; `None` for the exact limit surface.
     authors_origin: Option<Vec<u8>>,
+    /// The f64 hot path, built on first use (`super::fast`); `None` inside if it could not
+    /// be built (the generic path then answers).
+    fast: std::sync::OnceLock<Option<Vec<FastPlan>>>,
     /// Counts of face kinds and valences.
     pub stats: LoopStats,
 }
@@ -322,6 +326,7 @@ impl LoopSurface {
             basis_f64,
             cache: Mutex::new(HashMap::new()),
             authors_origin: None,
+            fast: std::sync::OnceLock::new(),
             stats,
         })
     }
@@ -560,34 +565,66 @@ impl LoopSurface {
         ))
     }
 
-    /// f64 position (the [`crate::surface::TargetSurface`] evaluation). Regular faces take an
-    /// allocation-free path (same arithmetic as [`Self::jet`]).
+    /// f64 position (the [`crate::surface::TargetSurface`] evaluation), through the
+    /// precomputed per-patch data of [`super::fast`] (same arithmetic as [`Self::jet`]).
     pub fn eval_f64(
         &self,
         f: FaceId,
         corners: [VertexId; 3],
         bary: [f64; 3],
     ) -> Result<[f64; 3], LoopError> {
-        if let (Some(Plan::Direct { patch, .. }), Some(stored)) =
-            (self.plans.get(f.idx()), self.corners(f))
+        let sum = bary[0] + bary[1] + bary[2];
+        if let (Some(fast), Some(stored)) =
+            (self.fast.get_or_init(|| self.build_fast()), self.corners(f))
         {
-            let sum = bary[0] + bary[1] + bary[2];
-            if patch.valence == 6 && bary.iter().all(|&x| x >= -1e-12) && (sum - 1.0).abs() <= 1e-9
-            {
-                // Regular faces are gathered with rot = 0: x, y = bary of stored c₁, c₂.
-                let at = |s: VertexId| corners.iter().position(|&c| c == s);
-                if let (Some(i0), Some(i1), Some(i2)) =
-                    (at(stored[0]), at(stored[1]), at(stored[2]))
-                {
-                    if i0 != i1 && i1 != i2 && i0 != i2 {
-                        let net: [[f64; 3]; 12] =
-                            std::array::from_fn(|j| self.pos[patch.net[j] as usize]);
-                        return Ok(regular_point_f64(&self.basis_f64, &net, bary[i1], bary[i2]));
+            if let Some(plan) = fast.get(f.idx()) {
+                if bary.iter().all(|&x| x >= -1e-12) && (sum - 1.0).abs() <= 1e-9 {
+                    let at = |s: VertexId| corners.iter().position(|&c| c == s);
+                    if let (Some(i0), Some(i1), Some(i2)) =
+                        (at(stored[0]), at(stored[1]), at(stored[2]))
+                    {
+                        if i0 != i1 && i1 != i2 && i0 != i2 {
+                            let sb = [bary[i0], bary[i1], bary[i2]];
+                            return Ok(plan.point(
+                                &self.basis_f64,
+                                sb,
+                                self.authors_origin.is_some(),
+                            ));
+                        }
                     }
                 }
             }
         }
         Ok(self.jet::<f64>(f, corners, &bary, false)?.p)
+    }
+
+    /// Every face's nets gathered and projected once, in f64 (in parallel).
+    fn build_fast(&self) -> Option<Vec<FastPlan>> {
+        use rayon::prelude::*;
+        let patch = |p: &Patch| -> Option<FastPatch> {
+            let net: Vec<[f64; 3]> = p.net.iter().map(|&i| self.pos[i as usize]).collect();
+            let es = if p.valence == 6 {
+                None
+            } else {
+                let key = (std::any::TypeId::of::<EigenStructure<f64>>(), p.valence, 53);
+                let any = self.pre.get(&key)?.clone();
+                Some(any.downcast::<EigenStructure<f64>>().ok()?)
+            };
+            FastPatch::new(net, es)
+        };
+        self.plans
+            .par_iter()
+            .map(|plan| match plan {
+                Plan::Direct { rot, patch: p } => Some(FastPlan::Direct {
+                    rot: *rot,
+                    patch: patch(p)?,
+                }),
+                Plan::Split(ps) => {
+                    let v: Vec<FastPatch> = ps.iter().map(&patch).collect::<Option<_>>()?;
+                    Some(FastPlan::Split(Box::new(v.try_into().ok()?)))
+                }
+            })
+            .collect()
     }
 }
 

@@ -1,0 +1,140 @@
+//! The f64 hot path of the Loop S′ (what the fit of Sec. 5.2 calls hundreds of times per
+//! vertex): per patch, the net is gathered and projected onto the eigen-structure once
+//! ([`FastPlan`], built on first use), so a point costs Stam's sub-net and one regular patch —
+//! the same arithmetic as [`super::stam::extraordinary_jet_as`] and
+//! [`super::stam::regular_point_f64`], without the generic scalar's allocations. Checked
+//! against the generic path (`loop_fast_path_equals_the_generic_evaluation` in
+//! `tests/loop_sprime.rs`).
+
+use super::eigen::EigenStructure;
+use super::stam::regular_point_f64;
+use std::sync::Arc;
+
+/// One patch, ready for f64 evaluation.
+#[derive(Debug, Clone)]
+pub(super) enum FastPatch {
+    /// All corners of valence 6: the 12-point net of the box spline.
+    Regular(Box<[[f64; 3]; 12]>),
+    /// First corner of valence N ≠ 6: the net in eigen-coordinates, translated by its limit
+    /// point ℓ (so the entries shrink with λ₁ᵐ, as in the generic path).
+    Extraordinary {
+        es: Arc<EigenStructure<f64>>,
+        cin: Box<[[f64; 3]]>,
+        cout: [[f64; 3]; 5],
+        limit: [f64; 3],
+    },
+}
+
+/// One face: a patch (with the stored corner it starts at) or four sub-patches.
+#[derive(Debug, Clone)]
+pub(super) enum FastPlan {
+    /// One patch; `rot` = which stored corner is its first corner.
+    Direct { rot: u8, patch: FastPatch },
+    /// After one internal Loop step: corner sub-triangles c₀, c₁, c₂, then the middle one.
+    Split(Box<[FastPatch; 4]>),
+}
+
+impl FastPatch {
+    /// The patch's net in eigen-coordinates (extraordinary) or as points (regular).
+    pub(super) fn new(net: Vec<[f64; 3]>, es: Option<Arc<EigenStructure<f64>>>) -> Option<Self> {
+        match es {
+            None => Some(FastPatch::Regular(Box::new(net.try_into().ok()?))),
+            Some(es) => {
+                let (mut cin, mut cout) = es.project(&net);
+                let limit = *cin.first()?;
+                cin[0] = [0.0; 3];
+                for (a, ca) in cout.iter_mut().enumerate() {
+                    for d in 0..3 {
+                        ca[d] = if a < 3 {
+                            ca[d] - limit[d]
+                        } else {
+                            ca[d] + limit[d]
+                        };
+                    }
+                }
+                Some(FastPatch::Extraordinary {
+                    es,
+                    cin: cin.into_boxed_slice(),
+                    cout: cout.try_into().ok()?,
+                    limit,
+                })
+            }
+        }
+    }
+
+    /// The point at patch coordinates (x, y), x, y ≥ 0, x + y ≤ 1.
+    pub(super) fn point(
+        &self,
+        basis: &[[f64; 15]; 12],
+        x: f64,
+        y: f64,
+        authors_jordan: bool,
+    ) -> [f64; 3] {
+        let (es, cin, cout, limit) = match self {
+            FastPatch::Regular(net) => return regular_point_f64(basis, net, x, y),
+            FastPatch::Extraordinary {
+                es,
+                cin,
+                cout,
+                limit,
+            } => (es, cin, cout, limit),
+        };
+        // Stam's tile: level n with x + y ∈ (2^−n, 2^(1−n)], sub-triangle k (as the generic
+        // path, with the same cap 2·53 + 64 beyond which the point is the vertex limit).
+        let t = x + y;
+        if !(t > 0.0) {
+            return *limit;
+        }
+        let mut n: i32 = 1;
+        let mut tt = t;
+        while tt <= 0.5 {
+            tt *= 2.0;
+            n += 1;
+            if n > 170 {
+                return *limit;
+            }
+        }
+        let scale = (2.0f64).powi(n - 1);
+        let (xs, ys) = (x * scale, y * scale);
+        let (k, s) = if xs >= 0.5 {
+            (0, (2.0 * xs - 1.0, 2.0 * ys))
+        } else if ys >= 0.5 {
+            (2, (2.0 * xs, 2.0 * ys - 1.0))
+        } else {
+            (1, (1.0 - 2.0 * xs, 1.0 - 2.0 * ys))
+        };
+        let q = es.sub_net_as(k, (n - 1) as u64, cin, cout, authors_jordan);
+        let p = regular_point_f64(basis, &q, s.0, s.1);
+        [p[0] + limit[0], p[1] + limit[1], p[2] + limit[2]]
+    }
+}
+
+impl FastPlan {
+    /// The point at barycentric coordinates `sb` w.r.t. the stored corners.
+    pub(super) fn point(
+        &self,
+        basis: &[[f64; 15]; 12],
+        sb: [f64; 3],
+        authors_jordan: bool,
+    ) -> [f64; 3] {
+        match self {
+            FastPlan::Direct { rot, patch } => {
+                let r = *rot as usize;
+                patch.point(basis, sb[(r + 1) % 3], sb[(r + 2) % 3], authors_jordan)
+            }
+            FastPlan::Split(ps) => {
+                // The sub-triangle and its barycentric coordinates, as in `LoopSurface::jet`.
+                let (j, b) = if sb[0] >= 0.5 {
+                    (0, [2.0 * sb[1], 2.0 * sb[2]])
+                } else if sb[1] >= 0.5 {
+                    (1, [2.0 * sb[2], 2.0 * sb[0]])
+                } else if sb[2] >= 0.5 {
+                    (2, [2.0 * sb[0], 2.0 * sb[1]])
+                } else {
+                    (3, [1.0 - 2.0 * sb[0], 1.0 - 2.0 * sb[1]])
+                };
+                ps[j].point(basis, b[0], b[1], authors_jordan)
+            }
+        }
+    }
+}
