@@ -19,10 +19,76 @@ pub(super) enum FastPatch {
     /// point ℓ (so the entries shrink with λ₁ᵐ, as in the generic path).
     Extraordinary {
         es: Arc<EigenStructure<f64>>,
+        table: Arc<SubNetTable>,
         cin: Box<[[f64; 3]]>,
         cout: [[f64; 3]; 5],
         limit: [f64; 3],
     },
+}
+
+/// Levels below which Stam's sub-net B_k Aᵐ is tabulated (a point reaches level m within
+/// 2^−m of the extraordinary vertex; deeper points use the formula directly).
+const TABULATED_LEVELS: usize = 40;
+
+/// B_k Aᵐ in eigen-coordinates as 12 × K matrices for m < [`TABULATED_LEVELS`] and the three
+/// sub-triangles k, one table per valence (and per authors' model): the sub-net is linear in
+/// the eigen-coordinates, so each column is [`EigenStructure::sub_net_as`] of a unit vector.
+#[derive(Debug)]
+pub(super) struct SubNetTable {
+    k: usize,
+    entries: Vec<f64>,
+}
+
+impl SubNetTable {
+    pub(super) fn new(es: &EigenStructure<f64>, authors_jordan: bool) -> SubNetTable {
+        let n_in = es.n + 1;
+        let k = n_in + 5;
+        let mut entries = vec![0.0; TABULATED_LEVELS * 3 * 12 * k];
+        let zero = vec![[0.0; 3]; n_in];
+        let zero_out = [[0.0; 3]; 5];
+        for m in 0..TABULATED_LEVELS {
+            for sub in 0..3 {
+                for col in 0..k {
+                    let (mut cin, mut cout) = (zero.clone(), zero_out);
+                    if col < n_in {
+                        cin[col][0] = 1.0;
+                    } else {
+                        cout[col - n_in][0] = 1.0;
+                    }
+                    let q = es.sub_net_as(sub, m as u64, &cin, &cout, authors_jordan);
+                    for (row, qr) in q.iter().enumerate() {
+                        entries[((m * 3 + sub) * 12 + row) * k + col] = qr[0];
+                    }
+                }
+            }
+        }
+        SubNetTable { k, entries }
+    }
+
+    /// B_k Aᵐ applied to the eigen-coordinates (cin, cout), if m is tabulated.
+    fn apply(
+        &self,
+        sub: usize,
+        m: usize,
+        cin: &[[f64; 3]],
+        cout: &[[f64; 3]; 5],
+    ) -> Option<[[f64; 3]; 12]> {
+        if m >= TABULATED_LEVELS || cin.len() + 5 != self.k {
+            return None;
+        }
+        let base = (m * 3 + sub) * 12 * self.k;
+        let rows = self.entries.get(base..base + 12 * self.k)?;
+        let mut q = [[0.0; 3]; 12];
+        for (row, qr) in q.iter_mut().enumerate() {
+            let w = &rows[row * self.k..(row + 1) * self.k];
+            for (c, p) in w.iter().zip(cin.iter().chain(cout.iter())) {
+                qr[0] += c * p[0];
+                qr[1] += c * p[1];
+                qr[2] += c * p[2];
+            }
+        }
+        Some(q)
+    }
 }
 
 /// One face: a patch (with the stored corner it starts at) or four sub-patches.
@@ -36,10 +102,13 @@ pub(super) enum FastPlan {
 
 impl FastPatch {
     /// The patch's net in eigen-coordinates (extraordinary) or as points (regular).
-    pub(super) fn new(net: Vec<[f64; 3]>, es: Option<Arc<EigenStructure<f64>>>) -> Option<Self> {
+    pub(super) fn new(
+        net: Vec<[f64; 3]>,
+        es: Option<(Arc<EigenStructure<f64>>, Arc<SubNetTable>)>,
+    ) -> Option<Self> {
         match es {
             None => Some(FastPatch::Regular(Box::new(net.try_into().ok()?))),
-            Some(es) => {
+            Some((es, table)) => {
                 let (mut cin, mut cout) = es.project(&net);
                 let limit = *cin.first()?;
                 cin[0] = [0.0; 3];
@@ -54,6 +123,7 @@ impl FastPatch {
                 }
                 Some(FastPatch::Extraordinary {
                     es,
+                    table,
                     cin: cin.into_boxed_slice(),
                     cout: cout.try_into().ok()?,
                     limit,
@@ -70,14 +140,15 @@ impl FastPatch {
         y: f64,
         authors_jordan: bool,
     ) -> [f64; 3] {
-        let (es, cin, cout, limit) = match self {
+        let (es, table, cin, cout, limit) = match self {
             FastPatch::Regular(net) => return regular_point_f64(basis, net, x, y),
             FastPatch::Extraordinary {
                 es,
+                table,
                 cin,
                 cout,
                 limit,
-            } => (es, cin, cout, limit),
+            } => (es, table, cin, cout, limit),
         };
         // Stam's tile: level n with x + y ∈ (2^−n, 2^(1−n)], sub-triangle k (as the generic
         // path, with the same cap 2·53 + 64 beyond which the point is the vertex limit).
@@ -103,7 +174,10 @@ impl FastPatch {
         } else {
             (1, (1.0 - 2.0 * xs, 1.0 - 2.0 * ys))
         };
-        let q = es.sub_net_as(k, (n - 1) as u64, cin, cout, authors_jordan);
+        let q = match table.apply(k, (n - 1) as usize, cin, cout) {
+            Some(q) => q,
+            None => es.sub_net_as(k, (n - 1) as u64, cin, cout, authors_jordan),
+        };
         let p = regular_point_f64(basis, &q, s.0, s.1);
         [p[0] + limit[0], p[1] + limit[1], p[2] + limit[2]]
     }

@@ -11,7 +11,7 @@
 //!   coordinates (2λ − 1, 2μ, 2ν) etc.; S′ stays one function of K's parameters.
 
 use super::eigen::EigenStructure;
-use super::fast::{FastPatch, FastPlan};
+use super::fast::{FastPatch, FastPlan, SubNetTable};
 use super::rules::vertex_weights;
 use super::stam::{basis_in, extraordinary_jet_as, regular_jet, PatchJet};
 use super::topology::{gather_net, ring, BaseTopology, MissingTriangle, SubPoint, SubTopology};
@@ -601,14 +601,25 @@ impl LoopSurface {
     /// Every face's nets gathered and projected once, in f64 (in parallel).
     fn build_fast(&self) -> Option<Vec<FastPlan>> {
         use rayon::prelude::*;
+        let authors = self.authors_origin.is_some();
+        let mut tables = HashMap::new();
+        for &n in self.stats.valences.keys() {
+            let key = (std::any::TypeId::of::<EigenStructure<f64>>(), n, 53);
+            let es = self
+                .pre
+                .get(&key)?
+                .clone()
+                .downcast::<EigenStructure<f64>>()
+                .ok()?;
+            let table = Arc::new(SubNetTable::new(&es, authors));
+            tables.insert(n, (es, table));
+        }
         let patch = |p: &Patch| -> Option<FastPatch> {
             let net: Vec<[f64; 3]> = p.net.iter().map(|&i| self.pos[i as usize]).collect();
             let es = if p.valence == 6 {
                 None
             } else {
-                let key = (std::any::TypeId::of::<EigenStructure<f64>>(), p.valence, 53);
-                let any = self.pre.get(&key)?.clone();
-                Some(any.downcast::<EigenStructure<f64>>().ok()?)
+                Some(tables.get(&p.valence)?.clone())
             };
             FastPatch::new(net, es)
         };
