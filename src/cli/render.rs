@@ -140,7 +140,7 @@ fn scenes(
     let frame = mesh_scene(&k).bbox();
     let pn = PnTriangles::new(&k);
     let pps = || {
-        Pps::build(
+        Pps::try_build(
             &k,
             &pn,
             PpsOptions {
@@ -148,6 +148,7 @@ fn scenes(
                 ..PpsOptions::default()
             },
         )
+        .map_err(|e| RenderError::Mesh(e.to_string()))
     };
     notes.push(format!(
         "{}: {} vertices, {} faces; level {level}; S′ = PN triangles; profile {}",
@@ -164,14 +165,14 @@ fn scenes(
             },
             Panel {
                 caption: "PPS from PN triangles".into(),
-                scene: pps_scene(&pps(), level, curvature)?,
+                scene: pps_scene(&pps()?, level, curvature)?,
             },
         ]
     } else {
         let (caption, scene) = match a.what.as_str() {
             "mesh" => ("K", mesh_scene(&k)),
             "sprime" => ("S'", sprime_scene(&k, &pn, level)),
-            "pps" => ("PPS", pps_scene(&pps(), level, curvature)?),
+            "pps" => ("PPS", pps_scene(&pps()?, level, curvature)?),
             other => {
                 return Err(RenderError::Mesh(format!(
                     "unknown --what {other:?} (mesh | sprime | pps)"

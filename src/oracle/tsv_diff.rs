@@ -383,23 +383,24 @@ pub fn diff_tsv_files(
     let k = crate::mesh::validate::validate(&raw)
         .surface
         .ok_or_else(|| TsvDiffError::NotSurface(mesh.display().to_string()))?;
-    let text = std::fs::read_to_string(table).map_err(|e| TsvDiffError::Table {
+    let text = super::read_text_table(table).map_err(|e| TsvDiffError::Table {
         path: table.display().to_string(),
-        error: e.to_string(),
+        error: e,
     })?;
     let rows = parse_tsv(&text, k.num_faces()).map_err(|e| TsvDiffError::Table {
         path: table.display().to_string(),
         error: e.to_string(),
     })?;
     let pn = PnTriangles::for_profile(&k, profile);
-    let pps = Pps::build(
+    let pps = Pps::try_build(
         &k,
         &pn,
         PpsOptions {
             profile,
             ..PpsOptions::default()
         },
-    );
+    )
+    .map_err(|e| TsvDiffError::Mesh(e.to_string()))?;
     Ok(diff_rows(
         &k, &raw.faces, &pps, &pn, &rows, tolerance, worst,
     ))

@@ -40,14 +40,18 @@ fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, Exi
         eprintln!("error: S′ = {}: {e}", kind.name());
         ExitCode::from(1)
     })?;
-    Ok(Pps::build(
+    Pps::try_build(
         k,
         target.as_target(),
         PpsOptions {
             profile,
             ..PpsOptions::default()
         },
-    ))
+    )
+    .map_err(|e| {
+        eprintln!("error: {e}");
+        ExitCode::from(2)
+    })
 }
 
 /// `ppm sample FILE --level N -o OUT`: sample M by midpoint subdivision through eval (Sec. 6.2)
