@@ -716,3 +716,99 @@ fn x_adv_03_coordinates_near_f64_range_r_scale_range() {
     assert_eq!(out.status.code(), Some(2));
     assert!(!out_file.exists(), "NaN output written");
 }
+
+/// `ppm check` was quadratic in vertex degree (degree 10,000: 21 s; the star's boxes all
+/// overlap at the vertex, so every pair of the star was decided exactly): the stars of
+/// high-degree vertices are now searched by corner directions (a few candidates per triangle)
+/// and their corners are cut from the general search's boxes. On the n-gon bipyramid the pairs
+/// decided exactly drop below F²/16 (before: more than F²/4); a fan folded over itself is still
+/// caught. (Not linear yet: the two fans' boxes still overlap along the ring.)
+#[test]
+fn x_adv_09_check_quadratic_in_degree_r_star_search() {
+    use pseudomanifold::report::Verdict;
+    let tested = |raw: &pseudomanifold::mesh::RawMesh| {
+        let v = validate(raw);
+        let c = v
+            .report
+            .checks
+            .iter()
+            .find(|c| c.id == "D3.1.3(ii)(triangles)")
+            .expect("intersection check")
+            .clone();
+        let n: u64 = c
+            .note
+            .split("candidate pairs: ")
+            .nth(1)
+            .and_then(|t| t.split_whitespace().next())
+            .and_then(|t| t.parse().ok())
+            .unwrap_or_else(|| panic!("no count in {:?}", c.note));
+        (c, n)
+    };
+    for n in [200u32, 2000] {
+        let raw = bipyramid(n);
+        let (c, pairs) = tested(&raw);
+        assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
+        let f = raw.faces.len() as u64;
+        assert!(
+            pairs < f * f / 16,
+            "degree {n}: {pairs} pairs decided for {} faces",
+            raw.faces.len()
+        );
+    }
+    // Fold the fans: ring vertex 5 moved between 7 and 8.
+    let mut raw = bipyramid(200);
+    let a = 2.0 * std::f64::consts::PI * 7.5 / 200.0;
+    raw.positions[2 + 5] = [a.cos(), a.sin(), 0.0];
+    let (c, _) = tested(&raw);
+    assert_eq!(c.verdict, Verdict::Fails, "folded fan not caught");
+    assert!(!c.witnesses.is_empty());
+}
+
+/// `ppm gluing` files within every documented entry limit took 16–60+ s (one domain, 256
+/// pieces, 255-digit rationals): the digits now count in a bound on the exact work
+/// (`MAX_EXACT_WORK`), checked while reading, before any decision.
+#[test]
+fn x_adv_10_gluing_limits_bound_time_r_gluing_work() {
+    use pseudomanifold::gluing::file::read_gluing_file;
+    let file = |pieces: u64, digits: usize, name: &str| {
+        let big = |seed: u64| -> String {
+            let mut s = String::new();
+            let mut x = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            while s.len() < digits {
+                x = x
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                s.push(char::from(b'1' + ((x >> 33) % 9) as u8));
+            }
+            s
+        };
+        let mut t = format!("[[domain]]\nid = 1\ninterval = [\"0\", \"{pieces}\"]\n");
+        for k in 0..pieces {
+            let q = big(k);
+            t.push_str(&format!(
+                "[[glue]]\ni = 1\nj = 1\nomega_ij = [\"{k}\", \"{}\"]\na = \"{q}1/{q}3\"\nb = \"1/{}\"\n",
+                k + 1,
+                big(k + 1000)
+            ));
+        }
+        let p = tmp(name);
+        std::fs::write(&p, t).expect("write");
+        p
+    };
+    let heavy = file(32, 250, "x_adv_10_heavy.toml");
+    match read_gluing_file(&heavy) {
+        Err(e) => assert!(e.to_string().contains("exact work"), "{e}"),
+        Ok(_) => panic!("32 pieces of 250-digit rationals accepted"),
+    }
+    let light = file(16, 20, "x_adv_10_light.toml");
+    assert!(read_gluing_file(&light).is_ok());
+    let examples = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/gluing");
+    for e in std::fs::read_dir(examples).expect("examples") {
+        let p = e.expect("entry").path();
+        if p.extension().is_some_and(|x| x == "toml") {
+            read_gluing_file(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+        }
+    }
+}
