@@ -755,6 +755,15 @@ fn x_adv_09_check_quadratic_in_degree_r_star_search() {
             raw.faces.len()
         );
     }
+    // A separate triangle piercing the upper fan next to its apex (no trimming there).
+    let mut raw = bipyramid(200);
+    let base = raw.positions.len() as u32;
+    raw.positions
+        .extend([[0.05, -0.05, 0.9], [0.05, 0.05, 0.9], [-0.1, 0.0, 1.1]]);
+    raw.faces.push([base, base + 1, base + 2]);
+    let raw = pseudomanifold::mesh::RawMesh::from_arrays(raw.positions, raw.faces);
+    let (c, _) = tested(&raw);
+    assert_eq!(c.verdict, Verdict::Fails, "piercing triangle not caught");
     // Fold the fans: ring vertex 5 moved between 7 and 8.
     let mut raw = bipyramid(200);
     let a = 2.0 * std::f64::consts::PI * 7.5 / 200.0;
@@ -811,4 +820,23 @@ fn x_adv_10_gluing_limits_bound_time_r_gluing_work() {
             read_gluing_file(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
         }
     }
+}
+
+/// Measured (C″) "held, examined 0" on two disjoint tetrahedra 1e−12 apart whose sampled
+/// surfaces self-intersect: the search now examines every chart's samples and reports the
+/// close non-adjacent pairs (a warning: the paper makes no claim), never "holds" on nothing.
+#[test]
+fn x_adv_07_measured_c2_examines_samples() {
+    use pseudomanifold::mesh::generate::tetrahedron;
+    use pseudomanifold::report::Verdict;
+    let t = tetrahedron();
+    let mut pos = t.positions.clone();
+    pos.extend(t.positions.iter().map(|p| [2.0 + 1e-12 - p[0], p[1], p[2]]));
+    let mut faces = t.faces.clone();
+    faces.extend(t.faces.iter().map(|f| [f[0] + 4, f[2] + 4, f[1] + 4]));
+    let k = surface(&pseudomanifold::mesh::RawMesh::from_arrays(pos, faces));
+    let r = run_surface_checks(&k, &SurfaceCheckOptions::default());
+    let c = r.iter().find(|c| c.id == "C3.5.1-C''").expect("C''");
+    assert!(c.examined > 0, "{c:?}");
+    assert!(c.offenders > 0 && c.verdict == Verdict::Warning, "{c:?}");
 }
