@@ -200,6 +200,9 @@ pub(super) fn star_pairs(raw: &RawMesh, v: u32, star: &[u32]) -> (Vec<(u32, u32)
                 if k1 == k2 {
                     continue;
                 }
+                if separated(pos, t1, t2) {
+                    continue;
+                }
                 tested += 1;
                 if triangles_meet_improperly(pos, t1, t2) {
                     hits.push((fb.face, o.face));
@@ -210,4 +213,46 @@ pub(super) fn star_pairs(raw: &RawMesh, v: u32, star: &[u32]) -> (Vec<(u32, u32)
         .collect();
     let tested = found.iter().map(|x| x.1).sum();
     (found.into_iter().flat_map(|x| x.0).collect(), tested)
+}
+
+/// Whether every vertex of `t2` lies strictly on one side of the plane of `t1` (or vice versa),
+/// decided in f64 with a certified error bound: the sign of n·(q − a) is trusted only beyond
+/// 32ε·|b − a|·|c − a|·|q − a|, above the rounding of the two differences, the cross product and
+/// the dot product. Strictly separated triangles do not meet, so the exact predicates are
+/// skipped for them; anything undecided goes to the exact test.
+pub(super) fn separated(pos: &[[f64; 3]], t1: [u32; 3], t2: [u32; 3]) -> bool {
+    side_of_plane(pos, t1, t2) || side_of_plane(pos, t2, t1)
+}
+
+fn side_of_plane(pos: &[[f64; 3]], t: [u32; 3], o: [u32; 3]) -> bool {
+    let p = |i: u32| pos[i as usize];
+    let sub = |x: [f64; 3], y: [f64; 3]| [x[0] - y[0], x[1] - y[1], x[2] - y[2]];
+    let norm = |x: [f64; 3]| (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
+    let a = p(t[0]);
+    let e1 = sub(p(t[1]), a);
+    let e2 = sub(p(t[2]), a);
+    let n = [
+        e1[1] * e2[2] - e1[2] * e2[1],
+        e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0],
+    ];
+    let scale = 32.0 * f64::EPSILON * norm(e1) * norm(e2);
+    let mut sign = 0i8;
+    for &q in &o {
+        let d = sub(p(q), a);
+        let s = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
+        let err = scale * norm(d);
+        let here = if s > err {
+            1
+        } else if s < -err {
+            -1
+        } else {
+            return false;
+        };
+        if !(s.is_finite() && err.is_finite()) || (sign != 0 && here != sign) {
+            return false;
+        }
+        sign = here;
+    }
+    true
 }
