@@ -146,6 +146,64 @@ pub(super) fn trimmed_box(raw: &RawMesh, t: [u32; 3], fans: &Fans) -> AABB<[f64;
     bbox(&pts, 16.0 * f64::EPSILON * scale)
 }
 
+/// Boxes covering the part of triangle `t` that the general search needs (outside the balls
+/// B(v, r_v) of its high-degree corners). A triangle with one high-degree corner v is cut into
+/// slices between lines parallel to its far edge, halving toward that edge until a slice is
+/// about as long as the edge: a fan's long, thin triangles then have small boxes where they meet
+/// their neighbours, instead of boxes that overlap a large part of the fan. Others: one box.
+pub(super) fn search_boxes(raw: &RawMesh, t: [u32; 3], fans: &Fans) -> Vec<AABB<[f64; 3]>> {
+    let highs: Vec<usize> = (0..3).filter(|&k| fans.is_high(t[k])).collect();
+    let [k] = highs.as_slice() else {
+        return vec![trimmed_box(raw, t, fans)];
+    };
+    let cut = fans.cut[t[*k] as usize];
+    if cut <= 0.0 {
+        return vec![trimmed_box(raw, t, fans)];
+    }
+    let p = |i: u32| raw.positions[i as usize];
+    let (v, a, b) = (p(t[*k]), p(t[(k + 1) % 3]), p(t[(k + 2) % 3]));
+    let dist = |x: [f64; 3], y: [f64; 3]| {
+        ((x[0] - y[0]).powi(2) + (x[1] - y[1]).powi(2) + (x[2] - y[2]).powi(2)).sqrt()
+    };
+    let (la, lb, w) = (dist(a, v), dist(b, v), dist(a, b));
+    let scale = [v, a, b]
+        .iter()
+        .flat_map(|q| q.iter())
+        .fold(0.0f64, |m, c| m.max(c.abs()));
+    let pad = 16.0 * f64::EPSILON * scale;
+    // The corner {t < t0} lies inside the cut corner triangle, so the slices from t0 cover
+    // everything the trimmed box covers.
+    let mut lo = (cut / la).min(cut / lb).min(0.5);
+    if !(lo.is_finite() && lo >= 0.0) {
+        return vec![trimmed_box(raw, t, fans)];
+    }
+    let at = |s: f64, q: [f64; 3]| -> [f64; 3] {
+        if s >= 1.0 {
+            q
+        } else {
+            [
+                v[0] + s * (q[0] - v[0]),
+                v[1] + s * (q[1] - v[1]),
+                v[2] + s * (q[2] - v[2]),
+            ]
+        }
+    };
+    let long = la.max(lb);
+    let mut out = Vec::new();
+    for _ in 0..64 {
+        let mut hi = 1.0 - (1.0 - lo) / 2.0;
+        if (1.0 - lo) * long <= 2.0 * w || out.len() == 63 {
+            hi = 1.0;
+        }
+        out.push(bbox(&[at(lo, a), at(lo, b), at(hi, a), at(hi, b)], pad));
+        if hi >= 1.0 {
+            break;
+        }
+        lo = hi;
+    }
+    out
+}
+
 /// Pairs of triangles of the star of v that meet improperly, and the number of candidate pairs
 /// decided exactly. Candidates: corners at v whose direction arcs have overlapping
 /// (conservative, padded) boxes.

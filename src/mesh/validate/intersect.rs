@@ -3,14 +3,14 @@
 //! shared vertex or edge (or not at all). Decided exactly (see [`super::predicates`]), with an
 //! R*-tree over the triangles' bounding boxes so only nearby pairs are tested.
 
-use super::fans::{face_box, fans, separated, star_pairs, trimmed_box, FaceBox, HIGH_DEGREE};
+use super::fans::{face_box, fans, search_boxes, separated, star_pairs, FaceBox, HIGH_DEGREE};
 use super::predicates::{
     in_cone_at, nondegenerate_projection, orient3, segment_meets_triangle, P3,
 };
 use crate::mesh::RawMesh;
 use crate::report::{CheckResult, Witness};
 use rayon::prelude::*;
-use rstar::RTree;
+use rstar::{Envelope, RTree, AABB};
 use serde_json::json;
 use std::cmp::Ordering;
 
@@ -157,13 +157,47 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
     hits.sort_unstable();
     hits.dedup();
     hits.truncate(MAX_COUNTED_INTERSECTIONS);
-    let boxes: Vec<FaceBox> = eligible_faces()
-        .map(|(face, t)| FaceBox {
-            face,
-            env: trimmed_box(raw, t, &fans),
-        })
+    // The general search: triangles with no high-degree corner in one tree; the triangles of
+    // each star in a tree of their own, found through an index of the stars' boxes, so that a
+    // star's own pairs (decided above) are never enumerated.
+    let faces: Vec<(u32, [u32; 3], Vec<AABB<[f64; 3]>>)> = eligible_faces()
+        .map(|(face, t)| (face, t, search_boxes(raw, t, &fans)))
         .collect();
-    let tree = RTree::bulk_load(boxes.clone());
+    let mut plain = Vec::new();
+    let mut per_star: std::collections::BTreeMap<u32, Vec<FaceBox>> = Default::default();
+    for (face, t, bs) in &faces {
+        let highs: Vec<u32> = t.iter().copied().filter(|&x| fans.is_high(x)).collect();
+        for env in bs {
+            let fb = FaceBox {
+                face: *face,
+                env: *env,
+            };
+            if highs.is_empty() {
+                plain.push(fb);
+            } else {
+                for &v in &highs {
+                    per_star.entry(v).or_default().push(fb.clone());
+                }
+            }
+        }
+    }
+    let plain_tree = RTree::bulk_load(plain);
+    let star_index = RTree::bulk_load(
+        per_star
+            .iter()
+            .filter_map(|(&v, bs)| {
+                let mut env = bs.first()?.env;
+                for b in bs {
+                    env.merge(&b.env);
+                }
+                Some(FaceBox { face: v, env })
+            })
+            .collect(),
+    );
+    let star_trees: std::collections::BTreeMap<u32, RTree<FaceBox>> = per_star
+        .into_iter()
+        .map(|(v, bs)| (v, RTree::bulk_load(bs)))
+        .collect();
     let shares_high =
         |t1: [u32; 3], t2: [u32; 3]| t1.iter().any(|&x| fans.is_high(x) && t2.contains(&x));
     // Faces in index order, a chunk at a time (parallel inside a chunk), so that the search can
@@ -173,20 +207,42 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
     let counter = std::sync::atomic::AtomicU64::new(0);
     let counted = &counter;
     let star_capped = hits.len() >= MAX_COUNTED_INTERSECTIONS;
-    for chunk in boxes.chunks(INTERSECTION_CHUNK) {
+    for chunk in faces.chunks(INTERSECTION_CHUNK) {
         if star_capped {
             break;
         }
         let mut found: Vec<(u32, u32)> = chunk
             .par_iter()
-            .flat_map_iter(|fb| {
-                let t1 = raw.faces[fb.face as usize];
+            .flat_map_iter(|(f1, t1, bs)| {
+                let (f1, t1) = (*f1, *t1);
                 let mut k1 = t1;
                 k1.sort_unstable();
-                tree.locate_in_envelope_intersecting(&fb.env)
-                    .filter(move |o| o.face > fb.face)
-                    .filter_map(move |o| {
-                        let t2 = raw.faces[o.face as usize];
+                let mut cand: Vec<u32> = Vec::new();
+                for env in bs {
+                    cand.extend(
+                        plain_tree
+                            .locate_in_envelope_intersecting(env)
+                            .map(|o| o.face)
+                            .filter(|&g| g > f1),
+                    );
+                    for s in star_index.locate_in_envelope_intersecting(env) {
+                        if t1.contains(&s.face) {
+                            continue;
+                        }
+                        if let Some(tr) = star_trees.get(&s.face) {
+                            cand.extend(
+                                tr.locate_in_envelope_intersecting(env)
+                                    .map(|o| o.face)
+                                    .filter(|&g| g > f1),
+                            );
+                        }
+                    }
+                }
+                cand.sort_unstable();
+                cand.dedup();
+                cand.into_iter()
+                    .filter_map(move |f2| {
+                        let t2 = raw.faces[f2 as usize];
                         let mut k2 = t2;
                         k2.sort_unstable();
                         if k1 == k2 || shares_high(t1, t2) || separated(pos, t1, t2) {
@@ -194,7 +250,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
                         }
                         counted.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                         if triangles_meet_improperly(pos, t1, t2) {
-                            Some((fb.face, o.face))
+                            Some((f1, f2))
                         } else {
                             None
                         }
@@ -205,7 +261,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
         found.sort_unstable();
         hits.append(&mut found);
         if hits.len() >= MAX_COUNTED_INTERSECTIONS {
-            stopped_at = chunk.last().map(|fb| fb.face);
+            stopped_at = chunk.last().map(|x| x.0);
             break;
         }
     }
