@@ -117,6 +117,9 @@ pub const MAX_COUNTED_INTERSECTIONS: usize = 1000;
 /// Faces whose candidate pairs are tested together before the cap is looked at.
 const INTERSECTION_CHUNK: usize = 16;
 
+/// A face of the general search: its index, corners and search boxes.
+type SearchFace = (u32, [u32; 3], Vec<AABB<[f64; 3]>>);
+
 /// Def. 3.1.3(ii) for triangles: every pair of triangles meets only in a common face.
 /// `eligible[f]` marks the faces that are well-formed, finite and non-degenerate (the others
 /// are reported by their own checks; exact predicates on a degenerate triangle answer a
@@ -160,7 +163,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
     // The general search: triangles with no high-degree corner in one tree; the triangles of
     // each star in a tree of their own, found through an index of the stars' boxes, so that a
     // star's own pairs (decided above) are never enumerated.
-    let faces: Vec<(u32, [u32; 3], Vec<AABB<[f64; 3]>>)> = eligible_faces()
+    let faces: Vec<SearchFace> = eligible_faces()
         .map(|(face, t)| (face, t, search_boxes(raw, t, &fans)))
         .collect();
     let mut plain = Vec::new();
