@@ -60,6 +60,11 @@ printf '%s\n' '{"op":"psi","v":0,"p":[3.0,0.1]}' '{"op":"psi_control","v":1}' > 
 printf '%s\n' '{"op":"eval","face":1,"bary":[0.5,0.5,0]}' '{"op":"theta_derivatives","v":0,"p":[2.4997998108697437e-17,-0.408248290463863],"order":3}' > "$o/adv_edge_midpoint"
 printf '%s\n' '{"op":"set_precision","bits":1024}' '{"op":"member","u":0,"w":1,"p":[0.3,0.1],"test":"literal"}' '{"op":"set_precision","bits":4096}' '{"op":"phi","u":0,"w":1,"p":[0.3,0.1]}' > "$o/adv_precision_1024"
 printf '%s\n' '{"op":"eval","face":1,"bary":[-0.5,1.5,0]}' '{"op":"eval","face":1,"bary":[1e308,1e308,-1e308]}' > "$o/adv_bad_barycentric"
+# f64 overflow where MPFR is finite (reply shape), a failed load then a query, a non-UTF-8 line.
+printf '%s\n' '{"op":"g","v":0,"p":[1e300,1e300]}' '{"op":"load","path":"/nonexistent.off"}' '{"op":"degree","v":0}' > "$o/adv_reply_shape"
+printf '{"op":"h","p":[0.3,0.1]}\n\377\376\n{"op":"degree","v":0}\n' > "$o/adv_non_utf8"
+# A gluing piece whose midpoint is the fixed point of a wrong φ_ii (witness must differ).
+printf '%s\n' 'name = "fixed point at the midpoint"' '[[domain]]' 'id = 1' 'interval = ["1", "2"]' '[[glue]]' 'i = 1' 'j = 1' 'omega_ij = ["1", "2"]' 'a = "2"' 'b = "-3/2"' > "$c/gluing_file/adv_fixed_point.toml"
 # Gluing files: the bundled examples.
 for f in "$root"/examples/gluing/*.toml; do [ -f "$f" ] && cp "$f" "$c/gluing_file/"; done
 # Structured targets start from a few random byte strings (libFuzzer grows them).

@@ -263,13 +263,17 @@ fn diff_surface_unknown_order_is_matched_by_nearest_neighbour() {
     assert!(f(&r["reverse"], "max") < 1e-13);
     // A coarser sampling against a finer level: counts differ, nearest matching is used and
     // said; level-1 points are level-2 points, so the forward deviations are at rounding level
-    // while the reverse distances show the missing points.
+    // while the reverse distances show the missing points, which fail the verdict (SPEC
+    // R-diff-two-sided) and the level mismatch is named.
     let coarse = sample_surface(&pps(&load(&mesh)), 1, false).expect("sample");
     let out = tmp("coarse.off");
     write_off(&out, &coarse);
     let (o, r) = diff(&mesh, &out, &["--level", "2"]);
     let text = String::from_utf8_lossy(&o.stdout);
-    assert_eq!(o.status.code(), Some(0), "{text}");
+    assert_eq!(o.status.code(), Some(1), "{text}");
+    assert!(f(&r["stats"], "max") < 1e-13);
+    assert_eq!(r["count_matches_level"], 1);
+    assert!(r["reference_missing"].as_u64().unwrap_or(0) > 0);
     assert_eq!(r["matching"], "nearest");
     assert!(r["matching_note"]
         .as_str()
@@ -290,7 +294,8 @@ fn diff_surface_unknown_order_is_matched_by_nearest_neighbour() {
         text.contains("matched each vertex to the NEAREST reference point"),
         "{text}"
     );
-    assert!(text.contains("verdict: within tolerance"), "{text}");
+    assert!(text.contains("verdict: OUTSIDE tolerance"), "{text}");
+    assert!(text.contains("level mismatch"), "{text}");
 }
 
 #[test]

@@ -33,14 +33,14 @@ pub struct Ch4Args {
     #[arg(long, default_value = "astro")]
     pub mp_backend: String,
     /// Check at most this many distinct configurations of each kind (seeded subset).
-    #[arg(long)]
+    #[arg(long, requires = "spec")]
     pub max_configs: Option<usize>,
     /// Certificate file of `ppm certify`: each Chapter 4 property is marked certified when
     /// the certificate covers every configuration of the mesh (missing ones are listed).
-    #[arg(long)]
+    #[arg(long, requires = "spec")]
     pub certificates: Option<std::path::PathBuf>,
     /// Run only the Chapter 3.4–4 checks (skip building the surface of Chapter 5).
-    #[arg(long)]
+    #[arg(long, requires = "spec")]
     pub no_surface: bool,
     /// S′ of Chapter 5 (Sec. 6.2): pn | loop (loop also runs the Loop S′ checks).
     #[arg(long, default_value = "pn")]
@@ -68,9 +68,12 @@ impl Ch4Args {
         if crate::surface::SurfaceKind::parse(&self.surface).is_none() {
             return Err(format!("--surface {}: expected pn or loop", self.surface));
         }
+        if self.samples == 0 {
+            return Err("--samples 0: every sampled check would examine nothing; give at least 1 (checks with too few samples to decide report \"skipped\", not a failure)".into());
+        }
         Ok(Ch4Options {
             seed: self.seed,
-            samples: self.samples.max(1),
+            samples: self.samples,
             precision,
             mp_backend: crate::construction::MpBackend::parse(&self.mp_backend)?,
             max_edge_configs: self.max_configs,
@@ -176,7 +179,7 @@ pub fn run(
         && extra.iter().all(|c| !c.failed())
         && ch4
             .as_ref()
-            .is_none_or(|r| r.unexpected_failures.is_empty());
+            .is_none_or(|r| r.unexpected_failures.is_empty() && r.inconclusive.is_none());
     let secs = t0.elapsed().as_secs_f64();
     if json {
         let out = CheckOutput {

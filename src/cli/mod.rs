@@ -89,22 +89,25 @@ enum Command {
         /// Subdivision level of the sampled surface (default: inferred from its vertex count).
         #[arg(long)]
         level: Option<u32>,
-        /// order (vertex i ↔ reference vertex i, when the counts agree) | nearest (R*-tree).
-        #[arg(long = "match", default_value = "order")]
-        matching: String,
+        /// order (vertex i ↔ reference vertex i, when the counts agree) | nearest (R*-tree);
+        /// default order.
+        #[arg(long = "match")]
+        matching: Option<String>,
         /// Chapter 5 profile of the reference surface: paper | authors-code.
         #[arg(long, default_value = "paper")]
         profile: String,
-        /// S′ of the reference surface (Sec. 6.2): pn | loop (`--surface` names the file).
-        #[arg(long, default_value = "pn")]
-        sprime: String,
+        /// S′ of the reference surface (Sec. 6.2): pn | loop (`--surface` names the file);
+        /// default pn. Not for a TSV table (its S′ is the profile's PN triangles).
+        #[arg(long)]
+        sprime: Option<String>,
         /// Largest accepted deviation (table default 1e-12; surface default: twice the
         /// printed f64 bound).
         #[arg(long)]
         tolerance: Option<f64>,
-        /// MPFR precision of the reference / spot checks.
-        #[arg(long, default_value_t = 256)]
-        bits: u32,
+        /// MPFR precision of the reference / spot checks (2..=65536, default 256). Not for a
+        /// TSV table (compared in f64).
+        #[arg(long, value_parser = clap::value_parser!(u32).range(2..=65536))]
+        bits: Option<u32>,
         /// How many of the worst items to list.
         #[arg(long, default_value_t = 10)]
         worst: usize,
@@ -245,37 +248,51 @@ pub fn main() -> ExitCode {
             worst,
             json,
         } => match (table, surface) {
+            // Options of the other mode are refused, not ignored.
+            (Some(_), None) if level.is_some() || matching.is_some() => {
+                eprintln!("error: --level and --match apply to --surface only, not to a table");
+                ExitCode::from(2)
+            }
             (_, Some(surface)) => oracle::run_diff_surface(
                 &mesh,
                 &surface,
                 &oracle::SurfaceArgs {
                     level,
-                    matching,
+                    matching: matching.unwrap_or_else(|| "order".into()),
                     profile,
                     tolerance,
-                    bits,
+                    bits: bits.unwrap_or(crate::construction::DEFAULT_MP_PREC),
                     worst,
                     json,
-                    sprime,
+                    sprime: sprime.unwrap_or_else(|| "pn".into()),
                 },
             ),
-            (Some(table), None) if tsv_diff::is_tsv(&table) => tsv_diff::run(
-                &mesh,
-                &table,
-                &profile,
-                &sprime,
-                tolerance.unwrap_or(1e-9),
-                worst,
-                json,
-            ),
+            (Some(table), None) if tsv_diff::is_tsv(&table) => {
+                if bits.is_some() {
+                    eprintln!("error: --bits does not apply to a TSV table of points (compared in f64 against the profile's S′ and PPS)");
+                    return ExitCode::from(2);
+                }
+                tsv_diff::run(
+                    &mesh,
+                    &table,
+                    &profile,
+                    &sprime.unwrap_or_else(|| "pn".into()),
+                    tolerance.unwrap_or(1e-9),
+                    worst,
+                    json,
+                )
+            }
             (Some(table), None) => oracle::run_diff(
                 &mesh,
                 &table,
-                bits,
-                tolerance.unwrap_or(1e-12),
-                worst,
-                json,
-                &sprime,
+                &oracle::TableArgs {
+                    bits: bits.unwrap_or(crate::construction::DEFAULT_MP_PREC),
+                    tolerance: tolerance.unwrap_or(1e-12),
+                    worst,
+                    json,
+                    profile,
+                    sprime: sprime.unwrap_or_else(|| "pn".into()),
+                },
             ),
             (None, None) => {
                 eprintln!("error: give a TABLE of answers or --surface FILE");

@@ -4,13 +4,13 @@
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::oracle::diff::{diff_table, render};
 use crate::oracle::surface_diff::{diff_surface, render_surface, MatchMode, SurfaceDiffOptions};
-use crate::oracle::{Request, Session};
+use crate::oracle::{OracleError, Request, Response, Session};
 use std::io::{BufRead, Read, Write};
 use std::path::Path;
 use std::process::ExitCode;
 
 /// Longest accepted request line (bounded memory per request).
-const MAX_LINE: u64 = 1 << 20;
+pub const MAX_LINE: u64 = 1 << 20;
 
 fn session(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> Result<Session, String> {
     let mut s = Session::new();
@@ -50,31 +50,26 @@ pub fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -
     let mut out = stdout.lock();
     let mut buf = Vec::new();
     loop {
-        buf.clear();
-        let n = match Read::by_ref(&mut input)
-            .take(MAX_LINE)
-            .read_until(b'\n', &mut buf)
-        {
-            Ok(n) => n,
+        let line = match read_bounded_line(&mut input, &mut buf) {
+            Ok(l) => l,
             Err(e) => {
                 eprintln!("error: reading stdin: {e}");
                 return ExitCode::from(2);
             }
         };
-        if n == 0 {
-            return ExitCode::SUCCESS;
-        }
-        let resp = if buf.last() != Some(&b'\n') && n as u64 == MAX_LINE {
-            // Skip the rest of the over-long line.
-            let mut sink = Vec::new();
-            let _ = input.read_until(b'\n', &mut sink);
-            s.handle_line("{\"op\":\"line too long (over 1 MiB)\"}")
-        } else {
-            match std::str::from_utf8(&buf) {
+        let resp = match line {
+            Line::End => return ExitCode::SUCCESS,
+            Line::TooLong => Response::error(&OracleError::Malformed(format!(
+                "line longer than 1 MiB ({MAX_LINE} bytes): skipped"
+            ))),
+            Line::Text => match std::str::from_utf8(&buf) {
                 Ok(line) if line.trim().is_empty() => continue,
                 Ok(line) => s.handle_line(line),
-                Err(_) => s.handle_line("not utf-8"),
-            }
+                Err(e) => Response::error(&OracleError::Malformed(format!(
+                    "line is not valid UTF-8 (byte {} of the line)",
+                    e.valid_up_to()
+                ))),
+            },
         };
         let text = serde_json::to_string(&resp).unwrap_or_else(|_| "{\"ok\":false}".into());
         if writeln!(out, "{text}").and_then(|_| out.flush()).is_err() {
@@ -83,25 +78,64 @@ pub fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -
     }
 }
 
+/// What [`read_bounded_line`] read.
+#[derive(Debug, PartialEq, Eq)]
+pub enum Line {
+    /// End of input.
+    End,
+    /// A line of at most [`MAX_LINE`] bytes, in the buffer (newline included if present).
+    Text,
+    /// A line longer than [`MAX_LINE`]: its bytes were skipped, the buffer is empty.
+    TooLong,
+}
+
+/// Read one line of at most [`MAX_LINE`] bytes into `buf`; a longer one is consumed chunk by
+/// chunk without being stored (memory stays bounded whatever its length).
+pub fn read_bounded_line(input: &mut impl BufRead, buf: &mut Vec<u8>) -> std::io::Result<Line> {
+    buf.clear();
+    let n = Read::by_ref(input).take(MAX_LINE).read_until(b'\n', buf)?;
+    if n == 0 {
+        return Ok(Line::End);
+    }
+    if buf.last() == Some(&b'\n') || (n as u64) < MAX_LINE {
+        return Ok(Line::Text);
+    }
+    // Over-long: skip to the end of the line in the reader's own chunks.
+    buf.clear();
+    loop {
+        let chunk = input.fill_buf()?;
+        if chunk.is_empty() {
+            return Ok(Line::TooLong);
+        }
+        match chunk.iter().position(|&b| b == b'\n') {
+            Some(i) => {
+                input.consume(i + 1);
+                return Ok(Line::TooLong);
+            }
+            None => {
+                let len = chunk.len();
+                input.consume(len);
+            }
+        }
+    }
+}
+
 /// `ppm diff --mesh M TABLE`: compare a JSON-lines table of answers against the reference.
 /// Exit status 0 within tolerance, 1 outside (or items not compared), 2 on a usage error.
-pub fn run_diff(
-    mesh: &Path,
-    table: &Path,
-    bits: u32,
-    tolerance: f64,
-    worst: usize,
-    json: bool,
-    sprime: &str,
-) -> ExitCode {
-    let mut s = match session(Some(mesh), bits, "paper", sprime) {
+pub fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
+    let (tolerance, worst, json) = (a.tolerance, a.worst, a.json);
+    if tolerance.is_nan() || tolerance < 0.0 {
+        eprintln!("error: --tolerance must be a non-negative number");
+        return ExitCode::from(2);
+    }
+    let mut s = match session(Some(mesh), a.bits, &a.profile, &a.sprime) {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
             return ExitCode::from(2);
         }
     };
-    let text = match std::fs::read_to_string(table) {
+    let text = match crate::oracle::read_text_table(table) {
         Ok(t) => t,
         Err(e) => {
             eprintln!("error: {}: {e}", table.display());
@@ -122,6 +156,22 @@ pub fn run_diff(
     } else {
         ExitCode::from(1)
     }
+}
+
+/// The `ppm diff TABLE` options for a JSON-lines table (see `crate::cli`).
+pub struct TableArgs {
+    /// MPFR precision of the reference.
+    pub bits: u32,
+    /// Largest accepted deviation.
+    pub tolerance: f64,
+    /// How many worst items to list.
+    pub worst: usize,
+    /// JSON output.
+    pub json: bool,
+    /// Chapter 5 profile of the reference.
+    pub profile: String,
+    /// S′ of the reference: `pn` | `loop`.
+    pub sprime: String,
 }
 
 /// The `ppm diff --surface` options (see `crate::cli`).

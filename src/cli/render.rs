@@ -133,7 +133,7 @@ fn scenes(
     let sprime = SPrime::for_profile(kind, &k, profile)
         .map_err(|e| RenderError::Mesh(format!("S′ = {}: {e}", kind.name())))?;
     let pps = || {
-        Pps::build(
+        Pps::try_build(
             &k,
             sprime.as_target(),
             PpsOptions {
@@ -141,6 +141,7 @@ fn scenes(
                 ..PpsOptions::default()
             },
         )
+        .map_err(|e| RenderError::Mesh(e.to_string()))
     };
     let sname = match kind {
         SurfaceKind::Pn => "PN triangles",
@@ -161,14 +162,14 @@ fn scenes(
             },
             Panel {
                 caption: format!("PPS from {sname}"),
-                scene: pps_scene(&pps(), level, curvature)?,
+                scene: pps_scene(&pps()?, level, curvature)?,
             },
         ]
     } else {
         let (caption, scene) = match a.what.as_str() {
             "mesh" => ("K", mesh_scene(&k)),
             "sprime" => ("S'", sprime_scene(&k, &sprime, level)),
-            "pps" => ("PPS", pps_scene(&pps(), level, curvature)?),
+            "pps" => ("PPS", pps_scene(&pps()?, level, curvature)?),
             other => {
                 return Err(RenderError::Mesh(format!(
                     "unknown --what {other:?} (mesh | sprime | pps)"

@@ -110,6 +110,10 @@ pub struct Ch4Report {
     pub errata_confirmed: Vec<String>,
     /// IDs that fail and are *not* documented errata: conformance failures.
     pub unexpected_failures: Vec<String>,
+    /// Set when the run examined nothing (`--max-configs 0`, or every check skipped): the
+    /// run is inconclusive, not a pass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inconclusive: Option<String>,
     /// Coverage of the mesh by an interval-proof certificate (`--certificates FILE`), if given.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub certificates: Option<CertCoverage>,
@@ -392,12 +396,28 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
             }
         }
     }
+    let examined: u64 = checks.iter().map(|c| c.examined).sum();
+    let inconclusive = if cov.edge_configs_checked
+        + cov.triangle_configs_checked
+        + cov.star_configs_checked
+        == 0
+    {
+        Some(format!(
+            "no configuration was checked (0 of {} edge, {} triangle, {} star configurations; --max-configs)",
+            cov.edge_configs, cov.triangle_configs, cov.star_configs
+        ))
+    } else if examined == 0 {
+        Some("every check examined nothing".to_string())
+    } else {
+        None
+    };
     Ch4Report {
         options: opts.clone(),
         coverage: cov,
         checks,
         errata_confirmed,
         unexpected_failures,
+        inconclusive,
         certificates: None,
     }
 }
@@ -489,6 +509,9 @@ pub fn render(r: &Ch4Report) -> String {
                 );
             }
         }
+    }
+    if let Some(why) = &r.inconclusive {
+        let _ = writeln!(s, "Chapter 4: INCONCLUSIVE, not a pass: {why}");
     }
     if r.unexpected_failures.is_empty() {
         let _ = writeln!(

@@ -43,6 +43,18 @@ pub const MAX_DOMAIN_ENTRIES: usize = 256;
 pub const MAX_GLUE_ENTRIES: usize = 256;
 /// Longest rational, in characters (decimal parsing of big integers is quadratic).
 pub const MAX_RATIONAL_CHARS: usize = 512;
+/// Largest exact work W² accepted, W = Σ over the file's intervals and pieces of (1 + the
+/// decimal digits of their rationals). The decisions compose pieces pairwise (the cocycle
+/// checks, up to (Σ pieces)² cells) and big-rational arithmetic costs grow with the digits, so
+/// the entry limits alone did not bound the time (one domain, 256 pieces of 255-digit rationals:
+/// 16–60 s). Measured (release, loaded 2-core machine): W² = 1.6e8 (64 pieces, 64 digits)
+/// 5.7 s; 6e8 (32 pieces, 255 digits) 15 s, now refused.
+pub const MAX_EXACT_WORK: u128 = 200_000_000;
+
+/// Decimal digits of a rational (numerator and denominator), from their bit lengths.
+fn digits(q: &Q) -> u128 {
+    (q.numer().bits() + q.denom().bits()) as u128 * 30_103 / 100_000 + 1
+}
 
 /// A parsed gluing file.
 #[derive(Clone, Debug)]
@@ -204,12 +216,16 @@ pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingErr
         ));
     }
     ctx.at_most("domain", domains.len(), MAX_DOMAIN_ENTRIES)?;
+    let mut work: u128 = 0;
     for (n, t) in domains.iter().enumerate() {
         let f = format!("domain[{n}]");
         ctx.check_keys(&f, t, &["id", "interval"])?;
         let id = ctx.index(&format!("{f}.id"), t.get("id"))?;
         match ctx.interval(&format!("{f}.interval"), t.get("interval"))? {
-            Some(iv) => data.add_domain(id, iv),
+            Some(iv) => {
+                work += 1 + digits(&iv.lo) + digits(&iv.hi);
+                data.add_domain(id, iv)
+            }
             None => data.add_empty_domain(id),
         }
     }
@@ -232,8 +248,18 @@ pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingErr
         let b = ctx.rational(&format!("{f}.b"), t.get("b"))?;
         // An empty piece contributes nothing to Ω_ij (Ω_ij = ∅ is allowed by Def. 3.4.1).
         if let Some(dom) = ctx.interval(&format!("{f}.omega_ij"), t.get("omega_ij"))? {
+            work += 1 + digits(&a) + digits(&b) + digits(&dom.lo) + digits(&dom.hi);
             data.add_piece(i, j, dom, a, b);
         }
+    }
+    let w2 = work.saturating_mul(work);
+    if w2 > MAX_EXACT_WORK {
+        return Err(ctx.err(
+            "glue",
+            format!(
+                "exact work W² = {w2} exceeds {MAX_EXACT_WORK} (W = Σ over intervals and pieces of 1 + the digits of their rationals = {work}; the checks compose pieces pairwise): use fewer pieces or shorter rationals"
+            ),
+        ));
     }
     Ok(GluingFile {
         name,

@@ -6,6 +6,10 @@
 //! answered by the reference at the session's precision and the deviation |value − reference|
 //! is measured in MPFR. The report gives per-op statistics (max, mean, percentiles), the worst
 //! items with their arguments, and whether every deviation is within the tolerance.
+//!
+//! The reference is fixed for the whole table by the command line (mesh, precision, profile,
+//! S′): lines that would change it (`load`, `set_precision`, `set_profile`, `set_surface`) are
+//! refused as problems, not executed. A table with nothing compared is not a pass.
 
 use super::protocol::Session;
 use crate::construction::{Mp, Scalar};
@@ -54,7 +58,7 @@ impl Stats {
         Stats {
             count: d.len(),
             max: d[d.len() - 1],
-            mean: d.iter().sum::<f64>() / d.len() as f64,
+            mean: d.iter().map(|x| x / d.len() as f64).sum::<f64>(),
             p50: q(0.5),
             p90: q(0.9),
             p99: q(0.99),
@@ -75,8 +79,25 @@ pub struct DiffReport {
     pub problems: Vec<Item>,
     /// The worst items (largest deviation first).
     pub worst: Vec<Item>,
-    /// Every item compared and within the tolerance.
+    /// Every item compared and within the tolerance (and at least one item compared).
     pub within_tolerance: bool,
+}
+
+/// Ops that would change the reference the table is compared against (fixed by the command
+/// line for the whole table).
+pub const SESSION_OPS: [&str; 4] = ["load", "set_precision", "set_profile", "set_surface"];
+
+/// Euclidean norm without overflow or underflow of the squares (scaled by the largest
+/// component): a deviation of 1e300 is reported as 1e300, not ∞.
+pub fn robust_norm(d: &[f64]) -> f64 {
+    if d.iter().any(|x| x.is_nan()) {
+        return f64::NAN;
+    }
+    let big = d.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    if big == 0.0 || big.is_infinite() {
+        return big;
+    }
+    d.iter().map(|x| (x / big) * (x / big)).sum::<f64>().sqrt() * big
 }
 
 /// Compare a JSON-lines table against the reference.
@@ -107,6 +128,21 @@ pub fn diff_table(
         };
         let theirs = v.as_object_mut().and_then(|o| o.remove("value"));
         let request = v.clone();
+        if let Some(op) = v
+            .get("op")
+            .and_then(Value::as_str)
+            .filter(|op| SESSION_OPS.contains(op))
+        {
+            problems.push(Item {
+                line: line_no,
+                request,
+                deviation: f64::INFINITY,
+                problem: Some(format!(
+                    "\"{op}\" would change the reference for the lines after it; a diff table is compared against one reference, fixed by --mesh, --bits, --profile and --sprime"
+                )),
+            });
+            continue;
+        }
         let Some(theirs) = theirs else {
             problems.push(Item {
                 line: line_no,
@@ -144,7 +180,7 @@ pub fn diff_table(
     let stats = Stats::of(items.iter().map(|i| i.deviation).collect());
     items.sort_by(|a, b| b.deviation.total_cmp(&a.deviation));
     items.truncate(worst_n);
-    let within_tolerance = problems.is_empty() && stats.max <= tolerance;
+    let within_tolerance = problems.is_empty() && stats.count > 0 && stats.max <= tolerance;
     DiffReport {
         mp_bits: session.bits(),
         tolerance,
@@ -174,7 +210,7 @@ fn compare(theirs: &Value, reference: Option<&Value>, bits: u32) -> Result<f64, 
             ours.len()
         ));
     }
-    let mut s = 0.0f64;
+    let mut diffs = Vec::with_capacity(ours.len());
     for (a, b) in th.iter().zip(&ours) {
         let a = a.as_f64().ok_or("value component is not a number")?;
         let rb = match (b.as_str(), b.as_f64()) {
@@ -183,10 +219,9 @@ fn compare(theirs: &Value, reference: Option<&Value>, bits: u32) -> Result<f64, 
             (None, Some(x)) => Mp::from_f64(x, bits),
             _ => return Err("reference component is not a number".into()),
         };
-        let d = rb.sub(&Mp::from_f64(a, bits)).to_f64();
-        s += d * d;
+        diffs.push(rb.sub(&Mp::from_f64(a, bits)).to_f64());
     }
-    Ok(s.sqrt())
+    Ok(robust_norm(&diffs))
 }
 
 /// Text rendering of a diff report.
@@ -220,6 +255,8 @@ pub fn render(r: &DiffReport) -> String {
         "verdict: {}",
         if r.within_tolerance {
             "within tolerance"
+        } else if r.stats.count == 0 {
+            "NOTHING COMPARED (an empty table is not a pass)"
         } else {
             "OUTSIDE tolerance (or items not compared)"
         }

@@ -216,6 +216,11 @@ pub enum OracleError {
     /// The quantity is undefined at this point (Σ_u Γ_uv(p) = 0 in Eq. 5.1).
     #[error("undefined: {0}")]
     Undefined(String),
+    /// The loaded mesh is beyond what the construction can be built for (fit memory of
+    /// Sec. 5.2, or coordinates outside the f64 range of normals and curvatures); the session
+    /// continues (Chapter 4 queries still answer).
+    #[error("refused: {0}")]
+    Refused(String),
 }
 
 impl OracleError {
@@ -230,6 +235,7 @@ impl OracleError {
             OracleError::Precision(_) => "bad_precision",
             OracleError::NonFinite => "non_finite",
             OracleError::Undefined(_) => "undefined",
+            OracleError::Refused(_) => "refused",
         }
     }
 }
@@ -261,6 +267,9 @@ impl From<SurfaceError> for OracleError {
             | SurfaceError::BadBarycentric(_)
             | SurfaceError::Map(_) => OracleError::NotInDomain(e.to_string()),
             SurfaceError::ZeroWeight(_) => OracleError::Undefined(e.to_string()),
+            SurfaceError::FitTooLarge { .. }
+            | SurfaceError::CoordinateOutOfRange { .. }
+            | SurfaceError::ExtentTooSmall { .. } => OracleError::Refused(e.to_string()),
         }
     }
 }
@@ -298,6 +307,10 @@ pub struct Response {
 }
 
 impl Response {
+    /// The error response to a line that is not a request (no `id` or `op` to echo).
+    pub fn error(e: &OracleError) -> Self {
+        Self::err(None, None, e)
+    }
     fn err(id: Option<Value>, op: Option<String>, e: &OracleError) -> Self {
         Response {
             ok: false,
@@ -411,14 +424,14 @@ impl Session {
             let k = self.k()?;
             let target = crate::surface::SPrime::for_profile(self.sprime, k, self.profile)
                 .map_err(|e| OracleError::Load(e.to_string()))?;
-            let pps = Pps::build(
+            let pps = Pps::try_build(
                 k,
                 target.as_target(),
                 PpsOptions {
                     profile: self.profile,
                     ..PpsOptions::default()
                 },
-            );
+            )?;
             let jet = pps.consts(53);
             self.ch5 = Some(Ch5 {
                 pps,
@@ -471,6 +484,13 @@ impl Session {
         let bits = self.bits;
         match req {
             Request::Load { path } => {
+                // A failed load leaves no mesh: later queries must not silently answer for
+                // the previous one.
+                self.surface = None;
+                self.ch5 = None;
+                if let Some(sv) = &mut self.sigma_v {
+                    sv.reset();
+                }
                 let raw = read_mesh(path, &ReadOptions::default())
                     .map_err(|e| OracleError::Load(e.to_string()))?;
                 let v = validate(&raw);
@@ -823,8 +843,19 @@ impl Ch5 {
     }
 }
 
-/// A numerical answer: MPFR value, f64 value, difference.
+/// A numerical answer: MPFR value, f64 value, difference. A non-finite f64 component (which
+/// JSON would print as `null`) is an f64 failure, reported as `info.f64_failed` with no `f64`
+/// and no `difference` (the documented shape).
 fn both(a: &[f64], b: &[Mp], bits: u32) -> Response {
+    if let Some(i) = a.iter().position(|x| !x.is_finite()) {
+        let mut r = both(&[], b, bits);
+        r.f64 = None;
+        r.difference = None;
+        r.info = Some(json!({
+            "f64_failed": format!("the f64 evaluation gave a non-finite component {} (index {i}) where MPFR is finite", a[i])
+        }));
+        return r;
+    }
     let value: Vec<String> = b.iter().map(mp_decimal).collect();
     Response {
         ok: true,

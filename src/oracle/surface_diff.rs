@@ -189,6 +189,16 @@ pub struct SurfaceDiffReport {
     pub reference_matched_twice: Option<usize>,
     /// Vertices with a non-finite coordinate (not compared; they fail the verdict).
     pub non_finite: usize,
+    /// The first [`NAMED_NON_FINITE`] of them (indices in the other file).
+    pub non_finite_vertices: Vec<usize>,
+    /// Nearest matching only: reference points farther than the tolerance from every point of
+    /// theirs (a missing part of the surface; they fail the verdict).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reference_missing: Option<usize>,
+    /// The level whose vertex count equals theirs, when it differs from `level` (a level
+    /// mismatch: the verdict then rests on the reverse distances).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub count_matches_level: Option<u32>,
     /// Largest |coordinate| of the reference sampling.
     pub scale: f64,
     /// The a-priori error bound of an f64 evaluation: [`F64_BOUND_ULPS`]·ε·scale.
@@ -212,9 +222,11 @@ pub struct SurfaceDiffReport {
 }
 
 fn dist(a: &[f64; 3], b: &[f64; 3]) -> f64 {
-    let d = [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+    super::diff::robust_norm(&[a[0] - b[0], a[1] - b[1], a[2] - b[2]])
 }
+
+/// How many non-finite vertices the report names.
+pub const NAMED_NON_FINITE: usize = 8;
 
 type Tree = RTree<GeomWithData<[f64; 3], usize>>;
 
@@ -283,10 +295,19 @@ pub fn diff_surface(
             "--match nearest: vertex order not used, matched each vertex to the NEAREST reference point (R*-tree)".to_string(),
         ),
     };
-    let non_finite = theirs
+    let bad: Vec<usize> = theirs
         .iter()
-        .filter(|p| !p.iter().all(|c| c.is_finite()))
-        .count();
+        .enumerate()
+        .filter(|(_, p)| !p.iter().all(|c| c.is_finite()))
+        .map(|(i, _)| i)
+        .collect();
+    let non_finite = bad.len();
+    let non_finite_vertices: Vec<usize> = bad.into_iter().take(NAMED_NON_FINITE).collect();
+    let count_matches_level = if level_inferred {
+        None
+    } else {
+        infer_level(pps, theirs.len()).filter(|&l| l != level)
+    };
     // Pair every finite vertex of theirs with a reference index.
     let pairs: Vec<(usize, usize)> = match matching {
         MatchMode::Order => (0..theirs.len()).map(|i| (i, i)).collect(),
@@ -323,22 +344,27 @@ pub fn diff_surface(
             .map(|it| it.deviation)
             .collect(),
     );
-    let (reverse, twice) = if matching == MatchMode::Nearest {
+    let (reverse, twice, rev) = if matching == MatchMode::Nearest {
         let t = tree(theirs);
+        // A reference point with no finite point of theirs at all is infinitely far.
         let rev: Vec<f64> = reference
             .par_iter()
-            .filter_map(|p| t.nearest_neighbor(p).map(|n| dist(p, n.geom())))
+            .map(|p| {
+                t.nearest_neighbor(p)
+                    .map_or(f64::INFINITY, |n| dist(p, n.geom()))
+            })
             .collect();
         let mut hits = vec![0u32; reference.len()];
         for &(_, r) in &pairs {
             hits[r] += 1;
         }
         (
-            Some(Stats::of(rev)),
+            Some(Stats::of(rev.clone())),
             Some(hits.iter().filter(|&&h| h > 1).count()),
+            Some(rev),
         )
     } else {
-        (None, None)
+        (None, None, None)
     };
     let faces_identical = match (matching, their_faces) {
         (MatchMode::Order, Some(f)) => Some(f == pattern.faces.as_slice()),
@@ -390,7 +416,15 @@ pub fn diff_surface(
                 .to_string(),
         ),
     };
-    let within_tolerance = non_finite == 0 && !theirs.is_empty() && stats.max <= tolerance;
+    // Both directions count: every point of theirs near the surface, and every reference
+    // point near one of theirs (a 3-vertex file is not the surface).
+    let reference_missing = rev
+        .as_ref()
+        .map(|r| r.iter().filter(|&&d| d.is_nan() || d > tolerance).count());
+    let within_tolerance = non_finite == 0
+        && !theirs.is_empty()
+        && stats.max <= tolerance
+        && reference_missing.unwrap_or(0) == 0;
     Ok(SurfaceDiffReport {
         level,
         level_inferred,
@@ -403,6 +437,9 @@ pub fn diff_surface(
         reverse,
         reference_matched_twice: twice,
         non_finite,
+        non_finite_vertices,
+        reference_missing,
+        count_matches_level,
         scale,
         f64_bound,
         mp_bits: opts.bits,
@@ -456,11 +493,35 @@ pub fn render_surface(r: &SurfaceDiffReport) -> String {
             r.reference_matched_twice.unwrap_or(0)
         );
     }
-    if r.non_finite > 0 {
+    if let Some(l) = r.count_matches_level {
         let _ = writeln!(
             s,
-            "{} vertices with non-finite coordinates (not compared)",
-            r.non_finite
+            "level mismatch: their vertex count is that of level {l}, not of the requested level {}",
+            r.level
+        );
+    }
+    if let Some(n) = r.reference_missing.filter(|&n| n > 0) {
+        let _ = writeln!(
+            s,
+            "{n} reference points are farther than the tolerance from every point of theirs: that part of the surface is missing"
+        );
+    }
+    if r.non_finite > 0 {
+        let named: Vec<String> = r
+            .non_finite_vertices
+            .iter()
+            .map(|i| i.to_string())
+            .collect();
+        let _ = writeln!(
+            s,
+            "{} vertices with non-finite coordinates (not compared): vertex {}{}",
+            r.non_finite,
+            named.join(", "),
+            if r.non_finite > named.len() {
+                ", …"
+            } else {
+                ""
+            }
         );
     }
     let _ = writeln!(

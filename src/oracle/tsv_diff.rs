@@ -416,9 +416,9 @@ pub fn diff_tsv_files_with(
     let k = crate::mesh::validate::validate(&raw)
         .surface
         .ok_or_else(|| TsvDiffError::NotSurface(mesh.display().to_string()))?;
-    let text = std::fs::read_to_string(table).map_err(|e| TsvDiffError::Table {
+    let text = super::read_text_table(table).map_err(|e| TsvDiffError::Table {
         path: table.display().to_string(),
-        error: e.to_string(),
+        error: e,
     })?;
     let rows = parse_tsv(&text, k.num_faces()).map_err(|e| TsvDiffError::Table {
         path: table.display().to_string(),
@@ -429,14 +429,15 @@ pub fn diff_tsv_files_with(
         kind: kind.name().to_string(),
         error: e.to_string(),
     })?;
-    let pps = Pps::build(
+    let pps = Pps::try_build(
         &k,
         sprime.as_target(),
         PpsOptions {
             profile,
             ..PpsOptions::default()
         },
-    );
+    )
+    .map_err(|e| TsvDiffError::Mesh(e.to_string()))?;
     Ok(diff_rows(
         &k,
         &raw.faces,

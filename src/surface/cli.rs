@@ -40,14 +40,30 @@ fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, Exi
         eprintln!("error: S′ = {}: {e}", kind.name());
         ExitCode::from(1)
     })?;
-    Ok(Pps::build(
+    // Progress for the large fits (Sec. 5.2) that are admitted: say what is being built.
+    if let Ok(bytes) = super::admissible::check_fit_size(k, profile) {
+        if bytes > 1 << 28 {
+            let max_m = k.vertices().map(|v| k.degree(v)).max().unwrap_or(0);
+            eprintln!(
+                "ppm: fitting the shape functions (Sec. 5.2, {} profile, largest degree {max_m}, l = {}): about {} MB; this may take a while",
+                profile.name(),
+                profile.bezier_degree(max_m),
+                bytes >> 20
+            );
+        }
+    }
+    Pps::try_build(
         k,
         target.as_target(),
         PpsOptions {
             profile,
             ..PpsOptions::default()
         },
-    ))
+    )
+    .map_err(|e| {
+        eprintln!("error: {e}");
+        ExitCode::from(2)
+    })
 }
 
 /// `ppm sample FILE --level N -o OUT`: sample M by midpoint subdivision through eval (Sec. 6.2)

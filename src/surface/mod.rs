@@ -13,6 +13,7 @@
 //!
 //! See `SPEC.md` for statement-by-statement verdicts.
 
+pub mod admissible;
 pub mod authors_fit;
 pub mod bezier;
 pub mod checks;

@@ -79,6 +79,37 @@ pub enum SurfaceError {
     /// A Chapter 4 map failed (Π at the origin, or undecided).
     #[error("map: {0}")]
     Map(#[from] MapError),
+    /// The least-squares fits of Sec. 5.2 would exceed the memory budget (estimated before
+    /// building; `surface::admissible`).
+    #[error("vertex {v} has degree {degree}: the {profile} profile fits ψ_v with Bézier degree l = {l} (Sec. 5.2), and the fits of this mesh would need about {bytes} bytes (limit {limit}); the authors-code profile caps l at 7 (--profile authors-code)")]
+    FitTooLarge {
+        /// A vertex of the largest degree.
+        v: VertexId,
+        /// Its degree m_v.
+        degree: u32,
+        /// The Bézier bi-degree l of its shape function.
+        l: usize,
+        /// The profile's name.
+        profile: String,
+        /// Estimated memory of all the fits, in bytes.
+        bytes: u128,
+        /// The budget in bytes.
+        limit: u128,
+    },
+    /// A coordinate so large that normals and curvatures (size⁴) overflow f64.
+    #[error("vertex {v}: coordinate {value:e} is outside ±2^200 (≈ 1.6e60), where normals and curvatures (which scale like size⁴) overflow f64; rescale the mesh")]
+    CoordinateOutOfRange {
+        /// The vertex.
+        v: VertexId,
+        /// The offending coordinate.
+        value: f64,
+    },
+    /// A mesh so small that normals and curvatures (size⁴) underflow f64.
+    #[error("the bounding-box diagonal {diagonal:e} is below 2^-200 (≈ 6.2e-61), where normals and curvatures (which scale like size⁴) underflow f64; rescale the mesh")]
+    ExtentTooSmall {
+        /// The bounding-box diagonal.
+        diagonal: f64,
+    },
 }
 
 /// How p ∈ Ω_vu is decided (see the module doc).

@@ -417,12 +417,17 @@ pub fn check_p4_1_3<S: Scalar, M: Ppm<S>>(
         pair.deviation(dev, th < bound - 1e3 * eps * e.m_u as f64, w);
     }
     ne.examined(uniform_examined);
-    if hits == 0 {
+    let conclusive = n >= MIN_EMPTINESS_SAMPLES;
+    if hits == 0 && conclusive {
         ne.offend(|| Witness::new(format!("none of {uniform_examined} samples (disk and lens pull-backs) of Ω_u − {{0}} has g_(u,w)(p) ∈ Ω_w − {{0}}"), json!({"examined": uniform_examined})));
     }
     let note = format!("Ω_u samples: {} (+ {} lens pull-backs for the inverse part); {hits} samples (disk and lens pull-backs) map into Ω_w − {{0}}; tolerance = ROUNDTRIP_COND·amp·ε", s.counts_string(), n);
     let domain = format!("p with |θ(R_(u,w)p)| < {bound:.6} (= min(π, 6π/m_u)); for m_u ≤ 10 this is all of g_(u,w)⁻¹(Ω_w)");
-    vec![ne.finish(note.clone())]
+    let mut ne = ne.finish(note.clone());
+    if hits == 0 && !conclusive {
+        ne.verdict = inconclusive_search(n);
+    }
+    vec![ne]
         .into_iter()
         .chain(pair.finish(note, domain, e.m_u > 10))
         .collect()

@@ -38,6 +38,20 @@ use triangle::star_samples;
 /// Condition factor of simple identities (Π round trip, the h-identity): a few dozen
 /// operations, each with relative error ≤ ε, on points of norm ≤ 2.
 pub const IDENTITY_COND: f64 = 64.0;
+
+/// Fewest samples per category with which a sampled existence search ("Ω ≠ ∅": P4.1.3,
+/// P4.2.1) may report that it found no witness as a failure. With fewer, finding none is
+/// inconclusive (`Skipped`): a handful of random points missing a lens proves nothing.
+pub const MIN_EMPTINESS_SAMPLES: usize = 8;
+
+/// The `Skipped` verdict of an existence search with too few samples to conclude.
+pub fn inconclusive_search(n: usize) -> Verdict {
+    Verdict::Skipped {
+        reason: format!(
+            "inconclusive: no witness among the samples, but {n} per category is fewer than the {MIN_EMPTINESS_SAMPLES} needed to report emptiness (raise --samples)"
+        ),
+    }
+}
 /// Condition factor of the g_v round trips: 256 · max(1, m/6, 6/m) (angle scaled by m/6 then
 /// by 6/m; trigonometric functions of angles up to m·π/6).
 pub const GV_COND: f64 = 256.0;

@@ -189,11 +189,24 @@ fn compare_cells(
                 .map(|t| (c.clone(), t.clone()))
         });
         if let Some(((ca, cb), (ta, tb))) = pair {
-            let x = mid(&at, next);
+            let x = where_differ(&at, next, (&ca, &cb), (&ta, &tb));
             bad(&x, &(&ta * &x + &tb), &(&ca * &x + &cb));
         }
     }
     n
+}
+
+/// A point of the open interval (lo, hi) where the affine maps x ↦ a·x + b and x ↦ c·x + d
+/// differ, given that their coefficients differ: they agree at one point at most, so of the
+/// midpoint and the midpoint of (lo, midpoint) one is a witness (a witness must show two
+/// different values, never "3/2 ≠ 3/2").
+fn where_differ(lo: &Q, hi: &Q, f: (&Q, &Q), g: (&Q, &Q)) -> Q {
+    let x = mid(lo, hi);
+    if f.0 * &x + f.1 != g.0 * &x + g.1 {
+        x
+    } else {
+        mid(lo, &x)
+    }
 }
 
 fn qs(x: &Q) -> serde_json::Value {
@@ -312,7 +325,7 @@ pub fn check_bijection(g: &Exact1d) -> CheckResult {
             for o in &ps[n + 1..] {
                 if let Some(c) = p.dom.intersect(&o.dom) {
                     if p.a != o.a || p.b != o.b {
-                        let x = c.midpoint();
+                        let x = where_differ(&c.lo, &c.hi, (&p.a, &p.b), (&o.a, &o.b));
                         r.offend(|| {
                             Witness::new(
                                 format!(
@@ -383,7 +396,7 @@ pub fn check_3a(g: &Exact1d) -> CheckResult {
         r.examined += 1;
         for p in g.pieces(i, i) {
             if !(p.a.is_one() && p.b.is_zero()) {
-                let x = p.dom.midpoint();
+                let x = where_differ(&p.dom.lo, &p.dom.hi, (&p.a, &p.b), (&Q::one(), &Q::zero()));
                 let y = p.eval(&x);
                 dev(&mut r, &(&y - &x));
                 r.offend(|| {

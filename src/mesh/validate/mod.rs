@@ -6,6 +6,7 @@
 
 pub mod affine;
 pub mod basic;
+mod fans;
 pub mod incidence;
 pub mod intersect;
 pub mod predicates;

@@ -81,14 +81,23 @@ pub fn run_surface_checks(k: &SimplicialSurface, opts: &SurfaceCheckOptions) -> 
             return vec![r];
         }
     };
-    let pps = Pps::build(
+    let pps = match Pps::try_build(
         k,
         target.as_target(),
         PpsOptions {
             profile: opts.profile,
             ..PpsOptions::default()
         },
-    );
+    ) {
+        Ok(p) => p,
+        Err(e) => {
+            // Nothing of Chapter 5 can be checked: one failing result with the refusal, not
+            // results computed on NaN (which read "holds, tolerance 0").
+            let mut r = CheckResult::new("D5.2.1", "shape functions fitted (rank, κ per degree)");
+            r.offend(|| crate::report::Witness::new(e.to_string(), serde_json::Value::Null));
+            return vec![r];
+        }
+    };
     let g = PpmGluing::new(k);
     let mut out = vec![
         check_fit(&pps),
