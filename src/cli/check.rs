@@ -179,7 +179,7 @@ pub fn run(
         && extra.iter().all(|c| !c.failed())
         && ch4
             .as_ref()
-            .is_none_or(|r| r.unexpected_failures.is_empty() && r.inconclusive.is_none());
+            .map_or(true, |r| r.unexpected_failures.is_empty() && r.inconclusive.is_none());
     let secs = t0.elapsed().as_secs_f64();
     if json {
         let out = CheckOutput {

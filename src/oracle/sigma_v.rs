@@ -54,7 +54,7 @@ impl SigmaVOracle {
             self.pps = Some(p);
         }
         let pps = self.pps.as_ref().ok_or("no surface")?;
-        if self.mp.as_ref().is_none_or(|c| c.wedges.prec != bits) {
+        if self.mp.as_ref().map_or(true, |c| c.wedges.prec != bits) {
             self.mp = Some(pps.consts::<Mp>(bits));
         }
         let cm = self.mp.as_ref().ok_or("no constants")?;
