@@ -1,4 +1,4 @@
-//! Issue 4 performance target: the full Chapter 4 conformance run (`ppm check --spec`'s
+//! Performance target: the full Chapter 4 conformance run (`ppm check --spec`'s
 //! Chapter 4 part) in f64 per corpus mesh at default density — the whole `good/` corpus in
 //! under a minute on 2 cores — and checks per second in f64 vs MPFR.
 //! Run: `cargo bench --bench chapter4` (needs `../shared/meshes/`; otherwise generated meshes).

@@ -1,4 +1,4 @@
-//! Speed target of issue 2: `ppm check` (read + every Sec. 3.1 check, including the exact
+//! Speed target of Sec. 3.1: `ppm check` (read + every Sec. 3.1 check, including the exact
 //! self-intersection test) on the largest good corpus mesh finishes in seconds.
 //! Run: `cargo bench --bench check`. Uses `../shared/meshes/good/koala.obj` when present
 //! (99,994 triangles), and always a generated 80,000-triangle torus.

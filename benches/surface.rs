@@ -1,4 +1,4 @@
-//! Issue 5 speed targets: construction (all ψ_v fitted) of koala.obj in < 1 s on 2 cores, and
+//! Speed targets of Ch. 5: construction (all ψ_v fitted) of koala.obj in < 1 s on 2 cores, and
 //! eval at ≥ 1 M points/s in f64. Run: `cargo bench --bench surface` (criterion), or
 //! `SURFACE_QUICK=1 cargo bench --bench surface` for a one-shot table (cold builds, per-degree
 //! factorization times, eval throughput). Uses `../shared/meshes/good/koala.obj` when present,
