@@ -177,9 +177,9 @@ pub fn run(
     }
     let ok = v.report.is_simplicial_surface
         && extra.iter().all(|c| !c.failed())
-        && ch4
-            .as_ref()
-            .map_or(true, |r| r.unexpected_failures.is_empty() && r.inconclusive.is_none());
+        && ch4.as_ref().map_or(true, |r| {
+            r.unexpected_failures.is_empty() && r.inconclusive.is_none()
+        });
     let secs = t0.elapsed().as_secs_f64();
     if json {
         let out = CheckOutput {
