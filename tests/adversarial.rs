@@ -883,3 +883,31 @@ fn x_adv_05_own_sampling_fails_own_diff_r_diff_f64_bound() {
         .any(|w| w.mp.as_ref().is_some_and(|c| c.reference_error > c.bound)));
     assert!(pseudomanifold::oracle::surface_diff::render_surface(&r).contains("WRONG"));
 }
+
+/// The structured-solver experiment after the fit budget: the numerical rank of the Sec. 5.2
+/// design matrix at the RCOND truncation grows like 20·l, not (l+1)², which is what lets a
+/// low-rank solver over the Kronecker structure A = S(B ⊗ B) reach O(l⁴)
+/// (`examples/fit_scaling.rs kron`, docs/fit.md). Pinned here: the rank stays ≤ 21·l, below
+/// the (l+1)² unknowns, and the symmetry-blocked and plain SVDs agree on it.
+#[test]
+fn x_adv_08_structured_solver_rank_r_fit_scaling() {
+    use pseudomanifold::surface::fit::{factor_degree, factor_degree_plain};
+    use pseudomanifold::surface::profile::Profile;
+    for m in [24u32, 32] {
+        let f = factor_degree(m, Profile::Paper);
+        let i = &f.info;
+        eprintln!(
+            "m={m}: l={}, rows {}, unknowns {}, rank {} = {:.2}·l",
+            i.l,
+            i.rows,
+            i.unknowns,
+            i.rank,
+            i.rank as f64 / i.l as f64
+        );
+        assert!(i.rank <= 21 * i.l, "m={m}: rank {} > 21·l", i.rank);
+        assert!(i.rank < i.unknowns, "m={m}: rank {}", i.rank);
+        if m == 24 {
+            assert_eq!(factor_degree_plain(m, Profile::Paper).info.rank, i.rank);
+        }
+    }
+}
