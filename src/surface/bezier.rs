@@ -110,7 +110,7 @@ pub fn eval_patch<S: SurfaceScalar>(cp: &[[f64; 3]], l: usize, half: f64, x: &S,
         for (k, byk) in by.iter().enumerate() {
             let c = &cp[j * (l + 1) + k];
             for d in 0..3 {
-                row[d] = row[d].add(&byk.mul(&S::from_f64(c[d], prec)));
+                row[d] = row[d].add(&byk.scale_f64(c[d]));
             }
         }
         for d in 0..3 {

@@ -276,4 +276,9 @@ impl<S: SurfaceScalar, const L: usize> SurfaceScalar for Jet<S, L> {
         let e = self.c[0].exp();
         self.compose([e.clone(), e.clone(), e.clone(), e])
     }
+    fn scale_f64(&self, k: f64) -> Self {
+        Jet {
+            c: std::array::from_fn(|i| self.c[i].scale_f64(k)),
+        }
+    }
 }

@@ -8,6 +8,12 @@ use crate::construction::{Mp, Scalar};
 pub trait SurfaceScalar: Scalar {
     /// e^self, rounded.
     fn exp(&self) -> Self;
+    /// self · k for an f64 constant k. The default forms k in the type and multiplies; jets
+    /// override it with a coefficient-wise product (a constant jet's full product would spend
+    /// most of its work on zeros: the Bézier sums of Def. 5.2.1 do this per control point).
+    fn scale_f64(&self, k: f64) -> Self {
+        self.mul(&Self::from_f64(k, self.precision_bits()))
+    }
     /// ψ(x, y) of a bi-degree (l, l) patch (Def. 5.2.1); `f64` overrides this with an
     /// allocation-free evaluator.
     fn patch(cp: &[[f64; 3]], l: usize, half: f64, x: &Self, y: &Self) -> [Self; 3] {
@@ -18,6 +24,9 @@ pub trait SurfaceScalar: Scalar {
 impl SurfaceScalar for f64 {
     fn exp(&self) -> Self {
         f64::exp(*self)
+    }
+    fn scale_f64(&self, k: f64) -> Self {
+        self * k
     }
     fn patch(cp: &[[f64; 3]], l: usize, half: f64, x: &Self, y: &Self) -> [Self; 3] {
         if l <= super::bezier::MAX_FAST_L {

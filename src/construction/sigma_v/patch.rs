@@ -96,9 +96,9 @@ pub fn eval_tri<S: SurfaceScalar>(d: usize, cps: &[[f64; 3]], coef: &[f64], l: &
             let bern = pw[0][a]
                 .mul(&pw[1][b])
                 .mul(&pw[2][d - a - b])
-                .mul(&S::from_f64(coef[i], prec));
+                .scale_f64(coef[i]);
             for (t, slot) in acc.iter_mut().enumerate() {
-                *slot = slot.add(&bern.mul(&S::from_f64(cps[i][t], prec)));
+                *slot = slot.add(&bern.scale_f64(cps[i][t]));
             }
             i += 1;
         }
