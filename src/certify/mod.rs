@@ -13,7 +13,6 @@
 //! refutation with a witness point that the f64 and multi-precision evaluators of
 //! `construction::maps` confirm. Exactly what is proven is in [`PropertyResult::statement`].
 
-pub mod cli;
 pub mod interval;
 
 use crate::construction::interval::Interval as I;

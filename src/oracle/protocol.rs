@@ -14,9 +14,7 @@
 use super::mp_decimal;
 use super::query::{add_info, both, both_or_note, mp_only, vertex, Env, Needs, Numeric, OnF64};
 use crate::construction::{GluingError, MapError, Mp, PpmGluing, Scalar, Trit, P2};
-use crate::mesh::io::{read_mesh, ReadOptions};
-use crate::mesh::validate::validate;
-use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::mesh::{load_surface, FaceId, LoadError, SimplicialSurface, VertexId};
 use crate::surface::jet::Jet;
 use crate::surface::{Consts, Pps, PpsOptions, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
@@ -485,16 +483,16 @@ impl Session {
                 if let Some(sv) = &mut self.sigma_v {
                     sv.reset();
                 }
-                let raw = read_mesh(path, &ReadOptions::default())
-                    .map_err(|e| OracleError::Load(e.to_string()))?;
-                let v = validate(&raw);
-                let classes: Vec<&str> = v.report.error_classes.iter().map(|c| c.name()).collect();
-                let k = v.surface.ok_or_else(|| {
-                    OracleError::Load(format!(
-                        "{}: not a simplicial surface ({})",
-                        path.display(),
-                        classes.join(", ")
-                    ))
+                let k = load_surface(path).map_err(|e| match e {
+                    LoadError::Read(e) => OracleError::Load(e.to_string()),
+                    LoadError::NotASurface { classes, .. } => {
+                        let classes: Vec<&str> = classes.iter().map(|c| c.name()).collect();
+                        OracleError::Load(format!(
+                            "{}: not a simplicial surface ({})",
+                            path.display(),
+                            classes.join(", ")
+                        ))
+                    }
                 })?;
                 let out = json!({"vertices": k.num_vertices(), "faces": k.num_faces(), "edges": k.num_edges()});
                 self.surface = Some(k);

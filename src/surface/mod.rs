@@ -9,7 +9,6 @@
 //! * [`geometry`] — normals and curvatures from the jets of θ.
 //! * [`output`] — Sec. 6.2: sampling by midpoint subdivision and writing meshes.
 //! * [`checks`] — condition (C) and the other Chapter 5 / Sec. 6.1.4 checks.
-//! * [`cli`] — `ppm sample`, `ppm eval`.
 //!
 //! See `SPEC.md` for statement-by-statement verdicts.
 
@@ -17,7 +16,6 @@ pub mod admissible;
 pub mod authors_fit;
 pub mod bezier;
 pub mod checks;
-pub mod cli;
 pub mod consts;
 pub mod eval;
 pub mod fit;
