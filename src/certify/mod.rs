@@ -16,7 +16,9 @@
 pub mod interval;
 
 use crate::construction::interval::Interval as I;
-use crate::construction::maps::{self, cos_pi_6, is_nonzero, EdgeConfig, Ppm, TriangleConfig, P2};
+use crate::construction::maps::{
+    self, cos_pi_6, is_nonzero, Corner, EdgeConfig, Ppm, TriangleConfig, P2,
+};
 use crate::construction::scalar::{Iv, Mp, Scalar, Trit};
 use crate::report::harness::enclosure_exceeds;
 use crate::report::{CheckResult, Verdict, Witness};

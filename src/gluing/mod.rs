@@ -23,4 +23,4 @@ pub mod stereo;
 pub mod tolerance;
 
 pub use data::{GluingData, Idx, Point};
-pub use error::GluingError;
+pub use error::GluingFileError;

@@ -3,7 +3,8 @@
 //! * [`target`] — Sec. 5.1: the surface S′ to approximate (PN triangles; pluggable).
 //! * [`bezier`], [`fit`] — Def. 5.2.1 and Sec. 5.2: shape functions ψ_v by least squares.
 //! * [`weights`] — Defs. 5.3.1–5.3.2: ξ and γ_v.
-//! * [`pps`] — Defs. 5.4.1–5.4.2, Eq. (5.1): θ_v, generic over the scalar.
+//! * [`pps`] — Defs. 5.4.1–5.4.2, Eq. (5.1): θ_v, generic over the scalar; its [`options`]
+//!   (membership test, planted faults) and [`error`]s.
 //! * [`eval`] — Sec. 6.1.4: eval(σ, λ, μ, ν).
 //! * [`jet`] — order-3 derivative jets (normals, curvature, smoothness checks).
 //! * [`geometry`] — normals and curvatures from the jets of θ.
@@ -17,15 +18,18 @@ pub mod authors_fit;
 pub mod bezier;
 pub mod checks;
 pub mod consts;
+pub mod error;
 pub mod eval;
 pub mod fit;
 pub mod geometry;
 pub mod jet;
 pub mod loop_subdiv;
+pub mod options;
 pub mod output;
 pub mod pps;
 pub mod profile;
 pub mod scalar_ext;
+mod storage;
 pub mod target;
 pub mod weights;
 
