@@ -840,3 +840,74 @@ fn x_adv_07_measured_c2_examines_samples() {
     assert!(c.examined > 0, "{c:?}");
     assert!(c.offenders > 0 && c.verdict == Verdict::Warning, "{c:?}");
 }
+
+/// `ppm sample` then `ppm diff --surface` of our own output failed our own check: the printed
+/// f64 bound 4096·ε·scale ignored the patches' cancellation (anchor: reference error 7.5e-11
+/// against 9.1e-13). At a degree-24 vertex the least-squares control points are 10⁵ times the
+/// surface; the bound now grows with Σ ω|b|BB and the degree (`surface::eval_bound`), holds at
+/// every MPFR spot check, and a planted bound that is too small is caught with a witness.
+#[test]
+fn x_adv_05_own_sampling_fails_own_diff_r_diff_f64_bound() {
+    use pseudomanifold::oracle::surface_diff::{diff_surface, SurfaceDiffOptions, F64_BOUND_ULPS};
+    let k = surface(&bipyramid(24));
+    let pps = build(&k);
+    let m = sample_surface(&pps, 2, false).expect("level 2");
+    let opts = SurfaceDiffOptions {
+        spot_checks: 24,
+        worst: 8,
+        ..SurfaceDiffOptions::default()
+    };
+    let r = diff_surface(&pps, &m.positions, Some(&m.faces), &opts).expect("diff");
+    let text = pseudomanifold::oracle::surface_diff::render_surface(&r);
+    eprintln!("{text}");
+    let old = F64_BOUND_ULPS * f64::EPSILON * r.scale.max(1.0);
+    // The old, size-proportional bound does not hold: this is the regression.
+    assert!(r.reference_error_max > old, "{text}");
+    assert!(r.cancellation_max > 1e3, "{text}");
+    // The analysis' bound holds at every spot check, and our own output passes.
+    assert_eq!(r.bound_violations, 0, "{text}");
+    assert_eq!(r.outside, 0, "{text}");
+    assert!(r.within_tolerance, "{text}");
+    assert!(r.reference_error_max <= r.f64_bound && r.f64_bound > r.f64_bound_maps);
+    // Planted: the same analysis shrunk 10⁴× must be reported as violated, with the witness
+    // listed (its reference error above its bound).
+    let planted = SurfaceDiffOptions {
+        planted_bound_factor: Some(1e-4),
+        ..opts
+    };
+    let r = diff_surface(&pps, &m.positions, Some(&m.faces), &planted).expect("diff");
+    assert!(r.bound_violations > 0 && !r.within_tolerance);
+    assert!(r
+        .worst
+        .iter()
+        .any(|w| w.mp.as_ref().is_some_and(|c| c.reference_error > c.bound)));
+    assert!(pseudomanifold::oracle::surface_diff::render_surface(&r).contains("WRONG"));
+}
+
+/// The structured-solver experiment after the fit budget: the numerical rank of the Sec. 5.2
+/// design matrix at the RCOND truncation grows like 20·l, not (l+1)², which is what lets a
+/// low-rank solver over the Kronecker structure A = S(B ⊗ B) reach O(l⁴)
+/// (`examples/fit_scaling.rs kron`, docs/fit.md). Pinned here: the rank stays ≤ 21·l, below
+/// the (l+1)² unknowns, and the symmetry-blocked and plain SVDs agree on it.
+#[test]
+fn x_adv_08_structured_solver_rank_r_fit_scaling() {
+    use pseudomanifold::surface::fit::{factor_degree, factor_degree_plain};
+    use pseudomanifold::surface::profile::Profile;
+    for m in [24u32, 32] {
+        let f = factor_degree(m, Profile::Paper);
+        let i = &f.info;
+        eprintln!(
+            "m={m}: l={}, rows {}, unknowns {}, rank {} = {:.2}·l",
+            i.l,
+            i.rows,
+            i.unknowns,
+            i.rank,
+            i.rank as f64 / i.l as f64
+        );
+        assert!(i.rank <= 21 * i.l, "m={m}: rank {} > 21·l", i.rank);
+        assert!(i.rank < i.unknowns, "m={m}: rank {}", i.rank);
+        if m == 24 {
+            assert_eq!(factor_degree_plain(m, Profile::Paper).info.rank, i.rank);
+        }
+    }
+}

@@ -23,6 +23,8 @@ use super::mp_distance;
 use super::protocol::OracleError;
 use crate::construction::{Mp, Scalar};
 use crate::mesh::FaceId;
+use crate::report::harness::dev_max;
+use crate::surface::eval_bound::BoundedPoint;
 use crate::surface::{Consts, Pps};
 use rayon::prelude::*;
 use rstar::primitives::GeomWithData;
@@ -33,12 +35,10 @@ use std::collections::HashSet;
 /// Largest accepted subdivision level (as `sample_surface`).
 pub const MAX_LEVEL: u32 = 12;
 
-/// The a-priori relative error bound of the f64 evaluation of eval (Sec. 6.1.4), in units of
-/// ε·scale (scale = the largest |coordinate| of the sampled surface): eval composes ~10² f64
-/// operations (chart maps, two transition maps, ξ with its exp, Bézier patches of degree ≤ 12
-/// in the paper profile for m ≤ 11, one division), each within ε/2 relative, and the patches
-/// sum (l+1)² terms of size ≤ scale. The MPFR spot checks print the observed error next to it.
-pub const F64_BOUND_ULPS: f64 = 4096.0;
+/// The map-and-blend part of the per-vertex f64 bound, in units of ε·scale; the patch part
+/// grows with the fit's conditioning and degree (`surface::eval_bound`, SPEC
+/// `R-diff-f64-bound`).
+pub const F64_BOUND_ULPS: f64 = crate::surface::eval_bound::MAP_BOUND_ULPS;
 
 /// How the other surface's vertices are paired with the reference's.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Default)]
@@ -105,7 +105,7 @@ pub fn infer_level(pps: &Pps, count: usize) -> Option<u32> {
 pub struct SurfaceDiffOptions {
     /// Subdivision level; `None`: inferred from the vertex count.
     pub level: Option<u32>,
-    /// Largest accepted deviation; `None`: twice the printed f64 bound.
+    /// Largest accepted deviation; `None`: at each vertex twice its f64 bound.
     pub tolerance: Option<f64>,
     /// Pairing of the vertices.
     pub matching: MatchMode,
@@ -115,6 +115,9 @@ pub struct SurfaceDiffOptions {
     pub spot_checks: usize,
     /// MPFR precision of the spot checks.
     pub bits: u32,
+    /// A planted fault for the tests of `R-diff-f64-bound`: multiplies every vertex's f64
+    /// bound (`None`: the analysis' bound).
+    pub planted_bound_factor: Option<f64>,
 }
 
 impl Default for SurfaceDiffOptions {
@@ -126,6 +129,7 @@ impl Default for SurfaceDiffOptions {
             worst: 10,
             spot_checks: 32,
             bits: crate::construction::DEFAULT_MP_PREC,
+            planted_bound_factor: None,
         }
     }
 }
@@ -137,6 +141,8 @@ pub struct MpCheck {
     pub deviation: f64,
     /// |f64 reference − MPFR|: the f64 reference's own error.
     pub reference_error: f64,
+    /// The f64 bound at this vertex (`reference_error` must not exceed it).
+    pub bound: f64,
 }
 
 /// One compared vertex.
@@ -156,6 +162,8 @@ pub struct SurfaceItem {
     pub reference: [f64; 3],
     /// |theirs − reference| (∞ for a non-finite coordinate).
     pub deviation: f64,
+    /// The tolerance at this vertex.
+    pub tolerance: f64,
     /// The MPFR spot check, for the listed items.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mp: Option<MpCheck>,
@@ -201,8 +209,20 @@ pub struct SurfaceDiffReport {
     pub count_matches_level: Option<u32>,
     /// Largest |coordinate| of the reference sampling.
     pub scale: f64,
-    /// The a-priori error bound of an f64 evaluation: [`F64_BOUND_ULPS`]·ε·scale.
+    /// The largest per-vertex f64 bound: patch part (γ_{8l+8}·Σ ω|b|BB) plus the map part.
     pub f64_bound: f64,
+    /// The map-and-blend part of every vertex's bound: [`F64_BOUND_ULPS`]·ε·scale.
+    pub f64_bound_maps: f64,
+    /// The largest patch part of a vertex's bound.
+    pub f64_bound_patch_max: f64,
+    /// The largest Σ_u ω_u max_d Σ|b_jk[d]| B_j B_k at a vertex, over scale: how much the
+    /// fit's control points cancel (1 for a patch with no cancellation).
+    pub cancellation_max: f64,
+    /// Spot checks whose f64 reference error exceeds that vertex's bound: the error analysis
+    /// is wrong there (they fail the verdict).
+    pub bound_violations: usize,
+    /// Vertices whose deviation exceeds their tolerance.
+    pub outside: usize,
     /// MPFR precision of the spot checks.
     pub mp_bits: u32,
     /// Spot checks done (worst items + spread).
@@ -262,17 +282,24 @@ pub fn diff_surface(
         },
     };
     let pattern = sample_points(pps, level)?;
-    let cf = pps.consts_f64();
-    let reference: Vec<[f64; 3]> = pattern
+    let bounded: Vec<BoundedPoint> = pattern
         .points
         .par_iter()
-        .map(|s| pps.eval(s.face, &s.bary, cf).map(|e| e.point))
+        .map(|s| pps.eval_f64_bounded(s.face, s.bary))
         .collect::<Result<_, _>>()?;
+    let reference: Vec<[f64; 3]> = bounded.iter().map(|b| b.point).collect();
     let scale = reference
         .iter()
         .flat_map(|p| p.iter())
         .fold(0.0f64, |a, &b| a.max(b.abs()));
-    let f64_bound = F64_BOUND_ULPS * f64::EPSILON * scale.max(1.0);
+    let f64_bound_maps = F64_BOUND_ULPS * f64::EPSILON * scale.max(1.0);
+    let factor = opts.planted_bound_factor.unwrap_or(1.0);
+    let bound: Vec<f64> = bounded.iter().map(|b| b.bound(scale) * factor).collect();
+    let f64_bound = bound.iter().fold(0.0f64, |a, &b| a.max(b));
+    let f64_bound_patch_max = bounded.iter().fold(0.0f64, |a, b| a.max(b.patch_bound));
+    let cancellation_max =
+        bounded.iter().fold(0.0f64, |a, b| a.max(b.abs_size)) / scale.max(f64::MIN_POSITIVE);
+    let tol_at = |r: usize| opts.tolerance.unwrap_or(2.0 * bound[r]);
     let same_count = theirs.len() == reference.len();
     let (matching, matching_note) = match (opts.matching, same_count) {
         (MatchMode::Order, true) => (
@@ -333,6 +360,7 @@ pub fn diff_surface(
                 theirs: theirs[i],
                 reference: reference[r],
                 deviation: if d.is_nan() { f64::INFINITY } else { d },
+                tolerance: tol_at(r),
                 mp: None,
             }
         })
@@ -370,13 +398,33 @@ pub fn diff_surface(
         (MatchMode::Order, Some(f)) => Some(f == pattern.faces.as_slice()),
         _ => None,
     };
-    // Worst items first, then spot checks in MPFR.
+    // Worst items first (relative to their tolerance), then spot checks in MPFR: evenly
+    // spread, and at the worst-conditioned vertices, where the f64 bound is most at risk.
     let n_items = items.len();
-    items.sort_by(|a, b| b.deviation.total_cmp(&a.deviation));
+    let outside = items
+        .iter()
+        .filter(|it| !(it.deviation <= it.tolerance))
+        .count();
+    let key = |it: &SurfaceItem| {
+        if it.tolerance > 0.0 {
+            it.deviation / it.tolerance
+        } else {
+            it.deviation
+        }
+    };
+    items.sort_by(|a, b| key(b).total_cmp(&key(a)));
     let mut chosen: Vec<usize> = (0..opts.worst.min(n_items)).collect();
     if opts.spot_checks > 0 && n_items > 0 {
         let step = (n_items / opts.spot_checks).max(1);
         chosen.extend((opts.worst.min(n_items)..n_items).step_by(step));
+        let mut by_size: Vec<usize> = (0..n_items).collect();
+        by_size.sort_by(|&a, &b| {
+            let (ra, rb) = (items[a].reference_vertex, items[b].reference_vertex);
+            bounded[rb].abs_size.total_cmp(&bounded[ra].abs_size)
+        });
+        chosen.extend(by_size.into_iter().take(opts.worst));
+        chosen.sort_unstable();
+        chosen.dedup();
     }
     let cm: Consts<Mp> = pps.consts(opts.bits);
     let checks: Vec<(usize, Result<MpCheck, OracleError>)> = chosen
@@ -393,6 +441,7 @@ pub fn diff_surface(
                         f64::INFINITY
                     },
                     reference_error: mp_distance(&it.reference, &e.point),
+                    bound: bound[it.reference_vertex],
                 })
                 .map_err(OracleError::from);
             (k, r)
@@ -400,30 +449,44 @@ pub fn diff_surface(
         .collect();
     let mut reference_error_max = 0.0f64;
     let mut mp_deviation_max = 0.0f64;
+    let mut bound_violations = 0;
+    let mut spot: Vec<SurfaceItem> = Vec::new();
     for (k, r) in checks {
         let c = r?;
-        reference_error_max = reference_error_max.max(c.reference_error);
-        mp_deviation_max = mp_deviation_max.max(c.deviation);
+        reference_error_max = dev_max(reference_error_max, c.reference_error);
+        mp_deviation_max = dev_max(mp_deviation_max, c.deviation);
+        let violated = !(c.reference_error <= c.bound);
         items[k].mp = Some(c);
+        if violated {
+            bound_violations += 1;
+            if k >= opts.worst {
+                spot.push(items[k].clone());
+            }
+        }
     }
     let spot_checks = chosen.len();
     items.truncate(opts.worst);
+    // A violated bound is listed with the worst items: it is the witness of a wrong analysis.
+    items.extend(spot.into_iter().take(opts.worst));
     let (tolerance, tolerance_source) = match opts.tolerance {
         Some(t) => (t, "--tolerance".to_string()),
         None => (
             2.0 * f64_bound,
-            "default: 2 × the f64 bound, as both f64 evaluations are within it of the exact value"
-                .to_string(),
+            "default: at each vertex 2 × its f64 bound (both f64 evaluations are within it of the exact value); the largest is printed".to_string(),
         ),
     };
     // Both directions count: every point of theirs near the surface, and every reference
     // point near one of theirs (a 3-vertex file is not the surface).
-    let reference_missing = rev
-        .as_ref()
-        .map(|r| r.iter().filter(|&&d| d.is_nan() || d > tolerance).count());
+    let reference_missing = rev.as_ref().map(|r| {
+        r.iter()
+            .enumerate()
+            .filter(|&(k, &d)| !(d <= tol_at(k)))
+            .count()
+    });
     let within_tolerance = non_finite == 0
         && !theirs.is_empty()
-        && stats.max <= tolerance
+        && outside == 0
+        && bound_violations == 0
         && reference_missing.unwrap_or(0) == 0;
     Ok(SurfaceDiffReport {
         level,
@@ -442,6 +505,11 @@ pub fn diff_surface(
         count_matches_level,
         scale,
         f64_bound,
+        f64_bound_maps,
+        f64_bound_patch_max,
+        cancellation_max,
+        bound_violations,
+        outside,
         mp_bits: opts.bits,
         spot_checks,
         reference_error_max,
@@ -526,25 +594,39 @@ pub fn render_surface(r: &SurfaceDiffReport) -> String {
     }
     let _ = writeln!(
         s,
-        "f64 bound: {}·ε·scale = {:.3e} (scale = max |coordinate| = {:.3e}); MPFR {}-bit spot checks on {} vertices: reference f64 error max {:.3e}, theirs vs MPFR max {:.3e}",
-        F64_BOUND_ULPS, r.f64_bound, r.scale, r.mp_bits, r.spot_checks, r.reference_error_max, r.mp_deviation_max
+        "f64 bound per vertex (SPEC R-diff-f64-bound): patches γ_(8l+8)·Σω|b|BB, max {:.3e} (control points cancel up to {:.3e}× the scale) + maps {}·ε·scale = {:.3e} (scale = max |coordinate| = {:.3e}); largest {:.3e}",
+        r.f64_bound_patch_max, r.cancellation_max, F64_BOUND_ULPS, r.f64_bound_maps, r.scale, r.f64_bound
     );
-    let _ = writeln!(s, "tolerance {:.3e} ({})", r.tolerance, r.tolerance_source);
+    let _ = writeln!(
+        s,
+        "MPFR {}-bit spot checks on {} vertices: reference f64 error max {:.3e}, theirs vs MPFR max {:.3e}; {} where the reference's error exceeds its bound{}",
+        r.mp_bits,
+        r.spot_checks,
+        r.reference_error_max,
+        r.mp_deviation_max,
+        r.bound_violations,
+        if r.bound_violations > 0 { " (the error analysis is WRONG there: listed below)" } else { "" }
+    );
+    let _ = writeln!(
+        s,
+        "tolerance {:.3e} ({}); {} vertices outside their tolerance",
+        r.tolerance, r.tolerance_source, r.outside
+    );
     let _ = writeln!(s, "worst vertices (eval argument: face, (λ, μ, ν)):");
     for w in &r.worst {
         let mp =
             w.mp.as_ref()
                 .map(|m| {
                     format!(
-                        "  vs MPFR {:.3e} (reference error {:.3e})",
-                        m.deviation, m.reference_error
+                        "  vs MPFR {:.3e} (reference error {:.3e}, bound {:.3e})",
+                        m.deviation, m.reference_error, m.bound
                     )
                 })
                 .unwrap_or_default();
         let _ = writeln!(
             s,
-            "  vertex {:>7} ↔ ref {:>7}: deviation {:.3e}  face {} bary ({}, {}, {})  theirs {:?} reference {:?}{mp}",
-            w.vertex, w.reference_vertex, w.deviation, w.face, w.bary[0], w.bary[1], w.bary[2], w.theirs, w.reference
+            "  vertex {:>7} ↔ ref {:>7}: deviation {:.3e} (tolerance {:.3e})  face {} bary ({}, {}, {})  theirs {:?} reference {:?}{mp}",
+            w.vertex, w.reference_vertex, w.deviation, w.tolerance, w.face, w.bary[0], w.bary[1], w.bary[2], w.theirs, w.reference
         );
     }
     let _ = writeln!(

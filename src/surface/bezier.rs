@@ -64,6 +64,13 @@ pub fn bernstein_f64(l: usize, half: f64, t: f64, out: &mut [f64]) {
     }
 }
 
+/// [`bernstein_f64`] into a new vector (any l).
+pub fn bernstein_vec_f64(l: usize, half: f64, t: f64) -> Vec<f64> {
+    let mut out = vec![0.0; l + 1];
+    bernstein_f64(l, half, t, &mut out);
+    out
+}
+
 /// Def. 5.2.1, generic: the l+1 Bernstein values at t.
 pub fn bernstein<S: SurfaceScalar>(l: usize, half: &S, t: &S) -> Vec<S> {
     let prec = t.precision_bits();

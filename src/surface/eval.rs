@@ -148,15 +148,11 @@ impl Pps {
         c: &Consts<S>,
     ) -> Result<EvalPoint<S>, SurfaceError> {
         check_barycentric(bary.clone().map(|x| x.to_f64()))?;
-        let [u, w, x] = self.face(f)?;
+        self.face(f)?;
         let qp = canonical_point(bary, c);
         let chart = self.choose_chart(&qp, c);
         let (vertex, q) = self.chart_point(f, chart, &qp, c)?;
-        let only = self.stages.triangle_blend.then_some(match chart {
-            Chart::U => [w, x],
-            Chart::X => [u, w],
-            Chart::W => [u, x],
-        });
+        let only = self.blend_only(f, chart)?;
         let point = self.theta_only(vertex, &q, c, only)?;
         Ok(EvalPoint {
             chart,
@@ -164,6 +160,21 @@ impl Pps {
             q,
             point,
         })
+    }
+
+    /// The two neighbours eval blends from `chart` of face `f` when the profile blends
+    /// within the triangle only (authors-code); `None`: every u ∈ J_v(p).
+    pub(crate) fn blend_only(
+        &self,
+        f: FaceId,
+        chart: Chart,
+    ) -> Result<Option<[VertexId; 2]>, SurfaceError> {
+        let [u, w, x] = self.face(f)?;
+        Ok(self.stages.triangle_blend.then_some(match chart {
+            Chart::U => [w, x],
+            Chart::X => [u, w],
+            Chart::W => [u, x],
+        }))
     }
 
     /// eval in f64 for many points at once, in parallel (rayon); `out[i]` is the result for

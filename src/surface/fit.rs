@@ -206,6 +206,12 @@ pub fn factor_degree(m: u32, profile: Profile) -> DegreeFit {
     factor_degree_with(m, profile, true)
 }
 
+/// [`factor_degree`] without the symmetry blocks (one thin SVD of A): the unstructured
+/// baseline of the scaling experiment (`examples/fit_scaling.rs`, SPEC `R-fit-scaling`).
+pub fn factor_degree_plain(m: u32, profile: Profile) -> DegreeFit {
+    factor_degree_with(m, profile, false)
+}
+
 /// [`factor_degree`]; `symmetric = false` forces the trivial group (one thin SVD of A).
 fn factor_degree_with(m: u32, profile: Profile, symmetric: bool) -> DegreeFit {
     let l = profile.bezier_degree(m);

@@ -20,6 +20,7 @@ pub mod checks;
 pub mod consts;
 pub mod error;
 pub mod eval;
+pub mod eval_bound;
 pub mod fit;
 pub mod geometry;
 pub mod jet;
