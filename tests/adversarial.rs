@@ -851,7 +851,7 @@ fn x_adv_05_own_sampling_fails_own_diff_r_diff_f64_bound() {
     use pseudomanifold::oracle::surface_diff::{diff_surface, SurfaceDiffOptions, F64_BOUND_ULPS};
     let k = surface(&bipyramid(24));
     let pps = build(&k);
-    let m = sample_surface(&pps, 2, false).expect("level 2");
+    let m = sample_surface(&pps, 2, None).expect("level 2");
     let opts = SurfaceDiffOptions {
         spot_checks: 24,
         worst: 8,
