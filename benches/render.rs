@@ -62,7 +62,7 @@ fn bench(c: &mut Criterion) {
     ] {
         g.bench_function(format!("sample {name} level 2 {attrs:?}"), |b| {
             b.iter(|| {
-                sample_surface_with(&pps, 2, attrs, false)
+                sample_surface_with(&pps, 2, attrs, None)
                     .expect("sample")
                     .positions
                     .len()

@@ -11,18 +11,18 @@ mod support;
 use pseudomanifold::exact::plane::{disks, Pt};
 use pseudomanifold::exact::q3::{q, Q3};
 use pseudomanifold::exact::replay::{
-    first_mismatch, plant_sign_error, render, replay, Check, Expect, Step,
+    first_mismatch, plant_sign_error, render, replay, Expect, Step, StepCheck,
 };
 use support::*;
 
 /// Degrees enumerated.
 const MAX_DEG: u32 = 48;
 
-fn step(id: &str, claim: &str, check: Check, expect: Expect) -> Step {
+fn step(id: &str, claim: &str, check: StepCheck, expect: Expect) -> Step {
     Step::new(id, claim, check, expect)
 }
-fn derived(ids: &[&str]) -> Check {
-    Check::Derived(ids.iter().map(|s| s.to_string()).collect())
+fn derived(ids: &[&str]) -> StepCheck {
+    StepCheck::Derived(ids.iter().map(|s| s.to_string()).collect())
 }
 
 /// The steps of Sec. 6.1.4 for the counterclockwise triangle σ = [u, w, x].
@@ -64,89 +64,89 @@ pub fn eval_steps(t: Tri) -> Vec<Step> {
         step(
             "C6.1.4-cover",
             "t ⊂ int(C) ∪ int(D) ∪ int(E_b): every point of t is within the circumradius of a vertex, and circumradius² = 1/3 < 3/4",
-            Check::Fact(covered, format!("circumcentre {cc_pt}, squared distance {r2} to a, b, c")),
+            StepCheck::Fact(covered, format!("circumcentre {cc_pt}, squared distance {r2} to a, b, c")),
             Expect::Holds,
         ),
         step(
             "C6.1.4-C-as-stated",
             "int(C) is the image of Ω_u by g_u∘R_(u,x) (angles of the image cover (−π, π])",
-            Check::PolarCovers { chain: chain(vec![gu(), rux()]), domain: pi_range(), target: pi_range() },
+            StepCheck::PolarCovers { chain: chain(vec![gu(), rux()]), domain: pi_range(), target: pi_range() },
             g_uncovered(mu),
         ),
         step(
             "C6.1.4-C-on-t",
             "… on t: the angles [−π/3, 0] of t at a are covered by g_u∘R_(u,x)(Ω_u)",
-            Check::PolarCovers { chain: chain(vec![gu(), rux()]), domain: pi_range(), target: t_at_a.clone() },
+            StepCheck::PolarCovers { chain: chain(vec![gu(), rux()]), domain: pi_range(), target: t_at_a.clone() },
             Expect::Holds,
         ),
         step(
             "C6.1.4-D-as-stated",
             "int(D) is the image of Ω_x by h∘g_x∘R_(x,u) (needs g_x∘R_(x,u)(Ω_x) = int(C))",
-            Check::PolarCovers { chain: chain(vec![gx()]), domain: pi_range(), target: pi_range() },
+            StepCheck::PolarCovers { chain: chain(vec![gx()]), domain: pi_range(), target: pi_range() },
             g_uncovered(mx),
         ),
         step(
             "C6.1.4-D-on-t",
             "… on t: h(t) has angles [0, π/3] at a, covered by g_x∘R_(x,u)(Ω_x)",
-            Check::PolarCovers { chain: chain(vec![gx()]), domain: pi_range(), target: t_h.clone() },
+            StepCheck::PolarCovers { chain: chain(vec![gx()]), domain: pi_range(), target: t_h.clone() },
             Expect::Holds,
         ),
         step(
             "C6.1.4-E-disk",
             "int(E_b) = M_{−π/3}∘h(int(C)) (so E_b is the image of Ω_w by M_{−π/3}∘h∘g_w∘R_(w,u))",
-            Check::DiskImage { map: vec![rot6(-2), h()], disk: c.clone(), claimed: gb.clone() },
+            StepCheck::DiskImage { map: vec![rot6(-2), h()], disk: c.clone(), claimed: gb.clone() },
             Expect::Holds,
         ),
         step(
             "C6.1.4-E-on-t",
             "… on t: h⁻¹∘M_{π/3}(t) = t has angles [−π/3, 0] at a, covered by g_w∘R_(w,u)(Ω_w)",
-            Check::PolarCovers { chain: chain(vec![g("g_w", mw)]), domain: pi_range(), target: t_at_a },
+            StepCheck::PolarCovers { chain: chain(vec![g("g_w", mw)]), domain: pi_range(), target: t_at_a },
             Expect::Holds,
         ),
         // case (1)
-        step("C6.1.4-case1-def", "φ_xu(q) = R_(x,u)⁻¹∘g_x⁻¹∘h∘g_u∘R_(u,x)(q) (Def. 4.1.10; the paper cites Def. 3.3.2)", Check::Definition, Expect::Definition),
+        step("C6.1.4-case1-def", "φ_xu(q) = R_(x,u)⁻¹∘g_x⁻¹∘h∘g_u∘R_(u,x)(q) (Def. 4.1.10; the paper cites Def. 3.3.2)", StepCheck::Definition, Expect::Definition),
         step(
             "C6.1.4-case1-cancel",
             "g_u∘R_(u,x)∘R_(u,x)⁻¹∘g_u⁻¹(q') = q' for q' ∈ C∩D (|θ| < π/3); in particular q ∈ Ω_ux",
-            Check::PolarEq { lhs: chain(vec![gu(), rux(), rux_i(), gui()]), rhs: chain(vec![]), region: ext_d() },
+            StepCheck::PolarEq { lhs: chain(vec![gu(), rux(), rux_i(), gui()]), rhs: chain(vec![]), region: ext_d() },
             Expect::Holds,
         ),
-        step("C6.1.4-case1-h", "h = h⁻¹", Check::AffineEq { lhs: vec![h(), h()], rhs: vec![] }, Expect::Holds),
+        step("C6.1.4-case1-h", "h = h⁻¹", StepCheck::AffineEq { lhs: vec![h(), h()], rhs: vec![] }, Expect::Holds),
         step("C6.1.4-case1", "case (1): φ_xu(q) = R_(x,u)⁻¹∘g_x⁻¹∘h⁻¹(q')", derived(&["C6.1.4-case1-cancel", "C6.1.4-case1-h"]), Expect::Holds),
         // case (2)
         step(
             "C6.1.4-case2-rot-as-written",
             "R_(u,w)∘R_(u,x)⁻¹ = M_{π/3} (as written)",
-            Check::RotEq { lhs: vec![q(-2 * i64::from(t.su_w()), m_u), q(2 * i64::from(t.su_x()), m_u)], rhs: vec![q(1, 3)] },
+            StepCheck::RotEq { lhs: vec![q(-2 * i64::from(t.su_w()), m_u), q(2 * i64::from(t.su_x()), m_u)], rhs: vec![q(1, 3)] },
             if mu == 6 { Expect::Holds } else { Expect::Fails },
         ),
         step(
             "C6.1.4-case2-conj-as-written",
             "g_u∘M_{π/3}∘g_u⁻¹(q') = M_{π/3}(q') for q' ∈ C∩E_b (as written; θ ∈ (−2π/3, 0))",
-            Check::PolarEq { lhs: chain(vec![gu(), m_p3(), gui()]), rhs: chain(vec![m_p3()]), region: ext_g() },
+            StepCheck::PolarEq { lhs: chain(vec![gu(), m_p3(), gui()]), rhs: chain(vec![m_p3()]), region: ext_g() },
             as_written_conj,
         ),
         step(
             "C6.1.4-case2-rot",
             "(corrected) R_(u,w)∘R_(u,x)⁻¹ = M_{2π/m_u}",
-            Check::RotEq { lhs: vec![q(-2 * i64::from(t.su_w()), m_u), q(2 * i64::from(t.su_x()), m_u)], rhs: vec![q(2, m_u)] },
+            StepCheck::RotEq { lhs: vec![q(-2 * i64::from(t.su_w()), m_u), q(2 * i64::from(t.su_x()), m_u)], rhs: vec![q(2, m_u)] },
             Expect::Holds,
         ),
         step(
             "C6.1.4-case2-conj",
             "(corrected) g_u∘R_(u,w)∘R_(u,x)⁻¹∘g_u⁻¹(q') = M_{π/3}(q') for q' ∈ C∩E_b; so g_u∘R_(u,w)(q) ∈ M_{π/3}(C∩E_b) = E and q ∈ Ω_uw",
-            Check::PolarEq { lhs: chain(vec![gu(), ruw(), rux_i(), gui()]), rhs: chain(vec![m_p3()]), region: ext_g() },
+            StepCheck::PolarEq { lhs: chain(vec![gu(), ruw(), rux_i(), gui()]), rhs: chain(vec![m_p3()]), region: ext_g() },
             Expect::Holds,
         ),
-        step("C6.1.4-case2-disk", "M_{π/3}(int(E_b)) = int(D), M_{π/3}(int(C)) = int(C)", Check::DiskImage { map: vec![rot6(2)], disk: gb.clone(), claimed: d.clone() }, Expect::Holds),
-        step("C6.1.4-case2-h", "h = h⁻¹", Check::AffineEq { lhs: vec![h(), h()], rhs: vec![] }, Expect::Holds),
+        step("C6.1.4-case2-disk", "M_{π/3}(int(E_b)) = int(D), M_{π/3}(int(C)) = int(C)", StepCheck::DiskImage { map: vec![rot6(2)], disk: gb.clone(), claimed: d.clone() }, Expect::Holds),
+        step("C6.1.4-case2-h", "h = h⁻¹", StepCheck::AffineEq { lhs: vec![h(), h()], rhs: vec![] }, Expect::Holds),
         step("C6.1.4-case2", "case (2): φ_wu(q) = R_(w,u)⁻¹∘g_w⁻¹∘h⁻¹∘M_{π/3}(q')", derived(&["C6.1.4-case2-rot", "C6.1.4-case2-conj", "C6.1.4-case2-disk", "C6.1.4-case2-h"]), Expect::Holds),
         // case (3)
-        step("C6.1.4-case3-def", "φ_wx(q) = R_(w,x)⁻¹∘g_w⁻¹∘h∘g_x∘R_(x,w)(q)", Check::Definition, Expect::Definition),
+        step("C6.1.4-case3-def", "φ_wx(q) = R_(w,x)⁻¹∘g_w⁻¹∘h∘g_x∘R_(x,w)(q)", StepCheck::Definition, Expect::Definition),
         step(
             "C6.1.4-case3-region",
             "for q' ∈ D∩E_b: h⁻¹(q') ∈ C∩F, M_{−π/3}(C∩F) = C∩D and h(C∩D) = C∩D, so the arguments below have the stated angles",
-            Check::Fact(
+            StepCheck::Fact(
                 disk_eq(&[h()], &d, &c) && disk_eq(&[h()], &gb, &disks::f()) && disk_eq(&[rot6(-2)], &disks::f(), &d) && disk_eq(&[rot6(-2)], &c, &c),
                 "h(D) = C, h(E_b) = F, M_{−π/3}(F) = D, M_{−π/3}(C) = C".into(),
             ),
@@ -155,37 +155,37 @@ pub fn eval_steps(t: Tri) -> Vec<Step> {
         step(
             "C6.1.4-case3-sub-w",
             "R_(w,x)⁻¹∘g_w⁻¹ = R_(w,u)⁻¹∘g_w⁻¹∘M_{−π/3} (Prop. 4.2.4) on h∘g_x∘R_(x,w)(q) ∈ C∩D (|θ| < π/3)",
-            Check::PolarEq { lhs: chain(vec![rwx_i(), gwi()]), rhs: chain(vec![rwu_i(), gwi(), m_m3()]), region: ext_d() },
+            StepCheck::PolarEq { lhs: chain(vec![rwx_i(), gwi()]), rhs: chain(vec![rwu_i(), gwi(), m_m3()]), region: ext_d() },
             Expect::Holds,
         ),
         step(
             "C6.1.4-case3-sub-x",
             "R_(x,u)⁻¹∘g_x⁻¹ = R_(x,w)⁻¹∘g_x⁻¹∘M_{−π/3} (Prop. 4.2.4) on h⁻¹(q') ∈ C∩F (θ ∈ (0, 2π/3))",
-            Check::PolarEq { lhs: chain(vec![rxu_i(), gxi()]), rhs: chain(vec![rxw_i(), gxi(), m_m3()]), region: ext_f() },
+            StepCheck::PolarEq { lhs: chain(vec![rxu_i(), gxi()]), rhs: chain(vec![rxw_i(), gxi(), m_m3()]), region: ext_f() },
             Expect::Holds,
         ),
         step(
             "C6.1.4-case3-cancel",
             "g_x∘R_(x,w)∘R_(x,w)⁻¹∘g_x⁻¹ = id on M_{−π/3}∘h⁻¹(q') ∈ C∩D",
-            Check::PolarEq { lhs: chain(vec![gx(), rxw(), rxw_i(), gxi()]), rhs: chain(vec![]), region: ext_d() },
+            StepCheck::PolarEq { lhs: chain(vec![gx(), rxw(), rxw_i(), gxi()]), rhs: chain(vec![]), region: ext_d() },
             Expect::Holds,
         ),
         step(
             "C6.1.4-case3-h3",
             "h = M_{−π/3}∘h∘M_{−π/3}∘h∘M_{−π/3} and h = h⁻¹",
-            Check::AffineEq { lhs: vec![rot6(-2), h(), rot6(-2), h(), rot6(-2)], rhs: vec![h()] },
+            StepCheck::AffineEq { lhs: vec![rot6(-2), h(), rot6(-2), h(), rot6(-2)], rhs: vec![h()] },
             Expect::Holds,
         ),
         step(
             "C6.1.4-case3-text",
             "h∘M_{π/3} = M_{−π/3}∘h∘M_{−π/3}∘h⁻¹ (the text's conclusion)",
-            Check::AffineEq { lhs: vec![h(), rot6(2)], rhs: vec![rot6(-2), h(), rot6(-2), h()] },
+            StepCheck::AffineEq { lhs: vec![h(), rot6(2)], rhs: vec![rot6(-2), h(), rot6(-2), h()] },
             Expect::Holds,
         ),
         step(
             "C6.1.4-case3-last-as-written",
             "last displayed line: M_{−π/3}∘h∘M_{−π/3}∘h⁻¹ = h∘M_{−π/3}",
-            Check::AffineEq { lhs: vec![rot6(-2), h(), rot6(-2), h()], rhs: vec![h(), rot6(-2)] },
+            StepCheck::AffineEq { lhs: vec![rot6(-2), h(), rot6(-2), h()], rhs: vec![h(), rot6(-2)] },
             Expect::Fails,
         ),
         step(

@@ -6,7 +6,7 @@
 use pseudomanifold::exact::plane::{disks, Affine, Disk};
 use pseudomanifold::exact::polar::{Chain, Interval, PMap, Region};
 use pseudomanifold::exact::q3::{q, Q};
-use pseudomanifold::exact::replay::{Check, Expect, Step};
+use pseudomanifold::exact::replay::{Expect, Step, StepCheck};
 
 /// A triangle [u, w, x] of K, oriented counterclockwise (the orientation of Lemma 4.2.2's
 /// "without loss of generality" and of Sec. 6.1.4's triangle t = (a, b, c)):
@@ -144,19 +144,19 @@ pub fn extent_steps(prefix: &str) -> Vec<Step> {
         Step::new(
             &format!("{prefix}-extD"),
             "int(D) lies in the open sector |θ| < π/3 (the rays at ±π/3 are tangent to D), so E = C∩D has angles in (−π/3, π/3)",
-            Check::DiskInSector { disk: disks::d(), lo: -2, hi: 2 },
+            StepCheck::DiskInSector { disk: disks::d(), lo: -2, hi: 2 },
             Expect::Holds,
         ),
         Step::new(
             &format!("{prefix}-extG"),
             "int(G), G of centre (1/2, −√3/2), lies in the open sector θ ∈ (−2π/3, 0)",
-            Check::DiskInSector { disk: disks::g(), lo: -4, hi: 0 },
+            StepCheck::DiskInSector { disk: disks::g(), lo: -4, hi: 0 },
             Expect::Holds,
         ),
         Step::new(
             &format!("{prefix}-extF"),
             "int(F), F of centre (1/2, √3/2), lies in the open sector θ ∈ (0, 2π/3)",
-            Check::DiskInSector { disk: disks::f(), lo: 0, hi: 4 },
+            StepCheck::DiskInSector { disk: disks::f(), lo: 0, hi: 4 },
             Expect::Holds,
         ),
     ]

@@ -45,7 +45,7 @@ fn x_adv_01_nan_normals_at_edge_midpoints_r_xi_finite() {
     // The sampled octahedron: every normal a unit vector, every curvature finite.
     let k = surface(&octahedron());
     let pps = build(&k);
-    let m = sample_surface(&pps, 1, false).expect("sample");
+    let m = sample_surface(&pps, 1, None).expect("sample");
     for (i, n) in m.normals.iter().enumerate() {
         let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
         assert!((len - 1.0).abs() < 1e-9, "vertex {i}: normal {n:?}");
@@ -293,7 +293,7 @@ fn x_adv_04_diff_surface_missing_points_r_diff_two_sided() {
     use pseudomanifold::oracle::Session;
     let k = surface(&octahedron());
     let pps = build(&k);
-    let l2 = sample_surface(&pps, 2, false).expect("level 2").positions;
+    let l2 = sample_surface(&pps, 2, None).expect("level 2").positions;
     let opts = |level| SurfaceDiffOptions {
         level,
         spot_checks: 2,
@@ -433,7 +433,7 @@ fn x_adv_16_gluing_witness_sides_differ() {
          [[glue]]\ni = 1\nj = 1\nomega_ij = [\"1\", \"2\"]\na = \"2\"\nb = \"-3/2\"\n",
     )
     .expect("write");
-    let (text, ok) = pseudomanifold::gluing::cli::run_gluing_command(&file, false).expect("run");
+    let (text, ok) = pseudomanifold::gluing::report::gluing_report(&file, false).expect("run");
     assert!(!ok, "{text}");
     let mut seen = 0;
     for line in text.lines().filter(|l| l.contains('≠')) {
@@ -494,7 +494,7 @@ fn x_adv_18_diff_hygiene() {
         r.stats.max
     );
     let pps = build(&k);
-    let mut pts = sample_surface(&pps, 1, false).expect("level 1").positions;
+    let mut pts = sample_surface(&pps, 1, None).expect("level 1").positions;
     pts[5][1] = f64::NAN;
     let d = diff_surface(
         &pps,
@@ -677,12 +677,12 @@ fn x_adv_03_coordinates_near_f64_range_r_scale_range() {
             "scale {s:e} accepted"
         );
     }
-    let unit = sample_surface(&build(&surface(&scaled(1.0))), 1, false).expect("sample");
+    let unit = sample_surface(&build(&surface(&scaled(1.0))), 1, None).expect("sample");
     for s in [1e50, 1e-50] {
         let k = surface(&scaled(s));
         let pps =
             Pps::try_build(&k, &PnTriangles::new(&k), PpsOptions::default()).expect("in range");
-        let m = sample_surface(&pps, 1, false).expect("sample");
+        let m = sample_surface(&pps, 1, None).expect("sample");
         for (i, (p, q)) in m.positions.iter().zip(&unit.positions).enumerate() {
             for d in 0..3 {
                 assert!(
@@ -851,7 +851,7 @@ fn x_adv_05_own_sampling_fails_own_diff_r_diff_f64_bound() {
     use pseudomanifold::oracle::surface_diff::{diff_surface, SurfaceDiffOptions, F64_BOUND_ULPS};
     let k = surface(&bipyramid(24));
     let pps = build(&k);
-    let m = sample_surface(&pps, 2, false).expect("level 2");
+    let m = sample_surface(&pps, 2, None).expect("level 2");
     let opts = SurfaceDiffOptions {
         spot_checks: 24,
         worst: 8,

@@ -197,8 +197,44 @@ fn d4_1_8_config_validation_is_typed() {
         EdgeConfig::new(6, 0, 5, 5),
         Err(ConfigError::LabelOutOfRange { .. })
     ));
-    assert!(TriangleConfig::new(6, 6, 6, 0, 2, 0, 1, 0, 1).is_err()); // u's labels not adjacent
-    assert!(TriangleConfig::new(6, 6, 6, 0, 1, 0, 5, 0, 5).is_err()); // mixed orientations
+    // u's labels not adjacent
+    assert!(TriangleConfig::new(
+        Corner {
+            m: 6,
+            next: 0,
+            prev: 2
+        },
+        Corner {
+            m: 6,
+            next: 1,
+            prev: 0
+        },
+        Corner {
+            m: 6,
+            next: 0,
+            prev: 1
+        }
+    )
+    .is_err());
+    // mixed orientations
+    assert!(TriangleConfig::new(
+        Corner {
+            m: 6,
+            next: 0,
+            prev: 1
+        },
+        Corner {
+            m: 6,
+            next: 5,
+            prev: 0
+        },
+        Corner {
+            m: 6,
+            next: 0,
+            prev: 5
+        }
+    )
+    .is_err());
     assert!(TriangleConfig::ccw(5, 7, 3, 4, 6, 2).is_ok());
     let bad = EdgeConfig {
         m_u: 6,

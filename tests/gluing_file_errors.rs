@@ -1,12 +1,12 @@
 //! Bad gluing files give typed errors naming the file and the field, never a panic.
 
 use pseudomanifold::gluing::file::{parse_gluing_str, read_gluing_file};
-use pseudomanifold::gluing::GluingError;
+use pseudomanifold::gluing::GluingFileError;
 use std::path::Path;
 
 fn field_err(text: &str) -> (String, String) {
     match parse_gluing_str(text, Path::new("bad.toml")) {
-        Err(GluingError::Field {
+        Err(GluingFileError::Field {
             file,
             field,
             message,
@@ -73,10 +73,10 @@ fn d3_4_1_file_errors_name_the_field() {
 fn d3_4_1_file_syntax_and_io_errors() {
     assert!(matches!(
         parse_gluing_str("[[domain", Path::new("x.toml")),
-        Err(GluingError::Syntax { .. })
+        Err(GluingFileError::Syntax { .. })
     ));
     let e = read_gluing_file(Path::new("/nonexistent/gluing.toml")).unwrap_err();
-    assert!(matches!(e, GluingError::Io { .. }));
+    assert!(matches!(e, GluingFileError::Io { .. }));
     assert!(e.to_string().contains("/nonexistent/gluing.toml"));
 }
 
@@ -140,7 +140,7 @@ fn d3_4_1_file_limits_are_typed_errors() {
     std::fs::write(&big, &text).expect("write");
     let e = read_gluing_file(&big).unwrap_err();
     assert!(
-        matches!(e, GluingError::TooLarge { bytes, .. } if bytes == text.len() as u64),
+        matches!(e, GluingFileError::TooLarge { bytes, .. } if bytes == text.len() as u64),
         "{e:?}"
     );
     assert!(e.to_string().contains("big.toml"), "{e}");

@@ -1,12 +1,12 @@
 //! App. A.2's counterexamples and their repairs, read from `examples/gluing/*.toml` and decided
 //! by the exact 1-D backend; plus the `ppm gluing` command on them.
 
-use pseudomanifold::gluing::cli::run_gluing_command;
 use pseudomanifold::gluing::exact1d::data::q;
 use pseudomanifold::gluing::exact1d::decide::{self, check_4_with_radii};
 use pseudomanifold::gluing::exact1d::Exact1d;
 use pseudomanifold::gluing::file::read_gluing_file;
 use pseudomanifold::gluing::relation::{check_claim, check_equivalence, related, GridSample};
+use pseudomanifold::gluing::report::gluing_report;
 use pseudomanifold::report::CheckResult;
 use std::path::PathBuf;
 
@@ -207,17 +207,17 @@ fn d3_4_1_4_radii_really_separate_on_a_fine_grid() {
 
 #[test]
 fn d3_4_1_cli_reports_verdict_table_with_witnesses() {
-    let (text, ok) = run_gluing_command(&path("fork"), false).expect("runs");
+    let (text, ok) = gluing_report(&path("fork"), false).expect("runs");
     assert!(!ok);
     assert!(text.contains("FAILS    D3.4.1(4)"), "{text}");
     assert!(
         text.contains("x = -2 ∈ ∂Ω_12 ∩ Ω_1, y = 2 ∈ ∂Ω_21 ∩ Ω_2"),
         "{text}"
     );
-    let (text, ok) = run_gluing_command(&path("circle3"), false).expect("runs");
+    let (text, ok) = gluing_report(&path("circle3"), false).expect("runs");
     assert!(ok, "{text}");
     assert!(text.contains("all conditions hold"));
-    let (json, ok) = run_gluing_command(&path("line_counterexample"), true).expect("runs");
+    let (json, ok) = gluing_report(&path("line_counterexample"), true).expect("runs");
     assert!(!ok);
     let v: serde_json::Value = serde_json::from_str(&json).expect("valid JSON");
     assert_eq!(v["all_hold"], false);

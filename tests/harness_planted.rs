@@ -364,3 +364,120 @@ fn x_harness_gluing_nan_error_empty() {
         assert_skipped(&by(&empty, id));
     }
 }
+
+#[test]
+fn x_harness_sampled_cocycle_counts_undefined_phi() {
+    // φ_ji undefined off the diagonal (mode 1): the cocycle checks cannot examine those
+    // samples; they are counted, never dropped, and the strict reading (which claims the right
+    // side defined) fails.
+    let err = check_all(&Planted { mode: 1 }, &SampleConfig::default());
+    let by = |id: &str| err.iter().find(|r| r.id == id).cloned().unwrap();
+    for id in ["D3.4.1(3c)", "CA.2-GH", "CA.2-GH-strict"] {
+        assert!(by(id).eval_errors > 0, "{id}: undefined φ not counted");
+    }
+    assert_fails(&by("CA.2-GH-strict"));
+}
+
+// ------------------------------------------------------------------ Sec. 3.1 (mesh validators)
+
+fn validated(raw: &pseudomanifold::mesh::RawMesh) -> Vec<CheckResult> {
+    validate(raw).report.checks
+}
+
+#[test]
+fn x_harness_mesh_nan_is_an_offence() {
+    // A NaN coordinate: reported by X-finite with a witness, and no geometric check holds by
+    // examining the NaN face (the faces around it are not examined by D3.1.1).
+    let mut raw = icosahedron();
+    raw.positions[0][1] = f64::NAN;
+    let rs = validated(&raw);
+    assert_fails(by_id(&rs, "X-finite"));
+    let affine = by_id(&rs, "D3.1.1");
+    assert_eq!(affine.examined, raw.faces.len() as u64 - 5);
+    assert!(validate(&raw).surface.is_none());
+}
+
+#[test]
+fn x_harness_mesh_bad_index_is_reported() {
+    // An index out of range (the mesh analogue of an evaluation error): reported with a
+    // witness naming the face, never skipped.
+    let mut raw = icosahedron();
+    raw.faces[3][2] = 99;
+    let rs = validated(&raw);
+    let r = by_id(&rs, "D3.1.3(i)");
+    assert_fails(r);
+    assert!(r.witnesses[0].text.contains("99"), "{:?}", r.witnesses);
+    assert!(validate(&raw).surface.is_none());
+}
+
+#[test]
+fn x_harness_mesh_empty_is_skipped() {
+    // No triangles: X-nonempty fails; every check that examines elements examined none and is
+    // skipped, never "holds".
+    let raw = pseudomanifold::mesh::RawMesh::from_arrays(vec![], vec![]);
+    let rs = validated(&raw);
+    assert_fails(by_id(&rs, "X-nonempty"));
+    for r in rs.iter().filter(|r| r.id != "X-nonempty") {
+        assert_skipped(r);
+    }
+}
+
+// ------------------------------------------------------------------ Sec. 3.4 (exact 1-D deciders)
+
+mod exact1d {
+    use super::*;
+    use pseudomanifold::gluing::exact1d::data::{iv, q};
+    use pseudomanifold::gluing::exact1d::decide;
+    use pseudomanifold::gluing::exact1d::Exact1d;
+
+    /// Ω_1 = (0, 1), Ω_2 = (10, 11), glued by translation on (0, 1) ↔ (10, 11), except that
+    /// φ_12 maps (10, 11) to (5, 6), outside Ω_12: φ_12 ∘ φ_21 is undefined on all of Ω_12.
+    fn undefined_inverse() -> Exact1d {
+        let mut g = Exact1d::default();
+        g.add_domain(1, iv(0, 1));
+        g.add_domain(2, iv(10, 11));
+        g.add_piece(1, 2, iv(0, 1), q(1, 1), q(10, 1));
+        g.add_piece(2, 1, iv(10, 11), q(1, 1), q(-5, 1));
+        g.with_default_diagonal()
+    }
+
+    #[test]
+    fn x_harness_exact1d_error_is_reported() {
+        let r = decide::check_3b(&undefined_inverse());
+        assert_fails(&r);
+        assert!(
+            r.eval_errors > 0,
+            "undefined composition not counted: {r:?}"
+        );
+        // φ_ii defined on part of Ω_i only: id_Ω_i is not φ_ii, reported as an error.
+        let mut g = Exact1d::default();
+        g.add_domain(1, iv(0, 2));
+        g.add_piece(1, 1, iv(0, 1), q(1, 1), q(0, 1));
+        let r = decide::check_3a(&g);
+        assert_fails(&r);
+        assert!(r.eval_errors > 0);
+    }
+
+    #[test]
+    fn x_harness_exact1d_empty_domain_is_skipped() {
+        // I = ∅: (1) fails (I must be non-empty); every other condition examines nothing.
+        let rs = decide::check_all(&Exact1d::default());
+        assert_fails(by_id(&rs, "D3.4.1(1)"));
+        for r in rs.iter().filter(|r| r.id != "D3.4.1(1)") {
+            assert_skipped(r);
+        }
+        // Non-empty p-domains but K = ∅ (no φ at all, not even φ_ii): the conditions over K
+        // are skipped, not "hold".
+        let mut g = Exact1d::default();
+        g.add_domain(1, iv(0, 1));
+        for id in [
+            "D3.4.1(3)",
+            "D3.4.1(3b)",
+            "D3.4.1(3c)",
+            "CA.2-GH",
+            "D3.4.1(4)",
+        ] {
+            assert_skipped(by_id(&decide::check_all(&g), id));
+        }
+    }
+}

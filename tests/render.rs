@@ -363,9 +363,9 @@ fn r_sampling_attributes_agree_whatever_is_computed() {
     use pseudomanifold::surface::output::{sample_surface_with, Attributes};
     let k = surface(icosahedron());
     let (_, pps) = pps_of(&k);
-    let full = sample_surface_with(&pps, 2, Attributes::Curvature, false).expect("sample");
-    let nrm = sample_surface_with(&pps, 2, Attributes::Normals, false).expect("sample");
-    let pos = sample_surface_with(&pps, 2, Attributes::Positions, false).expect("sample");
+    let full = sample_surface_with(&pps, 2, Attributes::Curvature, None).expect("sample");
+    let nrm = sample_surface_with(&pps, 2, Attributes::Normals, None).expect("sample");
+    let pos = sample_surface_with(&pps, 2, Attributes::Positions, None).expect("sample");
     assert_eq!(full.faces, pos.faces);
     assert!(pos.normals.is_empty() && pos.gaussian.is_empty() && nrm.gaussian.is_empty());
     let d = |a: [f64; 3], b: [f64; 3]| (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max);

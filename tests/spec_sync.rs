@@ -113,7 +113,7 @@ fn spec_sync_detects_a_missing_test() {
     let spec = "| `D9.9.9(1a)` | planted | - | - | holds |\n| `D3.1.1` | x | - | - | holds |";
     let ids = spec_ids(spec);
     assert_eq!(ids, vec!["D9.9.9(1a)", "D3.1.1"]);
-    let names = vec!["d3_1_1_collinear_face_is_caught_exactly".to_string()];
+    let names = ["d3_1_1_collinear_face_is_caught_exactly".to_string()];
     let missing: Vec<&String> = ids
         .iter()
         .filter(|id| !names.iter().any(|n| carries(n, &sanitize(id))))

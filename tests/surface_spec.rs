@@ -609,7 +609,7 @@ fn c6_2_sample_watertight_on_fixtures_and_corpus() {
         // Level 1 below 20k faces, level 0 above (CI time); full runs via `ppm sample`.
         let level = if k.num_faces() < 20_000 { 1 } else { 0 };
         let pps = build(&k, Profile::Paper);
-        let m = sample_surface(&pps, level, false).unwrap();
+        let m = sample_surface(&pps, level, None).unwrap();
         let (two, other) = edge_use_counts(&m.faces);
         assert_eq!(other, 0, "{name}: {other} edges not in exactly two faces");
         assert_eq!(m.faces.len(), k.num_faces() << (2 * level));

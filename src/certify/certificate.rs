@@ -171,6 +171,42 @@ impl Certificate {
     }
 }
 
+/// Read a certificate file (the format of [`write_certificate`]).
+pub fn read_certificate(path: &std::path::Path) -> Result<Certificate, CertifyError> {
+    let s = std::fs::read_to_string(path).map_err(|source| CertifyError::Io {
+        path: path.display().to_string(),
+        source,
+    })?;
+    let mut c: Certificate = serde_json::from_str(&s).map_err(|source| CertifyError::Json {
+        path: path.display().to_string(),
+        source,
+    })?;
+    c.expand();
+    Ok(c)
+}
+
+/// Write a certificate file: compacted ([`Certificate::compact`]), one result per line (small
+/// enough to keep in the repository, still diffable).
+pub fn write_certificate(cert: &Certificate, out: &std::path::Path) -> Result<(), CertifyError> {
+    let mut file = cert.clone();
+    file.compact();
+    let mut json = serde_json::to_string(&file).map_err(|source| CertifyError::Json {
+        path: out.display().to_string(),
+        source,
+    })?;
+    json = json.replace("},{\"key\"", "},\n{\"key\"");
+    json.push('\n');
+    write_text(out, &json)
+}
+
+/// Write a text file (certificate or summary), naming it in the error.
+pub fn write_text(path: &std::path::Path, text: &str) -> Result<(), CertifyError> {
+    std::fs::write(path, text).map_err(|source| CertifyError::Io {
+        path: path.display().to_string(),
+        source,
+    })
+}
+
 /// Errors of the certificate tools.
 #[derive(Debug, thiserror::Error)]
 pub enum CertifyError {

@@ -114,7 +114,24 @@ impl ConfigKey {
                 if ccw {
                     TriangleConfig::ccw(m_u, m_w, m_x, 0, 0, 0).ok()
                 } else {
-                    TriangleConfig::new(m_u, m_w, m_x, 0, m_u - 1, 0, 1, 1, 0).ok()
+                    TriangleConfig::new(
+                        Corner {
+                            m: m_u,
+                            next: 0,
+                            prev: m_u - 1,
+                        },
+                        Corner {
+                            m: m_w,
+                            next: 1,
+                            prev: 0,
+                        },
+                        Corner {
+                            m: m_x,
+                            next: 1,
+                            prev: 0,
+                        },
+                    )
+                    .ok()
                 }
             }
             _ => None,

@@ -104,9 +104,10 @@ pub fn merge(parts: Vec<Certificate>) -> Result<Certificate, CertifyError> {
     })
 }
 
-/// Coverage of one property for a mesh.
+/// How a certificate covers one property for a mesh: which of the configurations the mesh
+/// needs are certified, missing, refuted or inconclusive.
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Coverage {
+pub struct PropertyCoverage {
     /// SPEC ID of the property, e.g. `L4.2.2(cert)`.
     pub property: String,
     /// Every needed configuration has a `Certified`/`CertifiedOutsideDelta` result.
@@ -138,7 +139,7 @@ pub fn properties_of(key: &ConfigKey) -> &'static [&'static str] {
 
 /// For each property, whether the certificate covers all `configs_needed` (from
 /// [`ConfigKey::all_for`]). Only results of the paper's model count.
-pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Coverage> {
+pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<PropertyCoverage> {
     let mut props: Vec<&'static str> = Vec::new();
     for k in configs_needed {
         for p in properties_of(k) {
@@ -150,7 +151,7 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Coverag
     props
         .into_iter()
         .map(|prop| {
-            let mut cov = Coverage {
+            let mut cov = PropertyCoverage {
                 property: prop.into(),
                 certified: true,
                 missing: vec![],

@@ -13,11 +13,12 @@
 //! refutation with a witness point that the f64 and multi-precision evaluators of
 //! `construction::maps` confirm. Exactly what is proven is in [`PropertyResult::statement`].
 
-pub mod cli;
 pub mod interval;
 
 use crate::construction::interval::Interval as I;
-use crate::construction::maps::{self, cos_pi_6, is_nonzero, EdgeConfig, Ppm, TriangleConfig, P2};
+use crate::construction::maps::{
+    self, cos_pi_6, is_nonzero, Corner, EdgeConfig, Ppm, TriangleConfig, P2,
+};
 use crate::construction::scalar::{Iv, Mp, Scalar, Trit};
 use crate::report::harness::enclosure_exceeds;
 use crate::report::{CheckResult, Verdict, Witness};

@@ -143,7 +143,7 @@ pub fn run(
                 eprintln!("ppm: running the Chapter 4 checks ...");
             }
             let cert = match &a.certificates {
-                Some(path) => match crate::certify::cli::read_certificate(path) {
+                Some(path) => match crate::certify::read_certificate(path) {
                     Ok(c) => Some((path.display().to_string(), c)),
                     Err(e) => {
                         eprintln!("error: {e}");
@@ -283,20 +283,9 @@ pub fn render_report(r: &ValidationReport, extra: &[CheckResult], secs: f64) -> 
 
 /// `ppm eval-map`: φ_wu(p) in f64 and in MPFR with their difference.
 pub fn eval_map(file: &Path, u: u32, w: u32, p: [f64; 2], bits: u32, json: bool) -> ExitCode {
-    let raw = match read_mesh(file, &ReadOptions::default()) {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
-    };
-    let v = validate(&raw);
-    let Some(k) = v.surface else {
-        eprintln!(
-            "error: {}: not a simplicial surface (run `ppm check` for the details)",
-            file.display()
-        );
-        return ExitCode::from(1);
+    let k = match super::load::surface(file) {
+        Ok(k) => k,
+        Err(c) => return c,
     };
     let g = PpmGluing::new(&k);
     let (u, w) = (VertexId(u), VertexId(w));

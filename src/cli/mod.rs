@@ -1,10 +1,14 @@
 //! The `ppm` command line: `ppm check FILE` validates a mesh as a simplicial surface
 //! (Sec. 3.1) and prints every check with its offending elements.
 
+mod certify;
 mod check;
+mod load;
 mod msplines;
 mod oracle;
+mod progress;
 pub mod render;
+mod sample;
 mod sd;
 mod sigma_v;
 mod tsv_diff;
@@ -144,7 +148,7 @@ enum Command {
         json: bool,
     },
     /// Certified interval proofs of the Chapter 4 conditions for all degree configurations
-    Certify(crate::certify::cli::CertifyArgs),
+    Certify(certify::CertifyArgs),
     /// Sample the C^∞ surface M by midpoint subdivision through eval (Sec. 6.2) and write it
     /// with per-vertex normals and curvatures (.obj, .off, .ply; PLY also with colours).
     Sample {
@@ -323,25 +327,23 @@ pub fn main() -> ExitCode {
                 }
             }
         }
-        Command::Certify(a) => crate::certify::cli::run(a),
+        Command::Certify(a) => certify::run(a),
         Command::Render(a) => render::run(a),
         Command::Sd(a) => sd::run(a),
-        Command::Gluing { file, json } => {
-            match crate::gluing::cli::run_gluing_command(&file, json) {
-                Ok((text, all_hold)) => {
-                    print!("{text}");
-                    if all_hold {
-                        ExitCode::SUCCESS
-                    } else {
-                        ExitCode::from(1)
-                    }
-                }
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::from(2)
+        Command::Gluing { file, json } => match crate::gluing::report::gluing_report(&file, json) {
+            Ok((text, all_hold)) => {
+                print!("{text}");
+                if all_hold {
+                    ExitCode::SUCCESS
+                } else {
+                    ExitCode::from(1)
                 }
             }
-        }
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::from(2)
+            }
+        },
         Command::EvalMap {
             file,
             u,
@@ -363,7 +365,7 @@ pub fn main() -> ExitCode {
             kappa,
             patch_degree,
         } => match construction.as_str() {
-            "vertex" => crate::surface::cli::run_sample(
+            "vertex" => sample::run_sample(
                 &file,
                 level,
                 &output,
@@ -387,6 +389,6 @@ pub fn main() -> ExitCode {
             nu,
             profile,
             surface,
-        } => crate::surface::cli::run_eval(&file, face, [lambda, mu, nu], &profile, &surface),
+        } => sample::run_eval(&file, face, [lambda, mu, nu], &profile, &surface),
     }
 }

@@ -3,8 +3,6 @@
 //! fails, 2 on unusable input (with the typed reason, e.g. genus 0 per Thm. 2).
 
 use crate::gluing::sampled::SampleConfig;
-use crate::mesh::io::{read_mesh, ReadOptions};
-use crate::mesh::validate::validate;
 use crate::msplines::{run, Options};
 use crate::report::render_text;
 use clap::{Args, Subcommand};
@@ -52,19 +50,9 @@ pub fn run_command(c: MsCommand) -> ExitCode {
 }
 
 fn check(a: &MsCheckArgs) -> ExitCode {
-    let raw = match read_mesh(&a.file, &ReadOptions::default()) {
-        Ok(r) => r,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
-    };
-    let Some(k) = validate(&raw).surface else {
-        eprintln!(
-            "error: {} is not a simplicial surface (run `ppm check` for details)",
-            a.file.display()
-        );
-        return ExitCode::from(2);
+    let k = match super::load::surface(&a.file) {
+        Ok(k) => k,
+        Err(c) => return c,
     };
     let opt = Options {
         ring: a.ring,

@@ -2,7 +2,6 @@
 //! (Figs. 6.4–6.7), or, with `--panels`, S′ next to the PPS built from it.
 
 use crate::mesh::io::{read_mesh, ReadOptions};
-use crate::mesh::validate::validate;
 use crate::mesh::SimplicialSurface;
 use crate::render::colour::RangeSource;
 use crate::render::panels::side_by_side;
@@ -75,14 +74,7 @@ fn parse_size(s: &str) -> Result<(u32, u32), RenderError> {
 }
 
 fn load(file: &std::path::Path) -> Result<SimplicialSurface, RenderError> {
-    let raw =
-        read_mesh(file, &ReadOptions::default()).map_err(|e| RenderError::Mesh(e.to_string()))?;
-    validate(&raw).surface.ok_or_else(|| {
-        RenderError::Mesh(format!(
-            "{} is not a simplicial surface (run `ppm check` for details)",
-            file.display()
-        ))
-    })
+    crate::mesh::load_surface(file).map_err(|e| RenderError::Mesh(e.to_string()))
 }
 
 /// One panel to draw: its caption and scene.

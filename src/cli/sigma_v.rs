@@ -1,30 +1,14 @@
 //! `ppm check --spec --construction sigma-v` and `ppm sample --construction sigma-v`: the
 //! tutorial's (σ, v)-indexed construction (seed 002, Parts IV–V; SPEC rows `SV-…`).
 
+use super::load::surface as load;
 use crate::construction::sigma_v::checks::{run_sigma_v_checks, sv_erratum, SvCheckOptions};
 use crate::construction::sigma_v::SigmaVPps;
-use crate::mesh::io::{read_mesh, ReadOptions};
-use crate::mesh::validate::validate;
-use crate::mesh::SimplicialSurface;
 use crate::report::render_text;
 use crate::surface::PnTriangles;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
-
-fn load(file: &Path) -> Result<SimplicialSurface, ExitCode> {
-    let raw = read_mesh(file, &ReadOptions::default()).map_err(|e| {
-        eprintln!("error: {e}");
-        ExitCode::from(2)
-    })?;
-    validate(&raw).surface.ok_or_else(|| {
-        eprintln!(
-            "error: {} is not a simplicial surface (run `ppm check` for details)",
-            file.display()
-        );
-        ExitCode::from(1)
-    })
-}
 
 /// The checks of the (σ, v)-indexed construction; exit 1 on a failure that is not a
 /// documented erratum of the slides.
@@ -128,5 +112,5 @@ pub fn run_sample(
             return ExitCode::from(1);
         }
     };
-    crate::surface::cli::write_sampled(out, &m, quiet, t0)
+    super::sample::write_sampled(out, &m, quiet, t0)
 }

@@ -135,7 +135,7 @@ pub struct CertCoverage {
     /// validated mesh.
     pub config_errors: Vec<String>,
     /// Per certificate property: certified for this mesh, or what is missing.
-    pub properties: Vec<crate::certify::Coverage>,
+    pub properties: Vec<crate::certify::PropertyCoverage>,
 }
 
 /// The configurations of `k` (degrees, edge and triangle configurations) and their coverage

@@ -7,6 +7,7 @@
 
 pub mod abstract_view;
 pub mod checks;
+pub mod config;
 pub mod figure;
 pub mod interval;
 pub mod maps;
@@ -20,7 +21,7 @@ pub mod scalar;
 pub mod sigma_v;
 
 pub use maps::{
-    g_uw, in_omega_uw, in_omega_uw_lens, phi_wu, phi_wu_f64_vs_mp, ConfigError, EdgeConfig,
+    g_uw, in_omega_uw, in_omega_uw_lens, phi_wu, phi_wu_f64_vs_mp, ConfigError, Corner, EdgeConfig,
     MapError, Paper, Ppm, TriangleConfig, VertexPair, P2,
 };
 pub use mesh_gluing::{GluingError, PpmGluing};

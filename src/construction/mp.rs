@@ -263,7 +263,8 @@ fn atan2_big(y: &BigFloat, x: &BigFloat, p: u32) -> BigFloat {
             pi.mul(&BigFloat::from_u64(n, 64), pg, RM)
                 .div(&BigFloat::from_u64(d, 64), pu, RM)
         };
-        let r = if y.is_inf() {
+
+        if y.is_inf() {
             if x.is_inf() {
                 if x.is_negative() {
                     signed(frac(3, 4))
@@ -310,8 +311,7 @@ fn atan2_big(y: &BigFloat, x: &BigFloat, p: u32) -> BigFloat {
                 let _ = t.set_precision(pu, RM);
                 t
             }
-        };
-        r
+        }
     })
 }
 

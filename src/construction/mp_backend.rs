@@ -1,5 +1,5 @@
 //! Which multi-precision implementation `--precision mp:BITS` runs on: the pure-Rust default
-//! [`super::Mp`] (always built) or MPFR [`super::MpMpfr`] (feature `mpfr`). The maps are
+//! [`super::Mp`] (always built) or MPFR `MpMpfr` (feature `mpfr`). The maps are
 //! generic over [`super::Scalar`], so the choice is made once, where a run is dispatched.
 
 use serde::Serialize;

@@ -1,6 +1,6 @@
 //! Proofs as data: a proof is a list of [`Step`]s, each the paper's statement, an exact
-//! [`Check`] and the [`Expect`]ed verdict recorded by the replay. [`replay`] runs the checks
-//! in order and reports, per step, the computed [`Verdict`] and whether it matches.
+//! [`StepCheck`] and the [`Expect`]ed verdict recorded by the replay. [`replay`] runs the checks
+//! in order and reports, per step, the computed [`StepVerdict`] and whether it matches.
 
 use super::plane::{Affine, Disk, Pt};
 use super::polar::{compare, Chain, Region};
@@ -10,7 +10,7 @@ use std::fmt;
 
 /// The exact check behind a step.
 #[derive(Clone, Debug)]
-pub enum Check {
+pub enum StepCheck {
     /// A definition or notation; nothing to check.
     Definition,
     /// A set-theoretic consequence of earlier steps (by id): holds iff they all hold.
@@ -108,7 +108,7 @@ pub enum Check {
 
 /// The computed outcome of a step.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Verdict {
+pub enum StepVerdict {
     /// A definition, not checked.
     Definition,
     /// Holds exactly on everything the proof claims.
@@ -127,16 +127,16 @@ pub enum Verdict {
     Inherits(Vec<String>),
 }
 
-impl fmt::Display for Verdict {
+impl fmt::Display for StepVerdict {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Verdict::Definition => write!(f, "definition"),
-            Verdict::Holds => write!(f, "holds"),
-            Verdict::HoldsOn { holds, fails } => {
+            StepVerdict::Definition => write!(f, "definition"),
+            StepVerdict::Holds => write!(f, "holds"),
+            StepVerdict::HoldsOn { holds, fails } => {
                 write!(f, "FAILS on θ/π ∈ {fails} (holds on {holds})")
             }
-            Verdict::Fails(s) => write!(f, "FAILS: {s}"),
-            Verdict::Inherits(v) => write!(f, "unsupported: premise(s) {} fail", v.join(", ")),
+            StepVerdict::Fails(s) => write!(f, "FAILS: {s}"),
+            StepVerdict::Inherits(v) => write!(f, "unsupported: premise(s) {} fail", v.join(", ")),
         }
     }
 }
@@ -164,14 +164,14 @@ pub struct Step {
     /// The paper's statement at this step.
     pub claim: String,
     /// The exact check.
-    pub check: Check,
+    pub check: StepCheck,
     /// The recorded verdict.
     pub expect: Expect,
 }
 
 impl Step {
     /// A step.
-    pub fn new(id: &str, claim: &str, check: Check, expect: Expect) -> Self {
+    pub fn new(id: &str, claim: &str, check: StepCheck, expect: Expect) -> Self {
         Step {
             id: id.to_string(),
             claim: claim.to_string(),
@@ -183,49 +183,57 @@ impl Step {
 
 /// The replay of one step.
 #[derive(Clone, Debug)]
-pub struct Outcome {
+pub struct StepOutcome {
     /// Step id.
     pub id: String,
     /// Computed verdict.
-    pub verdict: Verdict,
+    pub verdict: StepVerdict,
     /// Whether it matches the recorded verdict.
     pub matches: bool,
     /// Extra exact detail (failing pieces, wraps).
     pub detail: Vec<String>,
 }
 
-fn from_regions(holds: Region, fails: Region) -> Verdict {
+fn from_regions(holds: Region, fails: Region) -> StepVerdict {
     if fails.is_empty() {
-        Verdict::Holds
+        StepVerdict::Holds
     } else {
-        Verdict::HoldsOn { holds, fails }
+        StepVerdict::HoldsOn { holds, fails }
     }
 }
 
 /// Run one check; `done` holds the verdicts of the earlier steps.
-pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, Vec<String>) {
+pub fn run_check(
+    check: &StepCheck,
+    done: &BTreeMap<String, StepVerdict>,
+) -> (StepVerdict, Vec<String>) {
     match check {
-        Check::Definition => (Verdict::Definition, vec![]),
-        Check::Derived(ids) => {
+        StepCheck::Definition => (StepVerdict::Definition, vec![]),
+        StepCheck::Derived(ids) => {
             let bad: Vec<String> = ids
                 .iter()
-                .filter(|i| !matches!(done.get(*i), Some(Verdict::Holds | Verdict::Definition)))
+                .filter(|i| {
+                    !matches!(
+                        done.get(*i),
+                        Some(StepVerdict::Holds | StepVerdict::Definition)
+                    )
+                })
                 .cloned()
                 .collect();
             if bad.is_empty() {
-                (Verdict::Holds, vec![])
+                (StepVerdict::Holds, vec![])
             } else {
-                (Verdict::Inherits(bad), vec![])
+                (StepVerdict::Inherits(bad), vec![])
             }
         }
-        Check::AffineEq { lhs, rhs } => {
+        StepCheck::AffineEq { lhs, rhs } => {
             let (l, r) = (Affine::compose(lhs), Affine::compose(rhs));
             if l == r {
-                (Verdict::Holds, vec![])
+                (StepVerdict::Holds, vec![])
             } else {
                 let p = Pt::origin();
                 (
-                    Verdict::Fails(format!(
+                    StepVerdict::Fails(format!(
                         "lhs(0,0) = {}, rhs(0,0) = {}; lhs ≠ rhs",
                         l.apply(&p),
                         r.apply(&p)
@@ -234,51 +242,51 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
                 )
             }
         }
-        Check::DiskImage { map, disk, claimed } => match disk.image(&Affine::compose(map)) {
-            Some(img) if &img == claimed => (Verdict::Holds, vec![]),
+        StepCheck::DiskImage { map, disk, claimed } => match disk.image(&Affine::compose(map)) {
+            Some(img) if &img == claimed => (StepVerdict::Holds, vec![]),
             Some(img) => (
-                Verdict::Fails(format!("image is {img}, not {claimed}")),
+                StepVerdict::Fails(format!("image is {img}, not {claimed}")),
                 vec![],
             ),
-            None => (Verdict::Fails("map is not an isometry".into()), vec![]),
+            None => (StepVerdict::Fails("map is not an isometry".into()), vec![]),
         },
-        Check::PointOutside { point, disk } => {
+        StepCheck::PointOutside { point, disk } => {
             if disk.contains(point) {
-                (Verdict::Fails(format!("{point} ∈ {disk}")), vec![])
+                (StepVerdict::Fails(format!("{point} ∈ {disk}")), vec![])
             } else {
-                (Verdict::Holds, vec![])
+                (StepVerdict::Holds, vec![])
             }
         }
-        Check::DiskInSector { disk, lo, hi } => {
+        StepCheck::DiskInSector { disk, lo, hi } => {
             if disk.in_open_sector_sixths(*lo, *hi) {
-                (Verdict::Holds, vec![])
+                (StepVerdict::Holds, vec![])
             } else {
                 (
-                    Verdict::Fails(format!("{disk} ⊄ sector ({lo}/6, {hi}/6)")),
+                    StepVerdict::Fails(format!("{disk} ⊄ sector ({lo}/6, {hi}/6)")),
                     vec![],
                 )
             }
         }
-        Check::RotEq { lhs, rhs } => {
+        StepCheck::RotEq { lhs, rhs } => {
             let s = |v: &Vec<Q>| v.iter().fold(Q::from_integer(0.into()), |a, b| a + b);
             let d = (s(lhs) - s(rhs)) / Q::from_integer(2.into());
             if d.denom() == &1.into() {
-                (Verdict::Holds, vec![])
+                (StepVerdict::Holds, vec![])
             } else {
                 let diff = s(lhs) - s(rhs);
                 let two = Q::from_integer(2.into());
                 let red = &diff - &two * (&diff / &two).floor();
                 (
-                    Verdict::Fails(format!("angles differ by {red}·π (mod 2π)")),
+                    StepVerdict::Fails(format!("angles differ by {red}·π (mod 2π)")),
                     vec![],
                 )
             }
         }
-        Check::PolarEq { lhs, rhs, region } => {
+        StepCheck::PolarEq { lhs, rhs, region } => {
             let c = compare(lhs, rhs, region);
             (from_regions(c.holds, c.fails), c.detail)
         }
-        Check::PolarSetEq {
+        StepCheck::PolarSetEq {
             lhs,
             rhs,
             region,
@@ -286,7 +294,7 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
         } => {
             let c = compare(lhs, rhs, region);
             if c.fails.is_empty() {
-                return (Verdict::Holds, c.detail);
+                return (StepVerdict::Holds, c.detail);
             }
             let escapes = c.fails_lhs_image.minus(rhs_extent);
             let mut d = c.detail;
@@ -299,14 +307,14 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
                 d.push("so the set identity fails: lhs(X) has points outside rhs(X)".into());
             }
             (
-                Verdict::HoldsOn {
+                StepVerdict::HoldsOn {
                     holds: c.holds,
                     fails: c.fails,
                 },
                 d,
             )
         }
-        Check::PolarCovers {
+        StepCheck::PolarCovers {
             chain,
             domain,
             target,
@@ -318,7 +326,7 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
                 vec![format!("image θ/π ∈ {img}")],
             )
         }
-        Check::PolarInto {
+        StepCheck::PolarInto {
             chain,
             domain,
             target,
@@ -346,38 +354,40 @@ pub fn run_check(check: &Check, done: &BTreeMap<String, Verdict>) -> (Verdict, V
                 vec![format!("image θ/π ∈ {}", chain.image(domain))],
             )
         }
-        Check::PolarInjective { chain, domain } => {
+        StepCheck::PolarInjective { chain, domain } => {
             let bad = chain.non_injective(domain);
             (from_regions(domain.minus(&bad), bad), vec![])
         }
-        Check::Fact(ok, why) => {
+        StepCheck::Fact(ok, why) => {
             if *ok {
-                (Verdict::Holds, vec![why.clone()])
+                (StepVerdict::Holds, vec![why.clone()])
             } else {
-                (Verdict::Fails(why.clone()), vec![])
+                (StepVerdict::Fails(why.clone()), vec![])
             }
         }
     }
 }
 
-fn matches(v: &Verdict, e: &Expect) -> bool {
+fn matches(v: &StepVerdict, e: &Expect) -> bool {
     match (v, e) {
-        (Verdict::Definition, Expect::Definition) | (Verdict::Holds, Expect::Holds) => true,
-        (Verdict::HoldsOn { fails, .. }, Expect::FailsOn(r)) => fails == r,
-        (Verdict::Fails(_), Expect::Fails) | (Verdict::Inherits(_), Expect::Inherits) => true,
+        (StepVerdict::Definition, Expect::Definition) | (StepVerdict::Holds, Expect::Holds) => true,
+        (StepVerdict::HoldsOn { fails, .. }, Expect::FailsOn(r)) => fails == r,
+        (StepVerdict::Fails(_), Expect::Fails) | (StepVerdict::Inherits(_), Expect::Inherits) => {
+            true
+        }
         _ => false,
     }
 }
 
 /// Replay the steps in order.
-pub fn replay(steps: &[Step]) -> Vec<Outcome> {
+pub fn replay(steps: &[Step]) -> Vec<StepOutcome> {
     let mut done = BTreeMap::new();
     let mut out = Vec::new();
     for s in steps {
         let (verdict, detail) = run_check(&s.check, &done);
         let ok = matches(&verdict, &s.expect);
         done.insert(s.id.clone(), verdict.clone());
-        out.push(Outcome {
+        out.push(StepOutcome {
             id: s.id.clone(),
             verdict,
             matches: ok,
@@ -388,12 +398,12 @@ pub fn replay(steps: &[Step]) -> Vec<Outcome> {
 }
 
 /// The id of the first step whose computed verdict differs from the recorded one.
-pub fn first_mismatch(outcomes: &[Outcome]) -> Option<&Outcome> {
+pub fn first_mismatch(outcomes: &[StepOutcome]) -> Option<&StepOutcome> {
     outcomes.iter().find(|o| !o.matches)
 }
 
 /// A printable table of a replay.
-pub fn render(steps: &[Step], outcomes: &[Outcome]) -> String {
+pub fn render(steps: &[Step], outcomes: &[StepOutcome]) -> String {
     let mut s = String::new();
     for (st, o) in steps.iter().zip(outcomes) {
         s.push_str(&format!(
@@ -437,17 +447,19 @@ pub fn plant_sign_error(step: &mut Step) -> bool {
         false
     }
     match &mut step.check {
-        Check::PolarEq { lhs, .. } | Check::PolarSetEq { lhs, .. } => flip_chain(lhs),
-        Check::PolarCovers { chain, .. } | Check::PolarInto { chain, .. } => flip_chain(chain),
-        Check::RotEq { lhs, .. } => match lhs.first_mut() {
+        StepCheck::PolarEq { lhs, .. } | StepCheck::PolarSetEq { lhs, .. } => flip_chain(lhs),
+        StepCheck::PolarCovers { chain, .. } | StepCheck::PolarInto { chain, .. } => {
+            flip_chain(chain)
+        }
+        StepCheck::RotEq { lhs, .. } => match lhs.first_mut() {
             Some(a) => {
                 *a = -a.clone();
                 true
             }
             None => false,
         },
-        Check::AffineEq { lhs, .. } => flip_affine(lhs),
-        Check::DiskImage { map, .. } => flip_affine(map),
+        StepCheck::AffineEq { lhs, .. } => flip_affine(lhs),
+        StepCheck::DiskImage { map, .. } => flip_affine(map),
         _ => false,
     }
 }

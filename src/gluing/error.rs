@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 /// Errors reading a gluing file; each names the file, and the field when the TOML parsed.
 #[derive(Debug, thiserror::Error)]
-pub enum GluingError {
+pub enum GluingFileError {
     /// The file could not be read.
     #[error("{file}: cannot read: {source}")]
     Io {

@@ -23,9 +23,9 @@
 //! without an (i, i) entry, Ω_ii = Ω_i and φ_ii = id (list (i, i) explicitly to override).
 //!
 //! Limits: [`MAX_FILE_BYTES`], [`MAX_DOMAIN_ENTRIES`], [`MAX_GLUE_ENTRIES`],
-//! [`MAX_RATIONAL_CHARS`]; past each, a [`GluingError`] naming the file and field.
+//! [`MAX_RATIONAL_CHARS`]; past each, a [`GluingFileError`] naming the file and field.
 
-use super::error::GluingError;
+use super::error::GluingFileError;
 use super::exact1d::interval::{parse_q, Interval, Q};
 use super::exact1d::Exact1d;
 use super::Idx;
@@ -66,8 +66,8 @@ pub struct GluingFile {
 }
 
 /// Read and parse a gluing file.
-pub fn read_gluing_file(path: &Path) -> Result<GluingFile, GluingError> {
-    let io = |source| GluingError::Io {
+pub fn read_gluing_file(path: &Path) -> Result<GluingFile, GluingFileError> {
+    let io = |source| GluingFileError::Io {
         file: path.to_path_buf(),
         source,
     };
@@ -79,7 +79,7 @@ pub fn read_gluing_file(path: &Path) -> Result<GluingFile, GluingError> {
         .map_err(io)?;
     if bytes.len() as u64 > MAX_FILE_BYTES {
         let size = std::fs::metadata(path).map_or(bytes.len() as u64, |m| m.len());
-        return Err(GluingError::TooLarge {
+        return Err(GluingFileError::TooLarge {
             file: path.to_path_buf(),
             bytes: size,
             limit: MAX_FILE_BYTES,
@@ -95,14 +95,14 @@ struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
-    fn err(&self, field: impl Into<String>, message: impl Into<String>) -> GluingError {
-        GluingError::Field {
+    fn err(&self, field: impl Into<String>, message: impl Into<String>) -> GluingFileError {
+        GluingFileError::Field {
             file: self.file.to_path_buf(),
             field: field.into(),
             message: message.into(),
         }
     }
-    fn rational(&self, field: &str, v: Option<&Value>) -> Result<Q, GluingError> {
+    fn rational(&self, field: &str, v: Option<&Value>) -> Result<Q, GluingFileError> {
         match v {
             None => Err(self.err(field, "missing")),
             Some(Value::String(s)) if s.len() > MAX_RATIONAL_CHARS => Err(self.err(
@@ -125,7 +125,7 @@ impl Ctx<'_> {
             )),
         }
     }
-    fn index(&self, field: &str, v: Option<&Value>) -> Result<Idx, GluingError> {
+    fn index(&self, field: &str, v: Option<&Value>) -> Result<Idx, GluingFileError> {
         match v {
             None => Err(self.err(field, "missing")),
             Some(Value::Integer(n)) => Idx::try_from(*n)
@@ -137,7 +137,11 @@ impl Ctx<'_> {
         }
     }
     /// An open interval ["lo", "hi"]; lo ≥ hi is allowed and means the empty set.
-    fn interval(&self, field: &str, v: Option<&Value>) -> Result<Option<Interval>, GluingError> {
+    fn interval(
+        &self,
+        field: &str,
+        v: Option<&Value>,
+    ) -> Result<Option<Interval>, GluingFileError> {
         let arr = match v {
             None => return Err(self.err(field, "missing")),
             Some(Value::Array(a)) if a.len() == 2 => a,
@@ -148,7 +152,7 @@ impl Ctx<'_> {
         Ok(Interval::new(lo, hi))
     }
     /// A typed error when a table array has more than `max` entries.
-    fn at_most(&self, field: &str, len: usize, max: usize) -> Result<(), GluingError> {
+    fn at_most(&self, field: &str, len: usize, max: usize) -> Result<(), GluingFileError> {
         if len > max {
             return Err(self.err(field, format!("{len} entries; at most {max} are read")));
         }
@@ -159,7 +163,7 @@ impl Ctx<'_> {
         field: &str,
         t: &toml::Table,
         allowed: &[&str],
-    ) -> Result<(), GluingError> {
+    ) -> Result<(), GluingFileError> {
         for k in t.keys() {
             if !allowed.contains(&k.as_str()) {
                 return Err(self.err(
@@ -176,7 +180,7 @@ fn tables<'a>(
     ctx: &Ctx,
     root: &'a toml::Table,
     key: &str,
-) -> Result<Vec<&'a toml::Table>, GluingError> {
+) -> Result<Vec<&'a toml::Table>, GluingFileError> {
     match root.get(key) {
         None => Ok(Vec::new()),
         Some(Value::Array(a)) => a
@@ -193,11 +197,11 @@ fn tables<'a>(
 }
 
 /// Parse gluing data from TOML text; `file` names the source in errors.
-pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingError> {
+pub fn parse_gluing_str(text: &str, file: &Path) -> Result<GluingFile, GluingFileError> {
     let ctx = Ctx { file };
     let root: toml::Table = text
         .parse()
-        .map_err(|e: toml::de::Error| GluingError::Syntax {
+        .map_err(|e: toml::de::Error| GluingFileError::Syntax {
             file: file.to_path_buf(),
             message: e.to_string(),
         })?;

@@ -7,20 +7,20 @@
 //! * [`relation`] — the relation ∼ of the proof of Thm. 3.4.1 and the proof's Claim.
 //! * [`ppm`] — Def. 3.5.1 (C), (C′), (C″) and Prop. 3.5.1.
 //! * [`stereo`] — the stereographic atlas of Sⁿ of Sec. 3.3 (Def. 3.3.3) as gluing data.
-//! * [`file`](mod@file), [`cli`] — the TOML format of `ppm gluing FILE` and its command.
+//! * [`file`](mod@file), [`report`] — the TOML format of `ppm gluing FILE` and its report.
 //!
 //! Index convention, kept literally: Ω_ij ⊆ Ω_i, and φ_ji : Ω_ij → Ω_ji.
 
-pub mod cli;
 pub mod data;
 pub mod error;
 pub mod exact1d;
 pub mod file;
 pub mod ppm;
 pub mod relation;
+pub mod report;
 pub mod sampled;
 pub mod stereo;
 pub mod tolerance;
 
 pub use data::{GluingData, Idx, Point};
-pub use error::GluingError;
+pub use error::GluingFileError;

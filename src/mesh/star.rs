@@ -29,6 +29,12 @@ pub struct Complex<V: Ord> {
     pub triangles: BTreeSet<[V; 3]>,
 }
 
+impl<V: Ord> Default for Complex<V> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
 impl<V: Ord> Complex<V> {
     /// The empty complex.
     pub fn new() -> Self {

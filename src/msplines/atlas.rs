@@ -50,7 +50,7 @@ pub struct Atlas {
     pub k_ring: u32,
     /// Zero points removed (Sec. 5.4 step 2).
     pub zeros: Vec<VertexId>,
-    /// removed[f]: face f is attached to a zero.
+    /// removed\[f\]: face f is attached to a zero.
     pub removed: Vec<bool>,
     /// The charts (index = chart id α).
     pub charts: Vec<Chart>,
@@ -71,8 +71,8 @@ fn ring_faces(k: &SimplicialSurface, v: VertexId, ring: u32) -> BTreeSet<FaceId>
         }
         for &h in k.outgoing(u) {
             let w = k.dest(h);
-            if !dist.contains_key(&w) {
-                dist.insert(w, d + 1);
+            if let std::collections::hash_map::Entry::Vacant(e) = dist.entry(w) {
+                e.insert(d + 1);
                 q.push_back(w);
             }
         }

@@ -70,11 +70,11 @@ impl EdgeIndex {
     pub fn canonical(&self, e: EdgeIdx) -> HalfedgeId {
         self.canonical[e.0 as usize]
     }
-    /// ω[h] for a real 1-form stored per edge.
+    /// ω\[h\] for a real 1-form stored per edge.
     pub fn eval(&self, form: &[f64], h: HalfedgeId) -> f64 {
         self.sign(h) * form[self.edge(h).0 as usize]
     }
-    /// ω[h] for an integer 1-form stored per edge.
+    /// ω\[h\] for an integer 1-form stored per edge.
     pub fn eval_int(&self, form: &[i64], h: HalfedgeId) -> i64 {
         self.isign(h) * form[self.edge(h).0 as usize]
     }

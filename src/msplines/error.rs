@@ -14,7 +14,7 @@ pub enum MsError {
          (SPEC MS-T2)"
     )]
     GenusZero {
-        /// The mesh file (or "<generated>").
+        /// The mesh file (or `"<generated>"`).
         file: String,
     },
     /// More than one connected component.

@@ -73,7 +73,7 @@ impl FaceFrame {
     }
 }
 
-/// g_f(form) from the stored values ω[v0,v1] and −ω[v2,v0] = ω[v0,v2].
+/// g_f(form) from the stored values ω\[v0,v1\] and −ω\[v2,v0\] = ω\[v0,v2\].
 pub fn face_vector(ei: &EdgeIndex, fr: &FaceFrame, form: &[f64], f: FaceId) -> V3 {
     let [h01, _, h20] = face_halfedges(f);
     fr.gradient(ei.eval(form, h01), -ei.eval(form, h20))
@@ -82,7 +82,7 @@ pub fn face_vector(ei: &EdgeIndex, fr: &FaceFrame, form: &[f64], f: FaceId) -> V
 /// The conjugate basis and its diagnostics.
 #[derive(Debug, Clone)]
 pub struct Conjugate {
-    /// Λ: ∗h_k = Σ_m Λ[k][m] h_m.
+    /// Λ: ∗h_k = Σ_m Λ\[k\]\[m\] h_m.
     pub lambda: Vec<Vec<f64>>,
     /// ∗h_k per edge.
     pub star: Vec<Vec<f64>>,
@@ -184,7 +184,7 @@ pub struct OneForm {
 }
 
 impl OneForm {
-    /// ω[h] ∈ ℝ².
+    /// ω\[h\] ∈ ℝ².
     pub fn at(&self, ei: &EdgeIndex, h: crate::mesh::HalfedgeId) -> [f64; 2] {
         [ei.eval(&self.x, h), ei.eval(&self.y, h)]
     }

@@ -181,7 +181,7 @@ fn count_components(k: &SimplicialSurface) -> usize {
     n
 }
 
-/// MS-H1 (Sec. 6.1, face condition ω[v0,v1]+ω[v1,v2]+ω[v2,v0] = 0): every τ_k is closed,
+/// MS-H1 (Sec. 6.1, face condition ω\[v0,v1\]+ω\[v1,v2\]+ω\[v2,v0\] = 0): every τ_k is closed,
 /// decided exactly (integer values).
 pub fn check_cocycles_closed(
     k: &SimplicialSurface,
@@ -228,7 +228,7 @@ pub fn check_periods(h: &Homology, ei: &EdgeIndex) -> CheckResult {
     r.with_note(format!("2g = {} generators; exact", h.generators.len()))
 }
 
-/// The intersection (cup-product) matrix ∫ τ_k ∧ τ_l = Σ_f ½(τ_k[01]τ_l[12] − τ_k[12]τ_l[01])
+/// The intersection (cup-product) matrix ∫ τ_k ∧ τ_l = Σ_f ½(τ_k\[01\]τ_l\[12\] − τ_k\[12\]τ_l\[01\])
 /// of closed integer cochains, times two (so it stays an integer).
 pub fn intersection_matrix_doubled(
     k: &SimplicialSurface,

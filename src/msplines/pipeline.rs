@@ -24,7 +24,7 @@ use std::time::Instant;
 pub struct Options {
     /// k of the k-ring charts (Sec. 5.4 step 3).
     pub ring: u32,
-    /// Which basis form ω_k = h_k + i∗h_k to use (Sec. 5.1 step 2 selects by [34]; unspecified).
+    /// Which basis form ω_k = h_k + i∗h_k to use (Sec. 5.1 step 2 selects by \[34\]; unspecified).
     pub form: usize,
     /// Sampling of the Def. 3.4.1 checks.
     pub sample: SampleConfig,
@@ -62,7 +62,7 @@ pub struct Forms {
 }
 
 impl Forms {
-    /// ω_k = h_k + i∗h_k, scaled so that the mean |ω[e]| is 1 (a complex scale keeps ω
+    /// ω_k = h_k + i∗h_k, scaled so that the mean |ω\[e\]| is 1 (a complex scale keeps ω
     /// holomorphic).
     pub fn omega(&self, kk: usize) -> Option<OneForm> {
         let x = self.harmonic.forms.get(kk)?.clone();

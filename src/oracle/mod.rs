@@ -11,6 +11,7 @@
 
 pub mod diff;
 pub mod protocol;
+mod query;
 pub mod sigma_v;
 pub mod surface_diff;
 pub mod tsv_diff;

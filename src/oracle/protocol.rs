@@ -11,13 +11,11 @@
 //! (Sec. 5.2); the MPFR answers evaluate the construction with *those* control points, so the
 //! difference measures the rounding of the f64 evaluation, not of the fit.
 
-use super::{mp_decimal, mp_distance};
-use crate::construction::maps::{g_v, g_v_inv, h};
-use crate::construction::{GluingError, MapError, Mp, Paper, Ppm, PpmGluing, Scalar, Trit, P2};
-use crate::mesh::io::{read_mesh, ReadOptions};
-use crate::mesh::validate::validate;
-use crate::mesh::{FaceId, SimplicialSurface, VertexId};
-use crate::surface::jet::{Jet, MONOMIALS};
+use super::mp_decimal;
+use super::query::{add_info, both, both_or_note, mp_only, vertex, Env, Needs, Numeric, OnF64};
+use crate::construction::{GluingError, MapError, Mp, PpmGluing, Scalar, Trit, P2};
+use crate::mesh::{load_surface, FaceId, LoadError, SimplicialSurface, VertexId};
+use crate::surface::jet::Jet;
 use crate::surface::{Consts, Pps, PpsOptions, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
@@ -380,15 +378,6 @@ fn finite(p: &[f64; 2]) -> Result<(), OracleError> {
     }
 }
 
-fn vertex(pps: &Pps, v: u32) -> Result<VertexId, OracleError> {
-    let v = VertexId(v);
-    if pps.contains(v) {
-        Ok(v)
-    } else {
-        Err(SurfaceError::NoSuchVertex(v).into())
-    }
-}
-
 impl Session {
     /// An empty session (no mesh; 256 bits; paper profile).
     pub fn new() -> Self {
@@ -481,6 +470,9 @@ impl Session {
 
     /// Answer a parsed request.
     pub fn handle(&mut self, req: &Request) -> Result<Response, OracleError> {
+        if let Some(q) = req.numeric() {
+            return self.answer(req, q);
+        }
         let bits = self.bits;
         match req {
             Request::Load { path } => {
@@ -491,16 +483,16 @@ impl Session {
                 if let Some(sv) = &mut self.sigma_v {
                     sv.reset();
                 }
-                let raw = read_mesh(path, &ReadOptions::default())
-                    .map_err(|e| OracleError::Load(e.to_string()))?;
-                let v = validate(&raw);
-                let classes: Vec<&str> = v.report.error_classes.iter().map(|c| c.name()).collect();
-                let k = v.surface.ok_or_else(|| {
-                    OracleError::Load(format!(
-                        "{}: not a simplicial surface ({})",
-                        path.display(),
-                        classes.join(", ")
-                    ))
+                let k = load_surface(path).map_err(|e| match e {
+                    LoadError::Read(e) => OracleError::Load(e.to_string()),
+                    LoadError::NotASurface { classes, .. } => {
+                        let classes: Vec<&str> = classes.iter().map(|c| c.name()).collect();
+                        OracleError::Load(format!(
+                            "{}: not a simplicial surface ({})",
+                            path.display(),
+                            classes.join(", ")
+                        ))
+                    }
                 })?;
                 let out = json!({"vertices": k.num_vertices(), "faces": k.num_faces(), "edges": k.num_edges()});
                 self.surface = Some(k);
@@ -565,28 +557,6 @@ impl Session {
                 }
                 Ok(Response::plain(json!({"profile": p.name()})))
             }
-            Request::Gamma { v, p } => {
-                finite(p)?;
-                let (pps, cm) = self.ch5()?.with_mp(bits);
-                let v = vertex(pps, *v)?;
-                let a = pps.gamma(v, &P2::new(p[0], p[1]), pps.consts_f64());
-                let b = pps.gamma(v, &P2::<Mp>::from_f64(p[0], p[1], bits), cm)?;
-                Ok(both_or_note(a.map(|x| vec![x]), &[b], bits))
-            }
-            Request::Psi { v, p } => {
-                finite(p)?;
-                let c = self.ch5()?;
-                let v = vertex(&c.pps, *v)?;
-                let l = c.pps.half_side(v);
-                if p[0].abs() > l || p[1].abs() > l {
-                    return Err(OracleError::NotInDomain(format!(
-                        "ψ_{v} is defined on □_{v} = [−{l}, {l}]² (Def. 5.2.1)"
-                    )));
-                }
-                let a = c.pps.psi(v, &P2::new(p[0], p[1]));
-                let b = c.pps.psi(v, &P2::<Mp>::from_f64(p[0], p[1], bits));
-                Ok(both(&a, &b, bits))
-            }
             Request::PsiControl { v } => {
                 let c = self.ch5()?;
                 let v = vertex(&c.pps, *v)?;
@@ -601,95 +571,6 @@ impl Session {
                 }));
                 Ok(r)
             }
-            Request::Theta { v, p } => {
-                finite(p)?;
-                let (pps, cm) = self.ch5()?.with_mp(bits);
-                let v = vertex(pps, *v)?;
-                let b = pps.theta(v, &P2::<Mp>::from_f64(p[0], p[1], bits), cm)?;
-                let a = pps.theta_f64(v, *p).map(Vec::from);
-                Ok(both_or_note(a, &b, bits))
-            }
-            Request::ThetaDerivatives { v, p, order } => {
-                finite(p)?;
-                let order = order.unwrap_or(3);
-                if order > 3 {
-                    return Err(OracleError::Malformed(format!(
-                        "order {order} > 3 (the jets are of order 3)"
-                    )));
-                }
-                let (pps, cj, cm) = self.ch5()?.with_jets(bits);
-                let v = vertex(pps, *v)?;
-                let partials: Vec<(usize, usize)> = MONOMIALS
-                    .iter()
-                    .copied()
-                    .filter(|&(i, j)| i + j <= order as usize)
-                    .collect();
-                let (x, y) = Jet::variables(Mp::from_f64(p[0], bits), Mp::from_f64(p[1], bits));
-                let jb = pps.theta(v, &P2::new(x, y), cm)?;
-                let b: Vec<Mp> = partials
-                    .iter()
-                    .flat_map(|&(i, j)| jb.iter().map(move |d| d.derivative(i, j)))
-                    .collect();
-                let a = pps.theta_jet(v, *p, cj, None).map(|ja| {
-                    partials
-                        .iter()
-                        .flat_map(|&(i, j)| ja.iter().map(move |d| d.derivative(i, j)))
-                        .collect::<Vec<f64>>()
-                });
-                let mut r = both_or_note(a, &b, bits);
-                let mut info = r.info.take().unwrap_or_else(|| json!({}));
-                info["partials"] = json!(partials);
-                info["layout"] = json!(
-                    "value[3k + d] = ∂^(i+j) θ_v,d / ∂x^i ∂y^j at p, for partials[k] = [i, j], d = 0, 1, 2"
-                );
-                r.info = Some(info);
-                Ok(r)
-            }
-            Request::Sprime { face, bary } => {
-                if !bary.iter().all(|c| c.is_finite()) {
-                    return Err(OracleError::NonFinite);
-                }
-                let sum: f64 = bary.iter().sum();
-                if bary.iter().any(|&x| !(-1e-12..=1.0 + 1e-12).contains(&x))
-                    || (sum - 1.0).abs() > 1e-9
-                {
-                    return Err(SurfaceError::BadBarycentric(*bary).into());
-                }
-                let k = self.k()?;
-                let f = FaceId(*face);
-                if f.idx() >= k.num_faces() {
-                    return Err(SurfaceError::NoSuchFace(f).into());
-                }
-                // The stored corners: the file's order unless the validator reversed σ.
-                let corners = k.face(f);
-                match &self.ch5()?.target {
-                    crate::surface::SPrime::Pn(pn) => {
-                        let net = pn.net(corners);
-                        let a = crate::surface::target::eval_cubic(&net, *bary);
-                        let bm = bary.map(|x| Mp::from_f64(x, bits));
-                        let b = crate::surface::target::eval_cubic_in(&net, &bm, bits);
-                        Ok(both(&a, &b, bits))
-                    }
-                    crate::surface::SPrime::Loop(l) => {
-                        // The point the profile evaluates (the authors' corner clamp under
-                        // `authors-code`), in f64 and, exactly by Stam's method, in MPFR.
-                        let at = l.profile_bary(f, corners, *bary);
-                        let undefined = |e: crate::surface::loop_subdiv::LoopError| {
-                            OracleError::Undefined(e.to_string())
-                        };
-                        let a = l.eval_f64(f, corners, at).map_err(undefined)?;
-                        let bm = at.map(|x| Mp::from_f64(x, bits));
-                        let b = l.jet::<Mp>(f, corners, &bm, false).map_err(undefined)?.p;
-                        let mut r = both(&a, &b, bits);
-                        if at != *bary {
-                            r.info = Some(
-                                json!({ "evaluated_at": at, "why": "authors-code: their Loop evaluator's corner clamp (docs/authors-code.md, D2)" }),
-                            );
-                        }
-                        Ok(r)
-                    }
-                }
-            }
             Request::Eval { face, bary } => {
                 if !bary.iter().all(|c| c.is_finite()) {
                     return Err(OracleError::NonFinite);
@@ -701,13 +582,7 @@ impl Session {
                         .map_err(OracleError::Undefined)?;
                     let mut r = match a {
                         Ok(a) => both(&a, &b, bits),
-                        Err(e) => {
-                            let mut r = both(&[], &b, bits);
-                            r.f64 = None;
-                            r.difference = None;
-                            r.info = Some(json!({"f64_failed": e}));
-                            r
-                        }
+                        Err(e) => mp_only(&b, bits, e),
                     };
                     r.info = Some(match r.info.take() {
                         Some(Value::Object(mut m)) => {
@@ -735,7 +610,7 @@ impl Session {
                         }
                         both(&a.point, &b.point, bits)
                     }
-                    Err(e) => both_or_note(Err(e), &b.point, bits),
+                    Err(e) => both_or_note(Err(e.into()), &b.point, bits),
                 };
                 if let Some(Value::Object(extra)) = r.info.take() {
                     for (k, v) in extra {
@@ -767,61 +642,123 @@ impl Session {
                     Trit::False => json!(false),
                     Trit::Unknown => json!("undecided"),
                 };
-                let (a, b) = match test {
-                    MemberTest::Literal => (
-                        g.in_omega_uw(u, w, &P2::<f64>::new(p[0], p[1]))?,
-                        g.in_omega_uw(u, w, &P2::<Mp>::from_f64(p[0], p[1], bits))?,
-                    ),
-                    MemberTest::Lens => (
-                        g.in_omega_uw_lens(u, w, &P2::<f64>::new(p[0], p[1]))?,
-                        g.in_omega_uw_lens(u, w, &P2::<Mp>::from_f64(p[0], p[1], bits))?,
-                    ),
-                };
+                let pm = P2::<Mp>::from_f64(p[0], p[1], bits);
+                let (a, b) = (
+                    member(&g, u, w, &P2::new(p[0], p[1]), *test)?,
+                    member(&g, u, w, &pm, *test)?,
+                );
                 let mut r = Response::plain(f(b));
                 r.f64 = Some(f(a));
                 r.mp_bits = Some(bits);
                 r.difference = Some(if a == b { 0.0 } else { 1.0 });
                 Ok(r)
             }
-            Request::Phi { u, w, p } => {
-                finite(p)?;
-                let g = PpmGluing::new(self.k()?);
-                let (u, w) = (VertexId(*u), VertexId(*w));
-                let a = g.phi::<f64>(w, u, &P2::new(p[0], p[1]))?;
-                let b = g.phi::<Mp>(w, u, &P2::from_f64(p[0], p[1], bits))?;
-                Ok(both(&[a.x, a.y], &[b.x, b.y], bits))
+            _ => Err(OracleError::Malformed(
+                "not a numerical query (no f64/MPFR answer)".into(),
+            )),
+        }
+    }
+}
+
+/// p ∈ Ω_uw by `test`, in any scalar.
+fn member<S: Scalar>(
+    g: &PpmGluing,
+    u: VertexId,
+    w: VertexId,
+    p: &P2<S>,
+    test: MemberTest,
+) -> Result<Trit, OracleError> {
+    Ok(match test {
+        MemberTest::Literal => g.in_omega_uw(u, w, p)?,
+        MemberTest::Lens => g.in_omega_uw_lens(u, w, p)?,
+    })
+}
+
+impl Session {
+    /// The one dispatcher of the numerical queries: the query point must be finite; the
+    /// session state the query needs is built; the query is evaluated in f64 and in MPFR
+    /// ([`Request::at`], written once over the scalar) and answered with both values and
+    /// their difference.
+    fn answer(&mut self, req: &Request, q: Numeric) -> Result<Response, OracleError> {
+        if !q.point.iter().all(|c| c.is_finite()) {
+            return Err(OracleError::NonFinite);
+        }
+        self.check_arguments(req)?;
+        let bits = self.bits;
+        match q.needs {
+            Needs::Nothing => {}
+            Needs::Mesh => {
+                self.k()?;
             }
-            Request::G { v, p } | Request::GInv { v, p } => {
-                finite(p)?;
-                let m = PpmGluing::new(self.k()?).degree(VertexId(*v))?;
-                let inv = matches!(req, Request::GInv { .. });
-                let a = if inv {
-                    g_v_inv::<f64>(m, &P2::new(p[0], p[1]))?
-                } else {
-                    g_v::<f64>(m, &P2::new(p[0], p[1]))?
-                };
-                let pm = P2::<Mp>::from_f64(p[0], p[1], bits);
-                let b = if inv {
-                    g_v_inv::<Mp>(m, &pm)?
-                } else {
-                    g_v::<Mp>(m, &pm)?
-                };
-                Ok(both(&[a.x, a.y], &[b.x, b.y], bits))
+            Needs::Surface => {
+                self.ch5()?;
             }
-            Request::H { p } => {
-                finite(p)?;
-                let a = h(&P2::<f64>::new(p[0], p[1]));
-                let b = h(&P2::<Mp>::from_f64(p[0], p[1], bits));
-                Ok(both(&[a.x, a.y], &[b.x, b.y], bits))
+            Needs::Consts => {
+                let c = self.ch5()?;
+                c.mp.get_or_insert_with(|| c.pps.consts::<Mp>(bits));
             }
-            Request::Rotate { u, w, p } => {
-                finite(p)?;
-                let g = PpmGluing::new(self.k()?);
-                let e = g.edge_config(VertexId(*u), VertexId(*w))?;
-                let a = Paper.r_uw(&e, &P2::<f64>::new(p[0], p[1]));
-                let b = Paper.r_uw(&e, &P2::<Mp>::from_f64(p[0], p[1], bits));
-                Ok(both(&[a.x, a.y], &[b.x, b.y], bits))
+            Needs::Jets => {
+                let c = self.ch5()?;
+                c.jet_mp
+                    .get_or_insert_with(|| c.pps.consts::<Jet<Mp>>(bits));
             }
+        }
+        let k = self.surface.as_ref();
+        let c = self.ch5.as_ref().filter(|_| q.needs >= Needs::Surface);
+        let f = Env {
+            bits: 53,
+            k,
+            pps: c.map(|c| &c.pps),
+            target: c.map(|c| &c.target),
+            consts: c.map(|c| c.pps.consts_f64()),
+            jets: c.map(|c| &c.jet),
+        };
+        let m = Env {
+            bits,
+            k,
+            pps: f.pps,
+            target: f.target,
+            consts: c.and_then(|c| c.mp.as_ref()),
+            jets: c.and_then(|c| c.jet_mp.as_ref()),
+        };
+        let mut r = match q.on_f64 {
+            OnF64::Error => {
+                let a = req.at(&f)?;
+                both(&a, &req.at(&m)?, bits)
+            }
+            OnF64::Note => {
+                let b = req.at(&m)?;
+                both_or_note(req.at(&f), &b, bits)
+            }
+        };
+        add_info(&mut r, req.info(&f));
+        Ok(r)
+    }
+
+    /// The arguments of a numerical query that are checked before the session state is
+    /// built (the order of the errors is part of the protocol).
+    fn check_arguments(&self, req: &Request) -> Result<(), OracleError> {
+        match req {
+            Request::ThetaDerivatives { order, .. } => match order.unwrap_or(3) {
+                o if o > 3 => Err(OracleError::Malformed(format!(
+                    "order {o} > 3 (the jets are of order 3)"
+                ))),
+                _ => Ok(()),
+            },
+            Request::Sprime { face, bary } => {
+                let sum: f64 = bary.iter().sum();
+                if bary.iter().any(|&x| !(-1e-12..=1.0 + 1e-12).contains(&x))
+                    || (sum - 1.0).abs() > 1e-9
+                {
+                    return Err(SurfaceError::BadBarycentric(*bary).into());
+                }
+                let f = FaceId(*face);
+                if f.idx() >= self.k()?.num_faces() {
+                    return Err(SurfaceError::NoSuchFace(f).into());
+                }
+                Ok(())
+            }
+            _ => Ok(()),
         }
     }
 }
@@ -832,55 +769,5 @@ impl Ch5 {
         let Ch5 { pps, mp, .. } = self;
         let m = mp.get_or_insert_with(|| pps.consts::<Mp>(bits));
         (&*pps, &*m)
-    }
-    /// The pseudo-surface with the order-3 jet constants in f64 and in MPFR at `bits`.
-    fn with_jets(&mut self, bits: u32) -> (&Pps, &Consts<Jet<f64>>, &Consts<Jet<Mp>>) {
-        let Ch5 {
-            pps, jet, jet_mp, ..
-        } = self;
-        let m = jet_mp.get_or_insert_with(|| pps.consts::<Jet<Mp>>(bits));
-        (&*pps, &*jet, &*m)
-    }
-}
-
-/// A numerical answer: MPFR value, f64 value, difference. A non-finite f64 component (which
-/// JSON would print as `null`) is an f64 failure, reported as `info.f64_failed` with no `f64`
-/// and no `difference` (the documented shape).
-fn both(a: &[f64], b: &[Mp], bits: u32) -> Response {
-    if let Some(i) = a.iter().position(|x| !x.is_finite()) {
-        let mut r = both(&[], b, bits);
-        r.f64 = None;
-        r.difference = None;
-        r.info = Some(json!({
-            "f64_failed": format!("the f64 evaluation gave a non-finite component {} (index {i}) where MPFR is finite", a[i])
-        }));
-        return r;
-    }
-    let value: Vec<String> = b.iter().map(mp_decimal).collect();
-    Response {
-        ok: true,
-        id: None,
-        op: None,
-        value: Some(json!(value)),
-        f64: Some(json!(a)),
-        mp_bits: Some(bits),
-        difference: Some(mp_distance(a, b)),
-        info: None,
-        error: None,
-    }
-}
-
-/// A numerical answer whose f64 evaluation may have failed where MPFR succeeded (a point on
-/// the boundary of a domain, decided differently by the two roundings).
-fn both_or_note(a: Result<Vec<f64>, SurfaceError>, b: &[Mp], bits: u32) -> Response {
-    match a {
-        Ok(a) => both(&a, b, bits),
-        Err(e) => {
-            let mut r = both(&[], b, bits);
-            r.f64 = None;
-            r.difference = None;
-            r.info = Some(json!({"f64_failed": OracleError::from(e).to_string()}));
-            r
-        }
     }
 }

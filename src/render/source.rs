@@ -138,7 +138,7 @@ pub fn pps_scene(pps: &Pps, level: u32, curvature: bool) -> Result<Scene, Render
     } else {
         Attributes::Normals
     };
-    let m = sample_surface_with(pps, level, attrs, false)?;
+    let m = sample_surface_with(pps, level, attrs, None)?;
     Ok(Scene {
         positions: m.positions,
         normals: m.normals,

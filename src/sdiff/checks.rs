@@ -45,7 +45,7 @@ fn corner(i: usize) -> [Q; 2] {
 
 /// Def. 1 (L79) on the faces: x^k ≡ 0 on the edge w_k = 0, for every triangle and k (K-invariant
 /// maps take each face into itself). Exact: on that edge the Bernstein polynomials B_I with
-/// I^k = 0 are a basis, so x^k vanishes there iff every q_I b_I[k] with I^k = 0 is zero (for
+/// I^k = 0 are a basis, so x^k vanishes there iff every q_I b_I\[k\] with I^k = 0 is zero (for
 /// Eq. (9): iff g_k(0) = 0).
 pub fn faces_preserved(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
     let mut r = CheckResult::new(

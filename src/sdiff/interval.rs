@@ -91,7 +91,7 @@ pub fn det_enclosure(m: &SimplexMap, s: I, t: I) -> I {
                 ds[0] + ds[1] + ds[2],
                 dt[0] + dt[1] + dt[2],
             );
-            return quotient_det([v[1], v[2], dv], [ds[1], ds[2], dds], [dt[1], dt[2], ddt]);
+            quotient_det([v[1], v[2], dv], [ds[1], ds[2], dds], [dt[1], dt[2], ddt])
         }
         Family::Polynomial | Family::Rational => {
             let n = m.degree;

@@ -41,7 +41,7 @@ impl Polylines {
     pub fn topology(&self) -> (usize, usize) {
         let n = self.points.len();
         let mut parent: Vec<usize> = (0..n).collect();
-        fn find(p: &mut Vec<usize>, x: usize) -> usize {
+        fn find(p: &mut [usize], x: usize) -> usize {
             let mut r = x;
             while p[r] != r {
                 r = p[r];

@@ -23,7 +23,7 @@ pub enum Family {
     Rational,
 }
 
-/// A univariate polynomial g(t) = Σ coeffs[k] t^k (the g_i of Eq. (9)).
+/// A univariate polynomial g(t) = Σ coeffs\[k\] t^k (the g_i of Eq. (9)).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Poly1(pub Vec<Q>);
 

@@ -372,7 +372,7 @@ impl MapSpec {
                 .enumerate()
                 .any(|(f, t)| tri.map_or(true, |x| x == f) && m.iter().all(|v| t.contains(v)))
         };
-        for ((tri, m), _) in &self.control {
+        for (tri, m) in self.control.keys() {
             if let Some(f) = tri {
                 if *f >= k.triangles.len() {
                     return Err(bad(
@@ -388,7 +388,7 @@ impl MapSpec {
                 ));
             }
         }
-        for ((tri, m), _) in &self.weights {
+        for (tri, m) in self.weights.keys() {
             if m.iter().any(|&v| v >= nv) || !faces_of(m, *tri) {
                 return Err(bad(
                     format!("weight at {m:?}"),

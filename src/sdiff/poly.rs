@@ -24,7 +24,7 @@ pub fn qr(p: i64, d: i64) -> Q {
     Q::new(BigInt::from(p), BigInt::from(d))
 }
 
-/// Σ c[a][b] s^a t^b, dense, total degree ≤ `deg`.
+/// Σ c\[a\]\[b\] s^a t^b, dense, total degree ≤ `deg`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Poly2 {
     /// Total degree bound (coefficients with a + b > deg are absent).

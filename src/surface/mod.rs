@@ -3,13 +3,13 @@
 //! * [`target`] — Sec. 5.1: the surface S′ to approximate (PN triangles; pluggable).
 //! * [`bezier`], [`fit`] — Def. 5.2.1 and Sec. 5.2: shape functions ψ_v by least squares.
 //! * [`weights`] — Defs. 5.3.1–5.3.2: ξ and γ_v.
-//! * [`pps`] — Defs. 5.4.1–5.4.2, Eq. (5.1): θ_v, generic over the scalar.
+//! * [`pps`] — Defs. 5.4.1–5.4.2, Eq. (5.1): θ_v, generic over the scalar; its [`options`]
+//!   (membership test, planted faults) and [`error`]s.
 //! * [`eval`] — Sec. 6.1.4: eval(σ, λ, μ, ν).
 //! * [`jet`] — order-3 derivative jets (normals, curvature, smoothness checks).
 //! * [`geometry`] — normals and curvatures from the jets of θ.
 //! * [`output`] — Sec. 6.2: sampling by midpoint subdivision and writing meshes.
 //! * [`checks`] — condition (C) and the other Chapter 5 / Sec. 6.1.4 checks.
-//! * [`cli`] — `ppm sample`, `ppm eval`.
 //!
 //! See `SPEC.md` for statement-by-statement verdicts.
 
@@ -17,18 +17,20 @@ pub mod admissible;
 pub mod authors_fit;
 pub mod bezier;
 pub mod checks;
-pub mod cli;
 pub mod consts;
+pub mod error;
 pub mod eval;
 pub mod eval_bound;
 pub mod fit;
 pub mod geometry;
 pub mod jet;
 pub mod loop_subdiv;
+pub mod options;
 pub mod output;
 pub mod pps;
 pub mod profile;
 pub mod scalar_ext;
+mod storage;
 pub mod target;
 pub mod weights;
 

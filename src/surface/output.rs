@@ -205,9 +205,16 @@ impl Attributes {
     }
 }
 
-/// Sample M at subdivision level `level` (Sec. 6.2) with normals and curvatures. `progress`:
-/// a progress line on stderr.
-pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMesh, SurfaceError> {
+/// A progress hook of a long evaluation, called with (points done, total) about ten times; the
+/// command line decides whether and how to show it (the library prints nothing).
+pub type Progress<'a> = Option<&'a (dyn Fn(usize, usize) + Sync)>;
+
+/// Sample M at subdivision level `level` (Sec. 6.2) with normals and curvatures.
+pub fn sample_surface(
+    pps: &Pps,
+    level: u32,
+    progress: Progress,
+) -> Result<SampledMesh, SurfaceError> {
     sample_surface_with(pps, level, Attributes::Curvature, progress)
 }
 
@@ -216,7 +223,7 @@ pub fn sample_surface(pps: &Pps, level: u32, progress: bool) -> Result<SampledMe
 fn eval_points<T: Send>(
     pps: &Pps,
     todo: &[SamplePoint],
-    progress: bool,
+    progress: Progress,
     f: impl Fn(SamplePoint) -> Result<T, SurfaceError> + Sync,
 ) -> Result<Vec<T>, SurfaceError> {
     let done = AtomicUsize::new(0);
@@ -225,20 +232,14 @@ fn eval_points<T: Send>(
     let keys: Vec<u32> = todo.iter().map(|s| pps.locality_key(s.face)).collect();
     let results = super::pps::map_in_key_order(&keys, |i| {
         let r = f(todo[i]);
-        if progress {
+        if let Some(show) = progress {
             let d = done.fetch_add(1, Ordering::Relaxed) + 1;
             if d % step == 0 || d == total {
-                eprint!(
-                    "\rppm sample: {d}/{total} points ({:.0}%)",
-                    100.0 * d as f64 / total as f64
-                );
+                show(d, total);
             }
         }
         r
     });
-    if progress {
-        eprintln!();
-    }
     results.into_iter().collect()
 }
 
@@ -248,7 +249,7 @@ pub fn sample_surface_with(
     pps: &Pps,
     level: u32,
     attrs: Attributes,
-    progress: bool,
+    progress: Progress,
 ) -> Result<SampledMesh, SurfaceError> {
     let SamplePattern {
         points: todo,

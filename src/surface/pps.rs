@@ -19,153 +19,20 @@
 use super::authors_fit::{fit_vertex_authors, AuthorsDegreeFit};
 use super::consts::{Consts, DegreeConsts};
 use super::fit::{factor_degree, DegreeFit, DegreeFitInfo};
-use super::profile::{label_offset, AuthorsStages, Profile};
+use super::profile::{label_offset, AuthorsStages};
 use super::scalar_ext::SurfaceScalar;
 use super::target::TargetSurface;
 use super::weights::{xi_of_sq, XiConsts};
-use crate::construction::{MapError, P2};
+use crate::construction::P2;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use rayon::prelude::*;
-use serde::Serialize;
 use std::cmp::Ordering;
 use std::sync::Arc;
 
-/// Errors of the parametrizations and of `eval`.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum SurfaceError {
-    /// The vertex is not a vertex of K (degree < 3 or out of range).
-    #[error("vertex {0} is not a vertex of K")]
-    NoSuchVertex(VertexId),
-    /// The face index is out of range.
-    #[error("face {0} is not a face of K")]
-    NoSuchFace(FaceId),
-    /// [v, u] is not an edge of K, where a label s_v(u) was needed.
-    #[error("[{0}, {1}] is not an edge of K")]
-    NoSuchEdge(VertexId, VertexId),
-    /// θ_v was asked at a point p ∉ Ω_v.
-    #[error("p = ({x}, {y}) is not in Ω_{v} (Def. 4.1.1)")]
-    NotInOmega {
-        /// The chart's vertex.
-        v: VertexId,
-        /// p's first coordinate (as f64).
-        x: f64,
-        /// p's second coordinate (as f64).
-        y: f64,
-    },
-    /// The [`Consts`] in use were built without this degree.
-    #[error("no constants for degree {0} at this precision (build Consts with it)")]
-    MissingDegree(u32),
-    /// eval got barycentric coordinates below −1e-12 or whose sum is off 1 by more than 1e-9.
-    #[error(
-        "barycentric coordinates must be ≥ 0 (−1e−12 tolerated) and sum to 1 (±1e−9), got {0:?}"
-    )]
-    BadBarycentric([f64; 3]),
-    /// The denominator Σ_u Γ_uv(p) of θ_v at p ∈ Ω_v is not decided positive (names v).
-    #[error("Σ_u Γ_uv(p) is not decided positive (zero, negative, NaN or an enclosure containing 0) at p in Ω_{0}: θ undefined")]
-    ZeroWeight(VertexId),
-    /// Sec. 6.2 sampling at a level whose output would not fit the memory budget (no silent
-    /// clamp: the estimate is reported).
-    #[error("sampling level {level} would produce about {points} points and need about {bytes} bytes (limit {limit} bytes, Sec. 6.2 sampling); choose a lower --level")]
-    LevelTooLarge {
-        /// The requested subdivision level.
-        level: u32,
-        /// Estimated number of output vertices.
-        points: u128,
-        /// Estimated memory of the sampled mesh in bytes.
-        bytes: u128,
-        /// The budget in bytes.
-        limit: u128,
-    },
-    /// A Chapter 4 map failed (Π at the origin, or undecided).
-    #[error("map: {0}")]
-    Map(#[from] MapError),
-    /// The least-squares fits of Sec. 5.2 would exceed the memory budget (estimated before
-    /// building; `surface::admissible`).
-    #[error("vertex {v} has degree {degree}: the {profile} profile fits ψ_v with Bézier degree l = {l} (Sec. 5.2), and the fits of this mesh would need about {bytes} bytes (limit {limit}); the authors-code profile caps l at 7 (--profile authors-code)")]
-    FitTooLarge {
-        /// A vertex of the largest degree.
-        v: VertexId,
-        /// Its degree m_v.
-        degree: u32,
-        /// The Bézier bi-degree l of its shape function.
-        l: usize,
-        /// The profile's name.
-        profile: String,
-        /// Estimated memory of all the fits, in bytes.
-        bytes: u128,
-        /// The budget in bytes.
-        limit: u128,
-    },
-    /// A coordinate so large that normals and curvatures (size⁴) overflow f64.
-    #[error("vertex {v}: coordinate {value:e} is outside ±2^200 (≈ 1.6e60), where normals and curvatures (which scale like size⁴) overflow f64; rescale the mesh")]
-    CoordinateOutOfRange {
-        /// The vertex.
-        v: VertexId,
-        /// The offending coordinate.
-        value: f64,
-    },
-    /// A mesh so small that normals and curvatures (size⁴) underflow f64.
-    #[error("the bounding-box diagonal {diagonal:e} is below 2^-200 (≈ 6.2e-61), where normals and curvatures (which scale like size⁴) underflow f64; rescale the mesh")]
-    ExtentTooSmall {
-        /// The bounding-box diagonal.
-        diagonal: f64,
-    },
-}
-
-/// How p ∈ Ω_vu is decided (see the module doc).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
-pub enum Membership {
-    /// Def. 4.1.9 (equivalent branch + lens test).
-    #[default]
-    Literal,
-    /// Sec. 6.1.3: the canonical-lens test alone, all neighbours tested.
-    Lens,
-}
-
-/// Planted faults, for the tests that show each check can fail.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub enum Fault {
-    /// Γ_uv of `vertex` multiplied by `factor` whenever it enters θ_v of *another* vertex v
-    /// (one control point's blending perturbed).
-    NeighbourWeight {
-        /// The vertex u whose weight is perturbed.
-        vertex: VertexId,
-        /// The factor applied to Γ_uv.
-        factor: f64,
-    },
-    /// φ_uv (from `from`'s chart to `to`'s) followed by a rotation by `angle` about 0.
-    Transition {
-        /// Source chart: the perturbed map is φ_{to,from}, out of Ω_from.
-        from: VertexId,
-        /// Target chart.
-        to: VertexId,
-        /// Rotation angle (radians) applied after the map.
-        angle: f64,
-    },
-    /// ω_uv computed with Σ Γ multiplied by `factor` (normalisation broken).
-    Denominator {
-        /// The factor applied to the denominator.
-        factor: f64,
-    },
-    /// ξ replaced by the C⁰ ramp (H₂ − t)/(H₂ − H₁) on (H₁, H₂).
-    RampWeight,
-    /// The support radius H₂ of γ_v multiplied by `factor`.
-    WeightRadius {
-        /// The factor applied to H₂.
-        factor: f64,
-    },
-}
-
-/// Options of the construction.
-#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize)]
-pub struct PpsOptions {
-    /// The parameter profile (fixed when the surface is built).
-    pub profile: Profile,
-    /// How p ∈ Ω_vu is decided.
-    pub membership: Membership,
-    /// A planted fault, `None` in production.
-    pub fault: Option<Fault>,
-}
+pub use super::error::SurfaceError;
+pub use super::options::{Fault, Membership, PpsOptions};
+pub(crate) use super::storage::map_in_key_order;
+use super::storage::{bfs_order, prefetch};
 
 /// One term of Eq. (5.1): u ∈ J_v(p), q = φ_uv(p), Γ_uv(p) = γ_u(q).
 #[derive(Debug, Clone)]
@@ -777,73 +644,6 @@ impl Pps {
     pub fn theta_f64(&self, v: VertexId, p: [f64; 2]) -> Result<[f64; 3], SurfaceError> {
         self.theta(v, &P2::new(p[0], p[1]), &self.consts)
     }
-}
-
-/// Prefetch the cache line holding `x` (x86-64 only; a hint without effect on results).
-#[inline(always)]
-fn prefetch(x: &f64) {
-    #[cfg(target_arch = "x86_64")]
-    // SAFETY: PREFETCHT0 is an SSE instruction (baseline on x86-64) that never faults and
-    // does not access memory architecturally; the pointer comes from a valid reference.
-    unsafe {
-        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
-        _mm_prefetch::<_MM_HINT_T0>(x as *const f64 as *const i8);
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = x;
-}
-
-/// `f(i)` for i = 0..keys.len(), evaluated in parallel in the order of increasing `keys[i]`
-/// (locality), returned in index order.
-pub(crate) fn map_in_key_order<T: Send>(
-    keys: &[u32],
-    f: impl Fn(usize) -> T + Sync + Send,
-) -> Vec<T> {
-    let mut order: Vec<(u32, u32)> = keys
-        .iter()
-        .enumerate()
-        .map(|(i, &k)| (k, i as u32))
-        .collect();
-    order.par_sort_unstable();
-    let done: Vec<T> = order.par_iter().map(|&(_, i)| f(i as usize)).collect();
-    let mut slots: Vec<Option<T>> = (0..keys.len()).map(|_| None).collect();
-    for (&(_, i), r) in order.iter().zip(done) {
-        slots[i as usize] = Some(r);
-    }
-    // `order` is a permutation of 0..keys.len(): every slot is filled.
-    slots.into_iter().flatten().collect()
-}
-
-/// The vertices of degree ≥ 3 in breadth-first order over the links (component by component,
-/// each from its smallest vertex id), followed by the other slots.
-fn bfs_order(degree: &[u32], nbr_start: &[usize], nbr: &[VertexId]) -> Vec<VertexId> {
-    let slots = degree.len();
-    let mut seen = vec![false; slots];
-    let mut order = Vec::with_capacity(slots);
-    for s in 0..slots {
-        if seen[s] || degree[s] < 3 {
-            continue;
-        }
-        seen[s] = true;
-        let mut head = order.len();
-        order.push(VertexId(s as u32));
-        while head < order.len() {
-            let v = order[head].idx();
-            head += 1;
-            for &u in &nbr[nbr_start[v]..nbr_start[v + 1]] {
-                if !seen[u.idx()] {
-                    seen[u.idx()] = true;
-                    order.push(u);
-                }
-            }
-        }
-    }
-    for (s, done) in seen.iter().enumerate() {
-        if !done {
-            order.push(VertexId(s as u32));
-        }
-    }
-    order
 }
 
 /// The planted C⁰ ramp replacing ξ (Fault::RampWeight).

@@ -39,7 +39,7 @@ pub fn check_d4_1_9_lens_agreement<S: Scalar, M: Ppm<S>>(
     let tol = ROUNDTRIP_COND * amp(&[e.m_u, e.m_w]) * eps;
     let mut m = Check::sampled(
         "D4.1.9-lens",
-        &format!("Def. 4.1.9 (literal) ⇔ Sec. 6.1.3 lens test ({e:?})"),
+        format!("Def. 4.1.9 (literal) ⇔ Sec. 6.1.3 lens test ({e:?})"),
         seed,
         tol,
     );
@@ -101,7 +101,7 @@ pub fn check_p4_2_1<S: Scalar, M: Ppm<S>>(
     n: usize,
     prec: u32,
 ) -> CheckResult {
-    let mut m = Check::sampled("P4.2.1", &format!("Ω_uw ≠ ∅ ⇔ Ω_wu ≠ ∅ ({e:?})"), seed, 0.0);
+    let mut m = Check::sampled("P4.2.1", format!("Ω_uw ≠ ∅ ⇔ Ω_wu ≠ ∅ ({e:?})"), seed, 0.0);
     let a = omega_uw_points(model, e, seed, n, prec).len();
     let b = omega_uw_points(model, &e.reversed(), seed ^ 0x77, n, prec).len();
     m.examined(2 * n as u64);
@@ -137,13 +137,13 @@ pub fn check_p4_2_3<S: Scalar, M: Ppm<S>>(
     let tol = COMPOSITE_COND * amp(&[e.m_u, e.m_w]) * eps;
     let mut m = Check::sampled(
         "P4.2.3",
-        &format!("φ_uw∘φ_wu = id on Ω_uw ({e:?})"),
+        format!("φ_uw∘φ_wu = id on Ω_uw ({e:?})"),
         seed,
         tol,
     );
     let mut d = Check::sampled(
         "D4.1.10",
-        &format!("φ_wu maps Ω_uw into Ω_wu ({e:?})"),
+        format!("φ_wu maps Ω_uw into Ω_wu ({e:?})"),
         seed,
         0.0,
     );
@@ -208,7 +208,7 @@ pub fn check_l4_2_4<S: Scalar, M: Ppm<S>>(
     prec: u32,
 ) -> CheckResult {
     let (lip, kmax) = guw_lipschitz(e);
-    let mut m = Check::sampled("L4.2.4", &format!("φ_wu is C^∞ on Ω_uw ({e:?})"), seed, 1.0);
+    let mut m = Check::sampled("L4.2.4", format!("φ_wu is C^∞ on Ω_uw ({e:?})"), seed, 1.0);
     let pair = VertexPair::Edge(*e);
     let f = |p: &P2<S>| model.phi_wu(&pair, p);
     let jac = |p: &P2<S>| model.g_uw_jacobian(e, p);
@@ -255,7 +255,7 @@ pub fn check_l4_2_3<S: Scalar, M: Ppm<S>>(
     let tol = COMPOSITE_COND * amp(&[e.m_u, e.m_w]) * eps;
     let mut m = Check::sampled(
         "L4.2.3",
-        &format!("Hausdorff separation of ∂Ω_uw ∩ Ω_u and ∂Ω_wu ∩ Ω_w ({e:?})"),
+        format!("Hausdorff separation of ∂Ω_uw ∩ Ω_u and ∂Ω_wu ∩ Ω_w ({e:?})"),
         seed,
         tol,
     );

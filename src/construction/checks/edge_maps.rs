@@ -275,13 +275,13 @@ pub fn check_p4_1_2<S: Scalar, M: Ppm<S>>(
     let delta = (1.0 - (3.0f64).sqrt() / 2.0) / f_v_radial_factor::<f64>(e.m_w, 53);
     let mut m = Check::sampled(
         "P4.1.2",
-        &format!("(0,0) ∉ g_(u,w)(Ω_u − {{0}}) ({e:?})"),
+        format!("(0,0) ∉ g_(u,w)(Ω_u − {{0}}) ({e:?})"),
         seed,
         tol,
     );
     let mut step = Check::sampled(
         "P4.1.2-proof-step",
-        &format!("proof step: θ(g_u∘R_(u,w)(p)) ∈ (−π/3, π/3) on Ω_u − {{0}} ({e:?})"),
+        format!("proof step: θ(g_u∘R_(u,w)(p)) ∈ (−π/3, π/3) on Ω_u − {{0}} ({e:?})"),
         seed,
         0.0,
     );
@@ -358,7 +358,7 @@ pub fn check_p4_1_3<S: Scalar, M: Ppm<S>>(
     let tol = ROUNDTRIP_COND * amp(&[e.m_u, e.m_w]) * eps;
     let mut ne = Check::sampled(
         "P4.1.3",
-        &format!("g_(u,w)(Ω_u − {{0}}) ∩ (Ω_w − {{0}}) ≠ ∅ ({e:?})"),
+        format!("g_(u,w)(Ω_u − {{0}}) ∩ (Ω_w − {{0}}) ≠ ∅ ({e:?})"),
         seed,
         0.0,
     );

@@ -51,8 +51,8 @@ pub fn check_star_overlaps<S: Scalar, M: Ppm<S>>(
 ) -> Vec<CheckResult> {
     let suffix = if use_lens { "[sec6.1.3]" } else { "" };
     let mut a = Check::sampled(
-        &format!("C5.4-at-most-two{suffix}"),
-        &format!(
+        format!("C5.4-at-most-two{suffix}"),
+        format!(
             "at most two Ω_xn contain any point of Ω_x (m_x = {})",
             star.m
         ),
@@ -60,8 +60,8 @@ pub fn check_star_overlaps<S: Scalar, M: Ppm<S>>(
         0.0,
     );
     let mut b = Check::sampled(
-        &format!("C4.2-nonadjacent-disjoint{suffix}"),
-        &format!("Ω_xa ∩ Ω_xb = ∅ for non-adjacent a, b (m_x = {})", star.m),
+        format!("C4.2-nonadjacent-disjoint{suffix}"),
+        format!("Ω_xa ∩ Ω_xb = ∅ for non-adjacent a, b (m_x = {})", star.m),
         seed,
         0.0,
     );

@@ -45,19 +45,19 @@ pub fn check_l4_2_1_l4_2_2<S: Scalar, M: Ppm<S>>(
     let tol = COMPOSITE_COND * amp(&[t.m_u, t.m_w, t.m_x]) * eps;
     let mut l1 = Check::sampled(
         "L4.2.1",
-        &format!("φ_xu⁻¹(Ω_xu ∩ Ω_xw) ⊆ Ω_uw ({t:?})"),
+        format!("φ_xu⁻¹(Ω_xu ∩ Ω_xw) ⊆ Ω_uw ({t:?})"),
         seed,
         tol,
     );
     let mut l2 = Check::sampled(
         "L4.2.2",
-        &format!("φ_wu = φ_wx∘φ_xu on φ_xu⁻¹(Ω_xu ∩ Ω_xw) ({t:?})"),
+        format!("φ_wu = φ_wx∘φ_xu on φ_xu⁻¹(Ω_xu ∩ Ω_xw) ({t:?})"),
         seed,
         tol,
     );
     let mut eq = Check::sampled(
         "L4.2.1-proof-equality",
-        &format!("Ω_ux ∩ Ω_uw ⊆ φ_xu⁻¹(Ω_xu ∩ Ω_xw) ({t:?})"),
+        format!("Ω_ux ∩ Ω_uw ⊆ φ_xu⁻¹(Ω_xu ∩ Ω_xw) ({t:?})"),
         seed,
         0.0,
     );
@@ -161,13 +161,13 @@ pub fn check_p4_2_4<S: Scalar, M: Ppm<S>>(
     let tol = COMPOSITE_COND * amp(&[e_uw.m_u]) * eps;
     let mut a = Check::sampled(
         "P4.2.4(i,ii)",
-        &format!("M_∓π/3∘g_u∘R(Ω_uw/uz) = g_u∘R(Ω_uz/uw) ({e_uw:?}, {e_uz:?})"),
+        format!("M_∓π/3∘g_u∘R(Ω_uw/uz) = g_u∘R(Ω_uz/uw) ({e_uw:?}, {e_uz:?})"),
         seed,
         tol,
     );
     let mut b = Check::sampled(
         "P4.2.4(iii,iv)",
-        &format!("Ω_uz = M_{{−2π/m_u}}(Ω_uw), Ω_uw = M_{{2π/m_u}}(Ω_uz) ({e_uw:?}, {e_uz:?})"),
+        format!("Ω_uz = M_{{−2π/m_u}}(Ω_uw), Ω_uw = M_{{2π/m_u}}(Ω_uz) ({e_uw:?}, {e_uz:?})"),
         seed,
         0.0,
     );

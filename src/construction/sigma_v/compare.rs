@@ -106,7 +106,7 @@ pub fn compare(
         st.push(d(b, t));
     }
     let mv =
-        crate::surface::output::sample_surface(&pps, level, false).map_err(|e| e.to_string())?;
+        crate::surface::output::sample_surface(&pps, level, None).map_err(|e| e.to_string())?;
     let ms = sv.sample_surface(level).map_err(|e| e.to_string())?;
     Ok(CompareReport {
         level,

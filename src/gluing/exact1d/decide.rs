@@ -5,7 +5,7 @@
 use super::data::{Exact1d, Piece};
 use super::interval::{fmt_q, mid, q_to_f64, Interval, OpenSet, Q};
 use crate::gluing::data::Idx;
-use crate::report::{CheckResult, Witness};
+use crate::report::{dev_max, Check, CheckResult, OnError, Witness};
 use num_traits::{One, Signed, Zero};
 use serde_json::json;
 
@@ -213,23 +213,38 @@ fn qs(x: &Q) -> serde_json::Value {
     serde_json::Value::String(fmt_q(x))
 }
 
-fn exact(r: CheckResult) -> CheckResult {
+/// Close an exact check: the harness applies rule 3 (nothing examined is skipped).
+fn exact(r: Check) -> CheckResult {
     let note = if r.note.is_empty() {
         "exact (rational arithmetic)".to_string()
     } else {
         format!("exact (rational arithmetic); {}", r.note)
     };
-    r.with_note(note)
+    r.finish(note)
 }
 
-fn dev(r: &mut CheckResult, d: &Q) {
+fn dev(r: &mut Check, d: &Q) {
     let d = q_to_f64(&d.abs());
-    r.worst_deviation = Some(r.worst_deviation.unwrap_or(0.0).max(d));
+    r.worst_deviation = Some(dev_max(r.worst_deviation.unwrap_or(0.0), d));
 }
+
+/// A value in a witness: a composition the statement needs may be undefined on ill-formed
+/// data, and a witness must say so rather than print a made-up number.
+fn at(v: &Option<Q>) -> String {
+    v.as_ref().map_or_else(|| "undefined".into(), fmt_q)
+}
+
+fn qs_opt(v: &Option<Q>) -> serde_json::Value {
+    v.as_ref().map_or(serde_json::Value::Null, qs)
+}
+
+/// A composition the statement claims defined is not: an evaluation error, counted and an
+/// offence (rule 2 of the harness).
+const UNDEFINED: &str = "composition undefined where the statement claims it defined";
 
 /// Def. 3.4.1(1): I ≠ ∅; each Ω_i non-empty and open (open by representation); pairwise disjoint.
 pub fn check_1(g: &Exact1d) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(1)", "p-domains non-empty, open, disjoint");
+    let mut r = Check::new("D3.4.1(1)", "p-domains non-empty, open, disjoint");
     let ids = g.ids();
     if ids.is_empty() {
         r.offend(|| {
@@ -263,7 +278,7 @@ pub fn check_1(g: &Exact1d) -> CheckResult {
 
 /// Def. 3.4.1(2): Ω_ij ⊆ Ω_i (open by representation), Ω_ii = Ω_i, Ω_ij ≠ ∅ ⇔ Ω_ji ≠ ∅.
 pub fn check_2(g: &Exact1d) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(2)", "Ω_ij ⊆ Ω_i open, Ω_ii = Ω_i, K symmetric");
+    let mut r = Check::new("D3.4.1(2)", "Ω_ij ⊆ Ω_i open, Ω_ii = Ω_i, K symmetric");
     let ids = g.ids();
     for &i in &ids {
         for &j in &ids {
@@ -307,7 +322,7 @@ pub fn check_2(g: &Exact1d) -> CheckResult {
 /// with a ≠ 0, pieces not overlapping with different maps, images pairwise disjoint, union of
 /// images = Ω_ji). Affine pieces with a ≠ 0 are C^∞, so only bijectivity needs deciding.
 pub fn check_bijection(g: &Exact1d) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(3)", "φ_ji : Ω_ij → Ω_ji a (C^∞) bijection");
+    let mut r = Check::new("D3.4.1(3)", "φ_ji : Ω_ij → Ω_ji a (C^∞) bijection");
     for (i, j) in g.k() {
         r.examined += 1;
         let ps = g.pieces(i, j);
@@ -391,7 +406,7 @@ pub fn check_bijection(g: &Exact1d) -> CheckResult {
 /// Def. 3.4.1(3a): φ_ii = id_{Ω_i}: every piece of φ_ii is x ↦ 1·x + 0, and φ_ii is defined on
 /// all of Ω_i (otherwise the identity of Ω_i is not φ_ii).
 pub fn check_3a(g: &Exact1d) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(3a)", "φ_ii = id");
+    let mut r = Check::new("D3.4.1(3a)", "φ_ii = id");
     for i in g.ids() {
         r.examined += 1;
         for p in g.pieces(i, i) {
@@ -414,7 +429,7 @@ pub fn check_3a(g: &Exact1d) -> CheckResult {
             }
         }
         if let Some(x) = g.omega(i).subset_witness(&g.omega_ij(i, i)) {
-            r.offend(|| {
+            r.error(OnError::Offence, UNDEFINED, || {
                 Witness::new(
                     format!(
                         "φ_{i}{i}({}) undefined, but id_Ω_{i} is defined there",
@@ -431,7 +446,7 @@ pub fn check_3a(g: &Exact1d) -> CheckResult {
 /// Def. 3.4.1(3b): φ_ij = φ_ji⁻¹ for (i, j) ∈ K, decided as φ_ij ∘ φ_ji = id on Ω_ij (for both
 /// orders of every pair, so both inverse laws are covered) including definedness.
 pub fn check_3b(g: &Exact1d) -> CheckResult {
-    let mut r = CheckResult::new("D3.4.1(3b)", "φ_ij = φ_ji⁻¹");
+    let mut r = Check::new("D3.4.1(3b)", "φ_ij = φ_ji⁻¹");
     for (i, j) in g.k() {
         r.examined += 1;
         let first = g.pieces(i, j);
@@ -439,7 +454,7 @@ pub fn check_3b(g: &Exact1d) -> CheckResult {
         let oij = g.omega_ij(i, j);
         let defined = preimage(first, &g.omega_ij(j, i));
         if let Some(x) = oij.subset_witness(&defined) {
-            r.offend(|| {
+            r.error(OnError::Offence, UNDEFINED, || {
                 Witness::new(
                     format!("φ_{i}{j}(φ_{j}{i}({})) undefined", fmt_q(&x)),
                     json!({"kind": "undefined", "i": i, "j": j, "x": qs(&x)}),
@@ -492,7 +507,7 @@ pub fn check_3c(g: &Exact1d) -> CheckResult {
 
 /// [`check_3c`] with shared compositions.
 pub fn check_3c_with(g: &Exact1d, comp: &mut Compositions) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         "D3.4.1(3c)",
         "cocycle: domain inclusion and φ_ki = φ_kj∘φ_ji",
     );
@@ -509,15 +524,15 @@ pub fn check_3c_with(g: &Exact1d, comp: &mut Compositions) -> CheckResult {
                 let oik = g.omega_ij(i, k);
                 let (outside, points) = d.minus(&oik);
                 for x in outside.parts().iter().map(|p| p.midpoint()).chain(points) {
-                    let y = g.phi(j, i, &x).unwrap_or_else(Q::zero);
-                    let z = g.phi(k, j, &y).unwrap_or_else(Q::zero);
+                    let y = g.phi(j, i, &x);
+                    let z = y.as_ref().and_then(|y| g.phi(k, j, y));
                     r.offend(|| {
                         Witness::new(
                             format!(
                                 "(i,j,k)=({i},{j},{k}): x = {} ∈ φ_{j}{i}⁻¹(Ω_{j}{i} ∩ Ω_{j}{k}) = {d} but x ∉ Ω_{i}{k} = {oik}; so {} ∼ {} ∼ {} yet φ_{k}{i}({}) is undefined",
-                                fmt_q(&x), fmt_q(&x), fmt_q(&y), fmt_q(&z), fmt_q(&x)
+                                fmt_q(&x), fmt_q(&x), at(&y), at(&z), fmt_q(&x)
                             ),
-                            json!({"kind": "inclusion", "i": i, "j": j, "k": k, "x": qs(&x), "y": qs(&y), "z": qs(&z)}),
+                            json!({"kind": "inclusion", "i": i, "j": j, "k": k, "x": qs(&x), "y": qs_opt(&y), "z": qs_opt(&z)}),
                         )
                     });
                 }
@@ -565,7 +580,7 @@ pub fn check_grimm_hughes_with(g: &Exact1d, strict: bool, comp: &mut Composition
     } else {
         ("CA.2-GH", "Grimm–Hughes cocycle (where both sides defined)")
     };
-    let mut r = CheckResult::new(id, name);
+    let mut r = Check::new(id, name);
     // Ω_ij ∩ Ω_ik ≠ ∅ needs (i, j) ∈ K and (i, k) ∈ K; same order as i, j, k over I³.
     let adj = g.adjacency();
     for i in g.ids() {
@@ -580,14 +595,14 @@ pub fn check_grimm_hughes_with(g: &Exact1d, strict: bool, comp: &mut Composition
                     let defined = cocycle_domain(g, i, j, k);
                     let (outside, points) = e.minus(&defined);
                     for x in outside.parts().iter().map(|p| p.midpoint()).chain(points) {
-                        let y = g.phi(j, i, &x).unwrap_or_else(Q::zero);
+                        let y = g.phi(j, i, &x);
                         r.offend(|| {
                             Witness::new(
                                 format!(
                                     "(i,j,k)=({i},{j},{k}): x = {} ∈ Ω_{i}{j} ∩ Ω_{i}{k} but φ_{j}{i}(x) = {} ∉ Ω_{j}{k}, so φ_{k}{j}∘φ_{j}{i}(x) is undefined",
-                                    fmt_q(&x), fmt_q(&y)
+                                    fmt_q(&x), at(&y)
                                 ),
-                                json!({"kind": "rhs_undefined", "i": i, "j": j, "k": k, "x": qs(&x), "y": qs(&y)}),
+                                json!({"kind": "rhs_undefined", "i": i, "j": j, "k": k, "x": qs(&x), "y": qs_opt(&y)}),
                             )
                         });
                     }
@@ -647,7 +662,7 @@ pub fn glued_boundary(g: &Exact1d, i: Idx, j: Idx) -> Vec<Q> {
 /// balls r_x = min(d / (2A), δ), r_y = d / 2 work: φ_ji(V_x ∩ Ω_ij) ⊆ ∪_P B(L_P, d/2), disjoint
 /// from B(y, d/2). Returns the verdict and the radii of every separated pair.
 pub fn check_4_with_radii(g: &Exact1d) -> (CheckResult, Vec<Separation>) {
-    let mut r = CheckResult::new("D3.4.1(4)", "Hausdorff condition (separating balls)");
+    let mut r = Check::new("D3.4.1(4)", "Hausdorff condition (separating balls)");
     let mut seps = Vec::new();
     for (i, j) in g.k() {
         if i == j {

@@ -11,6 +11,10 @@ use serde_json::json;
 /// φ returned `None` where the statement claims it is defined.
 const UNDEFINED: &str = "φ undefined";
 
+/// φ returned `None` on its own gluing domain, an offence of D3.4.1(3) (reported there): the
+/// sample cannot be examined by the statement at hand.
+const UNDEFINED_ELSEWHERE: &str = "φ_ji(x) undefined on Ω_ij (reported by D3.4.1(3))";
+
 /// Def. 3.4.1(3), the part a sampler can refute: φ_ji is defined on Ω_ij and maps it into Ω_ji.
 /// (Surjectivity onto Ω_ji and injectivity follow from 3(b), checked separately.)
 pub fn check_maps_into<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
@@ -80,11 +84,9 @@ pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
         for x in g.sample_gluing_domain(i, j, &mut rng, cfg.n) {
             let Some(y) = g.phi(j, i, &x) else {
                 // The offence is D3.4.1(3)'s; here the sample cannot be examined.
-                r.error(
-                    OnError::Skip,
-                    "φ_ji(x) undefined (reported by D3.4.1(3))",
-                    || Witness::new(fmt_point(&x), point_json(&x)),
-                );
+                r.error(OnError::Skip, UNDEFINED_ELSEWHERE, || {
+                    Witness::new(fmt_point(&x), point_json(&x))
+                });
                 continue;
             };
             let t = tol::<G::S>(norm(&x).max(norm(&y))) * g.amplification();
@@ -138,22 +140,28 @@ pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
             let ys = g.sample_gluing_domain(j, i, &mut rng, cfg.n);
             for &k in &ids {
                 let mut cand = xs.clone();
-                for y in &ys {
-                    if g.in_gluing_domain(j, k, y) {
-                        if let Some(x) = g.phi(i, j, y) {
-                            cand.push(x);
-                        }
-                    }
-                }
-                for y in g.sample_gluing_domain(j, k, &mut rng, cfg.n / 4 + 1) {
-                    if g.in_gluing_domain(j, i, &y) {
-                        if let Some(x) = g.phi(i, j, &y) {
-                            cand.push(x);
-                        }
+                let more = g.sample_gluing_domain(j, k, &mut rng, cfg.n / 4 + 1);
+                let pulled = ys
+                    .iter()
+                    .filter(|y| g.in_gluing_domain(j, k, y))
+                    .chain(more.iter().filter(|y| g.in_gluing_domain(j, i, y)));
+                for y in pulled {
+                    // y ∈ Ω_ji: φ_ij(y) is claimed defined; where it is not, the offence is
+                    // D3.4.1(3)'s and this candidate cannot be examined.
+                    match g.phi(i, j, y) {
+                        Some(x) => cand.push(x),
+                        None => r.error(OnError::Skip, UNDEFINED_ELSEWHERE, || {
+                            Witness::new(fmt_point(y), point_json(y))
+                        }),
                     }
                 }
                 for x in &cand {
-                    let Some(y) = g.phi(j, i, x) else { continue };
+                    let Some(y) = g.phi(j, i, x) else {
+                        r.error(OnError::Skip, UNDEFINED_ELSEWHERE, || {
+                            Witness::new(fmt_point(x), point_json(x))
+                        });
+                        continue;
+                    };
                     if !(g.in_gluing_domain(j, i, &y) && g.in_gluing_domain(j, k, &y)) {
                         continue;
                     }
@@ -230,10 +238,35 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
                     if !(g.in_gluing_domain(i, j, x) && g.in_gluing_domain(i, k, x)) {
                         continue;
                     }
-                    let y = g.phi(j, i, x);
-                    let rhs = y.as_ref().and_then(|y| g.phi(k, j, y));
-                    let lhs = g.phi(k, i, x);
-                    match (lhs, rhs) {
+                    // x ∈ Ω_ij ∩ Ω_ik: φ_ji(x) and φ_ki(x) are claimed defined (D3.4.1(3)), and
+                    // so is φ_kj(y) for y ∈ Ω_jk; an undefined one is counted, never dropped.
+                    // The strict reading requires the right side defined: there an undefined
+                    // φ_ji(x) or φ_kj(y) is its offence; the non-strict one cannot examine x.
+                    let rhs_rule = if strict {
+                        OnError::Offence
+                    } else {
+                        OnError::Skip
+                    };
+                    let Some(y) = g.phi(j, i, x) else {
+                        r.error(rhs_rule, UNDEFINED, || {
+                            Witness::new(
+                                format!("(i,j,k)=({i},{j},{k}): φ_{j}{i}({}) undefined though x ∈ Ω_{i}{j}", fmt_point(x)),
+                                json!({"kind": "undefined", "i": i, "j": j, "k": k, "x": point_json(x)}),
+                            )
+                        });
+                        continue;
+                    };
+                    let rhs = g.phi(k, j, &y);
+                    if rhs.is_none() && g.in_gluing_domain(j, k, &y) {
+                        r.error(rhs_rule, UNDEFINED, || {
+                            Witness::new(
+                                format!("(i,j,k)=({i},{j},{k}): φ_{k}{j}({}) undefined though φ_{j}{i}(x) ∈ Ω_{j}{k} (x = {})", fmt_point(&y), fmt_point(x)),
+                                json!({"kind": "undefined", "i": i, "j": j, "k": k, "x": point_json(x), "y": point_json(&y)}),
+                            )
+                        });
+                        continue;
+                    }
+                    match (g.phi(k, i, x), rhs) {
                         (Some(z1), Some(z2)) => {
                             let d = dist(&z1, &z2);
                             let t = tol::<G::S>(norm(&z1).max(norm(x))) * g.amplification();
@@ -250,9 +283,13 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
                                 json!({"kind": "rhs_undefined", "i": i, "j": j, "k": k, "x": point_json(x)}),
                             )
                         }),
-                        // Where a side is undefined the non-strict reading requires nothing;
-                        // the sample still counts as examined.
-                        _ => r.examined(1),
+                        // Where the right side is undefined the non-strict reading requires
+                        // nothing; the sample still counts as examined.
+                        (Some(_), None) => r.examined(1),
+                        // φ_ki undefined on Ω_ik: D3.4.1(3)'s offence; x cannot be examined.
+                        (None, _) => r.error(OnError::Skip, UNDEFINED_ELSEWHERE, || {
+                            Witness::new(fmt_point(x), point_json(x))
+                        }),
                     }
                 }
             }

@@ -3,7 +3,7 @@
 
 use super::{ErrorClass, Incidence};
 use crate::mesh::RawMesh;
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{Check, CheckResult, Verdict, Witness};
 use serde_json::json;
 
 /// Def. 3.1.3(i) as it applies to a triangle list: K is the closure of the listed triangles,
@@ -11,8 +11,8 @@ use serde_json::json;
 /// that does not exist (an index out of range).
 pub fn indices_in_range(raw: &RawMesh) -> CheckResult {
     let n = raw.positions.len() as u64;
-    let mut r = CheckResult::new("D3.1.3(i)", "faces of faces present (indices in range)");
-    r.examined = raw.faces.len() as u64;
+    let mut r = Check::new("D3.1.3(i)", "faces of faces present (indices in range)");
+    r.examined(raw.faces.len() as u64);
     for (f, tri) in raw.faces.iter().enumerate() {
         for &i in tri {
             if u64::from(i) >= n {
@@ -30,13 +30,13 @@ pub fn indices_in_range(raw: &RawMesh) -> CheckResult {
             }
         }
     }
-    r
+    r.finish("")
 }
 
 /// Coordinates must be finite real numbers (a NaN or infinite coordinate is not a point of R³).
 pub fn coordinates_finite(raw: &RawMesh) -> CheckResult {
-    let mut r = CheckResult::new("X-finite", "coordinates finite");
-    r.examined = raw.positions.len() as u64;
+    let mut r = Check::new("X-finite", "coordinates finite");
+    r.examined(raw.positions.len() as u64);
     for (v, p) in raw.positions.iter().enumerate() {
         if !p.iter().all(|c| c.is_finite()) {
             r.offend(|| {
@@ -47,13 +47,13 @@ pub fn coordinates_finite(raw: &RawMesh) -> CheckResult {
             });
         }
     }
-    r
+    r.finish("")
 }
 
 /// A triangle whose corner list repeats a vertex spans fewer than 3 points (Def. 3.1.1).
 pub fn repeated_corners(raw: &RawMesh) -> (CheckResult, Vec<bool>) {
-    let mut r = CheckResult::new("X-repeated-corner", "no face repeats a vertex");
-    r.examined = raw.faces.len() as u64;
+    let mut r = Check::new("X-repeated-corner", "no face repeats a vertex");
+    r.examined(raw.faces.len() as u64);
     let mut bad = vec![false; raw.faces.len()];
     for (f, t) in raw.faces.iter().enumerate() {
         if t[0] == t[1] || t[1] == t[2] || t[0] == t[2] {
@@ -66,14 +66,14 @@ pub fn repeated_corners(raw: &RawMesh) -> (CheckResult, Vec<bool>) {
             });
         }
     }
-    (r, bad)
+    (r.finish(""), bad)
 }
 
 /// Two faces with the same vertex set (in any order or orientation) are one simplex listed
 /// twice; Def. 3.1.3 describes a *set* of simplices.
 pub fn duplicate_faces(raw: &RawMesh, inc: &Incidence) -> CheckResult {
-    let mut r = CheckResult::new("X-duplicate-face", "no duplicate faces");
-    r.examined = raw.faces.len() as u64;
+    let mut r = Check::new("X-duplicate-face", "no duplicate faces");
+    r.examined(raw.faces.len() as u64);
     for group in inc.duplicate_groups() {
         let (first, rest) = match group.split_first() {
             Some(x) => x,
@@ -93,15 +93,15 @@ pub fn duplicate_faces(raw: &RawMesh, inc: &Incidence) -> CheckResult {
             });
         }
     }
-    r
+    r.finish("")
 }
 
 /// Vertices that no face uses are not in K (K is the closure of the triangles). Not an error,
 /// but reported: a user's vertex ids stay file indices, so these ids are not in I.
 pub fn unreferenced_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
-    let mut r = CheckResult::new("X-unreferenced", "every vertex is used by a face");
+    let mut r = Check::new("X-unreferenced", "every vertex is used by a face");
     r.verdict = Verdict::Warning;
-    r.examined = raw.positions.len() as u64;
+    r.examined(raw.positions.len() as u64);
     let mut any = false;
     for (v, &used) in referenced.iter().enumerate() {
         if !used {
@@ -120,7 +120,7 @@ pub fn unreferenced_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult 
     if !any {
         r.verdict = Verdict::Holds;
     }
-    r
+    r.finish("")
 }
 
 pub(super) fn classes_of(r: &CheckResult) -> Vec<ErrorClass> {

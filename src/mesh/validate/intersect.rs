@@ -8,7 +8,7 @@ use super::predicates::{
     in_cone_at, nondegenerate_projection, orient3, segment_meets_triangle, P3,
 };
 use crate::mesh::RawMesh;
-use crate::report::{CheckResult, Witness};
+use crate::report::{Check, CheckResult, Witness};
 use rayon::prelude::*;
 use rstar::{Envelope, RTree, AABB};
 use serde_json::json;
@@ -17,14 +17,14 @@ use std::cmp::Ordering;
 /// Two distinct vertices of K at the same point of R³ violate Def. 3.1.3(ii) (two 0-simplices
 /// meet but are not a common face).
 pub fn coincident_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
-    let mut r = CheckResult::new("D3.1.3(ii)(vertices)", "no two vertices at the same point");
+    let mut r = Check::new("D3.1.3(ii)(vertices)", "no two vertices at the same point");
     let mut vs: Vec<u32> = (0..raw.positions.len() as u32)
         .filter(|&v| {
             referenced.get(v as usize).copied().unwrap_or(false)
                 && raw.positions[v as usize].iter().all(|c| c.is_finite())
         })
         .collect();
-    r.examined = vs.len() as u64;
+    r.examined(vs.len() as u64);
     // -0.0 and 0.0 are the same point: compare as numbers, not bits.
     let key = |v: &u32| raw.positions[*v as usize];
     vs.sort_by(|a, b| {
@@ -46,7 +46,7 @@ pub fn coincident_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
             });
         }
     }
-    r
+    r.finish("")
 }
 
 /// Exact test: does the intersection of triangles t1 and t2 (non-degenerate, distinct vertex
@@ -125,7 +125,7 @@ type SearchFace = (u32, [u32; 3], Vec<AABB<[f64; 3]>>);
 /// are reported by their own checks; exact predicates on a degenerate triangle answer a
 /// different question). Pairs with identical vertex sets are duplicates, reported elsewhere.
 pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         "D3.1.3(ii)(triangles)",
         "triangles meet only in common faces (no self-intersection)",
     );
@@ -143,7 +143,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
             env: face_box(raw, t),
         })
         .collect();
-    r.examined = full.len() as u64;
+    r.examined(full.len() as u64);
     // Stars of high-degree vertices first (see `fans`): their pairs are decided there, and
     // their corners are cut from the boxes of the general search.
     let fans = fans(raw, eligible, &RTree::bulk_load(full));
@@ -289,7 +289,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
             "exact orientation predicates; search stopped in the stars of vertices of degree ≥ {HIGH_DEGREE} after {} offending pairs (cap {MAX_COUNTED_INTERSECTIONS}): the count is a lower bound",
             r.offenders
         );
-        return r;
+        return r.finish("");
     }
     if let Some(last) = stopped_at {
         r.note = format!(
@@ -297,10 +297,10 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
             r.offenders,
             raw.describe_face(last as usize)
         );
-        return r;
+        return r.finish("");
     }
     r.note = format!(
         "exact orientation predicates; R*-tree candidate pairs: {tested} decided exactly (after a certified f64 plane-separation filter; {high} stars of degree ≥ {HIGH_DEGREE} searched by corner directions)"
     );
-    r
+    r.finish("")
 }

@@ -16,7 +16,7 @@ pub mod topology;
 pub use incidence::Incidence;
 
 use crate::mesh::{RawMesh, SimplicialSurface};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{Check, CheckResult, Verdict, Witness};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -170,7 +170,10 @@ pub fn validate(raw: &RawMesh) -> Validation {
     if orient_check.failed() {
         classes.push(ErrorClass::NonOrientable);
     }
-    if !(edges.failed() || links.failed()) && orientation.orientable {
+    if !(edges.failed() || links.failed())
+        && orientation.orientable
+        && !matches!(orient_check.verdict, Verdict::Skipped { .. })
+    {
         // Informational: consistent orientation found.
         orient_check.verdict = Verdict::Holds;
     }
@@ -179,12 +182,12 @@ pub fn validate(raw: &RawMesh) -> Validation {
     let degree_histogram = topology::degree_histogram(&inc, nv);
 
     let nonempty = {
-        let mut r = CheckResult::new("X-nonempty", "the mesh has at least one triangle");
-        r.examined = raw.faces.len() as u64;
+        let mut r = Check::new("X-nonempty", "the mesh has at least one triangle");
+        r.examined(raw.faces.len() as u64);
         if raw.faces.is_empty() {
             r.offend(|| Witness::new("no faces", serde_json::json!({})));
         }
-        r
+        r.finish("")
     };
 
     let is_simplicial_surface = [
@@ -204,12 +207,12 @@ pub fn validate(raw: &RawMesh) -> Validation {
 
     // Lemma 3.1.1: K simplicial surface ⇔ |K| topological surface. The checkable consequence
     // on a closed surface embedded in R³: each component is orientable with χ = 2 − 2g, g ≥ 0.
-    let mut lemma = CheckResult::new(
+    let mut lemma = Check::new(
         "L3.1.1",
         "|K| is a topological surface (Lemma 3.1.1): orientable, χ = 2 − 2g",
     );
     if is_simplicial_surface {
-        lemma.examined = components.len() as u64;
+        lemma.examined(components.len() as u64);
         for (i, c) in components.iter().enumerate() {
             if c.genus.is_none() {
                 lemma.offend(|| {
@@ -242,7 +245,7 @@ pub fn validate(raw: &RawMesh) -> Validation {
         edges,
         links,
         orient_check,
-        lemma,
+        lemma.finish(""),
     ]);
     classes.sort();
     classes.dedup();

@@ -3,14 +3,14 @@
 
 use super::{ErrorClass, Incidence};
 use crate::mesh::RawMesh;
-use crate::report::{CheckResult, Witness};
+use crate::report::{Check, CheckResult, Witness};
 use serde_json::json;
 
 /// Def. 3.1.6, first half: every 1-simplex is a face of precisely two 2-simplices.
 /// Offenders are classified: one face = boundary, more than two = non-manifold edge.
 pub fn edges_in_two_triangles(raw: &RawMesh, inc: &Incidence) -> (CheckResult, Vec<ErrorClass>) {
-    let mut r = CheckResult::new("D3.1.6(edges)", "every edge in exactly two triangles");
-    r.examined = inc.edges.len() as u64;
+    let mut r = Check::new("D3.1.6(edges)", "every edge in exactly two triangles");
+    r.examined(inc.edges.len() as u64);
     let mut classes = Vec::new();
     for (e, &(a, b)) in inc.edges.iter().enumerate() {
         let fs = inc.faces_of_edge(e);
@@ -41,7 +41,7 @@ pub fn edges_in_two_triangles(raw: &RawMesh, inc: &Incidence) -> (CheckResult, V
             });
         }
     }
-    (r, classes)
+    (r.finish(""), classes)
 }
 
 /// Shape of a vertex link (as a multigraph on the link vertices).
@@ -112,7 +112,7 @@ pub fn link_shape(v: u32, link_edges: &[(u32, u32)]) -> LinkShape {
 /// simple cycle (so deg v ≥ 3). A link that is one path marks a boundary vertex; anything else
 /// a non-manifold vertex.
 pub fn links_are_cycles(raw: &RawMesh, inc: &Incidence) -> (CheckResult, Vec<ErrorClass>) {
-    let mut r = CheckResult::new("D3.1.6(link)", "link of every vertex is one simple cycle");
+    let mut r = Check::new("D3.1.6(link)", "link of every vertex is one simple cycle");
     let mut classes = Vec::new();
     let mut buf = Vec::new();
     for v in 0..raw.positions.len() {
@@ -120,7 +120,7 @@ pub fn links_are_cycles(raw: &RawMesh, inc: &Incidence) -> (CheckResult, Vec<Err
         if fs.is_empty() {
             continue; // not a vertex of K
         }
-        r.examined += 1;
+        r.examined(1);
         buf.clear();
         for &f in fs {
             if let Some(t) = raw.faces.get(f as usize) {
@@ -154,5 +154,5 @@ pub fn links_are_cycles(raw: &RawMesh, inc: &Incidence) -> (CheckResult, Vec<Err
             });
         }
     }
-    (r, classes)
+    (r.finish(""), classes)
 }

@@ -3,7 +3,7 @@
 
 use super::Incidence;
 use crate::mesh::RawMesh;
-use crate::report::{CheckResult, Witness};
+use crate::report::{Check, CheckResult, Witness};
 use serde::Serialize;
 use serde_json::json;
 use std::collections::BTreeMap;
@@ -60,7 +60,7 @@ impl Dsu {
 /// in exactly two faces). Non-orientable when some edge is forced both ways.
 pub fn orient(raw: &RawMesh, inc: &Incidence) -> (Orientation, CheckResult) {
     let nf = raw.faces.len();
-    let mut r = CheckResult::new("X-orientable", "orientable, consistently oriented");
+    let mut r = Check::new("X-orientable", "orientable, consistently oriented");
     let mut flip = vec![false; nf];
     let mut seen = vec![false; nf];
     let mut orientable = true;
@@ -118,8 +118,10 @@ pub fn orient(raw: &RawMesh, inc: &Incidence) -> (Orientation, CheckResult) {
             }
         }
     }
-    r.examined = inc.edges.len() as u64;
-    r.note = format!("{flipped} face(s) would be reversed for a consistent orientation");
+    r.examined(inc.edges.len() as u64);
+    let r = r.finish(format!(
+        "{flipped} face(s) would be reversed for a consistent orientation"
+    ));
     (Orientation { flip, orientable }, r)
 }
 

@@ -13,7 +13,7 @@
 //! A itself is *not* diagonalisable for every N: for even N, 1/8 is an eigenvalue of both
 //! blocks, and for N = 3, λ = 1/16 is. Instead of VΛV⁻¹ for A, powers use the block form
 //! Aᵐ = [[S₁₁ᵐ, 0], [Xₘ, S₂₂ᵐ]], Xₘ = Σ_{j<m} S₂₂^{m−1−j} S₂₁ S₁₁ʲ = W (G ∘ Dₘ) U⁻¹ with
-//! G = W⁻¹S₂₁U and Dₘ[a][b] = Σ_{j<m} μₐ^{m−1−j} λ_bʲ (the divided difference
+//! G = W⁻¹S₂₁U and Dₘ\[a\]\[b\] = Σ_{j<m} μₐ^{m−1−j} λ_bʲ (the divided difference
 //! (μᵐ − λᵐ)/(μ − λ), or m μ^{m−1} at a coincidence — the Jordan case).
 //!
 //! **How it is checked** (`tests`, and [`EigenStructure::residuals`], printed by the checks):

@@ -566,7 +566,7 @@ impl LoopSurface {
     }
 
     /// f64 position (the [`crate::surface::TargetSurface`] evaluation), through the
-    /// precomputed per-patch data of [`super::fast`] (same arithmetic as [`Self::jet`]).
+    /// precomputed per-patch data of `fast` (same arithmetic as [`Self::jet`]).
     pub fn eval_f64(
         &self,
         f: FaceId,

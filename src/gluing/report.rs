@@ -1,7 +1,7 @@
-//! `ppm gluing FILE [--json]`: decide every condition of Def. 3.4.1 (and App. A.2's variants,
+//! The report of `ppm gluing FILE [--json]`: decide every condition of Def. 3.4.1 (and App. A.2's variants,
 //! and the relation ∼ of Thm. 3.4.1) on a user-written 1-D gluing file (format: [`super::file`]).
 
-use super::error::GluingError;
+use super::error::GluingFileError;
 use super::exact1d::decide;
 use super::file::read_gluing_file;
 use super::relation;
@@ -10,7 +10,7 @@ use std::path::Path;
 
 /// Run every check on the gluing file at `path`. Returns the rendered report (text table with
 /// witnesses, or JSON) and whether every check holds.
-pub fn run_gluing_command(path: &Path, json: bool) -> Result<(String, bool), GluingError> {
+pub fn gluing_report(path: &Path, json: bool) -> Result<(String, bool), GluingFileError> {
     let f = read_gluing_file(path)?;
     let mut results: Vec<CheckResult> = decide::check_all(&f.data);
     let sample = relation::GridSample::new(&f.data, 24);

@@ -1,31 +1,17 @@
-//! `ppm sample` and `ppm eval` (called from `crate::cli`).
+//! `ppm sample` and `ppm eval` (Sec. 6.2, Sec. 6.1.4).
 
-use super::output::{
+use super::load::surface as load;
+use super::progress::Line;
+use crate::mesh::{FaceId, SimplicialSurface};
+use crate::surface::output::{
     edge_use_counts, sample_surface_with, write_mesh_with_attributes, Attributes, SampledMesh,
 };
-use super::pps::{Pps, PpsOptions};
-use super::profile::Profile;
-use super::target::{SPrime, SurfaceKind};
-use crate::mesh::io::{read_mesh, ReadOptions};
-use crate::mesh::validate::validate;
-use crate::mesh::{FaceId, SimplicialSurface};
+use crate::surface::pps::{Pps, PpsOptions};
+use crate::surface::profile::Profile;
+use crate::surface::target::{SPrime, SurfaceKind};
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
-
-fn load(file: &Path) -> Result<SimplicialSurface, ExitCode> {
-    let raw = read_mesh(file, &ReadOptions::default()).map_err(|e| {
-        eprintln!("error: {e}");
-        ExitCode::from(2)
-    })?;
-    validate(&raw).surface.ok_or_else(|| {
-        eprintln!(
-            "error: {} is not a simplicial surface (run `ppm check` for details)",
-            file.display()
-        );
-        ExitCode::from(1)
-    })
-}
 
 fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, ExitCode> {
     let profile = Profile::parse(profile).ok_or_else(|| {
@@ -41,7 +27,7 @@ fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, Exi
         ExitCode::from(1)
     })?;
     // Progress for the large fits (Sec. 5.2) that are admitted: say what is being built.
-    if let Ok(bytes) = super::admissible::check_fit_size(k, profile) {
+    if let Ok(bytes) = crate::surface::admissible::check_fit_size(k, profile) {
         if bytes > 1 << 28 {
             let max_m = k.vertices().map(|v| k.degree(v)).max().unwrap_or(0);
             eprintln!(
@@ -106,7 +92,11 @@ pub fn run_sample(
             );
         }
     }
-    let m = match sample_surface_with(&pps, level, attrs, !quiet) {
+    let line = Line::new("ppm sample", !quiet);
+    let hook = line.hook();
+    let sampled = sample_surface_with(&pps, level, attrs, hook.as_ref().map(|h| h as _));
+    line.finish();
+    let m = match sampled {
         Ok(m) => m,
         Err(e) => {
             eprintln!("error: {e}");

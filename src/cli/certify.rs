@@ -1,8 +1,8 @@
 //! `ppm certify --max-degree M [--jobs N] [--shard K/N]` and `ppm certify merge FILES...`.
 
-use super::{
-    all_configs, merge, run as prove_all, shard, summary_table, Certificate, CertifyError, Model,
-    Settings,
+use crate::certify::{
+    all_configs, merge, read_certificate, run as prove_all, shard, summary_table,
+    write_certificate, write_text, Certificate, CertifyError, Model, Settings,
 };
 use clap::{Args, Subcommand};
 use std::path::{Path, PathBuf};
@@ -53,41 +53,11 @@ pub enum MergeCmd {
     },
 }
 
-fn write(path: &Path, text: &str) -> Result<(), CertifyError> {
-    std::fs::write(path, text).map_err(|source| CertifyError::Io {
-        path: path.display().to_string(),
-        source,
-    })
-}
-
-/// Read a certificate file.
-pub fn read_certificate(path: &Path) -> Result<Certificate, CertifyError> {
-    let s = std::fs::read_to_string(path).map_err(|source| CertifyError::Io {
-        path: path.display().to_string(),
-        source,
-    })?;
-    let mut c: Certificate = serde_json::from_str(&s).map_err(|source| CertifyError::Json {
-        path: path.display().to_string(),
-        source,
-    })?;
-    c.expand();
-    Ok(c)
-}
-
 fn emit(cert: &Certificate, out: &Path, summary: Option<&Path>) -> Result<(), CertifyError> {
-    let mut file = cert.clone();
-    file.compact();
-    // One result per line: small enough to keep in the repository, still diffable.
-    let mut json = serde_json::to_string(&file).map_err(|source| CertifyError::Json {
-        path: out.display().to_string(),
-        source,
-    })?;
-    json = json.replace("},{\"key\"", "},\n{\"key\"");
-    json.push('\n');
-    write(out, &json)?;
+    write_certificate(cert, out)?;
     let table = summary_table(cert);
     if let Some(p) = summary {
-        write(p, &table)?;
+        write_text(p, &table)?;
     }
     println!("{table}");
     Ok(())
