@@ -215,7 +215,7 @@ pub struct SurfaceDiffReport {
     pub f64_bound_maps: f64,
     /// The largest patch part of a vertex's bound.
     pub f64_bound_patch_max: f64,
-    /// The largest Σ_u ω_u max_d Σ|b_jk[d]| B_j B_k at a vertex, over scale: how much the
+    /// The largest Σ_u ω_u max_d Σ|b_jk\[d\]| B_j B_k at a vertex, over scale: how much the
     /// fit's control points cancel (1 for a patch with no cancellation).
     pub cancellation_max: f64,
     /// Spot checks whose f64 reference error exceeds that vertex's bound: the error analysis

@@ -10,7 +10,7 @@
 //!   (u = (t+L)/2L: 2; uⁱ and w^{l−i}: 3i and 3(l−i); the binomial and the product: 2; each
 //!   Bernstein value is within θ_{3l+2}; the two contractions add l+1 each; one more for a
 //!   binomial above 2⁵³), with Higham's γ_n = nu/(1 − nu), u = ε/2:
-//!   |fl(ψ)(q̂) − ψ(q̂)| ≤ γ_{8l+8} · A(q̂), A(q̂) = max_d Σ_{j,k} |b_jk[d]| B_j(x̂) B_k(ŷ).
+//!   |fl(ψ)(q̂) − ψ(q̂)| ≤ γ_{8l+8} · A(q̂), A(q̂) = max_d Σ_{j,k} |b_jk\[d\]| B_j(x̂) B_k(ŷ).
 //!   A grows with the fit's conditioning (|b| against the surface) and its degree; this is
 //!   the part that a bound proportional to the surface's size misses.
 //! * **The maps and the blend** (g, h, φ, γ of Ch. 4–5, the weighted mean): ~10² operations on
@@ -53,7 +53,7 @@ impl BoundedPoint {
     }
 }
 
-/// A(x, y) = max_d Σ_{j,k} |b_jk[d]| B_j^l(x) B_k^l(y), rounded up by its own γ_{8l+8}.
+/// A(x, y) = max_d Σ_{j,k} |b_jk\[d\]| B_j^l(x) B_k^l(y), rounded up by its own γ_{8l+8}.
 pub fn abs_patch_f64(cp: &[[f64; 3]], l: usize, half: f64, x: f64, y: f64) -> f64 {
     let l1 = l + 1;
     let bx = super::bezier::bernstein_vec_f64(l, half, x);

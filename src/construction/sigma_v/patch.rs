@@ -165,7 +165,7 @@ pub struct TriFit {
     pub sectors: Vec<u32>,
     /// A⁺·W restricted to `sectors`: unknowns × (10·|sectors|), row-major; column
     /// 10·t + c weighs control point c (in `CUBIC_ORDER`) of the cubic net of sector
-    /// k + sectors[t].
+    /// k + sectors\[t\].
     pub net_map: Vec<f64>,
 }
 
