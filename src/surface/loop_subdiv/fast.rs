@@ -7,7 +7,8 @@
 //! `tests/loop_sprime.rs`).
 
 use super::eigen::EigenStructure;
-use super::stam::regular_point_f64;
+use super::stam::{regular_point_f64, stam_tile};
+use super::surface::split_sub_face;
 use std::sync::Arc;
 
 /// One patch, ready for f64 evaluation.
@@ -150,33 +151,14 @@ impl FastPatch {
                 limit,
             } => (es, table, cin, cout, limit),
         };
-        // Stam's tile: level n with x + y ∈ (2^−n, 2^(1−n)], sub-triangle k (as the generic
-        // path, with the same cap 2·53 + 64 beyond which the point is the vertex limit).
-        let t = x + y;
-        if !(t > 0.0) {
+        // Stam's tile, with the generic path's cap 2·53 + 64 beyond which the point is the
+        // vertex limit.
+        let Some((n, k, s, _)) = stam_tile(&x, &y, 2 * 53 + 64, 53) else {
             return *limit;
-        }
-        let mut n: i32 = 1;
-        let mut tt = t;
-        while tt <= 0.5 {
-            tt *= 2.0;
-            n += 1;
-            if n > 170 {
-                return *limit;
-            }
-        }
-        let scale = (2.0f64).powi(n - 1);
-        let (xs, ys) = (x * scale, y * scale);
-        let (k, s) = if xs >= 0.5 {
-            (0, (2.0 * xs - 1.0, 2.0 * ys))
-        } else if ys >= 0.5 {
-            (2, (2.0 * xs, 2.0 * ys - 1.0))
-        } else {
-            (1, (1.0 - 2.0 * xs, 1.0 - 2.0 * ys))
         };
         let q = match table.apply(k, (n - 1) as usize, cin, cout) {
             Some(q) => q,
-            None => es.sub_net_as(k, (n - 1) as u64, cin, cout, authors_jordan),
+            None => es.sub_net_as(k, n - 1, cin, cout, authors_jordan),
         };
         let p = regular_point_f64(basis, &q, s.0, s.1);
         [p[0] + limit[0], p[1] + limit[1], p[2] + limit[2]]
@@ -197,15 +179,12 @@ impl FastPlan {
                 patch.point(basis, sb[(r + 1) % 3], sb[(r + 2) % 3], authors_jordan)
             }
             FastPlan::Split(ps) => {
-                // The sub-triangle and its barycentric coordinates, as in `LoopSurface::jet`.
-                let (j, b) = if sb[0] >= 0.5 {
-                    (0, [2.0 * sb[1], 2.0 * sb[2]])
-                } else if sb[1] >= 0.5 {
-                    (1, [2.0 * sb[2], 2.0 * sb[0]])
-                } else if sb[2] >= 0.5 {
-                    (2, [2.0 * sb[0], 2.0 * sb[1]])
-                } else {
-                    (3, [1.0 - 2.0 * sb[0], 1.0 - 2.0 * sb[1]])
+                // The sub-triangle (`split_sub_face`, as `LoopSurface::jet`) and the patch
+                // coordinates in it: 2·sb of the next two corners, or 1 − 2·sb in the middle.
+                let j = split_sub_face(&sb, 53);
+                let b = match j {
+                    3 => [1.0 - 2.0 * sb[0], 1.0 - 2.0 * sb[1]],
+                    c => [2.0 * sb[(c + 1) % 3], 2.0 * sb[(c + 2) % 3]],
                 };
                 ps[j].point(basis, b[0], b[1], authors_jordan)
             }

@@ -136,6 +136,47 @@ pub fn extraordinary_jet<S: Scalar>(
     extraordinary_jet_as(es, basis, net, x, y, derivs, false)
 }
 
+/// Stam's tile of the patch point (x, y), x, y ≥ 0: the level n ≥ 1 with x + y ∈
+/// (2^−n, 2^(1−n)], the sub-triangle k ∈ {0, 1, 2} of that level, the point's coordinates in
+/// it and the sign of that map (−1 for the flipped middle triangle k = 1). `None` when
+/// x + y ≤ 0 or n would pass `cap`: the point is the vertex limit to the precision. One
+/// function for the generic evaluation and the f64 hot path (`fast`), so they cannot drift.
+pub fn stam_tile<S: Scalar>(
+    x: &S,
+    y: &S,
+    cap: u64,
+    prec: u32,
+) -> Option<(u64, usize, (S, S), i64)> {
+    let c = |p: i64, q: i64| S::from_ratio(p, q, prec);
+    let t = x.add(y);
+    if t.sign() != Some(Ordering::Greater) {
+        return None;
+    }
+    let half = c(1, 2);
+    let two = c(2, 1);
+    let mut n: u64 = 1;
+    let mut tt = t;
+    while tt.le(&half).is_true() {
+        tt = tt.mul(&two);
+        n += 1;
+        if n > cap {
+            return None;
+        }
+    }
+    let scale = powi(&two, n - 1, prec);
+    let (xs, ys) = (x.mul(&scale), y.mul(&scale));
+    let one = c(1, 1);
+    Some(
+        if xs.le(&half).is_false() || xs.sub(&half).sign() == Some(Ordering::Equal) {
+            (n, 0, (xs.mul(&two).sub(&one), ys.mul(&two)), 1)
+        } else if ys.lt(&half).is_false() {
+            (n, 2, (xs.mul(&two), ys.mul(&two).sub(&one)), 1)
+        } else {
+            (n, 1, (one.sub(&xs.mul(&two)), one.sub(&ys.mul(&two))), -1)
+        },
+    )
+}
+
 /// [`extraordinary_jet`], or with `authors_jordan` the authors' evaluator's Jordan-block
 /// power for valence 3 ([`EigenStructure::sub_net_as`], defect D3).
 pub fn extraordinary_jet_as<S: Scalar>(
@@ -149,37 +190,17 @@ pub fn extraordinary_jet_as<S: Scalar>(
 ) -> PatchJet<S> {
     let prec = es.prec;
     let c = |p: i64, q: i64| S::from_ratio(p, q, prec);
-    let t = x.add(y);
     let cap = 2 * x.precision_bits() as u64 + 64;
     let at_vertex = || PatchJet {
         p: vertex_limit(es, net),
         d: None,
         level: cap as u32,
     };
-    if t.sign() != Some(Ordering::Greater) {
+    let Some((n, k, s, sign)) = stam_tile(x, y, cap, prec) else {
         return at_vertex();
-    }
-    let half = c(1, 2);
-    let two = c(2, 1);
-    let mut n: u64 = 1;
-    let mut tt = t;
-    while tt.le(&half).is_true() {
-        tt = tt.mul(&two);
-        n += 1;
-        if n > cap {
-            return at_vertex();
-        }
-    }
-    let scale = powi(&two, n - 1, prec);
-    let (xs, ys) = (x.mul(&scale), y.mul(&scale));
-    let one = c(1, 1);
-    let (k, s, sign) = if xs.le(&half).is_false() || xs.sub(&half).sign() == Some(Ordering::Equal) {
-        (0, (xs.mul(&two).sub(&one), ys.mul(&two)), 1)
-    } else if ys.lt(&half).is_false() {
-        (2, (xs.mul(&two), ys.mul(&two).sub(&one)), 1)
-    } else {
-        (1, (one.sub(&xs.mul(&two)), one.sub(&ys.mul(&two))), -1)
     };
+    let two = c(2, 1);
+    let scale = powi(&two, n - 1, prec);
     // Translate the net by its limit point ℓ (the eigenvalue-1 component): A and B_k fix
     // constants, so B_k Aᵐ (C₀ − ℓ) + ℓ is the same net, but its entries now shrink like
     // λ₁ᵐ and so do their rounding errors — the derivatives, which carry 2ⁿ, keep their

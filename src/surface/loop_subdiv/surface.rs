@@ -460,12 +460,10 @@ impl LoopSurface {
         let caller: [[i64; 3]; 3] = [[1, -1, -1], [0, 1, 0], [0, 0, 1]];
         let sb: [S; 3] = std::array::from_fn(|i| bary[perm[i]].clone());
         let sa: [[i64; 3]; 3] = std::array::from_fn(|i| caller[perm[i]]);
-        let c = |p: i64, q: i64| S::from_ratio(p, q, prec);
         let split = matches!(self.plans[f.idx()], Plan::Split(_));
         let (patch, lb, la, rot) = match &self.plans[f.idx()] {
             Plan::Direct { rot, patch } => (patch, sb, sa, *rot as usize),
             Plan::Split(ps) => {
-                let half = c(1, 2);
                 let lin = |coef: [(i64, usize); 2], k: i64| -> ([i64; 3], S) {
                     let mut a = [0i64; 3];
                     a[0] += k;
@@ -479,7 +477,8 @@ impl LoopSurface {
                     (a, v)
                 };
                 // (sub-face index, its bary as ±2·bary + const).
-                let (j, parts) = if sb[0].lt(&half).is_false() {
+                let j = split_sub_face(&sb, prec);
+                let (j, parts) = if j == 0 {
                     (
                         0,
                         [
@@ -488,7 +487,7 @@ impl LoopSurface {
                             lin([(2, 2), (0, 0)], 0),
                         ],
                     )
-                } else if sb[1].lt(&half).is_false() {
+                } else if j == 1 {
                     (
                         1,
                         [
@@ -497,7 +496,7 @@ impl LoopSurface {
                             lin([(2, 0), (0, 0)], 0),
                         ],
                     )
-                } else if sb[2].lt(&half).is_false() {
+                } else if j == 2 {
                     (
                         2,
                         [
@@ -677,4 +676,12 @@ impl crate::surface::TargetSurface for LoopSurface {
         self.eval_f64(f, corners, self.profile_bary(f, corners, bary))
             .unwrap_or([f64::NAN; 3])
     }
+}
+
+/// The sub-triangle of one Loop step that holds the point of barycentric coordinates `sb`
+/// (w.r.t. the stored corners): corner triangle c when sb[c] ≥ 1/2 (first such c), else the
+/// middle one, 3. One function for the generic evaluation and the f64 hot path (`fast`).
+pub(super) fn split_sub_face<S: Scalar>(sb: &[S; 3], prec: u32) -> usize {
+    let half = S::from_ratio(1, 2, prec);
+    (0..3).find(|&c| sb[c].lt(&half).is_false()).unwrap_or(3)
 }
