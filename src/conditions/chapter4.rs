@@ -212,6 +212,11 @@ pub fn star_config(g: &PpmGluing, x: VertexId) -> Option<StarConfig> {
     Some(StarConfig { m, nbrs })
 }
 
+/// An edge configuration as a map key (the four integers of Def. 4.1.8).
+type EdgeConfigKey = (u32, u32, u32, u32);
+/// A configuration with one example oriented edge (u, w) and how many oriented edges have it.
+type EdgeConfigExample = (EdgeConfig, VertexId, VertexId, u64);
+
 /// Run every Chapter 4 check on the mesh.
 pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
     let g = PpmGluing::new(k);
@@ -219,8 +224,7 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
     let mut parts: Vec<(String, CheckResult)> = Vec::new();
 
     // Oriented edges → configurations (with one example edge each, for witnesses).
-    let mut edge_cfgs: BTreeMap<(u32, u32, u32, u32), (EdgeConfig, VertexId, VertexId, u64)> =
-        BTreeMap::new();
+    let mut edge_cfgs: BTreeMap<EdgeConfigKey, EdgeConfigExample> = BTreeMap::new();
     let mut config_errors = CheckResult::new("D4.1.8", "every edge has a valid configuration");
     for (a, b) in k.edges() {
         for (u, w) in [(a, b), (b, a)] {

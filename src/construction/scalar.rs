@@ -55,14 +55,6 @@ impl Trit {
             _ => Trit::Unknown,
         }
     }
-    /// Kleene negation.
-    pub fn not(self) -> Trit {
-        match self {
-            Trit::True => Trit::False,
-            Trit::False => Trit::True,
-            Trit::Unknown => Trit::Unknown,
-        }
-    }
     /// Decided and true.
     pub fn is_true(self) -> bool {
         self == Trit::True
@@ -70,6 +62,18 @@ impl Trit {
     /// Decided and false.
     pub fn is_false(self) -> bool {
         self == Trit::False
+    }
+}
+
+impl std::ops::Not for Trit {
+    type Output = Trit;
+    /// Kleene negation.
+    fn not(self) -> Trit {
+        match self {
+            Trit::True => Trit::False,
+            Trit::False => Trit::True,
+            Trit::Unknown => Trit::Unknown,
+        }
     }
 }
 

@@ -116,9 +116,8 @@ pub fn sample_pattern_faces(
     for i in 0..=n {
         row_start[i as usize + 1] = row_start[i as usize] + (n + 1 - i) as usize;
     }
-    for fi in 0..nf {
+    for (fi, &c) in faces.iter().enumerate().take(nf) {
         let f = FaceId(fi as u32);
-        let c = faces[fi];
         let mut local = Vec::with_capacity(row_start[n as usize + 1]);
         for i in 0..=n {
             for j in 0..=(n - i) {
@@ -127,8 +126,8 @@ pub fn sample_pattern_faces(
                 let w = [k, i, j];
                 let mut nz = [0usize; 3];
                 let mut len = 0;
-                for t in 0..3 {
-                    if w[t] != 0 {
+                for (t, &wt) in w.iter().enumerate() {
+                    if wt != 0 {
                         nz[len] = t;
                         len += 1;
                     }
