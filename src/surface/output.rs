@@ -204,9 +204,8 @@ impl Attributes {
     }
 }
 
-/// A progress hook of a long evaluation, called with (points done, total) about ten times; the
-/// command line decides whether and how to show it (the library prints nothing).
-pub type Progress<'a> = Option<&'a (dyn Fn(usize, usize) + Sync)>;
+/// A progress hook of a long evaluation, called with (points done, total) about ten times.
+pub use crate::report::Progress;
 
 /// Sample M at subdivision level `level` (Sec. 6.2) with normals and curvatures.
 pub fn sample_surface(
