@@ -3,6 +3,8 @@
 //! docs/oracle.md "Checked against the authors' implementation"), and exact facts their
 //! tables must satisfy whoever computed them.
 
+mod common;
+
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::SimplicialSurface;
@@ -25,19 +27,9 @@ fn reference_dir() -> Option<PathBuf> {
         .find(|d| d.is_dir())
 }
 
-fn quantity(r: &TsvReport, name: &str) -> (usize, f64) {
-    let q = r
-        .quantities
-        .iter()
-        .find(|q| q.name == name)
-        .unwrap_or_else(|| panic!("no {name} columns"));
-    assert_eq!(q.point.errors, 0, "{name}: rows not evaluable");
-    (q.point.count, q.point.max)
-}
-
 fn assert_recorded(label: &str, r: &TsvReport) {
-    let (ns, s) = quantity(r, "sprime");
-    let (np, p) = quantity(r, "pps");
+    let (ns, s) = common::tsv_quantity(r, "sprime");
+    let (np, p) = common::tsv_quantity(r, "pps");
     println!("{label}: {ns} rows, S′ max {s:.2e}, eval max {p:.2e} (of the diagonal)");
     assert!(ns > 0 && np > 0, "{label}: nothing compared");
     assert!(s <= SPRIME_RECORDED, "{label}: S′ max {s:e}");

@@ -390,14 +390,9 @@ fn loop_pps_c_chapter5_rows_and_c6_2_mimics_with_loop_sprime() {
 }
 
 fn point_max(r: &pseudomanifold::oracle::tsv_diff::TsvReport, name: &str) -> f64 {
-    let q = r
-        .quantities
-        .iter()
-        .find(|q| q.name == name)
-        .unwrap_or_else(|| panic!("no {name} columns"));
-    assert_eq!(q.point.errors, 0, "{name}: rows not evaluable");
-    assert!(q.point.count > 0, "{name}: nothing compared");
-    q.point.max
+    let (n, max) = common::tsv_quantity(r, name);
+    assert!(n > 0, "{name}: nothing compared");
+    max
 }
 
 /// Defects D2 and D3 of the authors' Loop evaluator (docs/authors-code.md), modelled by the

@@ -471,3 +471,102 @@ fn sv_bench_timing_probe() {
         pts.len() as f64 / te
     );
 }
+
+/// `ppm diff` takes either construction as the reference of a JSON-lines table: eval answers
+/// of the (σ, v) construction pass with `--construction sigma-v` and fail against the vertex
+/// construction (the two surfaces differ); a planted error fails with its line; a
+/// `set_construction` line inside a table is refused (the reference is the command line's).
+#[test]
+fn sv_diff_takes_either_construction_as_reference() {
+    use pseudomanifold::oracle::Session;
+    use std::process::Command;
+    let k = surface(&icosahedron());
+    let mut s = Session::with_surface(k.clone());
+    assert!(
+        s.handle_line(r#"{"op":"set_construction","construction":"sigma-v"}"#)
+            .ok
+    );
+    let mut table = String::new();
+    for (f, b) in [
+        (0u32, [0.2, 0.3, 0.5]),
+        (3, [0.6, 0.2, 0.2]),
+        (7, [1.0, 0.0, 0.0]),
+        (11, [0.0, 0.5, 0.5]),
+        (19, [0.1, 0.1, 0.8]),
+    ] {
+        let line = format!(
+            r#"{{"op":"eval","face":{f},"bary":[{},{},{}]}}"#,
+            b[0], b[1], b[2]
+        );
+        let r = s.handle_line(&line);
+        assert!(r.ok, "{r:?}");
+        let v = r.f64.expect("f64 answer");
+        table.push_str(&format!("{},\"value\":{v}}}\n", line.trim_end_matches('}')));
+    }
+    let dir = std::env::temp_dir().join(format!("ppm_sv_diff_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mesh = dir.join("ico.off");
+    let mut off = format!("OFF\n{} {} 0\n", k.num_vertices(), k.num_faces());
+    for v in k.vertices() {
+        let p = k.position(v);
+        off.push_str(&format!("{:?} {:?} {:?}\n", p[0], p[1], p[2]));
+    }
+    for f in 0..k.num_faces() {
+        let c = k.face(FaceId(f as u32));
+        off.push_str(&format!("3 {} {} {}\n", c[0].0, c[1].0, c[2].0));
+    }
+    std::fs::write(&mesh, off).unwrap();
+    let good = dir.join("sv.jsonl");
+    std::fs::write(&good, &table).unwrap();
+    let run = |t: &std::path::Path, extra: &[&str]| {
+        let mut c = Command::new(env!("CARGO_BIN_EXE_ppm"));
+        c.args(["diff", "--mesh"]).arg(&mesh).arg(t).args(extra);
+        c.output().expect("run ppm")
+    };
+    let o = run(&good, &["--construction", "sigma-v"]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{text}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(text.contains("sigma-v"), "{text}");
+    // The same answers against the vertex construction: outside the tolerance.
+    let o = run(&good, &[]);
+    assert_eq!(o.status.code(), Some(1));
+    // A planted error in one answer.
+    let bad = dir.join("bad.jsonl");
+    let mut lines: Vec<String> = table.lines().map(String::from).collect();
+    let v: serde_json::Value = serde_json::from_str(&lines[1]).unwrap();
+    let mut v2 = v.clone();
+    v2["value"][0] = serde_json::json!(v["value"][0].as_f64().unwrap() + 1e-6);
+    lines[1] = v2.to_string();
+    std::fs::write(&bad, lines.join("\n") + "\n").unwrap();
+    let o = run(&bad, &["--construction", "sigma-v"]);
+    assert_eq!(o.status.code(), Some(1));
+    // The reference cannot be switched from inside a table.
+    let sw = dir.join("switch.jsonl");
+    std::fs::write(
+        &sw,
+        format!("{{\"op\":\"set_construction\",\"construction\":\"vertex\"}}\n{table}"),
+    )
+    .unwrap();
+    let o = run(&sw, &["--construction", "sigma-v"]);
+    assert_eq!(
+        o.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&o.stdout)
+    );
+    // Not for --surface, and a κ outside (0, 1) is a usage error.
+    let o = run(&good, &["--construction", "sigma-v", "--kappa", "1.5"]);
+    assert_eq!(o.status.code(), Some(2));
+    let mut c = Command::new(env!("CARGO_BIN_EXE_ppm"));
+    c.args(["diff", "--mesh"])
+        .arg(&mesh)
+        .arg("--surface")
+        .arg(&mesh);
+    let o = c.args(["--construction", "sigma-v"]).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+}

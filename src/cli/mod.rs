@@ -104,8 +104,16 @@ enum Command {
         /// default pn. Not for a TSV table (its S′ is the profile's PN triangles).
         #[arg(long)]
         sprime: Option<String>,
-        /// Largest accepted deviation (table default 1e-12; surface default: twice the
-        /// printed f64 bound).
+        /// Reference construction of a JSON-lines table's `eval` lines: vertex (the report's,
+        /// Ch. 4–5) | sigma-v (the tutorial's (σ, v)-indexed PPS, SPEC SV-D13; the table's other
+        /// ops keep the vertex construction). Not for --surface or a TSV table.
+        #[arg(long, default_value = "vertex")]
+        construction: String,
+        /// sigma-v: κ of the overlapping point r_{v,σ} (SPEC SV-D3), in (0, 1); default 1/4.
+        #[arg(long)]
+        kappa: Option<f64>,
+        /// Largest accepted deviation (table default 1e-12; surface default: at each vertex
+        /// twice its f64 bound).
         #[arg(long)]
         tolerance: Option<f64>,
         /// MPFR precision of the reference / spot checks (2..=65536, default 256). Not for a
@@ -269,6 +277,8 @@ pub fn main() -> ExitCode {
             matching,
             profile,
             sprime,
+            construction,
+            kappa,
             tolerance,
             bits,
             worst,
@@ -277,6 +287,13 @@ pub fn main() -> ExitCode {
             // Options of the other mode are refused, not ignored.
             (Some(_), None) if level.is_some() || matching.is_some() => {
                 eprintln!("error: --level and --match apply to --surface only, not to a table");
+                ExitCode::from(2)
+            }
+            (t, s)
+                if (construction != "vertex" || kappa.is_some())
+                    && (s.is_some() || t.as_deref().is_some_and(tsv_diff::is_tsv)) =>
+            {
+                eprintln!("error: --construction and --kappa apply to a JSON-lines table only (its eval lines), not to --surface or a TSV table");
                 ExitCode::from(2)
             }
             (_, Some(surface)) => oracle::run_diff_surface(
@@ -318,6 +335,8 @@ pub fn main() -> ExitCode {
                     json,
                     profile,
                     sprime: sprime.unwrap_or_else(|| "pn".into()),
+                    construction,
+                    kappa,
                 },
             ),
             (None, None) => {

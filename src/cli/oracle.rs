@@ -135,6 +135,18 @@ pub fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    // The reference construction is fixed here, on the command line: a table line cannot
+    // change it (SPEC R-diff-two-sided).
+    if a.construction != "vertex" || a.kappa.is_some() {
+        let req = crate::oracle::Request::SetConstruction {
+            construction: a.construction.clone(),
+            kappa: a.kappa,
+        };
+        if let Err(e) = s.handle(&req) {
+            eprintln!("error: --construction {}: {e}", a.construction);
+            return ExitCode::from(2);
+        }
+    }
     let text = match crate::oracle::read_text_table(table) {
         Ok(t) => t,
         Err(e) => {
@@ -143,6 +155,14 @@ pub fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
         }
     };
     let r = diff_table(&mut s, &text, tolerance, worst);
+    if !json && a.construction != "vertex" {
+        println!(
+            "reference construction of the eval lines: {} (SPEC SV-D13), κ = {}",
+            a.construction,
+            a.kappa
+                .unwrap_or(crate::construction::sigma_v::DEFAULT_KAPPA)
+        );
+    }
     if json {
         println!(
             "{}",
@@ -172,6 +192,10 @@ pub struct TableArgs {
     pub profile: String,
     /// S′ of the reference: `pn` | `loop`.
     pub sprime: String,
+    /// Reference construction of the eval lines: `vertex` | `sigma-v`.
+    pub construction: String,
+    /// κ of the (σ, v) construction (`None`: its default).
+    pub kappa: Option<f64>,
 }
 
 /// The `ppm diff --surface` options (see `crate::cli`).

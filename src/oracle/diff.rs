@@ -8,7 +8,7 @@
 //! items with their arguments, and whether every deviation is within the tolerance.
 //!
 //! The reference is fixed for the whole table by the command line (mesh, precision, profile,
-//! S′): lines that would change it (`load`, `set_precision`, `set_profile`, `set_surface`) are
+//! S′): lines that would change it (`load`, `set_precision`, `set_profile`, `set_surface`, `set_construction`) are
 //! refused as problems, not executed. A table with nothing compared is not a pass.
 
 use super::protocol::Session;
@@ -85,7 +85,13 @@ pub struct DiffReport {
 
 /// Ops that would change the reference the table is compared against (fixed by the command
 /// line for the whole table).
-pub const SESSION_OPS: [&str; 4] = ["load", "set_precision", "set_profile", "set_surface"];
+pub const SESSION_OPS: [&str; 5] = [
+    "load",
+    "set_precision",
+    "set_profile",
+    "set_surface",
+    "set_construction",
+];
 
 /// Euclidean norm without overflow or underflow of the squares (scaled by the largest
 /// component): a deviation of 1e300 is reported as 1e300, not ∞.

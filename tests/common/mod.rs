@@ -93,3 +93,15 @@ pub fn bundled_good() -> Vec<PathBuf> {
     v.sort();
     v
 }
+
+/// The (rows compared, max deviation) of the quantity `name` (`"sprime"`, `"pps"`) of a TSV
+/// diff, asserting that every row was evaluable.
+pub fn tsv_quantity(r: &pseudomanifold::oracle::tsv_diff::TsvReport, name: &str) -> (usize, f64) {
+    let q = r
+        .quantities
+        .iter()
+        .find(|q| q.name == name)
+        .unwrap_or_else(|| panic!("no {name} columns"));
+    assert_eq!(q.point.errors, 0, "{name}: rows not evaluable");
+    (q.point.count, q.point.max)
+}
