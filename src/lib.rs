@@ -23,6 +23,44 @@
 //! 5. **Serve as an oracle** (f64 and multi-precision side by side):
 //!    [`oracle::protocol::Session`].
 //!
+//! The five in one compiling example, on the bundled icosahedron:
+//!
+//! ```
+//! use pseudomanifold::conditions::chapter4::{run_chapter4, Ch4Options};
+//! use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
+//! use pseudomanifold::mesh::validate::validate;
+//! use pseudomanifold::mesh::FaceId;
+//! use pseudomanifold::oracle::protocol::{Request, Session};
+//! use pseudomanifold::surface::{PnTriangles, Pps, PpsOptions};
+//! use std::path::Path;
+//!
+//! let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/icosahedron_binary_le.ply");
+//! // 1. Read and validate (Sec. 3.1): bad input is a typed error; a surface only when valid.
+//! let raw = read_mesh(&path, &ReadOptions::default())?;
+//! let k = validate(&raw).surface.ok_or("not a simplicial surface")?;
+//! // 2. Build the PPS (Ch. 5) over the PN-triangle S′ (Sec. 6.2) ...
+//! let pps = Pps::build(&k, &PnTriangles::new(&k), PpsOptions::default());
+//! // 3. ... and evaluate it: eval(σ, λ, μ, ν) of Sec. 6.1.4 at the centre of face 0.
+//! let third = 1.0 / 3.0;
+//! let p = pps.eval(FaceId(0), &[third; 3], pps.consts_f64())?;
+//! assert!(p.point.iter().all(|x| x.is_finite()));
+//! // 4. The Chapter 4 spec checks (a small budget here; `ppm check --spec` runs them all).
+//! let opts = Ch4Options {
+//!     samples: 4,
+//!     max_edge_configs: Some(1),
+//!     max_triangle_configs: Some(1),
+//!     max_star_configs: Some(1),
+//!     ..Ch4Options::default()
+//! };
+//! let report = run_chapter4(&k, &opts);
+//! assert!(report.unexpected_failures.is_empty(), "{:?}", report.unexpected_failures);
+//! // 5. The oracle session (docs/oracle.md): one JSON request per line, one JSON response.
+//! let mut oracle = Session::new();
+//! oracle.handle(&Request::Load { path })?;
+//! assert!(oracle.handle_line(r#"{"op":"degree","v":0}"#).ok);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! Every checker returns [`report::CheckResult`]s recorded through one harness,
 //! [`report::Check`] (a NaN is an offence, evaluation errors are counted, nothing examined is
 //! skipped); only [`cli`] prints and sets exit codes.

@@ -8,6 +8,20 @@ use serde::Serialize;
 pub mod harness;
 pub use harness::{dev_max, Check, OnError, Restricted};
 
+/// A progress hook of a long computation, called with (items done, total); the command line
+/// decides whether and how to show it (the library prints nothing). Items are what the
+/// computation counts: sample points (`ppm sample`), checked configurations (`ppm check
+/// --spec`), certified configurations (`ppm certify`).
+pub type Progress<'a> = Option<&'a (dyn Fn(usize, usize) + Sync)>;
+
+/// Call `progress` with (done, total) after one more item, from any thread.
+pub fn tick(progress: Progress, done: &std::sync::atomic::AtomicUsize, total: usize) {
+    if let Some(show) = progress {
+        let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        show(d, total);
+    }
+}
+
 /// How many offending elements a check lists in full; the total is always counted.
 pub const MAX_WITNESSES: usize = 8;
 

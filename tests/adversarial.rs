@@ -421,6 +421,64 @@ fn x_adv_13_precision_below_2_refused_at_every_boundary() {
     }
 }
 
+/// `check --precision` accepted up to 10⁶ bits while the oracle stopped at 65536 and the scalar
+/// type rounded silently into its own range: one limit (`construction::PREC_BITS`) now holds
+/// at every boundary, and one bit past it is refused.
+#[test]
+fn x_adv_13_precision_above_the_one_limit_refused_at_every_boundary() {
+    let past = (pseudomanifold::construction::PREC_BITS.end() + 1).to_string();
+    let mp = format!("mp:{past}");
+    for args in [
+        &[
+            "eval-map", OCTAHEDRON, "0", "1", "0.3", "0.1", "--bits", &past,
+        ][..],
+        &["oracle", "--mesh", OCTAHEDRON, "--bits", &past][..],
+        &["diff", "--mesh", OCTAHEDRON, "/dev/null", "--bits", &past][..],
+        &["check", "--spec", "--precision", &mp, OCTAHEDRON][..],
+    ] {
+        let out = ppm(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?} accepted");
+    }
+    let out = ppm_stdin(
+        &["oracle", "--mesh", OCTAHEDRON],
+        format!("{{\"op\":\"set_precision\",\"bits\":{past}}}\n").as_bytes(),
+    );
+    for r in replies(&out) {
+        assert_eq!(r["error"]["kind"], "bad_precision", "{r}");
+    }
+}
+
+/// The (σ,v) patches support degrees 1..=15 (SPEC SV-D11): a degree outside is refused at the
+/// command line, not rounded into the range.
+#[test]
+fn sv_d11_patch_degree_outside_the_supported_range_is_refused() {
+    let out_ply = std::env::temp_dir().join(format!("sv_d11_{}.ply", std::process::id()));
+    let out_ply = out_ply.to_string_lossy().into_owned();
+    for d in ["0", "16"] {
+        for args in [
+            &["check", "--spec", "--patch-degree", d, OCTAHEDRON][..],
+            &[
+                "sample",
+                OCTAHEDRON,
+                "--level",
+                "0",
+                "-o",
+                &out_ply,
+                "--construction",
+                "sigma-v",
+                "--patch-degree",
+                d,
+            ][..],
+        ] {
+            let out = ppm(args);
+            assert_eq!(out.status.code(), Some(2), "{args:?} accepted");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert!(err.contains("1..=15"), "{args:?}: {err}");
+        }
+    }
+    assert!(!std::path::Path::new(&out_ply).exists());
+}
+
 /// Self-contradicting witnesses in `ppm gluing`: "φ_11(3/2) = 3/2 ≠ 3/2" (the midpoint of the
 /// piece was the fixed point of the wrong map). The witness point is now one where the two
 /// sides differ.

@@ -151,13 +151,16 @@ impl Exact for Planted {
     }
 }
 
+/// A Sec. 5.2 fit sample: v, the face σ, its corners, q in the p-domain of v and b_σ(r) on S′.
+type FitPoint = (VertexId, FaceId, [VertexId; 3], [f64; 2], [f64; 3]);
+
 /// The sample points of one mesh, chosen once in f64 (seeded) and shared by every backend.
 struct Points {
     phi: Vec<(VertexId, VertexId, [f64; 2])>,
     g: Vec<(u32, [f64; 2])>,
     eval: Vec<(FaceId, [f64; 3])>,
     theta: Vec<(VertexId, [f64; 2])>,
-    fit: Vec<(VertexId, FaceId, [VertexId; 3], [f64; 2], [f64; 3])>,
+    fit: Vec<FitPoint>,
 }
 
 fn points(k: &SimplicialSurface, pps: &Pps, rng: &mut ChaCha8Rng) -> Points {

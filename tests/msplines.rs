@@ -52,6 +52,28 @@ fn ms_t2_genus_zero_is_refused_with_a_typed_error_citing_thm_2() {
     assert!(err.to_string().contains("Thm. 2"), "{err}");
 }
 
+/// A basis form past the 2g of the basis (MS-H2) is refused, not replaced by the last one.
+#[test]
+fn ms_h2_form_index_past_the_2g_basis_is_refused_not_replaced() {
+    let k = torus(6, 4);
+    let opts = Options {
+        form: 2,
+        ..Options::default()
+    };
+    let err = run(&k, &opts).expect_err("the torus has forms ω_0, ω_1 only");
+    assert!(
+        matches!(
+            err,
+            MsError::FormOutOfRange {
+                form: 2,
+                count: 2,
+                ..
+            }
+        ),
+        "{err}"
+    );
+}
+
 #[test]
 fn ms_h1_ms_h2_ms_h3_torus_bases_exact_and_planted_cocycle_fault_caught() {
     let k = torus(12, 8);

@@ -107,11 +107,11 @@ impl Ppm<f64> for SignFlip {
     }
 }
 
+/// A model of φ: its answer for one edge configuration and point, if defined there.
+type PhiModel<'a> = &'a dyn Fn(&EdgeConfig, &P2<f64>) -> Option<P2<f64>>;
+
 /// The table of φ answers another implementation would produce, as JSON lines.
-fn phi_table(
-    k: &SimplicialSurface,
-    model: &dyn Fn(&EdgeConfig, &P2<f64>) -> Option<P2<f64>>,
-) -> String {
+fn phi_table(k: &SimplicialSurface, model: PhiModel<'_>) -> String {
     let g = PpmGluing::new(k);
     let mut t = String::new();
     for (a, b) in k.edges() {

@@ -397,7 +397,11 @@ fn r_loop_sprime_scene_has_finite_normals_and_curvatures() {
     let not_unit = scene
         .normals
         .iter()
-        .filter(|n| !((n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0).abs() < 1e-9))
+        .filter(|n| {
+            // NaN counts as "not unit".
+            let d = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0).abs();
+            d.is_nan() || d >= 1e-9
+        })
         .count();
     assert_eq!(not_unit, 0, "normals that are not finite unit vectors");
     let g = scene.gaussian.as_ref().expect("curvature");

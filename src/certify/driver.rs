@@ -34,7 +34,21 @@ pub fn run(
     jobs: usize,
     shard: Option<(usize, usize)>,
 ) -> Result<Certificate, CertifyError> {
+    run_with(configs, max_degree, model, s, jobs, shard, None)
+}
+
+/// [`run`] with a progress hook called after each configuration (done, total).
+pub fn run_with(
+    configs: &[ConfigKey],
+    max_degree: u32,
+    model: &Model,
+    s: &Settings,
+    jobs: usize,
+    shard: Option<(usize, usize)>,
+    progress: crate::report::Progress,
+) -> Result<Certificate, CertifyError> {
     use rayon::prelude::*;
+    let done = std::sync::atomic::AtomicUsize::new(0);
     let t0 = Instant::now();
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(jobs.max(1))
@@ -43,7 +57,11 @@ pub fn run(
     let results: Vec<PropertyResult> = pool.install(|| {
         configs
             .par_iter()
-            .map(|k| prove_config(*k, model, s))
+            .map(|k| {
+                let r = prove_config(*k, model, s);
+                crate::report::tick(progress, &done, configs.len());
+                r
+            })
             .collect::<Vec<_>>()
             .into_iter()
             .flatten()

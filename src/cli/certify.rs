@@ -1,7 +1,7 @@
 //! `ppm certify --max-degree M [--jobs N] [--shard K/N]` and `ppm certify merge FILES...`.
 
 use crate::certify::{
-    all_configs, merge, read_certificate, run as prove_all, shard, summary_table,
+    all_configs, merge, read_certificate, run_with as prove_all, shard, summary_table,
     write_certificate, write_text, Certificate, CertifyError, Model, Settings,
 };
 use clap::{Args, Subcommand};
@@ -105,6 +105,8 @@ fn run_inner(a: CertifyArgs) -> Result<bool, CertifyError> {
         Some((k, n)) => shard(&all, k, n),
         None => all,
     };
+    let line = super::progress::Line::new("ppm certify", "configurations", true);
+    let hook = line.hook();
     let cert = prove_all(
         &configs,
         a.max_degree,
@@ -112,7 +114,10 @@ fn run_inner(a: CertifyArgs) -> Result<bool, CertifyError> {
         &Settings::default(),
         a.jobs,
         sh,
-    )?;
+        hook.as_ref().map(|h| h as _),
+    );
+    line.finish();
+    let cert = cert?;
     emit(&cert, &a.out, a.summary.as_deref())?;
     Ok(true)
 }

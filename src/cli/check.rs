@@ -1,7 +1,7 @@
 //! `ppm check`: read, validate, report.
 
 use crate::conditions::chapter4::{
-    certificate_coverage, render as render_ch4, run_chapter4, Ch4Options, Ch4Report, Precision,
+    certificate_coverage, render as render_ch4, run_chapter4_with, Ch4Options, Ch4Report, Precision,
 };
 use crate::construction::{phi_wu_f64_vs_mp, PpmGluing};
 use crate::mesh::io::{read_mesh, ReadOptions};
@@ -51,8 +51,9 @@ pub struct Ch4Args {
     /// sigma-v: κ of the overlapping point r_{v,σ} = −κ·cos(π/m_v)·b (SPEC SV-D3), in (0, 1).
     #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
     pub kappa: f64,
-    /// sigma-v: degree of the triangular Bézier patches ψ_(σ,v) (SPEC SV-D11).
-    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE)]
+    /// sigma-v: degree of the triangular Bézier patches ψ_(σ,v) (SPEC SV-D11), 1..=15.
+    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+          value_parser = super::patch_degree_parser)]
     pub patch_degree: usize,
 }
 
@@ -61,7 +62,10 @@ impl Ch4Args {
         let precision = match self.precision.as_str() {
             "f64" => Precision::F64,
             other => match other.strip_prefix("mp:").map(str::parse::<u32>) {
-                Some(Ok(b)) if (2..=1_000_000).contains(&b) => Precision::Mp(b),
+                Some(Ok(b)) => Precision::Mp(
+                    crate::construction::check_prec_bits(b)
+                        .map_err(|e| format!("--precision {other}: {e}"))?,
+                ),
                 _ => return Err(format!("--precision {other}: expected f64 or mp:BITS")),
             },
         };
@@ -152,7 +156,10 @@ pub fn run(
                 },
                 None => None,
             };
-            let mut rep = run_chapter4(k, &opts);
+            let line = super::progress::Line::new("ppm check --spec", "configurations", true);
+            let hook = line.hook();
+            let mut rep = run_chapter4_with(k, &opts, hook.as_ref().map(|h| h as _));
+            line.finish();
             if let Some((file, c)) = &cert {
                 rep.certificates = Some(certificate_coverage(k, c, file));
             }

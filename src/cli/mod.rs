@@ -64,8 +64,8 @@ enum Command {
         /// Load this mesh first (or send {"op":"load","path":...}).
         #[arg(long)]
         mesh: Option<PathBuf>,
-        /// MPFR precision of the reference values.
-        #[arg(long, default_value_t = 256)]
+        /// MPFR precision of the reference values (2..=65536).
+        #[arg(long, default_value_t = 256, value_parser = prec_bits_parser())]
         bits: u32,
         /// Chapter 5 profile (paper | authors-code); also {"op":"set_profile",...}.
         #[arg(long, default_value = "paper")]
@@ -118,7 +118,7 @@ enum Command {
         tolerance: Option<f64>,
         /// MPFR precision of the reference / spot checks (2..=65536, default 256). Not for a
         /// TSV table (compared in f64).
-        #[arg(long, value_parser = clap::value_parser!(u32).range(2..=65536))]
+        #[arg(long, value_parser = prec_bits_parser())]
         bits: Option<u32>,
         /// How many of the worst items to list.
         #[arg(long, default_value_t = 10)]
@@ -150,7 +150,7 @@ enum Command {
         /// y coordinate of p in Ω_u.
         y: f64,
         /// MPFR precision in bits (2..=65536).
-        #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(2..=65536))]
+        #[arg(long, default_value_t = 256, value_parser = prec_bits_parser())]
         bits: u32,
         #[arg(long)]
         json: bool,
@@ -183,8 +183,9 @@ enum Command {
         /// sigma-v: κ of r_{v,σ} (SPEC SV-D3).
         #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
         kappa: f64,
-        /// sigma-v: degree of the triangular patches (SPEC SV-D11).
-        #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE)]
+        /// sigma-v: degree of the triangular patches (SPEC SV-D11), 1..=15.
+        #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+              value_parser = patch_degree_parser)]
         patch_degree: usize,
     },
     /// Draw K, S′ or the PPS coloured by curvature to a PNG (software rendering; Figs. 6.4–6.7
@@ -209,6 +210,27 @@ enum Command {
         #[arg(long, default_value = "pn")]
         surface: String,
     },
+}
+
+/// Parser of a `--bits` argument: refuses precisions outside the one limit
+/// [`crate::construction::PREC_BITS`] (shared with `check`, the oracle and the scalar types).
+fn prec_bits_parser() -> clap::builder::RangedI64ValueParser<u32> {
+    let r = &crate::construction::PREC_BITS;
+    clap::value_parser!(u32).range(i64::from(*r.start())..=i64::from(*r.end()))
+}
+
+/// Parser of `--patch-degree`: refuses degrees the (σ,v) patches do not support instead of
+/// letting the library round them into 1..=`MAX_PATCH_DEGREE` (SPEC SV-D11).
+fn patch_degree_parser(s: &str) -> Result<usize, String> {
+    let max = crate::construction::sigma_v::patch::MAX_PATCH_DEGREE;
+    let d: usize = s.parse().map_err(|e| format!("{s:?}: {e}"))?;
+    if (1..=max).contains(&d) {
+        Ok(d)
+    } else {
+        Err(format!(
+            "patch degree {d} out of range 1..={max} (SPEC SV-D11)"
+        ))
+    }
 }
 
 /// Entry point of the `ppm` binary.

@@ -3,18 +3,20 @@
 
 use std::io::IsTerminal;
 
-/// A progress line `"{label}: done/total points (p%)"`, shown only when stderr is a terminal
+/// A progress line `"{label}: done/total {unit} (p%)"`, shown only when stderr is a terminal
 /// and `wanted`. Call [`Line::finish`] after the work to end the line.
 pub(super) struct Line {
     label: &'static str,
+    unit: &'static str,
     shown: bool,
 }
 
 impl Line {
-    /// A progress line for `label` (e.g. "ppm sample").
-    pub fn new(label: &'static str, wanted: bool) -> Self {
+    /// A progress line for `label` (e.g. "ppm sample") counting `unit` (e.g. "points").
+    pub fn new(label: &'static str, unit: &'static str, wanted: bool) -> Self {
         Line {
             label,
+            unit,
             shown: wanted && std::io::stderr().is_terminal(),
         }
     }
@@ -23,8 +25,9 @@ impl Line {
     pub fn hook(&self) -> Option<impl Fn(usize, usize) + Sync + '_> {
         self.shown.then_some(move |d: usize, total: usize| {
             eprint!(
-                "\r{}: {d}/{total} points ({:.0}%)",
+                "\r{}: {d}/{total} {} ({:.0}%)",
                 self.label,
+                self.unit,
                 100.0 * d as f64 / total.max(1) as f64
             );
         })

@@ -89,10 +89,13 @@ fn default_level(faces: usize) -> u32 {
         .unwrap_or(5)
 }
 
+/// An axis-aligned box: (min corner, max corner).
+type BoundingBox = ([f64; 3], [f64; 3]);
+
 fn scenes(
     a: &RenderArgs,
     notes: &mut Vec<String>,
-) -> Result<(Vec<Panel>, Option<([f64; 3], [f64; 3])>), RenderError> {
+) -> Result<(Vec<Panel>, Option<BoundingBox>), RenderError> {
     if a.input_is_samples {
         let raw = read_mesh(&a.file, &ReadOptions::default())
             .map_err(|e| RenderError::Mesh(e.to_string()))?;
@@ -237,7 +240,7 @@ fn run_inner(a: &RenderArgs) -> Result<(Image, Vec<RenderReport>, Vec<String>), 
         None if colour != ColourBy::None => {
             let mut all = Vec::new();
             for p in &panels {
-                if let Some(v) = crate::render::render::values(&p.scene, colour)? {
+                if let Some(v) = crate::render::picture::values(&p.scene, colour)? {
                     all.extend_from_slice(v);
                 }
             }

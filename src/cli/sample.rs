@@ -92,7 +92,7 @@ pub fn run_sample(
             );
         }
     }
-    let line = Line::new("ppm sample", !quiet);
+    let line = Line::new("ppm sample", "points", !quiet);
     let hook = line.hook();
     let sampled = sample_surface_with(&pps, level, attrs, hook.as_ref().map(|h| h as _));
     line.finish();

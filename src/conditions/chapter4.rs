@@ -212,15 +212,30 @@ pub fn star_config(g: &PpmGluing, x: VertexId) -> Option<StarConfig> {
     Some(StarConfig { m, nbrs })
 }
 
+/// An edge configuration as a map key (the four integers of Def. 4.1.8).
+type EdgeConfigKey = (u32, u32, u32, u32);
+/// A configuration with one example oriented edge (u, w) and how many oriented edges have it.
+type EdgeConfigExample = (EdgeConfig, VertexId, VertexId, u64);
+
 /// Run every Chapter 4 check on the mesh.
 pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
+    run_chapter4_with(k, opts, None)
+}
+
+/// [`run_chapter4`] with a progress hook, called after each checked configuration with (done,
+/// total) of the current family (edges, then triangles, then stars, then the abstract stars).
+pub fn run_chapter4_with(
+    k: &SimplicialSurface,
+    opts: &Ch4Options,
+    progress: crate::report::Progress,
+) -> Ch4Report {
+    use std::sync::atomic::AtomicUsize;
     let g = PpmGluing::new(k);
     let mut cov = Coverage::default();
     let mut parts: Vec<(String, CheckResult)> = Vec::new();
 
     // Oriented edges → configurations (with one example edge each, for witnesses).
-    let mut edge_cfgs: BTreeMap<(u32, u32, u32, u32), (EdgeConfig, VertexId, VertexId, u64)> =
-        BTreeMap::new();
+    let mut edge_cfgs: BTreeMap<EdgeConfigKey, EdgeConfigExample> = BTreeMap::new();
     let mut config_errors = CheckResult::new("D4.1.8", "every edge has a valid configuration");
     for (a, b) in k.edges() {
         for (u, w) in [(a, b), (b, a)] {
@@ -253,6 +268,7 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
     cov.edges_covered = edges.iter().map(|e| e.3).sum();
     let seed = opts.seed;
     let n = opts.samples;
+    let done = AtomicUsize::new(0);
     let edge_results: Vec<(String, CheckResult)> = edges
         .par_iter()
         .flat_map_iter(|(e, u, w, count)| {
@@ -268,6 +284,7 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
                     MpBackend::Mpfr => run_edge_checks::<MpMpfr>(e, seed, n, bits),
                 },
             };
+            crate::report::tick(progress, &done, edges.len());
             rs.into_iter().map(move |r| (ctx.clone(), r))
         })
         .collect();
@@ -298,6 +315,7 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
     );
     cov.triangle_configs_checked = tris.len() as u64;
     cov.triangles_covered = tris.iter().map(|t| t.2).sum();
+    let done = AtomicUsize::new(0);
     let tri_results: Vec<(String, CheckResult)> = tris
         .par_iter()
         .flat_map_iter(|(t, vs, count)| {
@@ -313,6 +331,7 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
                     MpBackend::Mpfr => run_triangle_checks::<MpMpfr>(t, seed, n, bits),
                 },
             };
+            crate::report::tick(progress, &done, tris.len());
             rs.into_iter().map(move |r| (ctx.clone(), r))
         })
         .collect();
@@ -335,6 +354,7 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
     );
     cov.star_configs_checked = stars.len() as u64;
     cov.vertices_covered = stars.iter().map(|s| s.2).sum();
+    let done = AtomicUsize::new(0);
     let star_results: Vec<(String, CheckResult)> = stars
         .par_iter()
         .flat_map_iter(|(s, x, count)| {
@@ -356,6 +376,7 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
                     },
                 });
             }
+            crate::report::tick(progress, &done, stars.len());
             rs.into_iter().map(move |r| (ctx.clone(), r))
         })
         .collect();
@@ -371,15 +392,16 @@ pub fn run_chapter4(k: &SimplicialSurface, opts: &Ch4Options) -> Ch4Report {
         seed: opts.seed,
         n: opts.samples.max(4),
     };
+    let done = AtomicUsize::new(0);
     let abstract_results: Vec<(String, CheckResult)> = by_degree
         .par_iter()
         .flat_map_iter(|(m, x)| {
             let view = AbstractPpm::star_of(g, *x);
             let ctx =
                 format!("closed star of vertex {x} (degree {m}), abstract Def. 3.4.1 checkers");
-            crate::gluing::sampled::check_all(&view, &cfg)
-                .into_iter()
-                .map(move |r| (ctx.clone(), r))
+            let rs = crate::gluing::sampled::check_all(&view, &cfg);
+            crate::report::tick(progress, &done, by_degree.len());
+            rs.into_iter().map(move |r| (ctx.clone(), r))
         })
         .collect();
     parts.extend(abstract_results);

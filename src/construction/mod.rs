@@ -28,4 +28,4 @@ pub use mesh_gluing::{GluingError, PpmGluing};
 pub use mp_backend::MpBackend;
 #[cfg(feature = "mpfr")]
 pub use scalar::MpMpfr;
-pub use scalar::{Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC};
+pub use scalar::{check_prec_bits, Iv, Mp, Scalar, Trit, DEFAULT_MP_PREC, PREC_BITS};

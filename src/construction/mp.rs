@@ -20,9 +20,10 @@ use std::cmp::Ordering;
 /// Extra bits used inside composite operations (`atan2`) before the single final rounding.
 pub const GUARD_BITS: u32 = 64;
 
-/// Smallest and largest precision accepted (requests are clamped into this range, then rounded
-/// up to whole 64-bit words).
-pub const MP_PREC_RANGE: (u32, u32) = (64, 1 << 20);
+/// Smallest and largest precision of an [`Mp`]: one 64-bit word up to the end of
+/// [`super::scalar::PREC_BITS`] (requests are rounded into this range, then up to whole words;
+/// the entry points refuse requests outside `PREC_BITS` before they get here).
+pub const MP_PREC_RANGE: (u32, u32) = (64, *super::scalar::PREC_BITS.end());
 
 const RM: RoundingMode = RoundingMode::ToEven;
 

@@ -10,17 +10,20 @@ use std::cmp::Ordering;
 pub struct MpMpfr(pub rug::Float);
 
 impl MpMpfr {
-    /// Clamp a requested precision to what MPFR accepts.
+    /// Round a requested precision into [`super::scalar::PREC_BITS`] (which MPFR accepts); the
+    /// entry points refuse requests outside it before they get here.
     fn clamp(prec: u32) -> u32 {
+        let r = &super::scalar::PREC_BITS;
         prec.clamp(
-            rug::float::prec_min().max(2),
-            rug::float::prec_max().min(1 << 20),
+            rug::float::prec_min().max(*r.start()),
+            rug::float::prec_max().min(*r.end()),
         )
     }
     fn p2(&self, o: &Self) -> u32 {
         self.0.prec().max(o.0.prec())
     }
-    /// `x` rounded to `prec` bits (clamped to what MPFR accepts); same as [`Scalar::from_f64`].
+    /// `x` rounded to `prec` bits (`prec` rounded into [`super::scalar::PREC_BITS`]); same as
+    /// [`Scalar::from_f64`].
     pub fn new(prec: u32, x: f64) -> MpMpfr {
         MpMpfr(rug::Float::with_val(Self::clamp(prec), x))
     }

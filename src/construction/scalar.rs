@@ -23,6 +23,27 @@ pub use super::mp_mpfr::MpMpfr;
 /// Default precision of [`Mp`] in bits.
 pub const DEFAULT_MP_PREC: u32 = 256;
 
+/// The precisions in bits accepted for multi-precision evaluation: the one limit shared by
+/// `ppm check --precision mp:BITS`, the oracle (`--bits`, `set_precision`), `ppm diff --bits`,
+/// `ppm eval-map --bits` and the constructors of the multi-precision scalar types. The entry
+/// points refuse a precision outside it with an error; the scalar constructors, which cannot
+/// fail, round into it (and [`Mp`] up to whole 64-bit words, reported as the effective
+/// precision). The upper end bounds time and memory per evaluation.
+pub const PREC_BITS: std::ops::RangeInclusive<u32> = 2..=65_536;
+
+/// `Err` naming the accepted range when `bits` is outside [`PREC_BITS`].
+pub fn check_prec_bits(bits: u32) -> Result<u32, String> {
+    if PREC_BITS.contains(&bits) {
+        Ok(bits)
+    } else {
+        Err(format!(
+            "precision {bits} bits out of range {}..={}",
+            PREC_BITS.start(),
+            PREC_BITS.end()
+        ))
+    }
+}
+
 /// Precision (significand bits) of IEEE-754 binary64.
 pub const F64_PREC: u32 = 53;
 
@@ -55,14 +76,6 @@ impl Trit {
             _ => Trit::Unknown,
         }
     }
-    /// Kleene negation.
-    pub fn not(self) -> Trit {
-        match self {
-            Trit::True => Trit::False,
-            Trit::False => Trit::True,
-            Trit::Unknown => Trit::Unknown,
-        }
-    }
     /// Decided and true.
     pub fn is_true(self) -> bool {
         self == Trit::True
@@ -70,6 +83,18 @@ impl Trit {
     /// Decided and false.
     pub fn is_false(self) -> bool {
         self == Trit::False
+    }
+}
+
+impl std::ops::Not for Trit {
+    type Output = Trit;
+    /// Kleene negation.
+    fn not(self) -> Trit {
+        match self {
+            Trit::True => Trit::False,
+            Trit::False => Trit::True,
+            Trit::Unknown => Trit::Unknown,
+        }
     }
 }
 

@@ -81,8 +81,8 @@ impl SimplicialSurface {
         let mut degree = vec![0u32; nv];
         let mut first: Vec<Option<u32>> = vec![None; nv];
         for (f, t) in faces.iter().enumerate() {
-            for k in 0..3 {
-                let v = t[k].idx();
+            for (k, vk) in t.iter().enumerate() {
+                let v = vk.idx();
                 degree[v] += 1;
                 if first[v].is_none() {
                     first[v] = Some((3 * f + k) as u32);

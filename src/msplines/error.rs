@@ -17,6 +17,16 @@ pub enum MsError {
         /// The mesh file (or `"<generated>"`).
         file: String,
     },
+    /// The requested basis form ω_k does not exist (the basis has 2g forms, Sec. 5.1 step 2).
+    #[error("{file}: form {form} requested, but the basis has {count} forms ω_0..ω_{last} (2g, Sec. 5.1 step 2)", last = count.saturating_sub(1))]
+    FormOutOfRange {
+        /// The mesh file.
+        file: String,
+        /// The requested index k.
+        form: usize,
+        /// How many basis forms there are.
+        count: usize,
+    },
     /// More than one connected component.
     #[error("{file}: {components} connected components; Sec. 5 works on one closed surface")]
     Disconnected {

@@ -76,17 +76,18 @@ pub fn harmonic_forms(
     let n = verts.len().saturating_sub(1);
     let mut diag = vec![0.0; n];
     let mut trip: Vec<(usize, usize, f64)> = Vec::with_capacity(ei.len() + n);
-    for e in 0..ei.len() {
+    // `w` has one weight per edge of `ei`.
+    for (e, &we) in w.iter().enumerate() {
         let h = ei.canonical(super::cochain::EdgeIdx(e as u32));
         let (a, b) = (row[k.origin(h).idx()], row[k.dest(h).idx()]);
         if a != usize::MAX {
-            diag[a] += w[e];
+            diag[a] += we;
         }
         if b != usize::MAX {
-            diag[b] += w[e];
+            diag[b] += we;
         }
         if a != usize::MAX && b != usize::MAX {
-            trip.push((a.max(b), a.min(b), -w[e]));
+            trip.push((a.max(b), a.min(b), -we));
         }
     }
     trip.extend(diag.iter().enumerate().map(|(i, &d)| (i, i, d)));
@@ -104,9 +105,9 @@ pub fn harmonic_forms(
     // b_i = Σ_j w_ij τ[i, j], accumulated over edges.
     let rhs_of = |tau: &dyn Fn(usize) -> f64| {
         let mut b = vec![0.0; n];
-        for e in 0..ei.len() {
+        for (e, &we) in w.iter().enumerate() {
             let h = ei.canonical(super::cochain::EdgeIdx(e as u32));
-            let t = w[e] * tau(e);
+            let t = we * tau(e);
             let (a, c) = (row[k.origin(h).idx()], row[k.dest(h).idx()]);
             if a != usize::MAX {
                 b[a] += t;
@@ -131,11 +132,11 @@ pub fn harmonic_forms(
         let mut r = bs[c].clone();
         let mut s: Vec<f64> = bs[c].iter().map(|x| x.abs()).collect();
         let f = |i: usize| if i == usize::MAX { 0.0 } else { sol.read(i, c) };
-        for e in 0..ei.len() {
+        for (e, &we) in w.iter().enumerate() {
             let h = ei.canonical(super::cochain::EdgeIdx(e as u32));
             let (a, b) = (row[k.origin(h).idx()], row[k.dest(h).idx()]);
-            let d = w[e] * (f(a) - f(b));
-            let ad = w[e].abs() * (f(a).abs() + f(b).abs());
+            let d = we * (f(a) - f(b));
+            let ad = we.abs() * (f(a).abs() + f(b).abs());
             if a != usize::MAX {
                 r[a] -= d;
                 s[a] += ad;

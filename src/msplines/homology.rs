@@ -327,9 +327,11 @@ pub fn determinant(m: &[Vec<i64>]) -> BigRational {
                 continue;
             }
             let f = &a[r][c] / &a[c][c];
-            for cc in c..n {
-                let d = &f * &a[c][cc];
-                a[r][cc] -= d;
+            // Rows r > c and c are distinct: split to borrow both.
+            let (top, bottom) = a.split_at_mut(r);
+            for (arc, acc) in bottom[0][c..n].iter_mut().zip(&top[c][c..n]) {
+                let d = &f * acc;
+                *arc -= d;
             }
         }
     }

@@ -211,8 +211,17 @@ pub fn run(
         cr,
         "worst over the basis".into(),
     ));
-    let Some(om) = fm.omega(opt.form.min(fm.harmonic.forms.len().saturating_sub(1))) else {
+    let count = fm.harmonic.forms.len();
+    if count == 0 {
         return Err(MsError::GenusZero { file: file_name(k) });
+    }
+    // An index past the basis is refused, not replaced by the last form.
+    let Some(om) = fm.omega(opt.form) else {
+        return Err(MsError::FormOutOfRange {
+            file: file_name(k),
+            form: opt.form,
+            count,
+        });
     };
     let z: ZeroSet = locate(k, ei, &om);
     let g = fm.homology.genus;

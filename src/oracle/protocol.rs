@@ -22,8 +22,9 @@ use serde_json::{json, Value};
 use std::path::PathBuf;
 use thiserror::Error;
 
-/// Largest accepted MPFR precision (bounded time and memory per request).
-pub const MAX_BITS: u32 = 65_536;
+/// Largest accepted MPFR precision (bounded time and memory per request): the end of the one
+/// precision limit [`crate::construction::PREC_BITS`].
+pub const MAX_BITS: u32 = *crate::construction::PREC_BITS.end();
 
 /// Membership test for Ω_uw.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, Default)]
@@ -206,7 +207,7 @@ pub enum OracleError {
     #[error("point not in the domain: {0}")]
     NotInDomain(String),
     /// `set_precision` outside 2..=[`MAX_BITS`].
-    #[error("precision {0} bits out of range 2..={MAX_BITS}")]
+    #[error("precision {0} bits out of range {min}..={MAX_BITS}", min = crate::construction::PREC_BITS.start())]
     Precision(u32),
     /// NaN or ±∞ in the query.
     #[error("non-finite coordinate in the query point")]
@@ -503,7 +504,7 @@ impl Session {
                 Ok(Response::plain(out))
             }
             Request::SetPrecision { bits } => {
-                if !(2..=MAX_BITS).contains(bits) {
+                if !crate::construction::PREC_BITS.contains(bits) {
                     return Err(OracleError::Precision(*bits));
                 }
                 self.bits = *bits;

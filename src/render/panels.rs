@@ -3,7 +3,7 @@
 
 use super::font::{draw_text, text_width, GLYPH};
 use super::image::Image;
-use super::render::BACKGROUND;
+use super::picture::BACKGROUND;
 
 /// Height of the caption band at font scale `scale`.
 pub fn caption_height(scale: u32) -> u32 {

@@ -62,8 +62,8 @@ impl Polylines {
             parent[a] = b;
         }
         let mut comps: HashMap<usize, bool> = HashMap::new();
-        for v in 0..n {
-            if deg[v] == 0 {
+        for (v, &dv) in deg.iter().enumerate().take(n) {
+            if dv == 0 {
                 continue;
             }
             let r = find(&mut parent, v);

@@ -173,8 +173,8 @@ impl CroutLu {
             let mut s = b[ip];
             b[ip] = b[i];
             if let Some(f) = first {
-                for j in f..i {
-                    s -= self.a[i * n + j] * b[j];
+                for (j, bj) in b.iter().enumerate().take(i).skip(f) {
+                    s -= self.a[i * n + j] * bj;
                 }
             } else if s != 0.0 {
                 first = Some(i);
@@ -183,8 +183,8 @@ impl CroutLu {
         }
         for i in (0..n).rev() {
             let mut s = b[i];
-            for j in i + 1..n {
-                s -= self.a[i * n + j] * b[j];
+            for (j, bj) in b.iter().enumerate().take(n).skip(i + 1) {
+                s -= self.a[i * n + j] * bj;
             }
             b[i] = s / self.a[i * n + i];
         }

@@ -56,8 +56,12 @@ pub const fn order_of(len: usize) -> usize {
     }
 }
 
+/// The products of one truncation order: the triples (a, b, c) with monomial a · monomial b =
+/// monomial c, and how many of the 35 slots are used.
+type MulTable = ([(u8, u8, u8); 35], usize);
+
 /// All (a, b, c) with monomial a · monomial b = monomial c of degree ≤ `order`, and how many.
-const fn mul_table(order: usize) -> ([(u8, u8, u8); 35], usize) {
+const fn mul_table(order: usize) -> MulTable {
     let mut t = [(0u8, 0u8, 0u8); 35];
     let mut n = 0;
     let mut a = 0;
@@ -78,7 +82,7 @@ const fn mul_table(order: usize) -> ([(u8, u8, u8); 35], usize) {
 }
 
 /// The product tables of the orders 0..=3 (order 3: the full table of [`JET_ORDER`]).
-const MUL: [([(u8, u8, u8); 35], usize); 4] = [
+const MUL: [MulTable; 4] = [
     mul_table(0),
     mul_table(1),
     mul_table(2),

@@ -116,9 +116,8 @@ pub fn sample_pattern_faces(
     for i in 0..=n {
         row_start[i as usize + 1] = row_start[i as usize] + (n + 1 - i) as usize;
     }
-    for fi in 0..nf {
+    for (fi, &c) in faces.iter().enumerate().take(nf) {
         let f = FaceId(fi as u32);
-        let c = faces[fi];
         let mut local = Vec::with_capacity(row_start[n as usize + 1]);
         for i in 0..=n {
             for j in 0..=(n - i) {
@@ -127,8 +126,8 @@ pub fn sample_pattern_faces(
                 let w = [k, i, j];
                 let mut nz = [0usize; 3];
                 let mut len = 0;
-                for t in 0..3 {
-                    if w[t] != 0 {
+                for (t, &wt) in w.iter().enumerate() {
+                    if wt != 0 {
                         nz[len] = t;
                         len += 1;
                     }
@@ -205,9 +204,8 @@ impl Attributes {
     }
 }
 
-/// A progress hook of a long evaluation, called with (points done, total) about ten times; the
-/// command line decides whether and how to show it (the library prints nothing).
-pub type Progress<'a> = Option<&'a (dyn Fn(usize, usize) + Sync)>;
+/// A progress hook of a long evaluation, called with (points done, total) about ten times.
+pub use crate::report::Progress;
 
 /// Sample M at subdivision level `level` (Sec. 6.2) with normals and curvatures.
 pub fn sample_surface(

@@ -767,7 +767,7 @@ fn fit_vertex(
             target.eval(f, c, s.bary)
         })
         .collect();
-    for c in 0..kk {
+    for (c, out_c) in out.iter_mut().enumerate().take(kk) {
         let row = &fit.pinv[c * n..(c + 1) * n];
         let mut acc = [0.0; 3];
         for (w, p) in row.iter().zip(&d) {
@@ -775,6 +775,6 @@ fn fit_vertex(
             acc[1] += w * p[1];
             acc[2] += w * p[2];
         }
-        out[c] = acc;
+        *out_c = acc;
     }
 }

@@ -8,8 +8,8 @@ use super::*;
 /// partner across a cut, the jump ratio |F(a) − F(b)|/|a − b| against the Lipschitz bound L
 /// that any C¹ map with |DF| ≤ L satisfies. `lip` = L; `kmax` bounds the angular scaling.
 pub(super) struct SmoothSpec<'a, S> {
-    pub(super) f: &'a dyn Fn(&P2<S>) -> Result<P2<S>, MapError>,
-    pub(super) jac: &'a dyn Fn(&P2<S>) -> Result<Jac<S>, MapError>,
+    pub(super) f: PointMap<'a, S, P2<S>>,
+    pub(super) jac: PointMap<'a, S, Jac<S>>,
     pub(super) lip: f64,
     pub(super) kmax: f64,
     /// For a composite F = A∘B whose outer factor A applies Π at B(p) (g_(u,w): g_w⁻¹ at
@@ -17,8 +17,14 @@ pub(super) struct SmoothSpec<'a, S> {
     /// scales with 1/ρ² for the smallest radius ρ at which a polar map is evaluated, not only
     /// 1/|p|²: near the corners of the lens, |B(p)| is a fraction of |p| (SPEC `L4.2.4-random`: randomized
     /// surfaces of degree ≥ 9 gave false "not smooth" verdicts for L4.2.4 and P4.1.1).
-    pub(super) inner_radius: Option<&'a dyn Fn(&P2<S>) -> Option<f64>>,
+    pub(super) inner_radius: Option<InnerRadius<'a, S>>,
 }
+
+/// The radius |B(p)| of the inner factor of a composite map, where defined.
+pub(super) type InnerRadius<'a, S> = &'a dyn Fn(&P2<S>) -> Option<f64>;
+
+/// A fallible map of plane points (a map F or its Jacobian).
+pub(super) type PointMap<'a, S, T> = &'a dyn Fn(&P2<S>) -> Result<T, MapError>;
 
 pub(super) fn smooth_test<S: Scalar>(
     m: &mut Check,

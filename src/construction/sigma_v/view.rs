@@ -35,6 +35,9 @@ pub enum Version {
 /// coordinates, `None` for the tutorial's.
 pub type SvPhiOverride<'a> = dyn Fn(Corner, Corner, [f64; 2]) -> Option<[f64; 2]> + Sync + 'a;
 
+/// Per case-(2) pair (i, j): the grid points of Ω_uw found in Ω_ij, computed once.
+type GridCache = std::collections::HashMap<(Idx, Idx), Vec<P2<f64>>>;
+
 /// The abstract view on a subset of the corners.
 pub struct SigmaVView<'a> {
     g: &'a SigmaV,
@@ -44,7 +47,7 @@ pub struct SigmaVView<'a> {
     phi_override: Option<Box<SvPhiOverride<'a>>>,
     /// Per case-(2) pair: the points of a fixed grid of Ω_uw that lie in Ω_ij (see
     /// [`Self::grid_points`]).
-    grid: std::sync::Mutex<std::collections::HashMap<(Idx, Idx), Vec<P2<f64>>>>,
+    grid: std::sync::Mutex<GridCache>,
 }
 
 /// Side of the grid of the canonical lens whose pull-backs seed the samples of the case-(2)

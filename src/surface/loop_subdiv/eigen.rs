@@ -329,9 +329,9 @@ impl<S: Scalar> EigenStructure<S> {
         };
         let s11: Mat<S> = a[..=n].iter().map(|r| r[..=n].to_vec()).collect();
         let su = matmul(&s11, &self.u, prec);
-        for i in 0..=n {
-            for b in 0..=n {
-                note(&su[i][b].sub(&self.u[i][b].mul(&self.lambda[b])));
+        for (su_i, u_i) in su.iter().zip(&self.u).take(n + 1) {
+            for ((sib, uib), lb) in su_i.iter().zip(u_i).zip(&self.lambda).take(n + 1) {
+                note(&sib.sub(&uib.mul(lb)));
             }
         }
         let uu = matmul(&self.u, &self.u_inv, prec);
@@ -339,10 +339,10 @@ impl<S: Scalar> EigenStructure<S> {
         let w_inv = int_mat::<S>(&W_INV, prec);
         let ww = matmul(&w, &w_inv, prec);
         for (m, sz) in [(&uu, n + 1), (&ww, 5)] {
-            for i in 0..sz {
-                for j in 0..sz {
+            for (i, m_i) in m.iter().enumerate().take(sz) {
+                for (j, mij) in m_i.iter().enumerate().take(sz) {
                     let id = S::from_i64((i == j) as i64, prec);
-                    note(&m[i][j].sub(&id));
+                    note(&mij.sub(&id));
                 }
             }
         }

@@ -219,8 +219,8 @@ pub fn extraordinary_jet_as<S: Scalar>(
     }
     let q = es.sub_net_as(k, n - 1, &cin, &cout, authors_jordan);
     let mut jet = regular_jet(basis, &q, &s.0, &s.1, derivs, prec);
-    for d in 0..3 {
-        jet.p[d] = jet.p[d].add(&l[d]);
+    for (pd, ld) in jet.p.iter_mut().zip(&l) {
+        *pd = pd.add(ld);
     }
     jet.level = n as u32;
     if let Some(d) = jet.d.as_mut() {
