@@ -13,7 +13,7 @@
 //! g⁻¹(0) = 0 (the centre of the chart) by continuity; Π is undefined there.
 
 use super::consts::Consts;
-use super::pps::{Pps, SurfaceError};
+use super::pps::{Pps, SurfaceError, Term};
 use super::profile::Profile;
 use super::scalar_ext::SurfaceScalar;
 use crate::construction::P2;
@@ -147,13 +147,24 @@ impl Pps {
         bary: &[S; 3],
         c: &Consts<S>,
     ) -> Result<EvalPoint<S>, SurfaceError> {
+        self.eval_visiting(f, bary, c, |_| {})
+    }
+
+    /// [`Self::eval`], handing every blended term u ∈ J_v(q) to `visit`.
+    pub(crate) fn eval_visiting<S: SurfaceScalar>(
+        &self,
+        f: FaceId,
+        bary: &[S; 3],
+        c: &Consts<S>,
+        visit: impl FnMut(&Term<S>),
+    ) -> Result<EvalPoint<S>, SurfaceError> {
         check_barycentric(bary.clone().map(|x| x.to_f64()))?;
         self.face(f)?;
         let qp = canonical_point(bary, c);
         let chart = self.choose_chart(&qp, c);
         let (vertex, q) = self.chart_point(f, chart, &qp, c)?;
         let only = self.blend_only(f, chart)?;
-        let point = self.theta_only(vertex, &q, c, only)?;
+        let point = self.theta_visiting(vertex, &q, c, only, visit)?;
         Ok(EvalPoint {
             chart,
             vertex,

@@ -79,9 +79,9 @@ impl Pps {
         f: FaceId,
         bary: [f64; 3],
     ) -> Result<BoundedPoint, SurfaceError> {
-        let c = self.consts_f64();
-        let e = self.eval(f, &bary, c)?;
-        let terms: Vec<Term<f64>> = self.terms(e.vertex, &e.q, c, self.blend_only(f, e.chart)?)?;
+        // One eval; its blended terms (u, q_u, Γ_u) are read in the same pass.
+        let mut terms: Vec<Term<f64>> = Vec::with_capacity(4);
+        let e = self.eval_visiting(f, &bary, self.consts_f64(), |t| terms.push(t.clone()))?;
         let den: f64 = terms.iter().map(|t| t.gamma).sum();
         if !(den > 0.0) {
             return Err(SurfaceError::ZeroWeight(e.vertex));

@@ -616,12 +616,26 @@ impl Pps {
         c: &Consts<S>,
         only: Option<[VertexId; 2]>,
     ) -> Result<[S; 3], SurfaceError> {
+        self.theta_visiting(v, p, c, only, |_| {})
+    }
+
+    /// [`Self::theta_only`], handing every term of J_v(p) to `visit` as it is blended (the
+    /// error bound of `eval_bound` reads the terms of the same pass).
+    pub(crate) fn theta_visiting<S: SurfaceScalar>(
+        &self,
+        v: VertexId,
+        p: &P2<S>,
+        c: &Consts<S>,
+        only: Option<[VertexId; 2]>,
+        mut visit: impl FnMut(&Term<S>),
+    ) -> Result<[S; 3], SurfaceError> {
         // One pass: Σ Γ_uv and Σ Γ_uv·Ψ_uv accumulated in the order of J_v(p) (the same
         // operations as summing the collected terms).
         let z = S::from_i64(0, c.prec);
         let mut den = z.clone();
         let mut num = [z.clone(), z.clone(), z];
         self.for_each_term(v, p, c, only, |x| {
+            visit(&x);
             den = den.add(&x.gamma);
             if x.gamma.sign() == Some(Ordering::Equal) {
                 return;
