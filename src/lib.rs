@@ -65,6 +65,27 @@
 //! [`report::Check`] (a NaN is an offence, evaluation errors are counted, nothing examined is
 //! skipped); only [`cli`] prints and sets exit codes.
 //!
+//! ## Ids: one policy (SPEC `API-ids`)
+//!
+//! Vertices, faces and half-edges are typed ids ([`mesh::VertexId`], [`mesh::FaceId`],
+//! [`mesh::HalfedgeId`]). Where an id may come from outside (a file, a request, a caller), it
+//! meets a `Result`; where it was minted by the structure itself, it is trusted:
+//!
+//! * **Border queries answer a foreign id with a typed error**, never a panic or a made-up value:
+//!   [`construction::PpmGluing`] (`degree`, `edge_config`, the transition maps) gives
+//!   `NoSuchVertex`; [`surface::Pps`] (`face`, `eval`, `theta`, `gamma`, ...) gives
+//!   `NoSuchVertex`/`NoSuchFace`; the (σ, v) gluing gives its `SigmaVError`; the oracle turns
+//!   each into an error response.
+//! * **Counting queries are total** (`contains`, `degree`, `outgoing`, `faces_around`,
+//!   `halfedge`, `s`, `link_vertex` of [`mesh::SimplicialSurface`], and `contains`/`degree` of
+//!   `Pps` and the (σ, v) gluing): an id that is not a vertex of K has the empty star (degree 0,
+//!   no half-edges, `None`), which is the mathematics of an unreferenced vertex slot, so guards
+//!   can be written with them.
+//! * **Element accessors index** (`position`, `face`, `twin`, `label`, `origin`, `dest`, `next`,
+//!   `prev`, `face_of`): they take ids minted by the same surface (its iterators, or a counting
+//!   query above) and, like slice indexing, panic on a foreign id — a programming error, which
+//!   input cannot reach because every input path goes through a border query first.
+//!
 //! ## Modules
 //!
 //! * [`mesh`] — Sec. 3.1: reading triangle meshes, validating them as simplicial surfaces

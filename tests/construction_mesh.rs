@@ -504,3 +504,38 @@ fn d3_4_1_3b_transition_perturbed_by_1e_9_is_caught_on_a_mesh() {
     let t = r.tolerance.expect("tolerance printed");
     assert!(t < 1e-12, "tolerance {t} must be far below the 1e-9 fault");
 }
+
+/// SPEC API-ids (crate doc, *Ids*): a foreign id meets a typed error at every border query, the
+/// counting queries answer the empty star, and nothing panics on the way.
+#[test]
+fn api_ids_foreign_ids_get_typed_errors_and_counting_queries_are_total() {
+    use pseudomanifold::construction::sigma_v::{CornerId, SigmaV};
+    use pseudomanifold::mesh::FaceId;
+    use pseudomanifold::surface::{PnTriangles, Pps, PpsOptions, SurfaceError};
+    let k = surface(&icosahedron());
+    let foreign = [VertexId(12), VertexId(u32::MAX)];
+    for v in foreign {
+        assert!(!k.contains(v));
+        assert_eq!(k.degree(v), 0);
+        assert!(k.outgoing(v).is_empty() && k.faces_around(v).is_empty());
+        assert_eq!(k.halfedge(v, VertexId(0)), None);
+        assert_eq!(k.link_vertex(v, 0), None);
+        assert!(
+            matches!(PpmGluing::new(&k).degree(v), Err(GluingError::NoSuchVertex(w)) if w == v)
+        );
+    }
+    let pps = Pps::build(&k, &PnTriangles::new(&k), PpsOptions::default());
+    let c = pps.consts_f64();
+    let p = P2::new(0.0, 0.0);
+    for v in foreign {
+        assert_eq!(pps.degree(v), 0);
+        assert!(matches!(pps.theta(v, &p, c), Err(SurfaceError::NoSuchVertex(w)) if w == v));
+        assert!(matches!(pps.gamma(v, &p, c), Err(SurfaceError::NoSuchVertex(w)) if w == v));
+    }
+    assert!(pps.face(FaceId(20)).is_err());
+    assert!(pps.eval(FaceId(u32::MAX), &[1.0 / 3.0; 3], c).is_err());
+    let sv = SigmaV::new(&k, 0.5).expect("σ,v gluing of the icosahedron");
+    assert_eq!(sv.degree(VertexId(u32::MAX)), 0);
+    assert!(sv.face_corners(FaceId(20)).is_err());
+    assert!(sv.corner(CornerId(60)).is_err());
+}

@@ -175,7 +175,15 @@ pub fn run(
                     surface: crate::surface::SurfaceKind::parse(&a.surface).unwrap_or_default(),
                     ..Default::default()
                 };
-                ch5 = crate::surface::checks::run_surface_checks(k, &sopts);
+                let line =
+                    super::progress::Line::new("ppm check --spec (Ch. 5)", "check families", true);
+                let hook = line.hook();
+                ch5 = crate::surface::checks::run_surface_checks_with(
+                    k,
+                    &sopts,
+                    hook.as_ref().map(|h| h as _),
+                );
+                line.finish();
             }
         }
     }

@@ -70,8 +70,7 @@ impl Pps {
         z: &P2<S>,
         c: &Consts<S>,
     ) -> Result<P2<S>, SurfaceError> {
-        let m = self.degree(v);
-        let d = c.degree(m).ok_or(SurfaceError::MissingDegree(m))?;
+        let d = self.dc(c, v)?;
         if z.x.sign() == Some(Ordering::Equal) && z.y.sign() == Some(Ordering::Equal) {
             return Ok(z.clone());
         }

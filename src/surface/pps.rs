@@ -363,7 +363,12 @@ impl Pps {
             .max(f64::MIN_POSITIVE)
     }
 
-    fn dc<'c, S>(&self, c: &'c Consts<S>, v: VertexId) -> Result<&'c DegreeConsts<S>, SurfaceError>
+    /// The constants of m_v; a foreign v is [`SurfaceError::NoSuchVertex`] (crate doc, *Ids*).
+    pub(super) fn dc<'c, S>(
+        &self,
+        c: &'c Consts<S>,
+        v: VertexId,
+    ) -> Result<&'c DegreeConsts<S>, SurfaceError>
     where
         S: SurfaceScalar,
     {

@@ -66,28 +66,44 @@ pub fn check_membership_literal(
 
 /// T5.4.1 / condition (C) of Def. 3.5.1: θ_v(p) = θ_u(φ_uv(p)) for p ∈ Ω_vu, in f64.
 pub fn check_condition_c(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
+    let vs = examined_vertices(pps, opts.max_vertices);
+    let scope = format!(
+        "{} of {} vertices (cap {}), ≤ {} points each",
+        vs.len(),
+        pps.vertices().count(),
+        opts.max_vertices
+            .map_or("none".to_string(), |n| n.to_string()),
+        opts.samples_per_vertex
+    );
     check_c_generic::<f64>(
         pps,
         pps.consts_f64(),
         opts,
         "T5.4.1",
-        examined_vertices(pps, opts.max_vertices),
+        vs,
         opts.samples_per_vertex,
+        scope,
     )
 }
+
+/// Points per vertex of the multi-precision re-check (each costs a full MPFR/astro-float θ_v).
+pub const MP_POINTS_PER_VERTEX: usize = 6;
 
 /// T5.4.1 in multi-precision (oracle) on a few vertices.
 pub fn check_condition_c_mp(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
     let c: Consts<Mp> = pps.consts(opts.mp_prec);
     let vs = examined_vertices(pps, Some(opts.mp_vertices.max(1)));
-    check_c_generic::<Mp>(
-        pps,
-        &c,
-        opts,
-        "T5.4.1-mp",
-        vs,
-        opts.samples_per_vertex.min(6),
-    )
+    let per_vertex = opts.samples_per_vertex.min(MP_POINTS_PER_VERTEX);
+    // The caps are part of the verdict's scope: print them, not only the counts.
+    let scope = format!(
+        "{} of {} vertices (cap: mp_vertices = {}), ≤ {per_vertex} points each (cap: min(samples_per_vertex = {}, {MP_POINTS_PER_VERTEX})), {} bits",
+        vs.len(),
+        pps.vertices().count(),
+        opts.mp_vertices.max(1),
+        opts.samples_per_vertex,
+        opts.mp_prec
+    );
+    check_c_generic::<Mp>(pps, &c, opts, "T5.4.1-mp", vs, per_vertex, scope)
 }
 
 fn check_c_generic<S: SurfaceScalar>(
@@ -97,6 +113,7 @@ fn check_c_generic<S: SurfaceScalar>(
     id: &str,
     vs: Vec<VertexId>,
     per_vertex: usize,
+    scope: String,
 ) -> CheckResult {
     let eps = S::from_i64(1, c.prec).epsilon();
     let mut r = Check::new(
@@ -147,7 +164,7 @@ fn check_c_generic<S: SurfaceScalar>(
         }
     }
     r.finish(format!(
-        "ε = {eps:.3e}; tolerance = {COND}·max(1,m/6)·l·ε·S (S = max |control point| of the patches involved); worst deviation/tolerance = {worst_rel:.3e}"
+        "{scope}; ε = {eps:.3e}; tolerance = {COND}·max(1,m/6)·l·ε·S (S = max |control point| of the patches involved); worst deviation/tolerance = {worst_rel:.3e}"
     ))
 }
 
@@ -164,7 +181,13 @@ pub fn check_smooth_charts(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult
     let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x99);
     let cj: Consts<Jet<f64>> = pps.consts(53);
     let per = (opts.samples_per_vertex / 4).max(2);
-    for v in examined_vertices(pps, opts.max_vertices.map(|n| n.min(100)).or(Some(100))) {
+    let vs = examined_vertices(pps, opts.max_vertices.map(|n| n.min(100)).or(Some(100)));
+    let scope = format!(
+        "{} of {} vertices (cap: min(max_vertices, 100)), ≤ {per} points each (max(samples_per_vertex/4, 2))",
+        vs.len(),
+        pps.vertices().count()
+    );
+    for v in vs {
         let tol0 = tolerance(pps, v, f64::EPSILON);
         for p in overlap_points(pps, v, &mut rng, per, &mut r) {
             let (x, y) = Jet::variables(p[0], p[1]);
@@ -222,5 +245,7 @@ pub fn check_smooth_charts(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult
             }
         }
     }
-    r.finish("deviation reported relative to the per-order tolerance tol(C)·(4l)^k")
+    r.finish(format!(
+        "{scope}; deviation reported relative to the per-order tolerance tol(C)·(4l)^k"
+    ))
 }

@@ -73,6 +73,16 @@ impl Default for SurfaceCheckOptions {
 
 /// Build S′ and the PPS and run every check.
 pub fn run_surface_checks(k: &SimplicialSurface, opts: &SurfaceCheckOptions) -> Vec<CheckResult> {
+    run_surface_checks_with(k, opts, None)
+}
+
+/// [`run_surface_checks`] with a progress hook, called with (done, total) check families after
+/// the fit and after each family (they are of very unequal cost; the count says where it is).
+pub fn run_surface_checks_with(
+    k: &SimplicialSurface,
+    opts: &SurfaceCheckOptions,
+    progress: crate::report::Progress,
+) -> Vec<CheckResult> {
     let target = match super::target::SPrime::for_profile(opts.surface, k, opts.profile) {
         Ok(t) => t,
         Err(e) => {
@@ -81,6 +91,11 @@ pub fn run_surface_checks(k: &SimplicialSurface, opts: &SurfaceCheckOptions) -> 
             return vec![r];
         }
     };
+    let is_loop = matches!(target, super::target::SPrime::Loop(_));
+    let total = 13 + usize::from(opts.intersections) + usize::from(is_loop);
+    if let Some(p) = progress {
+        p(0, total);
+    }
     let pps = match Pps::try_build(
         k,
         target.as_target(),
@@ -99,35 +114,48 @@ pub fn run_surface_checks(k: &SimplicialSurface, opts: &SurfaceCheckOptions) -> 
         }
     };
     let g = PpmGluing::new(k);
-    let mut out = vec![
-        check_fit(&pps),
-        check_membership_literal(&pps, &g, opts),
-        check_condition_c(&pps, opts),
-        check_condition_c_mp(&pps, opts),
-        check_weights(&pps, opts),
-        check_j_le_3(&pps, opts),
-        check_support(&pps, opts),
-        check_smooth_charts(&pps, opts),
-        check_regular(&pps, opts),
-    ];
-    out.extend(check_eval_cases(&pps, opts));
-    out.push(check_cover(3.0 / 4.0, opts.seed, 4000));
-    out.push(check_approx(&pps));
+    let mut done = 0;
+    let mut step = |out: &mut Vec<CheckResult>, rs: Vec<CheckResult>| {
+        out.extend(rs);
+        done += 1;
+        if let Some(p) = progress {
+            p(done, total);
+        }
+    };
+    let mut out = Vec::new();
+    step(&mut out, vec![check_fit(&pps)]);
+    step(&mut out, vec![check_membership_literal(&pps, &g, opts)]);
+    step(&mut out, vec![check_condition_c(&pps, opts)]);
+    step(&mut out, vec![check_condition_c_mp(&pps, opts)]);
+    step(&mut out, vec![check_weights(&pps, opts)]);
+    step(&mut out, vec![check_j_le_3(&pps, opts)]);
+    step(&mut out, vec![check_support(&pps, opts)]);
+    step(&mut out, vec![check_smooth_charts(&pps, opts)]);
+    step(&mut out, vec![check_regular(&pps, opts)]);
+    step(&mut out, check_eval_cases(&pps, opts));
+    step(&mut out, vec![check_cover(3.0 / 4.0, opts.seed, 4000)]);
+    step(&mut out, vec![check_approx(&pps)]);
     if opts.intersections {
-        out.extend(check_intersections(&pps, opts));
+        step(&mut out, check_intersections(&pps, opts));
     }
-    out.push(super::loop_subdiv::checks::check_pps_distance(
-        k,
-        &pps,
-        target.as_target(),
-        opts.seed,
-    ));
+    step(
+        &mut out,
+        vec![super::loop_subdiv::checks::check_pps_distance(
+            k,
+            &pps,
+            target.as_target(),
+            opts.seed,
+        )],
+    );
     if let super::target::SPrime::Loop(l) = &target {
         let lo = super::loop_subdiv::checks::LoopCheckOptions {
             seed: opts.seed,
             ..Default::default()
         };
-        out.extend(super::loop_subdiv::checks::run_loop_checks(k, l, &lo));
+        step(
+            &mut out,
+            super::loop_subdiv::checks::run_loop_checks(k, l, &lo),
+        );
     }
     out
 }

@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# One module's mutation campaign (cargo-mutants), reproducibly, appending one row to
+# mutants/results.tsv. docs/mutants.md explains the table and the sampling.
+#
+#   mutants/run.sh MODULE [DENOM]      # DENOM: test every DENOM-th mutant (default 1 = all)
+#   mutants/run.sh --list              # the modules, their files and test binaries
+#
+# The campaign runs in a git worktree beside this repository (../<repo>-mutants, detached at
+# HEAD), so `../shared` resolves exactly as it does here and the tree you work in is never
+# mutated (PPM_MUTANTS_TREE names another place). Its target directory persists between
+# campaigns (incremental builds).
+# Every cargo command of the campaign builds and runs only the module's test binaries (-C), so
+# one mutant costs one incremental build of the library and those binaries, not the suite.
+# A sample takes mutant i when i % DENOM == 0 (cargo-mutants' round-robin shard 0/DENOM):
+# systematic, deterministic for a given commit, and spread over every file of the module.
+set -euo pipefail
+
+here="$(cd "$(dirname "$0")/.." && pwd)"
+results="$here/mutants/results.tsv"
+
+# name | file globs (space separated) | test binaries (space separated; `lib` = the unit tests)
+modules() {
+    cat <<'EOF'
+mesh-validate|src/mesh/validate/*.rs|mesh_validate harness_planted fuzz_regressions
+gluing-exact1d|src/gluing/exact1d/*.rs|gluing_paper_examples gluing_planted gluing_crossval harness_planted
+gluing-sampled|src/gluing/sampled/*.rs|gluing_planted gluing_crossval gluing_stereo_ppm harness_planted gluing_generic_scalar
+construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|construction_maps construction_mesh harness_planted construction_explore
+surface|src/surface/fit.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/admissible.rs|surface_spec harness_planted
+certify|src/certify/*.rs|certify_provers
+exact|src/exact/*.rs|lib proofs_appendix_a1 proofs_eval_c6_1_4 proofs_combinatorial
+oracle|src/oracle/*.rs|oracle oracle_surface
+report-harness|src/report/harness.rs|harness_planted
+EOF
+}
+
+if [[ "${1:-}" == "--list" || $# -lt 1 ]]; then
+    modules | column -t -s '|'
+    [[ $# -lt 1 ]] && exit 2 || exit 0
+fi
+
+module="$1"
+denom="${2:-1}"
+row="$(modules | awk -F'|' -v m="$module" '$1 == m')"
+if [[ -z "$row" ]]; then
+    echo "unknown module '$module'; mutants/run.sh --list names them" >&2
+    exit 2
+fi
+IFS='|' read -r _ globs tests <<<"$row"
+
+command -v cargo-mutants >/dev/null || {
+    echo "cargo-mutants is not installed: cargo install cargo-mutants --locked" >&2
+    exit 2
+}
+
+commit="$(git -C "$here" rev-parse HEAD)"
+tree="${PPM_MUTANTS_TREE:-$(dirname "$here")/$(basename "$here")-mutants}"
+if [[ -d "$tree" ]]; then
+    git -C "$tree" checkout --quiet --detach --force "$commit"
+    git -C "$tree" clean -fdq -e target
+else
+    git -C "$here" worktree add --quiet --detach "$tree" "$commit"
+fi
+
+files=()
+for g in $globs; do files+=(-f "$g"); done
+args=(--in-place --output "$tree/target/mutants-$module" "${files[@]}")
+for t in $tests; do
+    if [[ "$t" == lib ]]; then args+=(-C --lib); else args+=(-C "--test=$t"); fi
+done
+if [[ "$denom" != 1 ]]; then args+=(--shard "0/$denom" --sharding round-robin); fi
+
+generated="$(cd "$tree" && cargo mutants --list "${files[@]}" | wc -l)"
+start="$(date +%s)"
+status=0
+(cd "$tree" && cargo mutants "${args[@]}") || status=$?
+# cargo-mutants exits 2 when mutants were missed and 3 on timeouts; both are results.
+if [[ $status -ne 0 && $status -ne 2 && $status -ne 3 ]]; then
+    echo "cargo-mutants failed (exit $status); no row written" >&2
+    exit "$status"
+fi
+out="$tree/target/mutants-$module/mutants.out"
+count() { [[ -f "$out/$1.txt" ]] && grep -c . "$out/$1.txt" || echo 0; }
+caught=$(count caught)
+missed=$(count missed)
+timeout=$(count timeout)
+unviable=$(count unviable)
+secs=$(($(date +%s) - start))
+
+# Score = caught / (caught + missed); a timeout counts as caught (the mutant changed behaviour
+# enough to hang a test), as cargo-mutants itself reports it. 95 % Wilson interval for a sample.
+read -r score lo hi < <(awk -v c="$((caught + timeout))" -v n="$((caught + timeout + missed))" 'BEGIN {
+    if (n == 0) { print "NA NA NA"; exit }
+    p = c / n; z = 1.96; d = 1 + z*z/n
+    m = (p + z*z/(2*n)) / d; h = z * sqrt(p*(1-p)/n + z*z/(4*n*n)) / d
+    printf "%.3f %.3f %.3f\n", p, (m - h < 0 ? 0 : m - h), (m + h > 1 ? 1 : m + h) }')
+
+[[ -f "$results" ]] || printf 'date\tcommit\tmodule\tdenom\tgenerated\ttested\tcaught\tmissed\ttimeout\tunviable\tscore\tci95_lo\tci95_hi\tseconds\n' >"$results"
+printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' \
+    "$(date -u +%Y-%m-%d)" "${commit:0:10}" "$module" "$denom" "$generated" \
+    "$((caught + missed + timeout + unviable))" "$caught" "$missed" "$timeout" "$unviable" \
+    "$score" "$lo" "$hi" "$secs" >>"$results"
+echo "module $module: caught $caught, missed $missed, timeout $timeout, unviable $unviable, score $score [$lo, $hi]"
+if [[ $missed -gt 0 ]]; then
+    echo "missed mutants ($out/missed.txt):"
+    cat "$out/missed.txt"
+fi
