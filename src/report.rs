@@ -15,7 +15,7 @@ pub use harness::{dev_max, Check, OnError, Restricted};
 pub type Progress<'a> = Option<&'a (dyn Fn(usize, usize) + Sync)>;
 
 /// Call `progress` with (done, total) after one more item, from any thread.
-pub fn tick(progress: Progress, done: &std::sync::atomic::AtomicUsize, total: usize) {
+pub(crate) fn tick(progress: Progress, done: &std::sync::atomic::AtomicUsize, total: usize) {
     if let Some(show) = progress {
         let d = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
         show(d, total);

@@ -244,7 +244,7 @@ pub fn run(
 }
 
 /// The text report of `ppm check`.
-pub fn render_report(r: &ValidationReport, extra: &[CheckResult], secs: f64) -> String {
+pub(crate) fn render_report(r: &ValidationReport, extra: &[CheckResult], secs: f64) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     let _ = writeln!(
@@ -297,7 +297,14 @@ pub fn render_report(r: &ValidationReport, extra: &[CheckResult], secs: f64) -> 
 }
 
 /// `ppm eval-map`: φ_wu(p) in f64 and in MPFR with their difference.
-pub fn eval_map(file: &Path, u: u32, w: u32, p: [f64; 2], bits: u32, json: bool) -> ExitCode {
+pub(crate) fn eval_map(
+    file: &Path,
+    u: u32,
+    w: u32,
+    p: [f64; 2],
+    bits: u32,
+    json: bool,
+) -> ExitCode {
     let k = match super::load::surface(file) {
         Ok(k) => k,
         Err(c) => return c,

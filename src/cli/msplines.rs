@@ -43,7 +43,7 @@ pub struct MsCheckArgs {
 }
 
 /// Run a `ppm msplines` subcommand.
-pub fn run_command(c: MsCommand) -> ExitCode {
+pub(crate) fn run_command(c: MsCommand) -> ExitCode {
     match c {
         MsCommand::Check(a) => check(&a),
     }

@@ -36,7 +36,7 @@ fn session(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> Resul
 /// `ppm oracle [--mesh M] [--bits B] [--profile P]`: answer one JSON request per stdin line
 /// with one JSON response per stdout line until end of input. Exit status 0, or 2 when the
 /// initial mesh/precision/profile is rejected or stdin cannot be read.
-pub fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> ExitCode {
+pub(crate) fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> ExitCode {
     let mut s = match session(mesh, bits, profile, sprime) {
         Ok(s) => s,
         Err(e) => {
@@ -221,7 +221,7 @@ pub struct SurfaceArgs {
 /// `ppm diff --surface OTHER --mesh M [--level N]`: compare a sampled surface against the
 /// reference sampling (Sec. 6.2). Exit status 0 within tolerance, 1 outside, 2 on a usage
 /// error (unreadable files, unknown level or option).
-pub fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> ExitCode {
+pub(crate) fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> ExitCode {
     let fail = |msg: String| {
         eprintln!("error: {msg}");
         ExitCode::from(2)

@@ -22,7 +22,7 @@ impl Line {
     }
 
     /// The hook to pass to the library (`None` when hidden).
-    pub fn hook(&self) -> Option<impl Fn(usize, usize) + Sync + '_> {
+    pub(crate) fn hook(&self) -> Option<impl Fn(usize, usize) + Sync + '_> {
         self.shown.then_some(move |d: usize, total: usize| {
             eprint!(
                 "\r{}: {d}/{total} {} ({:.0}%)",

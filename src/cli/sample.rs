@@ -131,7 +131,13 @@ pub(crate) fn write_sampled(out: &Path, m: &SampledMesh, quiet: bool, t0: Instan
 
 /// `ppm eval FILE FACE λ μ ν`: one point of M (Sec. 6.1.4), with its chart, normal and
 /// curvatures.
-pub fn run_eval(file: &Path, face: u32, bary: [f64; 3], profile: &str, surface: &str) -> ExitCode {
+pub(crate) fn run_eval(
+    file: &Path,
+    face: u32,
+    bary: [f64; 3],
+    profile: &str,
+    surface: &str,
+) -> ExitCode {
     let k = match load(file) {
         Ok(k) => k,
         Err(c) => return c,

@@ -7,7 +7,7 @@ use std::path::Path;
 use std::process::ExitCode;
 
 /// Whether `table` is a TSV table of points (first line starts with `face<TAB>`).
-pub fn is_tsv(table: &Path) -> bool {
+pub(crate) fn is_tsv(table: &Path) -> bool {
     use std::io::Read;
     let mut head = [0u8; 64];
     let n = std::fs::File::open(table)

@@ -51,7 +51,7 @@ impl<S> Samples<S> {
         m
     }
     /// "Uniform 400, NearBoundary 150, ..." for reports.
-    pub fn counts_string(&self) -> String {
+    pub(crate) fn counts_string(&self) -> String {
         self.counts()
             .iter()
             .map(|(c, n)| format!("{c:?} {n}"))

@@ -96,7 +96,7 @@ pub fn norm<S: num_traits::Float, const N: usize>(a: &Point<S, N>) -> f64 {
 }
 
 /// Render a point for witnesses.
-pub fn fmt_point<S: num_traits::Float, const N: usize>(p: &Point<S, N>) -> String {
+pub(crate) fn fmt_point<S: num_traits::Float, const N: usize>(p: &Point<S, N>) -> String {
     let v: Vec<String> = p
         .iter()
         .map(|x| format!("{}", x.to_f64().unwrap_or(f64::NAN)))
@@ -109,7 +109,9 @@ pub fn fmt_point<S: num_traits::Float, const N: usize>(p: &Point<S, N>) -> Strin
 }
 
 /// Point as a JSON array of f64.
-pub fn point_json<S: num_traits::Float, const N: usize>(p: &Point<S, N>) -> serde_json::Value {
+pub(crate) fn point_json<S: num_traits::Float, const N: usize>(
+    p: &Point<S, N>,
+) -> serde_json::Value {
     serde_json::Value::from(
         p.iter()
             .map(|x| x.to_f64().unwrap_or(f64::NAN))

@@ -59,7 +59,7 @@ impl EdgeIndex {
         }
     }
     /// Integer sign of h.
-    pub fn isign(&self, h: HalfedgeId) -> i64 {
+    pub(crate) fn isign(&self, h: HalfedgeId) -> i64 {
         if self.positive[h.idx()] {
             1
         } else {
@@ -91,7 +91,7 @@ impl EdgeIndex {
 }
 
 /// The three half-edges of face f: [v0→v1, v1→v2, v2→v0].
-pub fn face_halfedges(f: crate::mesh::FaceId) -> [HalfedgeId; 3] {
+pub(crate) fn face_halfedges(f: crate::mesh::FaceId) -> [HalfedgeId; 3] {
     let b = 3 * f.0;
     [HalfedgeId(b), HalfedgeId(b + 1), HalfedgeId(b + 2)]
 }

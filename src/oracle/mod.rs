@@ -22,7 +22,7 @@ use crate::construction::{Mp, Scalar};
 
 /// Read a text table, naming the line and byte of the first invalid UTF-8 sequence (the
 /// error does not repeat the path).
-pub fn read_text_table(path: &std::path::Path) -> Result<String, String> {
+pub(crate) fn read_text_table(path: &std::path::Path) -> Result<String, String> {
     let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
     String::from_utf8(bytes).map_err(|e| {
         let at = e.utf8_error().valid_up_to();
@@ -33,7 +33,7 @@ pub fn read_text_table(path: &std::path::Path) -> Result<String, String> {
 }
 
 /// Render a multi-precision value with all its significant decimal digits.
-pub fn mp_decimal(x: &Mp) -> String {
+pub(crate) fn mp_decimal(x: &Mp) -> String {
     x.to_decimal()
 }
 

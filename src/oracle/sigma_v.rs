@@ -28,7 +28,7 @@ impl SigmaVOracle {
     }
 
     /// Forget the surface (a new mesh was loaded).
-    pub fn reset(&mut self) {
+    pub(crate) fn reset(&mut self) {
         self.pps = None;
         self.mp = None;
     }

@@ -84,7 +84,7 @@ pub fn sample_count(v: u64, e: u64, f: u64, level: u32) -> u64 {
 }
 
 /// The level whose sampling has exactly `count` vertices, if any.
-pub fn infer_level(pps: &Pps, count: usize) -> Option<u32> {
+pub(crate) fn infer_level(pps: &Pps, count: usize) -> Option<u32> {
     let nf = pps.num_faces() as u64;
     let mut edges = HashSet::new();
     let mut verts = HashSet::new();

@@ -450,12 +450,12 @@ pub fn diff_tsv_files_with(
 }
 
 /// Whether a table file is a TSV table of points (its first line names `face` first).
-pub fn looks_like_tsv(text_start: &str) -> bool {
+pub(crate) fn looks_like_tsv(text_start: &str) -> bool {
     text_start.trim_start().starts_with("face\t")
 }
 
 /// The report as text.
-pub fn render_tsv(r: &TsvReport) -> String {
+pub(crate) fn render_tsv(r: &TsvReport) -> String {
     let mut s = format!(
         "rows {}, bounding-box diagonal {:.6e}, profile {}, S′ {}; deviations relative to the diagonal\n",
         r.rows, r.diagonal, r.profile, r.sprime

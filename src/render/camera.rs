@@ -43,7 +43,7 @@ impl View {
     }
 
     /// Unit vector from the scene towards the viewer.
-    pub fn towards_viewer(&self) -> [f64; 3] {
+    pub(crate) fn towards_viewer(&self) -> [f64; 3] {
         let (a, e) = (self.azimuth.to_radians(), self.elevation.to_radians());
         [e.cos() * a.sin(), e.sin(), e.cos() * a.cos()]
     }

@@ -91,7 +91,7 @@ impl ColourRange {
 
     /// The robust range of `values` ([`ROBUST_PERCENTILES`], nearest rank), or None when no
     /// value is finite.
-    pub fn robust<'a>(values: impl IntoIterator<Item = &'a f64>) -> Option<ColourRange> {
+    pub(crate) fn robust<'a>(values: impl IntoIterator<Item = &'a f64>) -> Option<ColourRange> {
         let mut v: Vec<f64> = values
             .into_iter()
             .copied()
@@ -148,7 +148,7 @@ const WHITE: [f64; 3] = [0.97, 0.97, 0.97];
 const RED: [f64; 3] = [0.70, 0.09, 0.17];
 
 /// The diverging map at t ∈ [−1, 1]: BLUE at −1, WHITE at 0, RED at 1 (linear in RGB).
-pub fn diverging(t: f64) -> [f64; 3] {
+pub(crate) fn diverging(t: f64) -> [f64; 3] {
     let (end, s) = if t >= 0.0 { (RED, t) } else { (BLUE, -t) };
     std::array::from_fn(|d| WHITE[d] + s * (end[d] - WHITE[d]))
 }

@@ -6,14 +6,20 @@ use super::font::{draw_text, format_number, text_width, GLYPH};
 use super::image::{to_rgb8, Image};
 
 /// Width of the strip the bar needs at font scale `scale`.
-pub fn strip_width(scale: u32) -> u32 {
+pub(crate) fn strip_width(scale: u32) -> u32 {
     // bar + gap + the longest number (9 characters) + margin
     (12 + 6 + 9 * GLYPH + 8) * scale
 }
 
 /// Draw the bar for `range` into `img` in the strip starting at column `x0`; `label` is
 /// printed above it.
-pub fn draw_colour_bar(img: &mut Image, x0: u32, range: &ColourRange, label: &str, scale: u32) {
+pub(crate) fn draw_colour_bar(
+    img: &mut Image,
+    x0: u32,
+    range: &ColourRange,
+    label: &str,
+    scale: u32,
+) {
     let s = i64::from(scale);
     let h = i64::from(img.height);
     let top = h / 6;

@@ -12,12 +12,12 @@ use font8x8::legacy::BASIC_LEGACY;
 pub const GLYPH: u32 = 8;
 
 /// Width in pixels of `text` at `scale`.
-pub fn text_width(text: &str, scale: u32) -> u32 {
+pub(crate) fn text_width(text: &str, scale: u32) -> u32 {
     text.chars().count() as u32 * GLYPH * scale
 }
 
 /// Draw `text` with its top-left corner at (x, y); characters outside ASCII print as '?'.
-pub fn draw_text(img: &mut Image, x: i64, y: i64, text: &str, scale: u32, rgb: [u8; 3]) {
+pub(crate) fn draw_text(img: &mut Image, x: i64, y: i64, text: &str, scale: u32, rgb: [u8; 3]) {
     let s = i64::from(scale);
     for (n, ch) in text.chars().enumerate() {
         let code = if ch.is_ascii() {
@@ -43,7 +43,7 @@ pub fn draw_text(img: &mut Image, x: i64, y: i64, text: &str, scale: u32, rgb: [
 }
 
 /// A number in at most 9 characters: fixed notation for 1e−3 ≤ |x| < 1e4, else scientific.
-pub fn format_number(x: f64) -> String {
+pub(crate) fn format_number(x: f64) -> String {
     let a = x.abs();
     if x == 0.0 {
         "0".into()

@@ -25,7 +25,7 @@ impl Image {
         }
     }
     /// Set pixel (x, y); points outside the image are ignored (text and bars may overhang).
-    pub fn put(&mut self, x: i64, y: i64, rgb: [u8; 3]) {
+    pub(crate) fn put(&mut self, x: i64, y: i64, rgb: [u8; 3]) {
         if x < 0 || y < 0 || x >= i64::from(self.width) || y >= i64::from(self.height) {
             return;
         }
@@ -38,7 +38,7 @@ impl Image {
         [self.data[k], self.data[k + 1], self.data[k + 2]]
     }
     /// Copy `other` with its top-left corner at (x, y).
-    pub fn blit(&mut self, other: &Image, x: i64, y: i64) {
+    pub(crate) fn blit(&mut self, other: &Image, x: i64, y: i64) {
         for j in 0..other.height {
             for i in 0..other.width {
                 self.put(x + i64::from(i), y + i64::from(j), other.get(i, j));
@@ -63,6 +63,6 @@ impl Image {
 }
 
 /// A colour in [0, 1]³ as 8-bit RGB (rounded; out-of-range components saturate).
-pub fn to_rgb8(c: [f64; 3]) -> [u8; 3] {
+pub(crate) fn to_rgb8(c: [f64; 3]) -> [u8; 3] {
     c.map(|x| (x * 255.0).round().clamp(0.0, 255.0) as u8)
 }

@@ -6,12 +6,12 @@ use super::image::Image;
 use super::picture::BACKGROUND;
 
 /// Height of the caption band at font scale `scale`.
-pub fn caption_height(scale: u32) -> u32 {
+pub(crate) fn caption_height(scale: u32) -> u32 {
     (GLYPH + 8) * scale
 }
 
 /// Lay out `panels` (caption, image) left to right, captions centred above their images.
-pub fn side_by_side(panels: &[(String, Image)], scale: u32) -> Image {
+pub(crate) fn side_by_side(panels: &[(String, Image)], scale: u32) -> Image {
     let ch = caption_height(scale);
     let w: u32 = panels.iter().map(|(_, i)| i.width).sum();
     let h = panels.iter().map(|(_, i)| i.height).max().unwrap_or(0) + ch;

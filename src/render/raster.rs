@@ -48,7 +48,7 @@ impl Visibility {
 
     /// Draw triangle `id` with screen corners `s` (x, y in pixels; depth). A pixel is covered
     /// when its centre lies in the closed triangle; the nearer depth wins, ties keep the first.
-    pub fn draw(&mut self, id: u32, s: [[f64; 3]; 3]) {
+    pub(crate) fn draw(&mut self, id: u32, s: [[f64; 3]; 3]) {
         if s.iter().flatten().any(|x| !x.is_finite()) {
             self.skipped_non_finite += 1;
             return;

@@ -8,7 +8,7 @@ use crate::mesh::vec3::{dot, norm};
 pub const AMBIENT: f64 = 0.25;
 
 /// The light direction in camera terms: mostly from the viewer, a little from above-left.
-pub fn light_direction(right: [f64; 3], up: [f64; 3], towards: [f64; 3]) -> [f64; 3] {
+pub(crate) fn light_direction(right: [f64; 3], up: [f64; 3], towards: [f64; 3]) -> [f64; 3] {
     let l: [f64; 3] = std::array::from_fn(|d| towards[d] + 0.45 * up[d] - 0.3 * right[d]);
     let n = norm(l);
     l.map(|x| x / n)
@@ -16,7 +16,7 @@ pub fn light_direction(right: [f64; 3], up: [f64; 3], towards: [f64; 3]) -> [f64
 
 /// Brightness factor in [AMBIENT, 1] of the interpolated normal `n` (any length) under the
 /// light `l`; a zero or non-finite normal (singular point) gets the ambient term alone.
-pub fn brightness(n: [f64; 3], l: [f64; 3]) -> f64 {
+pub(crate) fn brightness(n: [f64; 3], l: [f64; 3]) -> f64 {
     let len = norm(n);
     if !(len > 0.0 && len.is_finite()) {
         return AMBIENT;

@@ -151,7 +151,7 @@ pub fn pps_scene(pps: &Pps, level: u32, curvature: bool) -> Result<Scene, Render
 /// A sampled surface read from a file (e.g. written by `ppm sample`): the per-vertex normals
 /// (`nx ny nz`) and curvatures (`gaussian_curvature`, `mean_curvature`) it carries (PLY), and
 /// otherwise area-weighted vertex normals of its triangles (the file has nothing better).
-pub fn samples_scene(raw: &RawMesh) -> Result<Scene, RenderError> {
+pub(crate) fn samples_scene(raw: &RawMesh) -> Result<Scene, RenderError> {
     let get = |name: &str| {
         raw.vertex_scalars
             .iter()

@@ -156,7 +156,7 @@ pub struct MapSpec {
 }
 
 /// Parses a number: integer, "p/q", decimal string, or float (exact double).
-pub fn parse_number(v: &toml::Value) -> Result<Q, String> {
+pub(crate) fn parse_number(v: &toml::Value) -> Result<Q, String> {
     match v {
         toml::Value::Integer(i) => Ok(Q::from_integer(BigInt::from(*i))),
         toml::Value::Float(x) => Q::from_float(*x).ok_or_else(|| format!("{x} is not finite")),
@@ -417,7 +417,7 @@ impl MapSpec {
     }
 
     /// The global multiset of a local multi-index in triangle f.
-    pub fn global_key(k: &PlanarComplex, f: usize, i: [usize; 3]) -> Multiset {
+    pub(crate) fn global_key(k: &PlanarComplex, f: usize, i: [usize; 3]) -> Multiset {
         let t = k.triangles[f];
         let mut m: Vec<u32> = (0..3)
             .flat_map(|c| std::iter::repeat(t[c]).take(i[c]))

@@ -321,7 +321,7 @@ pub fn edge_use_counts(faces: &[[u32; 3]]) -> (usize, usize) {
 
 /// Diverging colour map for a curvature value, clipped at ±`range`: blue (negative), white,
 /// red (positive).
-pub fn curvature_colour(x: f64, range: f64) -> [u8; 3] {
+pub(crate) fn curvature_colour(x: f64, range: f64) -> [u8; 3] {
     if !x.is_finite() || range <= 0.0 {
         return [128, 128, 128];
     }
@@ -335,7 +335,7 @@ pub fn curvature_colour(x: f64, range: f64) -> [u8; 3] {
 }
 
 /// 98th percentile of |x| (the colour range).
-pub fn robust_range(xs: &[f64]) -> f64 {
+pub(crate) fn robust_range(xs: &[f64]) -> f64 {
     let mut v: Vec<f64> = xs
         .iter()
         .filter(|x| x.is_finite())

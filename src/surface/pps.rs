@@ -304,7 +304,7 @@ impl Pps {
     }
     /// Position of v in the storage order of the patches (breadth-first over K): vertices
     /// close in this order have their ψ close in memory.
-    pub fn storage_rank(&self, v: VertexId) -> u32 {
+    pub(crate) fn storage_rank(&self, v: VertexId) -> u32 {
         self.rank.get(v.idx()).copied().unwrap_or(u32::MAX)
     }
     /// A cache hint: prefetch the control points of ψ_v (no effect on any result).
@@ -324,7 +324,7 @@ impl Pps {
 
     /// Breadth-first storage rank of the first-stored corner of face f: sorting evaluation
     /// points by it makes consecutive evaluations share their ψ_u in cache.
-    pub fn locality_key(&self, f: FaceId) -> u32 {
+    pub(crate) fn locality_key(&self, f: FaceId) -> u32 {
         match self.faces.get(f.idx()) {
             Some(c) => c
                 .iter()

@@ -10,7 +10,7 @@ use std::fmt;
 pub type Q = BigRational;
 
 /// Parse "p", "p/q", "-p/q" or a finite decimal "1.25" into an exact rational.
-pub fn parse_q(s: &str) -> Option<Q> {
+pub(crate) fn parse_q(s: &str) -> Option<Q> {
     let s = s.trim();
     if let Some((int, frac)) = s.split_once('.') {
         if frac.is_empty() || !frac.bytes().all(|c| c.is_ascii_digit()) {
@@ -33,7 +33,7 @@ pub fn parse_q(s: &str) -> Option<Q> {
 }
 
 /// Render a rational compactly ("3", "-1/2").
-pub fn fmt_q(q: &Q) -> String {
+pub(crate) fn fmt_q(q: &Q) -> String {
     if q.is_integer() {
         q.numer().to_string()
     } else {
@@ -42,7 +42,7 @@ pub fn fmt_q(q: &Q) -> String {
 }
 
 /// Lossy conversion for display of deviations.
-pub fn q_to_f64(q: &Q) -> f64 {
+pub(crate) fn q_to_f64(q: &Q) -> f64 {
     use num_traits::ToPrimitive;
     q.to_f64().unwrap_or(f64::NAN)
 }
@@ -50,7 +50,7 @@ pub fn q_to_f64(q: &Q) -> f64 {
 /// a < b by cross-multiplication (denominators are positive once normalised). Same answer as
 /// `Ord`, which num-rational computes by a continued-fraction expansion with a big-integer
 /// division per step; membership tests are the inner loop of the gluing checks.
-pub fn q_lt(a: &Q, b: &Q) -> bool {
+pub(crate) fn q_lt(a: &Q, b: &Q) -> bool {
     if a.denom() == b.denom() {
         a.numer() < b.numer()
     } else {

@@ -52,7 +52,7 @@ pub(super) struct Fans {
 }
 
 impl Fans {
-    pub fn is_high(&self, v: u32) -> bool {
+    pub(crate) fn is_high(&self, v: u32) -> bool {
         !self.star[v as usize].is_empty()
     }
 }

@@ -89,12 +89,12 @@ impl Incidence {
     }
 
     /// The faces containing edge `e` (an index into `edges`); panics if `e` is out of range.
-    pub fn faces_of_edge(&self, e: usize) -> &[u32] {
+    pub(crate) fn faces_of_edge(&self, e: usize) -> &[u32] {
         &self.edge_faces[self.edge_start[e] as usize..self.edge_start[e + 1] as usize]
     }
 
     /// The active faces having `v` as a corner; empty for an out-of-range `v`.
-    pub fn faces_of_vertex(&self, v: usize) -> &[u32] {
+    pub(crate) fn faces_of_vertex(&self, v: usize) -> &[u32] {
         match (self.vertex_start.get(v), self.vertex_start.get(v + 1)) {
             (Some(&a), Some(&b)) => &self.vertex_faces[a as usize..b as usize],
             _ => &[],
@@ -102,12 +102,12 @@ impl Incidence {
     }
 
     /// Index of the undirected edge {a, b}, if present.
-    pub fn edge_index(&self, a: u32, b: u32) -> Option<usize> {
+    pub(crate) fn edge_index(&self, a: u32, b: u32) -> Option<usize> {
         self.edges.binary_search(&(a.min(b), a.max(b))).ok()
     }
 
     /// Groups (of size ≥ 2) of faces with the same vertex set.
-    pub fn duplicate_groups(&self) -> Vec<Vec<u32>> {
+    pub(crate) fn duplicate_groups(&self) -> Vec<Vec<u32>> {
         let mut out = Vec::new();
         let mut i = 0;
         while i < self.sorted_keys.len() {
@@ -121,12 +121,5 @@ impl Incidence {
             i = j;
         }
         out
-    }
-
-    /// Vertices used by at least one active face.
-    pub fn referenced(&self, nv: usize) -> Vec<bool> {
-        (0..nv)
-            .map(|v| !self.faces_of_vertex(v).is_empty())
-            .collect()
     }
 }

@@ -79,7 +79,7 @@ pub fn orient3_exact(a: &P3, b: &P3, c: &P3, d: &P3) -> Ordering {
 }
 
 /// (a − c) × (b − c) exactly: the determinant `robust::orient2d` evaluates.
-pub fn orient2_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
+pub(crate) fn orient2_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
     let [ax, ay, bx, by, cx, cy] = dyadic([a[0], a[1], b[0], b[1], c[0], c[1]]);
     let det = (&ax - &cx) * (&by - &cy) - (&ay - &cy) * (&bx - &cx);
     det.sign_ordering()
@@ -138,7 +138,7 @@ impl Proj {
 /// i.e. iff at least one of its three coordinate projections has non-zero exact orientation.
 /// Returns a projection under which the triangle is non-degenerate, or `None` when the three
 /// points are collinear (or coincide).
-pub fn nondegenerate_projection(a: &P3, b: &P3, c: &P3) -> Option<Proj> {
+pub(crate) fn nondegenerate_projection(a: &P3, b: &P3, c: &P3) -> Option<Proj> {
     (0..3)
         .rev()
         .map(|drop| Proj { drop })
@@ -154,7 +154,7 @@ fn sgn(o: Ordering) -> i8 {
 }
 
 /// Closed point-in-triangle test in a 2-D projection where (a, b, c) is non-degenerate.
-pub fn point_in_triangle_2d(pr: Proj, p: &P3, a: &P3, b: &P3, c: &P3) -> bool {
+pub(crate) fn point_in_triangle_2d(pr: Proj, p: &P3, a: &P3, b: &P3, c: &P3) -> bool {
     let s = sgn(pr.orient(a, b, c));
     let o1 = sgn(pr.orient(a, b, p)) * s;
     let o2 = sgn(pr.orient(b, c, p)) * s;
@@ -169,7 +169,7 @@ fn on_segment_2d(pr: Proj, p: &P3, q: &P3, x: &P3) -> bool {
 }
 
 /// Closed segment–segment intersection in a 2-D projection (all four points coplanar).
-pub fn segments_intersect_2d(pr: Proj, p: &P3, q: &P3, a: &P3, b: &P3) -> bool {
+pub(crate) fn segments_intersect_2d(pr: Proj, p: &P3, q: &P3, a: &P3, b: &P3) -> bool {
     let d1 = sgn(pr.orient(a, b, p));
     let d2 = sgn(pr.orient(a, b, q));
     let d3 = sgn(pr.orient(p, q, a));
@@ -184,7 +184,7 @@ pub fn segments_intersect_2d(pr: Proj, p: &P3, q: &P3, a: &P3, b: &P3) -> bool {
 }
 
 /// Does the closed segment [p, q] meet the closed, non-degenerate triangle (a, b, c)? Exact.
-pub fn segment_meets_triangle(p: &P3, q: &P3, a: &P3, b: &P3, c: &P3) -> bool {
+pub(crate) fn segment_meets_triangle(p: &P3, q: &P3, a: &P3, b: &P3, c: &P3) -> bool {
     let op = sgn(orient3(a, b, c, p));
     let oq = sgn(orient3(a, b, c, q));
     if op * oq > 0 {
@@ -211,7 +211,7 @@ pub fn segment_meets_triangle(p: &P3, q: &P3, a: &P3, b: &P3, c: &P3) -> bool {
 
 /// For a triangle (v, b1, b2) and a point x coplanar with it: does the segment from v towards
 /// x enter the triangle beyond v, i.e. does x lie in the closed cone of the triangle at v?
-pub fn in_cone_at(v: &P3, b1: &P3, b2: &P3, x: &P3) -> bool {
+pub(crate) fn in_cone_at(v: &P3, b1: &P3, b2: &P3, x: &P3) -> bool {
     let pr = match nondegenerate_projection(v, b1, b2) {
         Some(pr) => pr,
         None => return false,

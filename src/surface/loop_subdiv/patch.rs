@@ -153,7 +153,7 @@ impl<S: Scalar> SubdivisionMatrices<S> {
 }
 
 /// C = A·B for dense matrices.
-pub fn matmul<S: Scalar>(a: &Mat<S>, b: &Mat<S>, prec: u32) -> Mat<S> {
+pub(crate) fn matmul<S: Scalar>(a: &Mat<S>, b: &Mat<S>, prec: u32) -> Mat<S> {
     let cols = b.first().map_or(0, |r| r.len());
     a.iter()
         .map(|ra| {

@@ -230,14 +230,14 @@ pub fn basis_f64() -> &'static [[f64; 15]; 12] {
 }
 
 /// Nearest f64 of an exact rational (correctly rounded for the small denominators here).
-pub fn ratio_to_f64(q: &BigRational) -> f64 {
+pub(crate) fn ratio_to_f64(q: &BigRational) -> f64 {
     use num_traits::ToPrimitive;
     q.to_f64().unwrap_or(f64::NAN)
 }
 
 /// (numerator, denominator) as i64 when they fit, to build a [`crate::construction::Scalar`]
 /// by `from_ratio` (correctly rounded at any precision).
-pub fn ratio_to_i64(q: &BigRational) -> Option<(i64, i64)> {
+pub(crate) fn ratio_to_i64(q: &BigRational) -> Option<(i64, i64)> {
     use num_traits::ToPrimitive;
     Some((q.numer().to_i64()?, q.denom().to_i64()?))
 }
