@@ -63,7 +63,7 @@ fi
 
 files=()
 for g in $globs; do files+=(-f "$g"); done
-args=(--in-place --output "$tree/target/mutants-$module" "${files[@]}")
+args=(--in-place --profile mutants --output "$tree/target/mutants-$module" "${files[@]}")
 for t in $tests; do
     if [[ "$t" == lib ]]; then args+=(-C --lib); else args+=(-C "--test=$t"); fi
 done
