@@ -3,6 +3,8 @@
 # mutants/results.tsv. docs/mutants.md explains the table and the sampling.
 #
 #   mutants/run.sh MODULE [DENOM]      # DENOM: test every DENOM-th mutant (default 1 = all)
+#   mutants/run.sh MODULE DENOM again  # re-test only the mutants the last run of MODULE missed
+#                                      # (cargo-mutants --iterate), after new tests were added
 #   mutants/run.sh --list              # the modules, their files and test binaries
 #
 # The campaign runs in a git worktree beside this repository (../<repo>-mutants, detached at
@@ -19,17 +21,18 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 results="$here/mutants/results.tsv"
 
 # name | file globs (space separated) | test binaries (space separated; `lib` = the unit tests)
+#      | test names to skip (optional: the corpus-wide tests, minutes per mutant)
 modules() {
     cat <<'EOF'
 mesh-validate|src/mesh/validate/*.rs|mesh_validate harness_planted fuzz_regressions
 gluing-exact1d|src/gluing/exact1d/*.rs|gluing_paper_examples gluing_planted gluing_crossval harness_planted
 gluing-sampled|src/gluing/sampled/*.rs|gluing_planted gluing_crossval gluing_stereo_ppm harness_planted gluing_generic_scalar
 construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|construction_maps construction_mesh harness_planted construction_explore
-surface|src/surface/fit.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/admissible.rs|surface_spec harness_planted
+surface|src/surface/fit.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/admissible.rs|lib surface_spec harness_planted|corpus
 certify|src/certify/*.rs|certify_provers
 exact|src/exact/*.rs|lib proofs_appendix_a1 proofs_eval_c6_1_4 proofs_combinatorial
 oracle|src/oracle/*.rs|oracle oracle_surface
-report-harness|src/report/harness.rs|harness_planted
+report-harness|src/report/harness.rs|lib harness_planted
 EOF
 }
 
@@ -40,12 +43,13 @@ fi
 
 module="$1"
 denom="${2:-1}"
+again="${3:-}"
 row="$(modules | awk -F'|' -v m="$module" '$1 == m')"
 if [[ -z "$row" ]]; then
     echo "unknown module '$module'; mutants/run.sh --list names them" >&2
     exit 2
 fi
-IFS='|' read -r _ globs tests <<<"$row"
+IFS='|' read -r _ globs tests skips <<<"$row"
 
 command -v cargo-mutants >/dev/null || {
     echo "cargo-mutants is not installed: cargo install cargo-mutants --locked" >&2
@@ -63,11 +67,26 @@ fi
 
 files=()
 for g in $globs; do files+=(-f "$g"); done
-args=(--in-place --profile mutants --output "$tree/target/mutants-$module" "${files[@]}")
+outdir="$tree/target/mutants-$module${again:+-again}"
+args=(--in-place --profile mutants --output "$outdir" "${files[@]}")
 for t in $tests; do
     if [[ "$t" == lib ]]; then args+=(-C --lib); else args+=(-C "--test=$t"); fi
 done
-if [[ "$denom" != 1 ]]; then args+=(--shard "0/$denom" --sharding round-robin); fi
+if [[ "$again" == again ]]; then
+    # Exactly the mutants the last run of the module missed (their names are stable while the
+    # module's files are unchanged, e.g. after adding tests).
+    prev="$tree/target/mutants-$module/mutants.out/missed.txt"
+    [[ -s "$prev" ]] || { echo "no missed mutants recorded for $module" >&2; exit 2; }
+    while IFS= read -r name; do
+        args+=(--re "^$(printf '%s' "$name" | sed 's/[][\.*^$+?(){}|]/\\&/g')\$")
+    done <"$prev"
+elif [[ "$denom" != 1 ]]; then
+    args+=(--shard "0/$denom" --sharding round-robin)
+fi
+if [[ -n "${skips:-}" ]]; then
+    args+=(--cargo-test-arg=--)
+    for s in $skips; do args+=(--cargo-test-arg=--skip "--cargo-test-arg=$s"); done
+fi
 
 generated="$(cd "$tree" && cargo mutants --list "${files[@]}" | wc -l)"
 start="$(date +%s)"
@@ -78,8 +97,8 @@ if [[ $status -ne 0 && $status -ne 2 && $status -ne 3 ]]; then
     echo "cargo-mutants failed (exit $status); no row written" >&2
     exit "$status"
 fi
-out="$tree/target/mutants-$module/mutants.out"
-count() { [[ -f "$out/$1.txt" ]] && grep -c . "$out/$1.txt" || echo 0; }
+out="$outdir/mutants.out"
+count() { if [[ -f "$out/$1.txt" ]]; then grep -c . "$out/$1.txt" || true; else echo 0; fi; }
 caught=$(count caught)
 missed=$(count missed)
 timeout=$(count timeout)
@@ -96,7 +115,7 @@ read -r score lo hi < <(awk -v c="$((caught + timeout))" -v n="$((caught + timeo
 
 [[ -f "$results" ]] || printf 'date\tcommit\tmodule\tdenom\tgenerated\ttested\tcaught\tmissed\ttimeout\tunviable\tscore\tci95_lo\tci95_hi\tseconds\n' >"$results"
 printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' \
-    "$(date -u +%Y-%m-%d)" "${commit:0:10}" "$module" "$denom" "$generated" \
+    "$(date -u +%Y-%m-%d)" "${commit:0:10}" "$module${again:+ (again)}" "$denom" "$generated" \
     "$((caught + missed + timeout + unviable))" "$caught" "$missed" "$timeout" "$unviable" \
     "$score" "$lo" "$hi" "$secs" >>"$results"
 echo "module $module: caught $caught, missed $missed, timeout $timeout, unviable $unviable, score $score [$lo, $hi]"

@@ -329,10 +329,12 @@ mod tests {
     #[test]
     fn errors_are_counted_by_rule() {
         let mut c = Check::sampled("X", "x", 1, 1.0);
+        c.deviation(0.5, w);
         c.error(OnError::Offence, "boom", w);
         let r = c.finish("");
         assert!(r.failed());
         assert_eq!(r.eval_errors, 1);
+        assert_eq!(r.examined, 2, "an offending error is an examined sample");
 
         let mut c = Check::sampled("X", "x", 1, 1.0);
         c.deviation(0.0, w);
@@ -345,6 +347,90 @@ mod tests {
         let mut c = Check::sampled("X", "x", 1, 1.0);
         c.error(OnError::Skip, "outside", w);
         assert!(matches!(c.finish("").verdict, Verdict::Skipped { .. }));
+    }
+
+    /// SPEC X-harness, rule 1 for enclosures (used by the certify provers).
+    #[test]
+    fn x_harness_enclosure_refutes_when_surely_above_or_not_finite() {
+        assert!(!enclosure_exceeds(0.5, 2.0, 1.0), "straddling: not refuted");
+        assert!(!enclosure_exceeds(1.0, 1.0, 1.0), "lo = tol: not refuted");
+        assert!(enclosure_exceeds(1.5, 2.0, 1.0), "lo > tol: refuted");
+        for (lo, hi) in [
+            (f64::NAN, 0.5),
+            (0.5, f64::NAN),
+            (0.5, f64::INFINITY),
+            (f64::NEG_INFINITY, 0.5),
+        ] {
+            assert!(enclosure_exceeds(lo, hi, 1.0), "[{lo}, {hi}] must refute");
+        }
+    }
+
+    /// SPEC X-harness: the worst deviation reported is the largest one examined.
+    #[test]
+    fn x_harness_worst_deviation_is_the_largest() {
+        let mut c = Check::sampled("X", "x", 1, 1.0);
+        for d in [0.25, 0.75, 0.5] {
+            c.deviation(d, w);
+        }
+        assert_eq!(c.finish("").worst_deviation, Some(0.75));
+        assert_eq!(dev_max(0.25, 0.75), 0.75);
+        assert_eq!(dev_max(0.75, 0.25), 0.75);
+    }
+
+    /// SPEC X-harness, rule 3 for exact checks: counted elements make the check examined.
+    #[test]
+    fn x_harness_exact_counts_are_examined() {
+        let mut c = Check::new("X", "x");
+        c.examined(3);
+        c.examined(2);
+        let r = c.finish("");
+        assert_eq!(r.examined, 5);
+        assert_eq!(r.verdict, Verdict::Holds);
+    }
+
+    /// SPEC X-harness: `measure` routes a value to rule 1 and an error to rule 2; `failed`
+    /// tracks the verdict as samples arrive.
+    #[test]
+    fn x_harness_measure_routes_values_and_errors() {
+        let mut c = Check::sampled("X", "x", 1, 1.0);
+        c.measure(Ok::<f64, &str>(0.5), OnError::Offence, w);
+        c.measure(Err("outside"), OnError::Skip, w);
+        assert!(!c.failed());
+        assert_eq!((c.examined, c.eval_errors), (1, 1));
+        c.measure(Ok::<f64, &str>(2.0), OnError::Offence, w);
+        assert!(c.failed());
+        let r = c.finish("");
+        assert_eq!((r.examined, r.offenders, r.eval_errors), (2, 1, 1));
+    }
+
+    /// SPEC X-harness, rule 3: the skip reason says whether samples failed to evaluate.
+    #[test]
+    fn x_harness_skip_reason_names_the_cause() {
+        let reason = |r: CheckResult| match r.verdict {
+            Verdict::Skipped { reason } => reason,
+            v => panic!("expected skipped, got {v:?}"),
+        };
+        let mut c = Check::sampled("X", "x", 1, 1.0);
+        c.error(OnError::Skip, "outside", w);
+        assert!(reason(c.finish("")).contains("every sample failed to evaluate"));
+        let c = Check::sampled("X", "x", 1, 1.0);
+        assert!(reason(c.finish("")).contains("no sample fell in the domain"));
+    }
+
+    /// SPEC X-harness, rule 4 for decided conditions: a failure outside the restricted domain
+    /// fails only the statement as written.
+    #[test]
+    fn x_harness_restricted_pair_of_decided_conditions() {
+        let mut p = Restricted::sampled("X", "x", 1, 1.0);
+        p.holds(false, false, w);
+        p.holds(true, true, w);
+        let v = p.finish(String::new(), "d".into(), true);
+        assert!(v[0].failed());
+        assert_eq!((v[0].examined, v[1].examined), (2, 1));
+        assert_eq!(
+            v[1].verdict,
+            Verdict::HoldsRestricted { domain: "d".into() }
+        );
     }
 
     #[test]
