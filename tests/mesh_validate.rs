@@ -169,14 +169,21 @@ fn d3_1_3_ii_vertex_pushed_through_the_tube_is_caught() {
 fn d3_1_3_ii_shared_face_cases_of_the_exact_test() {
     use pseudomanifold::mesh::validate::intersect::triangles_meet_improperly;
     let pos = vec![
-        [0.0, 0.0, 0.0],   // 0
-        [1.0, 0.0, 0.0],   // 1
-        [0.0, 1.0, 0.0],   // 2
-        [1.0, 1.0, 0.0],   // 3
-        [0.25, 0.25, 0.0], // 4 (inside triangle 0,1,2)
-        [0.0, 0.0, 1.0],   // 5
-        [0.5, 0.5, 0.0],   // 6 (on segment 1-2)
-        [-1.0, -1.0, 0.0], // 7
+        [0.0, 0.0, 0.0],    // 0
+        [1.0, 0.0, 0.0],    // 1
+        [0.0, 1.0, 0.0],    // 2
+        [1.0, 1.0, 0.0],    // 3
+        [0.25, 0.25, 0.0],  // 4 (inside triangle 0,1,2)
+        [0.0, 0.0, 1.0],    // 5
+        [0.5, 0.5, 0.0],    // 6 (on segment 1-2)
+        [-1.0, -1.0, 0.0],  // 7
+        [0.25, 0.25, 0.5],  // 8
+        [0.75, 0.25, 0.5],  // 9
+        [0.25, 0.25, 0.1],  // 10
+        [0.75, -0.25, 0.0], // 11
+        [0.75, 0.75, 0.0],  // 12
+        [-2.0, -1.0, 0.0],  // 13
+        [-1.0, -2.0, 0.0],  // 14
     ];
     // Shared edge [1,2], coplanar, opposite corners on opposite sides: proper.
     assert!(!triangles_meet_improperly(&pos, [0, 1, 2], [1, 3, 2]));
@@ -190,7 +197,13 @@ fn d3_1_3_ii_shared_face_cases_of_the_exact_test() {
     assert!(!triangles_meet_improperly(&pos, [0, 1, 2], [0, 7, 5]));
     // No shared vertex, a vertex in the interior of the other's edge: improper.
     assert!(triangles_meet_improperly(&pos, [0, 1, 2], [6, 3, 5]));
-    // No shared vertex, disjoint.
+    // No shared vertex, disjoint (the second one above the first's plane).
+    assert!(!triangles_meet_improperly(&pos, [0, 1, 2], [10, 8, 9]));
+    // No shared vertex, one vertex touching the first's interior: improper.
+    assert!(triangles_meet_improperly(&pos, [0, 1, 2], [4, 8, 9]));
+    // No shared vertex, coplanar and overlapping: improper; coplanar and apart: proper.
+    assert!(triangles_meet_improperly(&pos, [0, 1, 2], [4, 11, 12]));
+    assert!(!triangles_meet_improperly(&pos, [0, 1, 2], [7, 13, 14]));
 }
 
 #[test]
@@ -423,4 +436,100 @@ fn x_input_sanity_checks_catch_planted_faults() {
     let empty = validate(&RawMesh::from_arrays(vec![], vec![]));
     assert_eq!(check(&empty.report, "X-nonempty").verdict, Verdict::Fails);
     assert!(!empty.report.is_simplicial_surface);
+}
+
+/// The error classes' names are the corpus manifest's spellings (manifest.tsv, `ppm check`'s
+/// text report), the same as their JSON form.
+#[test]
+fn d3_1_6_error_class_names_are_the_manifest_spellings() {
+    use ErrorClass::*;
+    let all = [
+        (Boundary, "boundary"),
+        (NonmanifoldEdge, "nonmanifold_edge"),
+        (NonmanifoldVertex, "nonmanifold_vertex"),
+        (DuplicateFace, "duplicate_face"),
+        (DegenerateFace, "degenerate_face"),
+        (SelfIntersection, "self_intersection"),
+        (CoincidentVertices, "coincident_vertices"),
+        (NonOrientable, "non_orientable"),
+        (IndexOutOfRange, "index_out_of_range"),
+        (NonFinite, "non_finite"),
+    ];
+    for (c, name) in all {
+        assert_eq!(c.name(), name);
+        assert_eq!(serde_json::to_value(c).ok(), Some(serde_json::json!(name)));
+    }
+}
+
+/// The bipyramid over an n-gon with its apexes at `top` and `bottom`: two vertices of degree n.
+fn bipyramid_at(n: u32, top: [f64; 3], bottom: [f64; 3]) -> RawMesh {
+    let mut pos = vec![top, bottom];
+    for i in 0..n {
+        let a = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(n);
+        pos.push([a.cos(), a.sin(), 0.0]);
+    }
+    let mut faces = Vec::new();
+    for i in 0..n {
+        let (a, b) = (2 + i, 2 + (i + 1) % n);
+        faces.push([0, a, b]);
+        faces.push([1, b, a]);
+    }
+    RawMesh::from_arrays(pos, faces)
+}
+
+use pseudomanifold::mesh::validate::intersect::{
+    triangles_meet_improperly, MAX_COUNTED_INTERSECTIONS,
+};
+
+/// Every improperly meeting pair of distinct triangles, by testing all pairs.
+fn improper_pairs_by_brute_force(raw: &RawMesh) -> u64 {
+    let fs = &raw.faces;
+    let mut n = 0;
+    for f in 0..fs.len() {
+        for g in f + 1..fs.len() {
+            let (mut a, mut b) = (fs[f], fs[g]);
+            a.sort_unstable();
+            b.sort_unstable();
+            if a != b && triangles_meet_improperly(&raw.positions, fs[f], fs[g]) {
+                n += 1;
+            }
+        }
+    }
+    n
+}
+
+/// Def. 3.1.3(ii) around vertices of degree ≥ 16 (the star search and the trimmed boxes of
+/// the general search): the validator finds exactly the improper pairs that testing every pair
+/// finds — none on a clean 40-gon bipyramid, the folds of two swapped rim vertices inside both
+/// stars, and the crossings of two stars whose apexes were moved through each other's cone.
+#[test]
+fn d3_1_3_ii_high_degree_stars_find_what_all_pairs_find() {
+    let (t, b) = ([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]);
+    let clean = bipyramid_at(40, t, b);
+    let mut folded = bipyramid_at(40, t, b);
+    folded.positions.swap(7, 8);
+    let crossed = bipyramid_at(40, t, [1.2, 0.1, 0.8]);
+    // The top star flat (coplanar triangles: the exact 2-D predicates decide its pairs).
+    let flat = bipyramid_at(40, [0.0; 3], b);
+    let mut flat_folded = bipyramid_at(40, [0.0; 3], b);
+    flat_folded.positions.swap(7, 8);
+    for (name, raw, expect_some) in [
+        ("clean", clean, false),
+        ("folded", folded, true),
+        ("crossed", crossed, true),
+        ("flat", flat, false),
+        ("flat folded", flat_folded, true),
+    ] {
+        let brute = improper_pairs_by_brute_force(&raw);
+        assert_eq!(
+            brute > 0,
+            expect_some,
+            "{name}: {brute} pairs by brute force"
+        );
+        let v = validate(&raw);
+        let c = check(&v.report, "D3.1.3(ii)(triangles)");
+        let counted = brute.min(MAX_COUNTED_INTERSECTIONS as u64);
+        assert_eq!(c.offenders, counted, "{name}: validator against all pairs");
+        assert_eq!(c.failed(), expect_some, "{name}");
+    }
 }
