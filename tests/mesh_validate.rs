@@ -533,3 +533,29 @@ fn d3_1_3_ii_high_degree_stars_find_what_all_pairs_find() {
         assert_eq!(c.failed(), expect_some, "{name}");
     }
 }
+
+/// Lemma 3.1.1's genus g = (2 − χ)/2 is claimed for closed orientable surfaces only: an open
+/// band (χ = 0, like the torus) has none.
+#[test]
+fn l3_1_1_open_band_has_no_genus() {
+    let n = 4u32;
+    let mut pos = Vec::new();
+    for z in [0.0, 1.0] {
+        for i in 0..n {
+            let a = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(n);
+            pos.push([a.cos(), a.sin(), z]);
+        }
+    }
+    let mut faces = Vec::new();
+    for i in 0..n {
+        let j = (i + 1) % n;
+        faces.push([i, j, n + j]);
+        faces.push([i, n + j, n + i]);
+    }
+    let v = validate(&RawMesh::from_arrays(pos, faces));
+    let c = &v.report.components;
+    assert_eq!(c.len(), 1);
+    assert_eq!(c[0].euler_characteristic, 0);
+    assert_eq!(c[0].genus, None);
+    assert!(v.surface.is_none());
+}
