@@ -513,8 +513,36 @@ fn d3_1_3_ii_high_degree_stars_find_what_all_pairs_find() {
     let flat = bipyramid_at(40, [0.0; 3], b);
     let mut flat_folded = bipyramid_at(40, [0.0; 3], b);
     flat_folded.positions.swap(7, 8);
+    // A small triangle (its own component) piercing one star triangle 0.1 from the apex: the
+    // nearest non-incident box is that triangle's, so the apex's trimming radius is about
+    // 0.045 and the piercing lies outside the trimmed corner (the general search must find it).
+    let mut pierced = bipyramid_at(40, t, b);
+    let (a0, b0) = (pierced.positions[2], pierced.positions[3]);
+    let sub = |x: [f64; 3], y: [f64; 3]| [x[0] - y[0], x[1] - y[1], x[2] - y[2]];
+    let (ea, eb) = (sub(a0, t), sub(b0, t));
+    let n = [
+        ea[1] * eb[2] - ea[2] * eb[1],
+        ea[2] * eb[0] - ea[0] * eb[2],
+        ea[0] * eb[1] - ea[1] * eb[0],
+    ];
+    let nl = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    let m = [
+        (ea[0] + eb[0]) / 2.0,
+        (ea[1] + eb[1]) / 2.0,
+        (ea[2] + eb[2]) / 2.0,
+    ];
+    let ml = (m[0] * m[0] + m[1] * m[1] + m[2] * m[2]).sqrt();
+    let at = |r: f64, h: f64| -> [f64; 3] {
+        std::array::from_fn(|d| t[d] + r * m[d] / ml + h * n[d] / nl)
+    };
+    let base = pierced.positions.len() as u32;
+    pierced
+        .positions
+        .extend([at(0.1, 0.01), at(0.095, -0.01), at(0.105, -0.01)]);
+    pierced.faces.push([base, base + 1, base + 2]);
     for (name, raw, expect_some) in [
         ("clean", clean, false),
+        ("pierced near the apex", pierced, true),
         ("folded", folded, true),
         ("crossed", crossed, true),
         ("flat", flat, false),
