@@ -204,6 +204,25 @@ fn d3_1_3_ii_shared_face_cases_of_the_exact_test() {
     // No shared vertex, coplanar and overlapping: improper; coplanar and apart: proper.
     assert!(triangles_meet_improperly(&pos, [0, 1, 2], [4, 11, 12]));
     assert!(!triangles_meet_improperly(&pos, [0, 1, 2], [7, 13, 14]));
+    // The same configurations scaled by 2^700 (exact): outside the range of the floating
+    // predicates, decided by the exact integer determinants instead, with the same answers.
+    let big: Vec<[f64; 3]> = pos.iter().map(|p| p.map(|x| x * 2f64.powi(700))).collect();
+    for (t1, t2, improper) in [
+        ([0, 1, 2], [1, 3, 2], false),
+        ([0, 1, 2], [1, 4, 2], true),
+        ([0, 1, 2], [0, 4, 6], true),
+        ([0, 1, 2], [0, 7, 5], false),
+        ([0, 1, 2], [4, 11, 12], true),
+        ([0, 1, 2], [7, 13, 14], false),
+        ([0, 1, 2], [4, 8, 9], true),
+        ([0, 1, 2], [10, 8, 9], false),
+    ] {
+        assert_eq!(
+            triangles_meet_improperly(&big, t1, t2),
+            improper,
+            "{t1:?} {t2:?} at 2^700"
+        );
+    }
 }
 
 #[test]
