@@ -606,3 +606,55 @@ fn l3_1_1_open_band_has_no_genus() {
     assert_eq!(c[0].genus, None);
     assert!(v.surface.is_none());
 }
+
+/// Def. 3.1.3(ii) around high-degree vertices, differentially: 120 seeded random bipyramids
+/// (rim of 16–40 vertices with jittered radius, height and angle; in half the cases one rim
+/// vertex is moved 1–2.5 steps around, folding both stars by varying amounts) give the
+/// validator exactly the all-pairs count.
+#[test]
+fn d3_1_3_ii_random_high_degree_stars_agree_with_all_pairs() {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(0x3113);
+    let mut with_pairs = 0;
+    for case in 0..120 {
+        let n: u32 = rng.gen_range(16..=40);
+        let top = [
+            rng.gen_range(-0.2..0.2),
+            rng.gen_range(-0.2..0.2),
+            rng.gen_range(0.3..1.5),
+        ];
+        let bottom = [
+            rng.gen_range(-0.2..0.2),
+            rng.gen_range(-0.2..0.2),
+            rng.gen_range(-1.5..-0.3),
+        ];
+        let mut raw = bipyramid_at(n, top, bottom);
+        let step = 2.0 * std::f64::consts::PI / f64::from(n);
+        // Half the cases move one rim vertex past or onto a neighbour's angle.
+        let odd = rng.gen_bool(0.5).then(|| rng.gen_range(0..n));
+        for i in 0..n {
+            let jitter = if odd == Some(i) {
+                rng.gen_range(1.0..2.5) * if rng.gen_bool(0.5) { 1.0 } else { -1.0 }
+            } else {
+                rng.gen_range(-0.2..0.2)
+            };
+            let a = step * (f64::from(i) + jitter);
+            let r = rng.gen_range(0.8..1.2);
+            raw.positions[2 + i as usize] = [r * a.cos(), r * a.sin(), rng.gen_range(-0.05..0.05)];
+        }
+        let brute = improper_pairs_by_brute_force(&raw);
+        with_pairs += usize::from(brute > 0);
+        let v = validate(&raw);
+        let c = check(&v.report, "D3.1.3(ii)(triangles)");
+        let counted = brute.min(MAX_COUNTED_INTERSECTIONS as u64);
+        assert_eq!(
+            c.offenders, counted,
+            "case {case} (n = {n}): validator against all pairs"
+        );
+    }
+    // The sample must exercise both outcomes to mean anything.
+    assert!(
+        (20..100).contains(&with_pairs),
+        "{with_pairs} of 120 cases have improper pairs"
+    );
+}
