@@ -1,17 +1,36 @@
 #!/usr/bin/env bash
-# Print mutants/results.tsv as the Markdown table of docs/mutants.md (latest row per module).
+# Print mutants/results.tsv as the Markdown table of docs/mutants.md: per module its latest
+# sampled run and, when the missed mutants were re-tested after new tests ("MODULE (again)"
+# rows), the score after them.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-awk -F'\t' 'NR > 1 { last[$3] = $0; if (!($3 in seen)) { seen[$3] = 1; order[++n] = $3 } }
+awk -F'\t' '
+function wilson(c, n, sampled,    p, z, d, m, h) {
+    if (n == 0) return "—"
+    p = c / n; z = 1.96; d = 1 + z*z/n
+    if (!sampled) return sprintf("%.0f %%", 100 * p)
+    m = (p + z*z/(2*n)) / d; h = z * sqrt(p*(1-p)/n + z*z/(4*n*n)) / d
+    return sprintf("%.0f %% [%.0f %%, %.0f %%]", 100 * p, 100 * (m - h < 0 ? 0 : m - h), 100 * (m + h > 1 ? 1 : m + h))
+}
+NR > 1 {
+    m = $3
+    if (m ~ / \(again\)$/) { sub(/ \(again\)$/, "", m); again[m] = $0; next }
+    if (!(m in first)) order[++n] = m
+    first[m] = $0; delete again[m]
+}
 END {
-    print "| Module | Commit | Date | Sample | Generated | Tested | Caught | Missed | Timeout | Unviable | Score (95 % interval) | Time |"
-    print "|---|---|---|---|---:|---:|---:|---:|---:|---:|---|---:|"
+    print "| Module | Commit | Sample | Generated | Tested | Caught | Missed | Timeout | Unviable | Score (95 % interval) | After new tests | Time |"
+    print "|---|---|---|---:|---:|---:|---:|---:|---:|---|---|---:|"
     for (i = 1; i <= n; i++) {
-        split(last[order[i]], f, "\t")
+        m = order[i]; split(first[m], f, "\t")
+        caught = f[7] + f[9]; viable = f[7] + f[8] + f[9]
+        after = "—"
+        if (m in again) {
+            split(again[m], g, "\t")
+            after = wilson(caught + g[7] + g[9], viable, f[4] != 1) " (" g[2] ")"
+        }
         sample = f[4] == 1 ? "all" : "1/" f[4]
-        ci = f[4] == 1 ? "" : sprintf(" [%.0f %%, %.0f %%]", 100 * f[12], 100 * f[13])
-        score = f[11] == "NA" ? "—" : sprintf("%.0f %%%s", 100 * f[11], ci)
-        printf "| `%s` | %s | %s | %s | %d | %d | %d | %d | %d | %d | %s | %d min |\n",
-            f[3], f[2], f[1], sample, f[5], f[6], f[7], f[8], f[9], f[10], score, int((f[14] + 59) / 60)
+        printf "| `%s` | %s | %s | %d | %d | %d | %d | %d | %d | %s | %s | %d min |\n",
+            m, f[2], sample, f[5], f[6], f[7], f[8], f[9], f[10], wilson(caught, viable, f[4] != 1), after, int((f[14] + 59) / 60)
     }
 }' "$here/results.tsv"

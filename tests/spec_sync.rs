@@ -125,3 +125,67 @@ fn spec_sync_detects_a_missing_test() {
         "D3.1.1 must not match D3.1.10"
     );
 }
+
+/// The rows `mutants/run.sh` appended, per module: (tested, caught, missed) of its latest
+/// sampled run (re-test rows, "MODULE (again)", are left out).
+fn mutant_runs(tsv: &str) -> Vec<(String, String, [u64; 3])> {
+    let mut out: Vec<(String, String, [u64; 3])> = Vec::new();
+    for line in tsv.lines().skip(1) {
+        let f: Vec<&str> = line.split('\t').collect();
+        if f.len() < 14 || f[2].ends_with("(again)") {
+            continue;
+        }
+        let n = |i: usize| f[i].parse::<u64>().unwrap_or(u64::MAX);
+        let row = (f[2].to_string(), f[1].to_string(), [n(5), n(6), n(7)]);
+        match out.iter_mut().find(|r| r.0 == row.0) {
+            Some(r) => *r = row,
+            None => out.push(row),
+        }
+    }
+    out
+}
+
+/// SPEC X-mutants: docs/mutants.md shows the latest campaign of every module in
+/// mutants/results.tsv with its numbers, and every module that missed mutants has a section
+/// saying what became of each.
+#[test]
+fn x_mutants_docs_show_every_campaign_and_its_survivors() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let tsv = std::fs::read_to_string(root.join("mutants/results.tsv")).expect("results.tsv");
+    let doc = std::fs::read_to_string(root.join("docs/mutants.md")).expect("docs/mutants.md");
+    let runs = mutant_runs(&tsv);
+    assert!(!runs.is_empty(), "no campaign recorded");
+    for (module, commit, [tested, caught, missed]) in runs {
+        let row = doc
+            .lines()
+            .find(|l| l.starts_with(&format!("| `{module}` | {commit} |")))
+            .unwrap_or_else(|| panic!("docs/mutants.md has no table row for {module} at {commit}"));
+        // | Module | Commit | Sample | Generated | Tested | Caught | Missed | ...
+        let cells: Vec<String> = row.split('|').map(|c| c.trim().to_string()).collect();
+        let expected = [tested, caught, missed].map(|n| n.to_string());
+        assert_eq!(
+            cells.get(5..8),
+            Some(&expected[..]),
+            "{module}: tested/caught/missed in docs/mutants.md"
+        );
+        if missed > 0 {
+            assert!(
+                doc.contains(&format!("### `{module}`")),
+                "{module} missed {missed} mutants and has no section saying what became of them"
+            );
+        }
+    }
+}
+
+/// The X-mutants check itself: the latest run of a module counts, re-test rows do not.
+#[test]
+fn x_mutants_parser_keeps_the_latest_run_and_skips_re_tests() {
+    let h = "date\tcommit\tmodule\tdenom\tgenerated\ttested\tcaught\tmissed\ttimeout\tunviable\tscore\tlo\thi\ts";
+    let tsv = format!(
+        "{h}\nd\tc1\tm\t2\t10\t5\t3\t2\t0\t0\t.6\t.2\t.9\t1\nd\tc2\tm\t2\t10\t5\t4\t1\t0\t0\t.8\t.3\t.9\t1\nd\tc3\tm (again)\t2\t10\t1\t1\t0\t0\t0\t1\t.2\t1\t1\n"
+    );
+    assert_eq!(
+        mutant_runs(&tsv),
+        vec![("m".to_string(), "c2".to_string(), [5, 4, 1])]
+    );
+}
