@@ -313,6 +313,8 @@ fn c4_1_6_gv_smooth_fails_as_written_unless_6_divides_m() {
     for m in [6, 12] {
         let r = check_c4_1_6_gv_smooth::<f64, _>(&Paper, m, SEED, N, 53);
         assert!(holds(&r[0]), "m = {m}: {:?}", r[0].witnesses);
+        // 6 | m: the statement holds as written, so its restricted twin is no restriction.
+        assert_eq!(r[1].verdict, Verdict::Holds, "m = {m}");
     }
 }
 
@@ -326,7 +328,13 @@ fn c4_1_6_gv_smooth_planted_fault_caught() {
 fn c4_1_8_onto_intc_fails_for_small_degree_holds_otherwise() {
     let r = check_c4_1_8_onto_int_c::<f64, _>(&Paper, &e(4, 1, 6, 0), SEED, N, 53);
     assert_fails_with_witness(&r[0]);
-    assert!(matches!(r[1].verdict, Verdict::HoldsRestricted { .. }));
+    // The restriction is the sector |β| < m_u·π/6 = 2π/3 for m_u = 4, and it says so.
+    let sector = format!("{:.6}", 4.0 * std::f64::consts::PI / 6.0);
+    assert!(
+        matches!(&r[1].verdict, Verdict::HoldsRestricted { domain } if domain.contains(&sector)),
+        "{:?}",
+        r[1].verdict
+    );
     let r = check_c4_1_8_onto_int_c::<f64, _>(&Paper, &e(7, 1, 6, 0), SEED, N, 53);
     assert!(holds(&r[0]));
 }
