@@ -567,6 +567,20 @@ fn c5_4_at_most_two_holds_literal_fails_sec613_from_11() {
         let s = StarConfig::uniform(m, 6).unwrap();
         let r = check_star_overlaps::<f64, _>(&Paper, &s, false, SEED, 120, 53);
         assert!(holds(&r[0]) && holds(&r[1]), "m = {m}");
+        // Every sample is examined by both halves: the "at most two" count once per point, the
+        // non-adjacency once per point in fewer than two domains and once per pair otherwise.
+        let samples: u64 = r[0]
+            .note
+            .split_whitespace()
+            .next()
+            .and_then(|n| n.parse().ok())
+            .expect("the note starts with the sample count");
+        assert_eq!(r[0].examined, samples, "m = {m}");
+        assert!(
+            r[1].examined >= samples,
+            "m = {m}: {} < {samples}",
+            r[1].examined
+        );
     }
     let s = StarConfig::uniform(12, 6).unwrap();
     let r = check_star_overlaps::<f64, _>(&Paper, &s, true, SEED, 120, 53);
