@@ -27,23 +27,13 @@ fn any_in(lo: u32, hi: u32) -> Vec<u32> {
 /// The bipyramid over a regular m-gon: two apexes of degree m, m equator vertices of degree 4.
 /// `flips` reverses the listed faces in the input (the validator must re-orient them).
 fn bipyramid(m: u32, flips: u64) -> RawMesh {
-    let mut pos = vec![[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
-    for i in 0..m {
-        let a = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(m);
-        pos.push([a.cos(), a.sin(), 0.0]);
-    }
-    let mut faces = Vec::new();
-    for i in 0..m {
-        let (a, b) = (2 + i, 2 + (i + 1) % m);
-        faces.push([0, a, b]);
-        faces.push([1, b, a]);
-    }
-    for (f, t) in faces.iter_mut().enumerate() {
+    let mut raw = pseudomanifold::mesh::generate::bipyramid(m);
+    for (f, t) in raw.faces.iter_mut().enumerate() {
         if f < 64 && flips >> f & 1 == 1 {
             t.swap(1, 2);
         }
     }
-    RawMesh::from_arrays(pos, faces)
+    raw
 }
 
 /// Harness: for every closed fan size m ∈ 3..=12 (the star of a bipyramid apex) and every

@@ -3,7 +3,7 @@
 //! corrected answer or a typed refusal.
 
 use pseudomanifold::construction::{Mp, Scalar};
-use pseudomanifold::mesh::generate::octahedron;
+use pseudomanifold::mesh::generate::{bipyramid, octahedron};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, SimplicialSurface};
 use pseudomanifold::surface::output::sample_surface;
@@ -622,20 +622,6 @@ fn x_adv_11_oracle_over_long_line() {
         );
     }
     assert_eq!(r[1]["value"], 4);
-}
-
-/// The n-gon bipyramid: two apexes of degree n over a ring of degree-4 vertices.
-fn bipyramid(n: u32) -> pseudomanifold::mesh::RawMesh {
-    let mut pos = vec![[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
-    let mut faces = Vec::new();
-    for i in 0..n {
-        let a = 2.0 * std::f64::consts::PI * i as f64 / n as f64;
-        pos.push([a.cos(), a.sin(), 0.0]);
-        let (r, s) = (2 + i, 2 + (i + 1) % n);
-        faces.push([0, r, s]);
-        faces.push([1, s, r]);
-    }
-    pseudomanifold::mesh::RawMesh::from_arrays(pos, faces)
 }
 
 /// High-degree vertices: the paper profile's l = max(m + 1, 7) makes the fit grow like m⁴ in

@@ -8,7 +8,7 @@ use pseudomanifold::conditions::chapter4::{run_chapter4, Ch4Options, Precision};
 use pseudomanifold::construction::abstract_view::AbstractPpm;
 use pseudomanifold::construction::{GluingError, PpmGluing, Trit, P2};
 use pseudomanifold::gluing::sampled::{check_all, SampleConfig};
-use pseudomanifold::mesh::generate::{icosahedron, octahedron, tetrahedron, torus};
+use pseudomanifold::mesh::generate::{bipyramid, icosahedron, octahedron, tetrahedron, torus};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{RawMesh, SimplicialSurface, VertexId};
@@ -16,22 +16,6 @@ use pseudomanifold::report::Verdict;
 
 fn surface(m: &RawMesh) -> SimplicialSurface {
     validate(m).surface.expect("valid surface")
-}
-
-/// The bipyramid over an n-gon: two apexes of degree n.
-fn bipyramid(n: u32) -> RawMesh {
-    let mut pos = vec![[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
-    for i in 0..n {
-        let a = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(n);
-        pos.push([a.cos(), a.sin(), 0.0]);
-    }
-    let mut faces = Vec::new();
-    for i in 0..n {
-        let (a, b) = (2 + i, 2 + (i + 1) % n);
-        faces.push([0, a, b]);
-        faces.push([1, b, a]);
-    }
-    RawMesh::from_arrays(pos, faces)
 }
 
 #[test]

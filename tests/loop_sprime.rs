@@ -29,21 +29,6 @@ fn load(p: &Path) -> SimplicialSurface {
     surface(&read_mesh(p, &ReadOptions::default()).expect("readable"))
 }
 
-/// Bipyramid: apexes of valence n, equator vertices of valence 4 (adjacent extraordinary
-/// vertices everywhere).
-fn bipyramid(n: u32) -> RawMesh {
-    let mut pos = vec![[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
-    let mut faces = vec![];
-    for i in 0..n {
-        let a = 2.0 * std::f64::consts::PI * i as f64 / n as f64;
-        pos.push([a.cos(), a.sin(), 0.0]);
-        let (p, q) = (2 + i, 2 + (i + 1) % n);
-        faces.push([0, p, q]);
-        faces.push([1, q, p]);
-    }
-    RawMesh::from_arrays(pos, faces)
-}
-
 fn assert_no_failure(rs: &[CheckResult], what: &str) {
     for r in rs {
         assert!(!r.failed(), "{what}: {} failed: {:?}", r.id, r.witnesses);
@@ -59,7 +44,7 @@ fn loop_c0_vertex_loop_limit_mask_loop_normal_mask_loop_c0_edge_loop_c1_edge_loo
         .map(|p| (p.display().to_string(), load(p)))
         .collect();
     meshes.push(("torus 6x5".into(), surface(&generate::torus(6, 5))));
-    meshes.push(("bipyramid 9".into(), surface(&bipyramid(9))));
+    meshes.push(("bipyramid 9".into(), surface(&generate::bipyramid(9))));
     for (name, k) in &meshes {
         let s = LoopSurface::new(k).expect("Loop surface");
         let rs = run_loop_checks(k, &s, &LoopCheckOptions::default());
@@ -70,7 +55,7 @@ fn loop_c0_vertex_loop_limit_mask_loop_normal_mask_loop_c0_edge_loop_c1_edge_loo
 #[test]
 fn loop_adjacent_extraordinary_bipyramids_valence_3_to_64_hold() {
     for n in [3u32, 5, 11, 30, 64] {
-        let k = surface(&bipyramid(n));
+        let k = surface(&generate::bipyramid(n));
         let s = LoopSurface::new(&k).expect("Loop surface");
         assert_eq!(s.stats.split_faces, 2 * n as usize);
         let opts = LoopCheckOptions::default();
@@ -83,7 +68,7 @@ fn loop_adjacent_extraordinary_bipyramids_valence_3_to_64_hold() {
 
 #[test]
 fn loop_valence_above_max_is_a_typed_error() {
-    let k = surface(&bipyramid(MAX_VALENCE + 1));
+    let k = surface(&generate::bipyramid(MAX_VALENCE + 1));
     match LoopSurface::new(&k) {
         Err(LoopError::ValenceTooHigh { valence, .. }) => assert_eq!(valence, MAX_VALENCE + 1),
         other => panic!("expected ValenceTooHigh, got {:?}", other.map(|s| s.stats)),
@@ -96,7 +81,7 @@ fn loop_mp_eval_f64_matches_mp256() {
     for raw in [
         generate::icosahedron(),
         generate::tetrahedron(),
-        bipyramid(7),
+        generate::bipyramid(7),
         generate::torus(6, 5),
     ] {
         let k = surface(&raw);
@@ -530,8 +515,8 @@ fn loop_mp_fast_path_equals_the_generic_evaluation() {
             read_mesh(&tet1, &ReadOptions::default()).expect("mesh"),
         ),
         ("icosahedron", generate::icosahedron()),
-        ("bipyramid 4", bipyramid(4)),
-        ("bipyramid 11", bipyramid(11)),
+        ("bipyramid 4", generate::bipyramid(4)),
+        ("bipyramid 11", generate::bipyramid(11)),
     ];
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(17);
     for (name, raw) in raws {

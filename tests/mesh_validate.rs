@@ -1,6 +1,8 @@
 //! Sec. 3.1 checks on meshes built in code, each with a planted fault that the check must catch.
 
-use pseudomanifold::mesh::generate::{icosahedron, octahedron, tetrahedron, torus};
+use pseudomanifold::mesh::generate::{
+    bipyramid_with_apexes, icosahedron, octahedron, tetrahedron, torus,
+};
 use pseudomanifold::mesh::star::{
     canonical_triangulation, check_star_isomorphism, link, star, TVertex,
 };
@@ -480,22 +482,6 @@ fn d3_1_6_error_class_names_are_the_manifest_spellings() {
     }
 }
 
-/// The bipyramid over an n-gon with its apexes at `top` and `bottom`: two vertices of degree n.
-fn bipyramid_at(n: u32, top: [f64; 3], bottom: [f64; 3]) -> RawMesh {
-    let mut pos = vec![top, bottom];
-    for i in 0..n {
-        let a = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(n);
-        pos.push([a.cos(), a.sin(), 0.0]);
-    }
-    let mut faces = Vec::new();
-    for i in 0..n {
-        let (a, b) = (2 + i, 2 + (i + 1) % n);
-        faces.push([0, a, b]);
-        faces.push([1, b, a]);
-    }
-    RawMesh::from_arrays(pos, faces)
-}
-
 use pseudomanifold::mesh::validate::intersect::{
     triangles_meet_improperly, MAX_COUNTED_INTERSECTIONS,
 };
@@ -524,18 +510,18 @@ fn improper_pairs_by_brute_force(raw: &RawMesh) -> u64 {
 #[test]
 fn d3_1_3_ii_high_degree_stars_find_what_all_pairs_find() {
     let (t, b) = ([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]);
-    let clean = bipyramid_at(40, t, b);
-    let mut folded = bipyramid_at(40, t, b);
+    let clean = bipyramid_with_apexes(40, t, b);
+    let mut folded = bipyramid_with_apexes(40, t, b);
     folded.positions.swap(7, 8);
-    let crossed = bipyramid_at(40, t, [1.2, 0.1, 0.8]);
+    let crossed = bipyramid_with_apexes(40, t, [1.2, 0.1, 0.8]);
     // The top star flat (coplanar triangles: the exact 2-D predicates decide its pairs).
-    let flat = bipyramid_at(40, [0.0; 3], b);
-    let mut flat_folded = bipyramid_at(40, [0.0; 3], b);
+    let flat = bipyramid_with_apexes(40, [0.0; 3], b);
+    let mut flat_folded = bipyramid_with_apexes(40, [0.0; 3], b);
     flat_folded.positions.swap(7, 8);
     // A small triangle (its own component) piercing one star triangle 0.1 from the apex: the
     // nearest non-incident box is that triangle's, so the apex's trimming radius is about
     // 0.045 and the piercing lies outside the trimmed corner (the general search must find it).
-    let mut pierced = bipyramid_at(40, t, b);
+    let mut pierced = bipyramid_with_apexes(40, t, b);
     let (a0, b0) = (pierced.positions[2], pierced.positions[3]);
     let sub = |x: [f64; 3], y: [f64; 3]| [x[0] - y[0], x[1] - y[1], x[2] - y[2]];
     let (ea, eb) = (sub(a0, t), sub(b0, t));
@@ -628,7 +614,7 @@ fn d3_1_3_ii_random_high_degree_stars_agree_with_all_pairs() {
             rng.gen_range(-0.2..0.2),
             rng.gen_range(-1.5..-0.3),
         ];
-        let mut raw = bipyramid_at(n, top, bottom);
+        let mut raw = bipyramid_with_apexes(n, top, bottom);
         let step = 2.0 * std::f64::consts::PI / f64::from(n);
         // Half the cases move one rim vertex past or onto a neighbour's angle.
         let odd = rng.gen_bool(0.5).then(|| rng.gen_range(0..n));

@@ -9,7 +9,7 @@ use pseudomanifold::construction::sigma_v::gluing::g_uw_on_domain;
 use pseudomanifold::construction::sigma_v::wedge::WedgeTable;
 use pseudomanifold::construction::sigma_v::*;
 use pseudomanifold::gluing::sampled::{check_1, check_all, SampleConfig};
-use pseudomanifold::mesh::generate::{icosahedron, octahedron, torus};
+use pseudomanifold::mesh::generate::{self, icosahedron, octahedron, torus};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, RawMesh, SimplicialSurface, VertexId};
@@ -22,18 +22,7 @@ fn surface(raw: &RawMesh) -> SimplicialSurface {
 
 /// Bipyramid over an n-gon: apexes of degree n, equator of degree 4.
 fn bipyramid(n: u32) -> SimplicialSurface {
-    let mut pos = vec![[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]];
-    for i in 0..n {
-        let a = 2.0 * std::f64::consts::PI * i as f64 / n as f64;
-        pos.push([a.cos(), a.sin(), 0.0]);
-    }
-    let mut faces = vec![];
-    for i in 0..n {
-        let (a, b) = (2 + i, 2 + (i + 1) % n);
-        faces.push([0, a, b]);
-        faces.push([1, b, a]);
-    }
-    surface(&RawMesh::from_arrays(pos, faces))
+    surface(&generate::bipyramid(n))
 }
 
 fn build(k: &SimplicialSurface) -> SigmaVPps {

@@ -82,6 +82,27 @@ pub fn icosahedron() -> RawMesh {
     RawMesh::from_arrays(positions, faces)
 }
 
+/// The bipyramid over the regular n-gon on the unit circle in z = 0, apexes (0, 0, ±1): two
+/// vertices of degree n, n equator vertices of degree 4 (a simplicial surface for n ≥ 3).
+pub fn bipyramid(n: u32) -> RawMesh {
+    bipyramid_with_apexes(n, [0.0, 0.0, 1.0], [0.0, 0.0, -1.0])
+}
+
+/// [`bipyramid`] with its apexes (vertices 0 and 1) at `top` and `bottom`; moving them lets
+/// tests fold or cross the two stars.
+pub fn bipyramid_with_apexes(n: u32, top: [f64; 3], bottom: [f64; 3]) -> RawMesh {
+    let mut positions = vec![top, bottom];
+    let mut faces = Vec::new();
+    for i in 0..n {
+        let a = 2.0 * std::f64::consts::PI * f64::from(i) / f64::from(n);
+        positions.push([a.cos(), a.sin(), 0.0]);
+        let (p, q) = (2 + i, 2 + (i + 1) % n);
+        faces.push([0, p, q]);
+        faces.push([1, q, p]);
+    }
+    RawMesh::from_arrays(positions, faces)
+}
+
 /// A torus of revolution sampled on an n × m grid (n, m ≥ 3), every vertex of degree 6.
 pub fn torus(n: u32, m: u32) -> RawMesh {
     let (n, m) = (n.max(3), m.max(3));
