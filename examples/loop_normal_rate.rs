@@ -1,5 +1,5 @@
 //! Diagnostic for `LOOP-normal-mask` (SPEC.md): the angle between the Loop S′ normal at
-//! (1 − 2δ, δ, δ) and the limit normal t₁ × t₂ of the tangent masks, for δ = 2^−4 … 2^−44,
+//! (1 − 2δ, δ, δ) and the limit normal t₁ × t₂ of the tangent masks, for δ = 2^−4, 2^−12, …, 2^−164,
 //! at one vertex. Run: `cargo run --release --example loop_normal_rate MESH VERTEX`.
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
@@ -55,7 +55,7 @@ fn main() {
         };
         let corners = [c[i], c[(i + 1) % 3], c[(i + 2) % 3]];
         let mut line = format!("face {}:", f.0);
-        for kk in (4..=44).step_by(4) {
+        for kk in (4..=168).step_by(8) {
             let d = 2f64.powi(-kk);
             let a = match l.jet::<f64>(f, corners, &[1.0 - 2.0 * d, d, d], true) {
                 Ok(j) => {

@@ -7,7 +7,7 @@
 //! `tests/loop_sprime.rs`).
 
 use super::eigen::EigenStructure;
-use super::stam::{regular_point_f64, stam_tile};
+use super::stam::{depth_cap, regular_point_f64, stam_tile};
 use super::surface::split_sub_face;
 use std::sync::Arc;
 
@@ -151,9 +151,8 @@ impl FastPatch {
                 limit,
             } => (es, table, cin, cout, limit),
         };
-        // Stam's tile, with the generic path's cap 2·53 + 64 beyond which the point is the
-        // vertex limit.
-        let Some((n, k, s, _)) = stam_tile(&x, &y, 2 * 53 + 64, 53) else {
+        // Stam's tile, with the generic path's cap beyond which the point is the vertex limit.
+        let Some((n, k, s, _)) = stam_tile(&x, &y, depth_cap(53), 53) else {
             return *limit;
         };
         let q = match table.apply(k, (n - 1) as usize, cin, cout) {

@@ -136,6 +136,12 @@ pub fn extraordinary_jet<S: Scalar>(
     extraordinary_jet_as(es, basis, net, x, y, derivs, false)
 }
 
+/// Deepest level of Stam's tiling evaluated at `bits` of precision: 2·bits + 64. Below it the
+/// point is the vertex limit to the precision (derivatives `None`).
+pub const fn depth_cap(bits: u32) -> u64 {
+    2 * bits as u64 + 64
+}
+
 /// Stam's tile of the patch point (x, y), x, y ≥ 0: the level n ≥ 1 with x + y ∈
 /// (2^−n, 2^(1−n)], the sub-triangle k ∈ {0, 1, 2} of that level, the point's coordinates in
 /// it and the sign of that map (−1 for the flipped middle triangle k = 1). `None` when
@@ -190,7 +196,7 @@ pub fn extraordinary_jet_as<S: Scalar>(
 ) -> PatchJet<S> {
     let prec = es.prec;
     let c = |p: i64, q: i64| S::from_ratio(p, q, prec);
-    let cap = 2 * x.precision_bits() as u64 + 64;
+    let cap = depth_cap(x.precision_bits());
     let at_vertex = || PatchJet {
         p: vertex_limit(es, net),
         d: None,
