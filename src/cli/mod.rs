@@ -104,9 +104,10 @@ enum Command {
         /// default pn. Not for a TSV table (its S′ is the profile's PN triangles).
         #[arg(long)]
         sprime: Option<String>,
-        /// Reference construction of a JSON-lines table's `eval` lines: vertex (the report's,
-        /// Ch. 4–5) | sigma-v (the tutorial's (σ, v)-indexed PPS, SPEC SV-D13; the table's other
-        /// ops keep the vertex construction). Not for --surface or a TSV table.
+        /// Reference construction of a JSON-lines table's `eval` lines, or of --surface: vertex
+        /// (the report's, Ch. 4–5) | sigma-v (the tutorial's (σ, v)-indexed PPS, SPEC SV-D13;
+        /// a table's other ops keep the vertex construction; with --surface it has no f64 error
+        /// analysis, so give --tolerance). Not for a TSV table.
         #[arg(long, default_value = "vertex")]
         construction: String,
         /// sigma-v: κ of the overlapping point r_{v,σ} (SPEC SV-D3), in (0, 1); default 1/4.
@@ -289,11 +290,11 @@ pub fn main() -> ExitCode {
                 eprintln!("error: --level and --match apply to --surface only, not to a table");
                 ExitCode::from(2)
             }
-            (t, s)
+            (t, None)
                 if (construction != "vertex" || kappa.is_some())
-                    && (s.is_some() || t.as_deref().is_some_and(tsv_diff::is_tsv)) =>
+                    && t.as_deref().is_some_and(tsv_diff::is_tsv) =>
             {
-                eprintln!("error: --construction and --kappa apply to a JSON-lines table only (its eval lines), not to --surface or a TSV table");
+                eprintln!("error: --construction and --kappa apply to a JSON-lines table (its eval lines) or --surface, not to a TSV table");
                 ExitCode::from(2)
             }
             (_, Some(surface)) => oracle::run_diff_surface(
@@ -308,6 +309,8 @@ pub fn main() -> ExitCode {
                     worst,
                     json,
                     sprime: sprime.unwrap_or_else(|| "pn".into()),
+                    construction,
+                    kappa,
                 },
             ),
             (Some(table), None) if tsv_diff::is_tsv(&table) => {

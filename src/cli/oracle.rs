@@ -214,6 +214,10 @@ pub struct SurfaceArgs {
     pub worst: usize,
     /// JSON output.
     pub json: bool,
+    /// Reference construction: `vertex` | `sigma-v`.
+    pub construction: String,
+    /// κ of the (σ, v) construction (`None`: its default).
+    pub kappa: Option<f64>,
     /// S′ of the reference: `pn` | `loop`.
     pub sprime: String,
 }
@@ -235,16 +239,28 @@ pub(crate) fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> 
     if a.tolerance.is_some_and(|t| t.is_nan() || t < 0.0) {
         return fail("--tolerance must be a non-negative number".into());
     }
+    let sigma_v = a.construction != "vertex" || a.kappa.is_some();
+    if sigma_v && (a.profile != "paper" || a.sprime != "pn") {
+        return fail(format!(
+            "--construction {}: its reference has S′ = PN triangles and no Chapter 5 profile; --profile {} / --sprime {} do not apply",
+            a.construction, a.profile, a.sprime
+        ));
+    }
     let mut s = match session(Some(mesh), a.bits, &a.profile, &a.sprime) {
         Ok(s) => s,
         Err(e) => return fail(e),
     };
+    if sigma_v {
+        let req = crate::oracle::Request::SetConstruction {
+            construction: a.construction.clone(),
+            kappa: a.kappa,
+        };
+        if let Err(e) = s.handle(&req) {
+            return fail(format!("--construction {}: {e}", a.construction));
+        }
+    }
     let other = match read_mesh(surface, &ReadOptions::default()) {
         Ok(m) => m,
-        Err(e) => return fail(e.to_string()),
-    };
-    let pps = match s.pps() {
-        Ok(p) => p,
         Err(e) => return fail(e.to_string()),
     };
     let opts = SurfaceDiffOptions {
@@ -255,7 +271,19 @@ pub(crate) fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> 
         bits: a.bits,
         ..SurfaceDiffOptions::default()
     };
-    let r = match diff_surface(pps, &other.positions, Some(&other.faces), &opts) {
+    let r = if sigma_v {
+        match s.sigma_v_pps() {
+            Ok(Some(p)) => diff_surface(p, &other.positions, Some(&other.faces), &opts),
+            Ok(None) => return fail("no (σ, v) surface".into()),
+            Err(e) => return fail(e.to_string()),
+        }
+    } else {
+        match s.pps() {
+            Ok(p) => diff_surface(p, &other.positions, Some(&other.faces), &opts),
+            Err(e) => return fail(e.to_string()),
+        }
+    };
+    let r = match r {
         Ok(r) => r,
         Err(e) => return fail(e.to_string()),
     };

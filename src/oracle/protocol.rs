@@ -409,6 +409,18 @@ impl Session {
         Ok(&self.ch5()?.pps)
     }
 
+    /// The (σ, v)-indexed PPS of the loaded mesh when the session's construction is `sigma-v`
+    /// (`None` for the vertex construction), built on first use.
+    pub fn sigma_v_pps(
+        &mut self,
+    ) -> Result<Option<&crate::construction::sigma_v::SigmaVPps>, OracleError> {
+        let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
+        match &mut self.sigma_v {
+            None => Ok(None),
+            Some(sv) => sv.pps(k).map(Some).map_err(OracleError::Refused),
+        }
+    }
+
     fn ch5(&mut self) -> Result<&mut Ch5, OracleError> {
         if self.ch5.is_none() {
             let k = self.k()?;

@@ -33,15 +33,8 @@ impl SigmaVOracle {
         self.mp = None;
     }
 
-    /// eval in f64 and at `bits`: (f64 point or its error, MPFR point, info).
-    #[allow(clippy::type_complexity)]
-    pub fn eval(
-        &mut self,
-        k: &SimplicialSurface,
-        face: u32,
-        bary: [f64; 3],
-        bits: u32,
-    ) -> Result<(Result<Vec<f64>, String>, Vec<Mp>, Value), String> {
+    /// The surface of `k` (S′ = PN triangles, the default patch degree), built on first use.
+    pub fn pps(&mut self, k: &SimplicialSurface) -> Result<&SigmaVPps, String> {
         if self.pps.is_none() {
             let pn = PnTriangles::new(k);
             let p = SigmaVPps::build(
@@ -53,6 +46,19 @@ impl SigmaVOracle {
             .map_err(|e| e.to_string())?;
             self.pps = Some(p);
         }
+        self.pps.as_ref().ok_or_else(|| "no surface".to_string())
+    }
+
+    /// eval in f64 and at `bits`: (f64 point or its error, MPFR point, info).
+    #[allow(clippy::type_complexity)]
+    pub fn eval(
+        &mut self,
+        k: &SimplicialSurface,
+        face: u32,
+        bary: [f64; 3],
+        bits: u32,
+    ) -> Result<(Result<Vec<f64>, String>, Vec<Mp>, Value), String> {
+        self.pps(k)?;
         let pps = self.pps.as_ref().ok_or("no surface")?;
         if self.mp.as_ref().map_or(true, |c| c.wedges.prec != bits) {
             self.mp = Some(pps.consts::<Mp>(bits));
