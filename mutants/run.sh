@@ -68,6 +68,7 @@ fi
 files=()
 for g in $globs; do files+=(-f "$g"); done
 outdir="$tree/target/mutants-$module${again:+-again}"
+mkdir -p "$tree/target" # a fresh worktree has no target directory yet
 args=(--in-place --profile mutants --output "$outdir" "${files[@]}")
 for t in $tests; do
     if [[ "$t" == lib ]]; then args+=(-C --lib); else args+=(-C "--test=$t"); fi
