@@ -224,6 +224,14 @@ fn ca_2_gh_planted_equation_fault_caught_by_both_readings() {
     assert_caught(&sampled::check_grimm_hughes(&bad, &cfg, false), "equation");
     assert_caught(&sampled::check_grimm_hughes(&bad, &cfg, true), "equation");
     assert!(!decide::check_grimm_hughes(&triangle(false), true).failed());
+    // The deviation is |φ_ki(x) − φ_kj∘φ_ji(x)|: on these data (every map defined on its
+    // whole domain) the same quantity, at the same points, as (3c)'s.
+    let (gh, c3) = (
+        decide::check_grimm_hughes(&bad, false),
+        decide::check_3c(&bad),
+    );
+    assert!(gh.worst_deviation.is_some_and(|d| d > 0.0));
+    assert_eq!(gh.worst_deviation, c3.worst_deviation);
     let line = load("line_counterexample");
     assert!(!sampled::check_grimm_hughes(&line, &cfg, false).failed());
     assert_caught(

@@ -771,3 +771,23 @@ pub fn check_all(g: &Exact1d) -> Vec<CheckResult> {
         check_4(g),
     ]
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gluing::exact1d::data::q;
+
+    /// A witness of two affine maps that differ must show two different values, even when they
+    /// meet at the midpoint of the interval: x ↦ x and x ↦ 2 − x on (0, 2) meet at 1.
+    #[test]
+    fn d3_4_1_3c_witness_point_shows_two_different_values() {
+        let (f, g) = ((q(1, 1), q(0, 1)), (q(-1, 1), q(2, 1)));
+        let x = where_differ(&q(0, 1), &q(2, 1), (&f.0, &f.1), (&g.0, &g.1));
+        assert_eq!(x, q(1, 2));
+        assert_ne!(&f.0 * &x + &f.1, &g.0 * &x + &g.1);
+        // Where they do not meet at the midpoint, the midpoint is the witness.
+        let h = (q(1, 1), q(1, 1));
+        let y = where_differ(&q(0, 1), &q(2, 1), (&f.0, &f.1), (&h.0, &h.1));
+        assert_eq!(y, q(1, 1));
+    }
+}

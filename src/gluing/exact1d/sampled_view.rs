@@ -86,3 +86,32 @@ impl GluingData<1> for Exact1d {
             .max(1.0)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gluing::exact1d::data::q;
+    use rand::SeedableRng;
+
+    /// The sampled checkers see the exact data through this sampler: besides uniform points it
+    /// puts samples s ≡ 1 and s ≡ 3 (mod 4) at 2^−(k+1)·width from the lower and the upper end,
+    /// k = ⌊s/4⌋ mod 30, so faults near a boundary (Def. 3.4.1(2), (4)) are reached.
+    #[test]
+    fn d3_4_1_sampled_view_visits_geometric_distances_from_both_ends() {
+        let set = OpenSet::from_interval(crate::gluing::exact1d::interval::Interval {
+            lo: q(0, 1),
+            hi: q(1, 1),
+        });
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        let xs = sample(&set, &mut rng, 40);
+        assert_eq!(xs.len(), 40);
+        for (s, x) in xs.iter().enumerate() {
+            let d = 2f64.powi(-((s / 4) as i32) - 1);
+            match s % 4 {
+                1 => assert_eq!(x[0], d, "sample {s}"),
+                3 => assert_eq!(x[0], 1.0 - d, "sample {s}"),
+                _ => assert!(x[0] > 0.0 && x[0] < 1.0),
+            }
+        }
+    }
+}
