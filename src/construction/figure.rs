@@ -201,3 +201,31 @@ pub fn render_svg(m_u: u32, m_w: u32) -> Result<String, super::ConfigError> {
     s.push_str("</svg>\n");
     Ok(s)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::construction::maps::in_canonical_lens;
+
+    /// The drawn lens of Figs. 4.1–4.6 is the boundary of the canonical lens E (Sec. 4.1):
+    /// every vertex of the polyline has points of E within 10⁻⁶ and points outside E within
+    /// 10⁻⁶, and the two arcs meet at E's corners (1/2, ±√2/2).
+    #[test]
+    fn d4_1_8_figure_lens_is_the_boundary_of_e() {
+        let pts = lens_boundary(24);
+        let inside = |x: f64, y: f64| in_canonical_lens(&P2::new(x, y)).is_true();
+        for p in &pts {
+            let near: Vec<bool> = (0..16)
+                .map(|k| {
+                    let t = std::f64::consts::TAU * k as f64 / 16.0;
+                    inside(p[0] + 1e-6 * t.cos(), p[1] + 1e-6 * t.sin())
+                })
+                .collect();
+            assert!(near.contains(&true) && near.contains(&false), "{p:?}");
+        }
+        let h = 2f64.sqrt() / 2.0;
+        for (p, q) in [(pts[0], [0.5, -h]), (pts[24], [0.5, h])] {
+            assert!((p[0] - q[0]).abs() < 1e-12 && (p[1] - q[1]).abs() < 1e-12);
+        }
+    }
+}
