@@ -545,9 +545,40 @@ fn d3_1_3_ii_high_degree_stars_find_what_all_pairs_find() {
         .positions
         .extend([at(0.1, 0.01), at(0.095, -0.01), at(0.105, -0.01)]);
     pierced.faces.push([base, base + 1, base + 2]);
+    // The same, stretched 100× along one axis: edge lengths are then dominated by one
+    // coordinate, and the trimmed box must still be cut at r_v/2 along the edge, not farther.
+    let stretched = |axis: usize| {
+        let mut m = pierced.clone();
+        for p in &mut m.positions {
+            p[axis] *= 100.0;
+        }
+        m
+    };
+    let (sx, sy, sz) = (stretched(0), stretched(1), stretched(2));
+    // Two triangles added at the top apex, above its star: one with a corner of 160° at the apex
+    // (its arc of directions bulges along +y beyond both edge directions), one crossing it near
+    // the direction +y. Their arc boxes overlap only through that bulge, so the box of a wide
+    // arc must reach the meeting point of its tangents.
+    let mut obtuse = bipyramid_with_apexes(40, t, b);
+    let (c80, s80) = (80f64.to_radians().cos(), 80f64.to_radians().sin());
+    let n2 = (1.0f64 + 0.05 * 0.05).sqrt();
+    let at2 = |d: [f64; 3]| -> [f64; 3] { std::array::from_fn(|k| t[k] + 0.5 * d[k]) };
+    let base = obtuse.positions.len() as u32;
+    obtuse.positions.extend([
+        at2([s80, c80, 0.0]),
+        at2([-s80, c80, 0.0]),
+        at2([0.0, 1.0 / n2, -0.05 / n2]),
+        at2([0.0, 0.3, 0.954]),
+    ]);
+    obtuse.faces.push([0, base, base + 1]);
+    obtuse.faces.push([0, base + 2, base + 3]);
     for (name, raw, expect_some) in [
         ("clean", clean, false),
         ("pierced near the apex", pierced, true),
+        ("pierced near the apex, stretched along x", sx, true),
+        ("pierced near the apex, stretched along y", sy, true),
+        ("pierced near the apex, stretched along z", sz, true),
+        ("obtuse corner crossed through its bulge", obtuse, true),
         ("folded", folded, true),
         ("crossed", crossed, true),
         ("flat", flat, false),
@@ -643,4 +674,42 @@ fn d3_1_3_ii_random_high_degree_stars_agree_with_all_pairs() {
         (20..100).contains(&with_pairs),
         "{with_pairs} of 120 cases have improper pairs"
     );
+}
+
+/// Def. 3.1.3(ii), the general search's trimmed box of a triangle with two high-degree corners
+/// (both ends of a long edge): it must be cut at r_v/2 along each edge, measured in the edge's
+/// length. T = (P, Q, X) is 100 long and 1 wide; P and Q carry fans of 16 triangles (cones
+/// opening away from T); a small triangle crosses T 0.5 from P, outside P's trimmed corner
+/// (r_P ≈ 0.245). The same scene is laid along x, y and z (one coordinate of T's edges
+/// dominates their length in each).
+#[test]
+fn d3_1_3_ii_trimmed_box_of_a_long_triangle_with_two_high_degree_corners() {
+    for axis in 0..3 {
+        let rot = |p: [f64; 3]| -> [f64; 3] { std::array::from_fn(|k| p[(k + 3 - axis) % 3]) };
+        let mut pos = vec![[0.0, 0.0, 0.0], [100.0, 0.0, 0.0], [100.0, 1.0, 0.0]];
+        let mut faces = vec![[0u32, 1, 2]];
+        for (apex, dx) in [(0u32, -1.0), (1u32, 1.0)] {
+            let c = pos[apex as usize];
+            let first = pos.len() as u32;
+            for i in 0..16 {
+                let a = std::f64::consts::TAU * f64::from(i) / 16.0;
+                pos.push([c[0] + dx, c[1] + a.cos(), c[2] + a.sin()]);
+            }
+            for i in 0..16 {
+                faces.push([apex, first + i, first + (i + 1) % 16]);
+            }
+        }
+        let base = pos.len() as u32;
+        pos.extend([
+            [0.5, 0.0025, 0.01],
+            [0.49, 0.0025, -0.01],
+            [0.51, 0.0025, -0.01],
+        ]);
+        faces.push([base, base + 1, base + 2]);
+        let raw = RawMesh::from_arrays(pos.into_iter().map(rot).collect(), faces);
+        assert_eq!(improper_pairs_by_brute_force(&raw), 1, "axis {axis}");
+        let v = validate(&raw);
+        let c = check(&v.report, "D3.1.3(ii)(triangles)");
+        assert_eq!(c.offenders, 1, "axis {axis}: {:?}", c.witnesses);
+    }
 }
