@@ -675,3 +675,37 @@ fn d5_4_2_derivatives_jets_match_finite_differences() {
         assert!((fd - an).abs() < 1e-6 * (1.0 + an.abs()), "{fd} vs {an}");
     }
 }
+
+/// The progress hook of `ppm check --spec` (Ch. 5): called with (0, T) first and then once per
+/// check family, ending at (T, T), with one total throughout — with and without the Sec. 6.1.4
+/// intersection family and the Loop S′ family.
+#[test]
+fn x_harness_surface_check_progress_counts_every_family() {
+    let k = surface(&octahedron());
+    for (intersections, loop_s) in [(true, false), (false, false), (true, true)] {
+        let calls = std::sync::Mutex::new(Vec::new());
+        let hook = |d: usize, t: usize| calls.lock().expect("lock").push((d, t));
+        let o = SurfaceCheckOptions {
+            intersections,
+            surface: if loop_s {
+                SurfaceKind::Loop
+            } else {
+                SurfaceKind::Pn
+            },
+            ..opts()
+        };
+        let rs = run_surface_checks_with(&k, &o, Some(&hook));
+        assert!(!rs.is_empty());
+        let calls = calls.into_inner().expect("lock");
+        let total = calls[0].1;
+        assert_eq!(
+            total,
+            13 + usize::from(intersections) + usize::from(loop_s),
+            "{calls:?}"
+        );
+        assert_eq!(calls.len(), total + 1, "{calls:?}");
+        for (i, &(d, t)) in calls.iter().enumerate() {
+            assert_eq!((d, t), (i, total));
+        }
+    }
+}

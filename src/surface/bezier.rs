@@ -148,3 +148,30 @@ pub fn eval_patch_f64(cp: &[[f64; 3]], l: usize, half: f64, x: f64, y: f64) -> [
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Def. 5.2.1 in f64, both branches (the tabulated binomials up to l = MAX_FAST_L and the
+    /// computed ones beyond, degrees m ≥ 63): the generic evaluation gives the same values, and
+    /// the l + 1 values sum to 1 (partition of unity).
+    #[test]
+    fn d5_2_1_bernstein_f64_matches_the_generic_values_beyond_the_table() {
+        for l in [3, 7, MAX_FAST_L, MAX_FAST_L + 1, 80] {
+            for t in [-0.9, -0.3, 0.0, 0.45, 0.99] {
+                let half = 1.0;
+                let f = bernstein_vec_f64(l, half, t);
+                let g = bernstein::<f64>(l, &half, &t);
+                let sum: f64 = f.iter().sum();
+                assert!((sum - 1.0).abs() < 1e-12, "l {l}, t {t}: Σ = {sum}");
+                for (i, (a, b)) in f.iter().zip(&g).enumerate() {
+                    assert!(
+                        (a - b).abs() <= 1e-12 * b.abs().max(1e-300),
+                        "l {l}, t {t}, i {i}: {a} vs {b}"
+                    );
+                }
+            }
+        }
+    }
+}
