@@ -86,6 +86,13 @@ impl Check {
         self
     }
 
+    /// The check's sampler, seeded with the seed it reports (0 when none was set), so the
+    /// printed seed reproduces the samples by construction.
+    pub fn sampler(&self) -> rand_chacha::ChaCha8Rng {
+        use rand::SeedableRng;
+        rand_chacha::ChaCha8Rng::seed_from_u64(self.r.seed.unwrap_or(0))
+    }
+
     /// Sets the note (kept by `finish("")`).
     pub fn with_note(mut self, note: impl Into<String>) -> Self {
         self.r.note = note.into();

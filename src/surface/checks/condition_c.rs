@@ -15,7 +15,7 @@ pub fn check_membership_literal(
         "Γ_uv, Ψ_uv domains: p ∈ Ω_vu and φ_uv(p) agree with literal Def. 4.1.9/4.1.10",
     )
     .with_seed(opts.seed ^ 0x51);
-    let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x51);
+    let mut rng = r.sampler();
     let c = pps.consts_f64();
     for v in examined_vertices(pps, opts.max_vertices.map(|n| n.min(200)).or(Some(200))) {
         let m = pps.degree(v);
@@ -178,7 +178,7 @@ pub fn check_smooth_charts(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult
         opts.seed ^ 0x99,
         1.0,
     );
-    let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x99);
+    let mut rng = r.sampler();
     let cj: Consts<Jet<f64>> = pps.consts(53);
     let per = (opts.samples_per_vertex / 4).max(2);
     let vs = examined_vertices(pps, opts.max_vertices.map(|n| n.min(100)).or(Some(100)));

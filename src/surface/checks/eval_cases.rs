@@ -28,7 +28,7 @@ pub fn check_eval_cases(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckResul
         .map(|(i, n)| Check::new(*i, *n).with_seed(opts.seed ^ 0x6141))
         .collect();
     let c = pps.consts_f64();
-    let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x6141);
+    let mut rng = res[0].sampler();
     let nf = pps.num_faces();
     let nfaces = opts.max_vertices.map(|n| n.min(nf)).unwrap_or(nf);
     for fi in 0..nfaces {
@@ -120,7 +120,7 @@ pub fn check_eval_cases(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckResul
 pub fn check_cover(r2: f64, seed: u64, n: usize) -> CheckResult {
     let mut r =
         Check::new("C6.1.4-cover", "t ⊂ int C ∪ int D ∪ int E (Sec. 6.1.4)").with_seed(seed ^ 0xC0);
-    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xC0);
+    let mut rng = r.sampler();
     let s3h = 0.75f64.sqrt();
     let mut worst = 0.0f64;
     let mut pts: Vec<[f64; 3]> = vec![

@@ -35,7 +35,7 @@ pub fn check_weights(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
         opts.seed ^ 0x77,
         tol,
     );
-    let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x77);
+    let mut rng = r.sampler();
     let c = pps.consts_f64();
     for v in examined_vertices(pps, opts.max_vertices) {
         let rad = c.degree(pps.degree(v)).map(|d| d.radius).unwrap_or(0.5);
@@ -74,7 +74,7 @@ pub fn check_j_le_3(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
         opts.seed ^ 0x33,
         3.0,
     );
-    let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x33);
+    let mut rng = r.sampler();
     let c = pps.consts_f64();
     for v in examined_vertices(pps, opts.max_vertices) {
         let m = pps.degree(v);
@@ -174,7 +174,7 @@ pub fn check_support(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
 pub fn check_regular(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
     let mut r = Check::new("C5.4-regular", "θ_v regular (rank-2 Jacobian) [measured]")
         .with_seed(opts.seed ^ 0x1234);
-    let mut rng = ChaCha8Rng::seed_from_u64(opts.seed ^ 0x1234);
+    let mut rng = r.sampler();
     let cj: Consts<Jet<f64>> = pps.consts(53);
     let c = pps.consts_f64();
     // The smallest area element relative to S² (NaN-propagating: a NaN is the worst).
