@@ -25,6 +25,20 @@ fn bipyramid(n: u32) -> SimplicialSurface {
     surface(&generate::bipyramid(n))
 }
 
+/// K as an OFF file, vertices and faces in K's order (the mesh a `ppm` command reads back).
+fn write_off(k: &SimplicialSurface, path: &std::path::Path) {
+    let mut off = format!("OFF\n{} {} 0\n", k.num_vertices(), k.num_faces());
+    for v in k.vertices() {
+        let p = k.position(v);
+        off.push_str(&format!("{:?} {:?} {:?}\n", p[0], p[1], p[2]));
+    }
+    for f in 0..k.num_faces() {
+        let c = k.face(FaceId(f as u32));
+        off.push_str(&format!("3 {} {} {}\n", c[0].0, c[1].0, c[2].0));
+    }
+    std::fs::write(path, off).expect("write the OFF fixture");
+}
+
 fn build(k: &SimplicialSurface) -> SigmaVPps {
     SigmaVPps::build(k, &PnTriangles::new(k), DEFAULT_KAPPA, DEFAULT_PATCH_DEGREE).expect("κ valid")
 }
@@ -495,16 +509,7 @@ fn sv_diff_takes_either_construction_as_reference() {
     let dir = std::env::temp_dir().join(format!("ppm_sv_diff_{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mesh = dir.join("ico.off");
-    let mut off = format!("OFF\n{} {} 0\n", k.num_vertices(), k.num_faces());
-    for v in k.vertices() {
-        let p = k.position(v);
-        off.push_str(&format!("{:?} {:?} {:?}\n", p[0], p[1], p[2]));
-    }
-    for f in 0..k.num_faces() {
-        let c = k.face(FaceId(f as u32));
-        off.push_str(&format!("3 {} {} {}\n", c[0].0, c[1].0, c[2].0));
-    }
-    std::fs::write(&mesh, off).unwrap();
+    write_off(&k, &mesh);
     let good = dir.join("sv.jsonl");
     std::fs::write(&good, &table).unwrap();
     let run = |t: &std::path::Path, extra: &[&str]| {
@@ -600,16 +605,7 @@ fn sv_diff_surface_takes_the_sigma_v_reference() {
     let dir = std::env::temp_dir().join(format!("ppm_sv_diff_surface_{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let mesh = dir.join("ico.off");
-    let mut off = format!("OFF\n{} {} 0\n", k.num_vertices(), k.num_faces());
-    for v in k.vertices() {
-        let p = k.position(v);
-        off.push_str(&format!("{:?} {:?} {:?}\n", p[0], p[1], p[2]));
-    }
-    for f in 0..k.num_faces() {
-        let c = k.face(FaceId(f as u32));
-        off.push_str(&format!("3 {} {} {}\n", c[0].0, c[1].0, c[2].0));
-    }
-    std::fs::write(&mesh, off).unwrap();
+    write_off(&k, &mesh);
     let sampled = dir.join("sv.off");
     pseudomanifold::surface::output::write_mesh_with_attributes(&sampled, &ours).unwrap();
     let run = |extra: &[&str]| {

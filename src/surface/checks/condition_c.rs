@@ -124,7 +124,7 @@ fn check_c_generic<S: SurfaceScalar>(
         ),
     )
     .with_seed(opts.seed);
-    let mut rng = ChaCha8Rng::seed_from_u64(opts.seed);
+    let mut rng = r.sampler();
     let mut worst_rel = 0.0f64;
     for v in vs {
         let tol = tolerance(pps, v, eps);
