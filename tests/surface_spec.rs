@@ -757,3 +757,43 @@ fn x_harness_surface_check_progress_counts_every_family() {
         }
     }
 }
+
+/// `ppm check --spec` (Ch. 5) checks the surface it was asked for: the PPS of the requested
+/// profile (its fit summary is that profile's) and, with the Loop S′, Loop checks drawn from the
+/// requested seed.
+#[test]
+fn x_harness_surface_checks_use_the_requested_profile_and_seed() {
+    let k = surface(&icosahedron());
+    let mut notes = Vec::new();
+    for profile in [Profile::Paper, Profile::AuthorsCode] {
+        let o = SurfaceCheckOptions { profile, ..opts() };
+        let rs = run_surface_checks(&k, &o);
+        let fit = rs.iter().find(|r| r.id == "D5.2.1").expect("D5.2.1");
+        let own = SPrime::for_profile(SurfaceKind::Pn, &k, profile).expect("S′");
+        let pps = Pps::try_build(
+            &k,
+            own.as_target(),
+            PpsOptions {
+                profile,
+                ..PpsOptions::default()
+            },
+        )
+        .expect("PPS");
+        assert_eq!(fit.note, check_fit(&pps).note, "{profile:?}");
+        notes.push(fit.note.clone());
+    }
+    assert_ne!(notes[0], notes[1], "the two profiles fit differently");
+    for seed in [7u64, 8] {
+        let o = SurfaceCheckOptions {
+            seed,
+            surface: SurfaceKind::Loop,
+            ..opts()
+        };
+        let rs = run_surface_checks(&k, &o);
+        let r = rs
+            .iter()
+            .find(|r| r.id == "LOOP-normal-mask")
+            .expect("LOOP-normal-mask");
+        assert_eq!(r.seed, Some(seed ^ 1));
+    }
+}

@@ -734,7 +734,8 @@ fn fit_batch(
     }
 }
 
-/// Fit ψ_v: the control points minimising Σ‖ψ_v(q) − b_σ(r)‖² over the Sec. 5.2 samples.
+/// Fit ψ_v: the control points minimising Σ‖ψ_v(q) − b_σ(r)‖² over the Sec. 5.2 samples, by
+/// sampling S′ (the path of targets without cubic nets, e.g. the Loop S′).
 fn fit_vertex(
     k: &SimplicialSurface,
     target: &dyn TargetSurface,
@@ -755,28 +756,7 @@ fn fit_vertex(
     for o in out.iter_mut() {
         *o = [0.0; 3];
     }
-    // Fast path: cubic nets (PN triangles): X = Σ_i (A⁺W)_i · net_i.
-    let nets: Option<Vec<[[f64; 3]; 10]>> = (0..m)
-        .map(|i| {
-            let (f, c) = sector(i);
-            target.cubic_net(f, c)
-        })
-        .collect();
-    if let Some(nets) = nets {
-        let cols = m as usize * 10;
-        for (c, o) in out.iter_mut().enumerate() {
-            let row = &fit.net_map[c * cols..(c + 1) * cols];
-            let mut acc = [0.0; 3];
-            for (w, p) in row.iter().zip(nets.iter().flat_map(|n| n.iter())) {
-                acc[0] += w * p[0];
-                acc[1] += w * p[1];
-                acc[2] += w * p[2];
-            }
-            *o = acc;
-        }
-        return;
-    }
-    // General path: D = b_σ at the samples, X = A⁺ D.
+    // D = b_σ at the samples, X = A⁺ D (targets with cubic nets go through `fit_batch`).
     let n = fit.samples.len();
     let d: Vec<[f64; 3]> = fit
         .samples
