@@ -206,12 +206,3 @@ pub fn phi_polar(du: &Deg, dw: &Deg, th: I, r: I) -> Option<(I, I)> {
     Some((dw.six_m * beta, s / dw.k))
 }
 
-/// Enclosure of the Euclidean distance between the points with polar coordinates (t1, r1)
-/// and (t2, r2) (angles compared modulo 2π): |Δr| + max(r)·|Δθ|.
-pub fn polar_dist(t1: I, r1: I, t2: I, r2: I) -> f64 {
-    let dt = t1 - t2;
-    let k = (dt.mid() / (2.0 * std::f64::consts::PI)).round();
-    let dt = dt - I::PI * c(2.0 * k);
-    let dr = (r1 - r2).abs();
-    (dr + r1.abs().max(r2.abs()) * dt.abs()).sup()
-}
