@@ -232,3 +232,33 @@ pub(super) fn canon_edge(m_u: u32, m_w: u32) -> EdgeConfig {
         j: 0,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The provers report the size of what they left unresolved, and decide when a box is small
+    /// enough to stop splitting, by `PBox::diam`: it must bound the distance between any two
+    /// points of the polar box in the chart (|Δr| + r_max·|Δθ|), here against its corners and
+    /// its angular midpoints.
+    #[test]
+    fn l4_2_2_cert_box_diameter_bounds_chart_distances() {
+        for (th, r) in [
+            ((0.0, 0.1), (0.5, 1.0)),
+            ((-2.0, 1.0), (0.1, 0.2)),
+            ((1.0, 1.5), (0.3, 0.3)),
+        ] {
+            let b = PBox { th, r };
+            let pts: Vec<(f64, f64)> = [th.0, 0.5 * (th.0 + th.1), th.1]
+                .iter()
+                .flat_map(|&t| [r.0, r.1].map(|rr| (rr * t.cos(), rr * t.sin())))
+                .collect();
+            for p in &pts {
+                for q in &pts {
+                    let d = ((p.0 - q.0).powi(2) + (p.1 - q.1).powi(2)).sqrt();
+                    assert!(d <= b.diam() * (1.0 + 1e-12), "{b:?}: {d} > {}", b.diam());
+                }
+            }
+        }
+    }
+}

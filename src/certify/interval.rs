@@ -205,4 +205,3 @@ pub fn phi_polar(du: &Deg, dw: &Deg, th: I, r: I) -> Option<(I, I)> {
     let s = (cx.sqr() + cy.sqr()).sqrt();
     Some((dw.six_m * beta, s / dw.k))
 }
-

@@ -151,12 +151,7 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
         }
         match exact(th, r) {
             Exact::Empty => return Leaf::Proven(None, None),
-            Exact::Undecided => {
-                if std::env::var("PPM_DBG").is_ok() && b.diam() < 1e-3 {
-                    eprintln!("DBG box {b:?} a={a:?}");
-                }
-                return Leaf::Split;
-            }
+            Exact::Undecided => return Leaf::Split,
             Exact::Equal if b.diam() > s.check_diam => return Leaf::Split,
             Exact::Equal => {}
         }
