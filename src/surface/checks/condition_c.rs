@@ -168,6 +168,13 @@ fn check_c_generic<S: SurfaceScalar>(
     ))
 }
 
+/// Tolerance of the jet coefficient of ∂ˣⁱ∂ʸʲ in C5.4-smooth: tol₀·(4l)^(i+j), l the larger
+/// patch degree. It depends on the order i + j only, not on how the order splits between x
+/// and y (the scaling argument is the same for every direction).
+fn jet_tolerance(tol0: f64, l: f64, i: usize, j: usize) -> f64 {
+    tol0 * (4.0 * l).powi((i + j) as i32)
+}
+
 /// C5.4-smooth: derivatives of order ≤ 3 of θ_v and of θ_u∘φ_uv agree on Ω_vu (two charts).
 /// Each pair (p, u) is one sample; its deviation is the largest coefficient difference relative
 /// to that coefficient's tolerance (so the tolerance is 1).
@@ -229,7 +236,7 @@ pub fn check_smooth_charts(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult
                     .enumerate()
                     .take(JET_LEN)
                 {
-                    let tol = tol0 * (4.0 * l).powi((i + j) as i32);
+                    let tol = jet_tolerance(tol0, l, i, j);
                     let mut d = 0.0f64;
                     for dd in 0..3 {
                         d = dev_max(d, (tv[dd].c[kidx] - tu[dd].c[kidx]).abs());
@@ -248,4 +255,21 @@ pub fn check_smooth_charts(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult
     r.finish(format!(
         "{scope}; deviation reported relative to the per-order tolerance tol(C)·(4l)^k"
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::jet_tolerance;
+
+    /// C5.4-smooth's tolerance per jet coefficient: one value per order, growing by 4l per
+    /// order, whatever the split between x and y.
+    #[test]
+    fn c5_4_smooth_tolerance_depends_on_the_order_only() {
+        let (t, l) = (1e-12, 7.0);
+        for k in 0..=3usize {
+            let v: Vec<f64> = (0..=k).map(|i| jet_tolerance(t, l, i, k - i)).collect();
+            assert!(v.iter().all(|&x| x == v[0]), "order {k}: {v:?}");
+            assert_eq!(v[0], t * (4.0 * l).powi(k as i32));
+        }
+    }
 }
