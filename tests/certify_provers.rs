@@ -86,10 +86,10 @@ fn c4_2_nonadjacent_disjoint_sec6_1_3_cert_refuted_at_12() {
 #[test]
 fn p4_2_1_cert_nonempty_certified() {
     for (a, b) in [(3, 3), (3, 9), (12, 5)] {
-        assert_eq!(
-            prove_nonempty(a, b, &Model::paper()).outcome,
-            Outcome::Certified
-        );
+        let r = prove_nonempty(a, b, &Model::paper());
+        assert_eq!(r.outcome, Outcome::Certified);
+        // One certified point per direction; nothing unresolved, so no δ.
+        assert_eq!((r.boxes, r.unresolved, r.delta), (2, 0, None), "{r:?}");
     }
 }
 
@@ -144,6 +144,14 @@ fn l4_2_3_cert_hausdorff_arc_certified() {
         .expect("hausdorff");
     assert!(ok(h.outcome), "{h:?}");
     assert!(h.bound.expect("bound") < 1e-12);
+    // The whole arc |t| ≤ acos(1/√3) − δ, δ = 1e-9 (reported): all 256 t-boxes in the branch,
+    // none left over, and a positive separation (the arc inside Ω_u's canonical image).
+    assert_eq!(
+        (h.boxes, h.unresolved, h.delta),
+        (256, 0, Some(1e-9)),
+        "{h:?}"
+    );
+    assert!(h.centre_bound.expect("separation") > 0.0, "{h:?}");
 }
 
 #[test]
