@@ -565,7 +565,7 @@ fn c3_6_approx_measured_per_mesh() {
 /// Sec. 5.2: the fit through the precomputed map of PN cubic nets (one matrix per degree) gives
 /// the control points the general least-squares path A⁺·b_σ(samples) gives.
 #[test]
-fn d5_2_fit_net_map_equals_the_general_least_squares_path() {
+fn d5_2_1_fit_net_map_equals_the_general_least_squares_path() {
     /// PN triangles seen only through eval (no cubic net): forces the general path.
     struct EvalOnly(PnTriangles);
     impl TargetSurface for EvalOnly {
