@@ -33,6 +33,21 @@ fn session(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> Resul
     Ok(s)
 }
 
+/// Sets the session's reference construction from `--construction` / `--kappa` (nothing to do
+/// for the default vertex construction): shared by `ppm diff` on a table and on a surface.
+fn set_construction(s: &mut Session, construction: &str, kappa: Option<f64>) -> Result<(), String> {
+    if construction == "vertex" && kappa.is_none() {
+        return Ok(());
+    }
+    let req = crate::oracle::Request::SetConstruction {
+        construction: construction.to_string(),
+        kappa,
+    };
+    s.handle(&req)
+        .map(|_| ())
+        .map_err(|e| format!("--construction {construction}: {e}"))
+}
+
 /// `ppm oracle [--mesh M] [--bits B] [--profile P]`: answer one JSON request per stdin line
 /// with one JSON response per stdout line until end of input. Exit status 0, or 2 when the
 /// initial mesh/precision/profile is rejected or stdin cannot be read.
@@ -137,15 +152,9 @@ pub fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
     };
     // The reference construction is fixed here, on the command line: a table line cannot
     // change it (SPEC R-diff-two-sided).
-    if a.construction != "vertex" || a.kappa.is_some() {
-        let req = crate::oracle::Request::SetConstruction {
-            construction: a.construction.clone(),
-            kappa: a.kappa,
-        };
-        if let Err(e) = s.handle(&req) {
-            eprintln!("error: --construction {}: {e}", a.construction);
-            return ExitCode::from(2);
-        }
+    if let Err(e) = set_construction(&mut s, &a.construction, a.kappa) {
+        eprintln!("error: {e}");
+        return ExitCode::from(2);
     }
     let text = match crate::oracle::read_text_table(table) {
         Ok(t) => t,
@@ -250,14 +259,8 @@ pub(crate) fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> 
         Ok(s) => s,
         Err(e) => return fail(e),
     };
-    if sigma_v {
-        let req = crate::oracle::Request::SetConstruction {
-            construction: a.construction.clone(),
-            kappa: a.kappa,
-        };
-        if let Err(e) = s.handle(&req) {
-            return fail(format!("--construction {}: {e}", a.construction));
-        }
+    if let Err(e) = set_construction(&mut s, &a.construction, a.kappa) {
+        return fail(e);
     }
     let other = match read_mesh(surface, &ReadOptions::default()) {
         Ok(m) => m,

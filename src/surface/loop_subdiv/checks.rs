@@ -238,8 +238,7 @@ pub fn tangent_masks(k: &SimplicialSurface, v: VertexId) -> ([f64; 3], [f64; 3])
 /// multiplies that relative error by 1/sin∠(t₁, t₂). The jets near v are built from the same
 /// differences (the net translated by its limit point) and carry the same relative error.
 /// At hammer's valence-3 vertex 23445 the deepest angle, 3.6e-13, is this noise.
-fn normal_floor(k: &SimplicialSurface, v: VertexId) -> f64 {
-    let (t1, t2) = tangent_masks(k, v);
+fn normal_floor(k: &SimplicialSurface, v: VertexId, (t1, t2): ([f64; 3], [f64; 3])) -> f64 {
     let m = k.degree(v) as f64;
     let a = std::iter::once(v)
         .chain((0..k.degree(v)).filter_map(|i| k.link_vertex(v, i)))
@@ -402,10 +401,11 @@ pub fn check_normals(
         opts.seed ^ 1,
     );
     for v in vs {
-        let (_, nm) = masks(k, v);
+        let t = tangent_masks(k, v);
+        let nm = cross(t.0, t.1);
         let n = k.degree(v);
         let rate = *rates.entry(n).or_insert_with(|| normal_rate(n));
-        let floor = normal_floor(k, v);
+        let floor = normal_floor(k, v, t);
         for (f, c) in fans(k, v) {
             if n == 6 {
                 let (dev, tol) = match src.jet(f, c, [1.0, 0.0, 0.0], true) {
@@ -469,8 +469,9 @@ pub fn check_normals(
             );
         }
     }
-    let first_unresolved = (3..=MAX_VALENCE).find(|&n| {
-        n != 6 && normal_decay(&[kk / 2, kk], &[1.0, 1.0], normal_rate(n), 0.0).is_none()
+    let first_unresolved = (3..=MAX_VALENCE).filter(|&n| n != 6).find(|&n| {
+        let r = *rates.entry(n).or_insert_with(|| normal_rate(n));
+        normal_decay(&[kk / 2, kk], &[1.0, 1.0], r, 0.0).is_none()
     });
     let mut note = format!(
         "valence 6: angle(∂u×∂v, t₁×t₂) ≤ {COND}·ε·|∂|²/|∂u×∂v|; valence ≠ 6: angles at (1−2δ, δ, δ), δ = 2^-k, k = 4, 8, …, {kk} (f64 depth cap {} less 8): angle(2^-{kk}) ≤ a*·(ρ/λ₁)^((\
