@@ -6,7 +6,8 @@
 //! loop_sprime` for the one-shot table (median of `LOOP_RUNS`, default 3): per mesh the
 //! construction time with PN and with Loop, the Loop/PN ratio, and the paper's Table 6.2
 //! figures (its models are not public; the ratio is what compares). Uses the corpus meshes in
-//! `../shared/meshes/good/` when present and always a generated torus and icosahedron.
+//! `../shared/meshes/good/` when present and always a generated torus and icosahedron;
+//! `LOOP_ONLY=koala.obj` keeps one mesh.
 
 use criterion::{Criterion, Throughput};
 use pseudomanifold::mesh::generate::{icosahedron, torus};
@@ -97,17 +98,27 @@ fn quick() {
         "threads: {}; median of {runs} runs",
         rayon::current_num_threads()
     );
-    println!("| mesh | n_v | PN (ms) | Loop (ms) | Loop/PN |");
-    println!("|---|---|---|---|---|");
-    for (name, k) in &meshes() {
+    println!("| mesh | n_v | PN (ms) | Loop (ms) | of which Loop S′ built (ms) | Loop/PN |");
+    println!("|---|---|---|---|---|---|");
+    // LOOP_ONLY=name restricts the table to one mesh (for profiling).
+    let only = std::env::var("LOOP_ONLY").ok();
+    let all = meshes();
+    let chosen: Vec<&(String, SimplicialSurface)> = all
+        .iter()
+        .filter(|(n, _)| only.as_deref().map_or(true, |o| o == n))
+        .collect();
+    for (name, k) in chosen.iter().copied() {
         let pn = time(&|| {
             std::hint::black_box(build_pn(k));
         });
         let lp = time(&|| {
             std::hint::black_box(build_loop(k));
         });
+        let sp = time(&|| {
+            std::hint::black_box(LoopSurface::new(k).expect("Loop S′"));
+        });
         println!(
-            "| {name} | {} | {pn:.1} | {lp:.1} | {:.3} |",
+            "| {name} | {} | {pn:.1} | {lp:.1} | {sp:.1} | {:.3} |",
             k.num_vertices(),
             lp / pn
         );
@@ -116,7 +127,7 @@ fn quick() {
     for (m, nv, pn, lp) in PAPER {
         println!("| {m} | {nv} | {pn} | {lp} | {:.3} |", lp / pn);
     }
-    for (name, k) in &meshes() {
+    for (name, k) in chosen.iter().copied() {
         let s = LoopSurface::new(k).expect("Loop S′");
         let pts = points(k, 1_000_000);
         let t = time(&|| {

@@ -642,3 +642,255 @@ fn loop_mp_fast_path_equals_the_generic_evaluation() {
         }
     }
 }
+
+/// S′ through its trait evaluation only, so `Pps::build` samples it (the path of targets
+/// without a linear form).
+struct SampledOnly<'a>(&'a LoopSurface);
+
+impl pseudomanifold::surface::TargetSurface for SampledOnly<'_> {
+    fn name(&self) -> &str {
+        "loop-limit (sampled)"
+    }
+    fn eval(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> [f64; 3] {
+        pseudomanifold::surface::TargetSurface::eval(self.0, f, corners, bary)
+    }
+}
+
+fn linear_fixtures() -> Vec<(&'static str, SimplicialSurface)> {
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    vec![
+        ("torus 6x5", surface(&generate::torus(6, 5))),
+        ("icosahedron", surface(&generate::icosahedron())),
+        ("bipyramid 4", surface(&generate::bipyramid(4))),
+        ("bipyramid 11", surface(&generate::bipyramid(11))),
+        ("octahedron", load(&data.join("octahedron.obj"))),
+        ("eight (genus 2)", load(&data.join("eight.off"))),
+        (
+            "tetrahedron_loop1",
+            load(&data.join("authors_pps/loop/tetrahedron_loop1.off")),
+        ),
+    ]
+}
+
+/// Seeded barycentric points of a triangle, with its corners and edge midpoints.
+fn bary_points(rng: &mut rand_chacha::ChaCha8Rng, n: usize) -> Vec<[f64; 3]> {
+    let mut pts: Vec<[f64; 3]> = (0..n)
+        .map(|_| {
+            let (a, b): (f64, f64) = (rng.gen(), rng.gen());
+            let (a, b) = if a + b > 1.0 {
+                (1.0 - a, 1.0 - b)
+            } else {
+                (a, b)
+            };
+            [1.0 - a - b, a, b]
+        })
+        .collect();
+    pts.extend([
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [0.5, 0.5, 0.0],
+    ]);
+    pts
+}
+
+/// The largest |Σ wⱼPⱼ − S′| over `pts` on face f seen from `corners`, for the weights of
+/// `stencil` (maybe another face's: the planted fault), and the rounding bound
+/// 64·ε·Σ|wⱼ|·R it is held to (both sums have at most a few dozen terms of size ≤ |wⱼ|·R).
+fn weights_deviation(
+    s: &LoopSurface,
+    f: FaceId,
+    corners: [VertexId; 3],
+    stencil: &pseudomanifold::surface::target::FaceStencil,
+    pts: &[[f64; 3]],
+    r: f64,
+) -> Option<(f64, f64, [f64; 3])> {
+    use pseudomanifold::surface::target::LinearTarget;
+    let w = s.weights(f, corners, stencil, pts)?;
+    let len = stencil.verts.len();
+    // (ratio dev/bound, dev, bound, point): the worst point; NaN ranks worst.
+    let mut worst = (0.0f64, 0.0f64, 0.0f64, [0.0; 3]);
+    for (b, row) in pts.iter().zip(w.chunks(len)) {
+        let mut p = [0.0; 3];
+        for (wj, &v) in row.iter().zip(&stencil.verts) {
+            let q = s.position(v)?;
+            for d in 0..3 {
+                p[d] += wj * q[d];
+            }
+        }
+        let e = pseudomanifold::surface::TargetSurface::eval(s, f, corners, *b);
+        let dev = (0..3).map(|d| (p[d] - e[d]).abs()).fold(0.0, f64::max);
+        let bound = 64.0 * f64::EPSILON * row.iter().map(|x| x.abs()).sum::<f64>() * r;
+        let ratio = if dev.is_nan() {
+            f64::INFINITY
+        } else {
+            dev / bound
+        };
+        if ratio >= worst.0 {
+            worst = (ratio, dev, bound, *b);
+        }
+    }
+    Some((worst.1, worst.2, worst.3))
+}
+
+/// `LOOP-linear-fit`: S′ on a face is Σ wⱼPⱼ over the stencil of `LinearTarget::stencil`, with
+/// weights that depend only on its key — every face and corner order of the fixtures, at
+/// seeded points, within 64·ε·Σ|wⱼ|·R; faces with equal keys give equal weights. Planted: the
+/// weights of a neighbouring face's stencil are caught with a witness.
+#[test]
+fn loop_linear_fit_weights_reproduce_s_prime_and_depend_on_the_key_only() {
+    use pseudomanifold::surface::target::LinearTarget;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(29);
+    use pseudomanifold::surface::loop_subdiv::topology::{ring, walk_ring, BaseTopology, Topology};
+    for (name, k) in linear_fixtures() {
+        // The stencils read rings off `SimplicialSurface::link`, as `ring` does for K: both
+        // equal the ring walked through `third`.
+        let t = BaseTopology(&k);
+        for v in k.vertices() {
+            let link = k.link(v);
+            for (i, &x) in link.iter().enumerate() {
+                assert_eq!(
+                    t.third(v, x),
+                    Some(link[(i + 1) % link.len()]),
+                    "{name}: link of {v:?}"
+                );
+                let walked = walk_ring(&t, v, x, 600).expect("ring");
+                assert_eq!(
+                    ring(&t, v, x, 600).expect("ring"),
+                    walked,
+                    "{name}: ring of {v:?}"
+                );
+            }
+        }
+        let s = LoopSurface::new(&k).expect("Loop surface");
+        let r = radius(&k).max(1.0);
+        let pts = bary_points(&mut rng, 8);
+        let mut by_key: std::collections::HashMap<Vec<u32>, Vec<f64>> = Default::default();
+        let (mut worst, mut count, mut planted) = (0.0f64, 0usize, 0usize);
+        for f in k.faces() {
+            let c = k.face(f);
+            for rot in 0..3 {
+                let corners = [c[rot], c[(rot + 1) % 3], c[(rot + 2) % 3]];
+                let st = s.stencil(&k, f, corners).expect("a stencil");
+                let (dev, bound, at) =
+                    weights_deviation(&s, f, corners, &st, &pts, r).expect("weights");
+                assert!(
+                    dev <= bound, // false for NaN
+                    "{name}: face {f:?} from {corners:?}: |Σ wP − S′| = {dev:e} > {bound:e} at {at:?}"
+                );
+                worst = worst.max(dev / bound);
+                count += pts.len();
+                // Equal keys, equal weights (to rounding: both sides are sums over the same
+                // sub-net structure).
+                let w = s.weights(f, corners, &st, &pts).expect("weights");
+                match by_key.get(&st.key) {
+                    Some(w0) => {
+                        let d = w
+                            .iter()
+                            .zip(w0)
+                            .map(|(a, b)| (a - b).abs())
+                            .fold(0.0, f64::max);
+                        assert!(
+                            d <= 64.0 * f64::EPSILON,
+                            "{name}: face {f:?} key {:?}: weights differ by {d:e}",
+                            st.key
+                        );
+                    }
+                    None => {
+                        by_key.insert(st.key.clone(), w);
+                    }
+                }
+                // Planted fault: the stencil of the face across the edge (v, a), with this
+                // face's corners — the weights describe the wrong patch.
+                let Some(h) = k.halfedge(corners[1], corners[0]) else {
+                    continue;
+                };
+                let g = k.face_of(h);
+                let d = k.dest(k.next(h));
+                let Some(other) = s.stencil(&k, g, [corners[0], d, corners[1]]) else {
+                    continue;
+                };
+                if let Some(wo) = s.weights(g, [corners[0], d, corners[1]], &other, &pts) {
+                    let fake = pseudomanifold::surface::target::FaceStencil {
+                        key: other.key.clone(),
+                        verts: other.verts.clone(),
+                    };
+                    let len = fake.verts.len();
+                    let caught = pts.iter().zip(wo.chunks(len)).any(|(b, row)| {
+                        let mut p = [0.0; 3];
+                        for (wj, &v) in row.iter().zip(&fake.verts) {
+                            let q = k.position(v);
+                            for t in 0..3 {
+                                p[t] += wj * q[t];
+                            }
+                        }
+                        let e = pseudomanifold::surface::TargetSurface::eval(&s, f, corners, *b);
+                        let bound =
+                            64.0 * f64::EPSILON * row.iter().map(|x| x.abs()).sum::<f64>() * r;
+                        // Caught: beyond the bound, or NaN.
+                        (0..3).any(|t| {
+                            matches!(
+                                (p[t] - e[t]).abs().partial_cmp(&bound),
+                                Some(std::cmp::Ordering::Greater) | None
+                            )
+                        })
+                    });
+                    assert!(
+                        caught,
+                        "{name}: the neighbour's weights were not caught on face {f:?}"
+                    );
+                    planted += 1;
+                }
+            }
+        }
+        println!(
+            "{name}: seed 29, {count} points, {} keys, worst |Σ wP − S′| / bound {worst:.1e}, {planted} planted neighbour stencils caught",
+            by_key.len()
+        );
+        assert!(count > 0 && planted > 0, "{name}: nothing examined");
+    }
+}
+
+/// `LOOP-linear-fit`: the PPS built through the tabulated fit (`surface::fit_linear`) has the
+/// control points of the PPS built by sampling S′ (`fit_vertex`), within
+/// 256·ε·‖A⁺‖_∞·Λ·R (Λ = 2, above the largest Σ|wⱼ| the weights test meets).
+#[test]
+fn loop_linear_fit_equals_sampling_s_prime() {
+    use pseudomanifold::surface::fit::factor_degree;
+    use pseudomanifold::surface::{Pps, PpsOptions};
+    for (name, k) in linear_fixtures() {
+        let s = LoopSurface::new(&k).expect("Loop surface");
+        let opts = PpsOptions::default();
+        let a = Pps::build(&k, &s, opts);
+        let b = Pps::build(&k, &SampledOnly(&s), opts);
+        let r = radius(&k).max(1.0);
+        let (mut worst, mut n) = (0.0f64, 0usize);
+        for v in k.vertices() {
+            let fit = factor_degree(k.degree(v), opts.profile);
+            let (n_rows, kk) = (fit.samples.len(), fit.info.unknowns);
+            let pinv_inf = (0..kk)
+                .map(|c| {
+                    fit.pinv[c * n_rows..(c + 1) * n_rows]
+                        .iter()
+                        .map(|x| x.abs())
+                        .sum::<f64>()
+                })
+                .fold(0.0, f64::max);
+            let tol = 256.0 * f64::EPSILON * pinv_inf * 2.0 * r;
+            let (pa, _) = a.patch(v);
+            let (pb, _) = b.patch(v);
+            assert_eq!(pa.len(), pb.len(), "{name}: vertex {v:?}");
+            for (x, y) in pa.iter().zip(pb) {
+                let d = (0..3).map(|t| (x[t] - y[t]).abs()).fold(0.0, f64::max);
+                assert!(
+                    d <= tol,
+                    "{name}: vertex {v:?}: control points differ by {d:e} > {tol:e}"
+                );
+                worst = worst.max(d / tol);
+                n += 1;
+            }
+        }
+        println!("{name}: {n} control points, worst |linear − sampled| / bound {worst:.1e}");
+        assert!(n > 0, "{name}: nothing compared");
+    }
+}

@@ -25,6 +25,8 @@ pub struct SimplicialSurface {
     /// CSR: out[out_start[v] + i] is the outgoing half-edge of v with label i.
     out_start: Vec<u32>,
     out: Vec<HalfedgeId>,
+    /// out_dest[j] = dest(out[j]): the rings, contiguous (what `halfedge` scans).
+    out_dest: Vec<VertexId>,
     /// CSR vertex → incident faces, built from the face list alone (independent of the
     /// half-edges, so checks can compare the two).
     vf_start: Vec<u32>,
@@ -111,6 +113,10 @@ impl SimplicialSurface {
                 return None;
             }
         }
+        let out_dest = out
+            .iter()
+            .map(|h| faces[h.idx() / 3][(h.idx() + 1) % 3])
+            .collect();
         let mut vf_start = vec![0u32; nv + 1];
         for t in &faces {
             for c in t {
@@ -137,6 +143,7 @@ impl SimplicialSurface {
             label,
             out_start,
             out,
+            out_dest,
             referenced: referenced.to_vec(),
             flipped_faces: flip.iter().filter(|&&b| b).count() as u64,
             source: raw.source.clone(),
@@ -215,6 +222,15 @@ impl SimplicialSurface {
             _ => &[],
         }
     }
+    /// The link vertices of v in label order: `link(v)[i]` = dest(`outgoing(v)[i]`), and
+    /// each is the third corner of the face of the previous one's half-edge (the ring of v
+    /// in the orientation of K).
+    pub fn link(&self, v: VertexId) -> &[VertexId] {
+        match (self.out_start.get(v.idx()), self.out_start.get(v.idx() + 1)) {
+            (Some(&a), Some(&b)) => &self.out_dest[a as usize..b as usize],
+            _ => &[],
+        }
+    }
     /// The vertex half-edge h starts at.
     pub fn origin(&self, h: HalfedgeId) -> VertexId {
         self.faces[h.idx() / 3][h.idx() % 3]
@@ -245,10 +261,13 @@ impl SimplicialSurface {
     }
     /// The half-edge u → w, if [u, w] is an edge of K.
     pub fn halfedge(&self, u: VertexId, w: VertexId) -> Option<HalfedgeId> {
-        self.outgoing(u)
-            .iter()
-            .copied()
-            .find(|&h| self.dest(h) == w)
+        let (&a, &b) = (
+            self.out_start.get(u.idx())?,
+            self.out_start.get(u.idx() + 1)?,
+        );
+        let (a, b) = (a as usize, b as usize);
+        let j = self.out_dest.get(a..b)?.iter().position(|&x| x == w)?;
+        self.out.get(a + j).copied()
     }
     /// Def. 4.1.4: s_v(x) for x ∈ lk(v, K), as the index i of v′_i.
     pub fn s(&self, v: VertexId, x: VertexId) -> Option<u32> {

@@ -22,6 +22,7 @@ pub mod error;
 pub mod eval;
 pub mod eval_bound;
 pub mod fit;
+mod fit_linear;
 pub mod geometry;
 pub mod jet;
 pub mod loop_subdiv;

@@ -64,6 +64,45 @@ pub trait TargetSurface: Sync {
     fn cubic_net(&self, _f: FaceId, _corners: [VertexId; 3]) -> Option<[[f64; 3]; 10]> {
         None
     }
+    /// When b_σ is linear in the vertex positions of K with weights fixed by the local
+    /// combinatorics (the Loop limit surface): the fit then applies one precomputed matrix
+    /// per (degree, sector, [`FaceStencil::key`]) instead of sampling [`Self::eval`].
+    fn linear(&self) -> Option<&dyn LinearTarget> {
+        None
+    }
+}
+
+/// The vertices of K that b_σ on one face depends on, seen from an ordered corner list, with
+/// a key: two faces seen from corner lists with equal keys have equal weights at equal
+/// barycentric coordinates ([`LinearTarget::weights`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FaceStencil {
+    /// The local combinatorics (what the weights depend on).
+    pub key: Vec<u32>,
+    /// The vertices, in the order of the weights.
+    pub verts: Vec<VertexId>,
+}
+
+/// A target surface that is a fixed linear combination of vertex positions on each face.
+pub trait LinearTarget: Sync {
+    /// The stencil of f seen from `corners`; `None` when the face has no such form.
+    fn stencil(
+        &self,
+        k: &SimplicialSurface,
+        f: FaceId,
+        corners: [VertexId; 3],
+    ) -> Option<FaceStencil>;
+    /// Row-major |barys| × |verts|: the weights of the stencil's vertices at each point
+    /// (barycentric w.r.t. `corners`); `None` when a point cannot be expressed.
+    fn weights(
+        &self,
+        f: FaceId,
+        corners: [VertexId; 3],
+        stencil: &FaceStencil,
+        barys: &[[f64; 3]],
+    ) -> Option<Vec<f64>>;
+    /// The position of a vertex of K.
+    fn position(&self, v: VertexId) -> Option<[f64; 3]>;
 }
 
 /// PN triangles (Vlachos et al. 2001) from vertex normals.

@@ -66,6 +66,23 @@ impl SubNetTable {
         SubNetTable { k, entries }
     }
 
+    /// φᵀ · B_k Aᵐ (1 × K): the weights over the eigen-coordinates of the regular-patch
+    /// combination φ of the sub-net's 12 points, if m is tabulated.
+    pub(super) fn combine_rows(&self, sub: usize, m: usize, phi: &[f64; 12]) -> Option<Vec<f64>> {
+        if m >= TABULATED_LEVELS {
+            return None;
+        }
+        let base = (m * 3 + sub) * 12 * self.k;
+        let rows = self.entries.get(base..base + 12 * self.k)?;
+        let mut w = vec![0.0; self.k];
+        for (row, f) in phi.iter().enumerate() {
+            for (wc, t) in w.iter_mut().zip(&rows[row * self.k..(row + 1) * self.k]) {
+                *wc += f * t;
+            }
+        }
+        Some(w)
+    }
+
     /// B_k Aᵐ applied to the eigen-coordinates (cin, cout), if m is tabulated.
     fn apply(
         &self,

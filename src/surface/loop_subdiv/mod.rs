@@ -3,6 +3,7 @@
 
 pub mod eigen;
 mod fast;
+mod linear;
 pub mod patch;
 pub mod regular;
 pub mod rules;

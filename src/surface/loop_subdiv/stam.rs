@@ -239,13 +239,8 @@ pub fn extraordinary_jet_as<S: Scalar>(
     jet
 }
 
-/// [`regular_jet`] for f64 positions, without allocation (the hot path of the fit).
-pub fn regular_point_f64(
-    basis: &[[f64; 15]; 12],
-    net: &[[f64; 3]; 12],
-    x: f64,
-    y: f64,
-) -> [f64; 3] {
+/// The weights of the 12 net points at (x, y) of a regular patch (the box-spline basis).
+pub fn regular_weights_f64(basis: &[[f64; 15]; 12], x: f64, y: f64) -> [f64; 12] {
     let (x2, y2) = (x * x, y * y);
     let (x3, y3) = (x2 * x, y2 * y);
     let m = [
@@ -265,15 +260,28 @@ pub fn regular_point_f64(
         x * y3,
         y2 * y2,
     ];
-    let mut p = [0.0; 3];
-    for (bk, q) in basis.iter().zip(net) {
+    std::array::from_fn(|k| {
         let mut phi = 0.0;
-        for (c, v) in bk.iter().zip(&m) {
+        for (c, v) in basis[k].iter().zip(&m) {
             phi += c * v;
         }
-        p[0] += phi * q[0];
-        p[1] += phi * q[1];
-        p[2] += phi * q[2];
+        phi
+    })
+}
+
+/// [`regular_jet`] for f64 positions, without allocation (the hot path of the fit).
+pub fn regular_point_f64(
+    basis: &[[f64; 15]; 12],
+    net: &[[f64; 3]; 12],
+    x: f64,
+    y: f64,
+) -> [f64; 3] {
+    let phi = regular_weights_f64(basis, x, y);
+    let mut p = [0.0; 3];
+    for (f, q) in phi.iter().zip(net) {
+        p[0] += f * q[0];
+        p[1] += f * q[1];
+        p[2] += f * q[2];
     }
     p
 }

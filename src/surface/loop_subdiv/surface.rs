@@ -12,11 +12,15 @@
 
 use super::eigen::EigenStructure;
 use super::fast::{FastPatch, FastPlan, SubNetTable};
+use super::linear::LinearValence;
 use super::rules::vertex_weights;
 use super::stam::{basis_in, extraordinary_jet_as, regular_jet, PatchJet};
-use super::topology::{gather_net, ring, BaseTopology, MissingTriangle, SubPoint, SubTopology};
+use super::topology::{
+    gather_net, ring, BaseTopology, MissingTriangle, SubPoint, SubTopology, Topology,
+};
 use crate::construction::Scalar;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use rayon::prelude::*;
 use std::any::Any;
 use std::collections::{BTreeMap, HashMap};
 use std::sync::{Arc, Mutex};
@@ -56,6 +60,16 @@ pub enum LoopError {
         /// The corners given.
         corners: [u32; 3],
     },
+    /// A vertex or edge point of one Loop step could not be gathered (K is not a closed
+    /// simplicial surface).
+    #[error("Loop point table: {0}")]
+    PointTable(MissingTriangle),
+    /// The point table of one Loop step would have more than 2³² entries.
+    #[error("K is too large for the Loop point table ({points} entries > 2^32)")]
+    TooLarge {
+        /// Entries needed.
+        points: usize,
+    },
     /// No such face.
     #[error("no face {0}")]
     NoSuchFace(u32),
@@ -70,13 +84,13 @@ pub enum LoopError {
 /// A patch: its net (indices into the point table), first point = the patch corner at
 /// (x, y) = (0, 0), and its valence (6 = regular).
 #[derive(Debug, Clone)]
-struct Patch {
-    valence: u32,
-    net: Box<[u32]>,
+pub(super) struct Patch {
+    pub(super) valence: u32,
+    pub(super) net: Box<[u32]>,
 }
 
 #[derive(Debug, Clone)]
-enum Plan {
+pub(super) enum Plan {
     /// One patch; `rot` = which stored corner is the patch's first corner.
     Direct { rot: u8, patch: Patch },
     /// Four sub-patches after one internal step: corner c₀, c₁, c₂, middle.
@@ -98,9 +112,12 @@ pub struct LoopStats {
 
 /// How a point of the table is computed.
 #[derive(Debug, Clone)]
-enum Stencil {
+pub(super) enum Stencil {
     /// A vertex of K.
     Base,
+    /// An entry of the point table no face uses (the vertex point of an empty vertex slot,
+    /// the edge point of a halfedge a → b with a > b).
+    Unused,
     /// Vertex point: centre and ring.
     Vertex(VertexId, Box<[VertexId]>),
     /// Edge point: [a, b] and the opposite vertices c, d.
@@ -110,17 +127,24 @@ enum Stencil {
 /// The Loop limit surface of K (Loop 1987), evaluated exactly (Stam 1998).
 pub struct LoopSurface {
     faces: Vec<[VertexId; 3]>,
-    base: Vec<[f64; 3]>,
-    stencils: Vec<Stencil>,
-    pos: Vec<[f64; 3]>,
-    plans: Vec<Plan>,
+    pub(super) base: Vec<[f64; 3]>,
+    /// K (a copy: the face plans and the point table are built from it on first use).
+    pub(super) topo: Arc<SimplicialSurface>,
+    /// Every face's plan and the point table, built on first use (in parallel); the fit's
+    /// linear path (`linear`) plans only the faces it needs.
+    built: std::sync::OnceLock<Result<Built, LoopError>>,
     /// f64 eigen-structures and basis, built with the surface (read without locking).
     pre: HashMap<CacheKey, Arc<dyn Any + Send + Sync>>,
     cache: Mutex<HashMap<CacheKey, Arc<dyn Any + Send + Sync>>>,
-    basis_f64: [[f64; 15]; 12],
+    pub(super) basis_f64: [[f64; 15]; 12],
     /// The authors' corner rule ([`LoopSurface::with_authors_corner_clamp`]): per face, the
     /// stored corner at the origin of their patch; `None` for the exact limit surface.
-    authors_origin: Option<Vec<u8>>,
+    pub(super) authors_origin: Option<Vec<u8>>,
+    /// Per valence ≠ 6: the f64 eigen-structure and Stam's tabulated sub-nets, built on first
+    /// use (shared by `fast` and `linear`).
+    tables: std::sync::OnceLock<Option<ValenceTables>>,
+    /// Per valence ≠ 6: the weight form of the tables (`linear`), built on first use.
+    linear: std::sync::OnceLock<Option<HashMap<u32, LinearValence>>>,
     /// The f64 hot path, built on first use (`super::fast`); `None` inside if it could not
     /// be built (the generic path then answers).
     fast: std::sync::OnceLock<Option<Vec<FastPlan>>>,
@@ -144,51 +168,74 @@ impl std::fmt::Debug for LoopSurface {
 
 type CacheKey = (std::any::TypeId, u32, u32);
 
+/// The plans of all faces and the point table of one Loop step.
+struct Built {
+    plans: Vec<Plan>,
+    stencils: Vec<Stencil>,
+    pos: Vec<[f64; 3]>,
+}
+
+type ValenceTables = HashMap<u32, (Arc<EigenStructure<f64>>, Arc<SubNetTable>)>;
+
 /// Map from the caller's (u, v) = (bary₁, bary₂) to the patch (x, y): x = a₀ + a₁u + a₂v,
 /// y = b₀ + b₁u + b₂v (integer coefficients).
 type Affine = [[i64; 3]; 2];
 
-struct Builder<'a> {
-    k: &'a SimplicialSurface,
-    stencils: Vec<Stencil>,
-    pos: Vec<[f64; 3]>,
-    index: HashMap<SubPoint, u32>,
+/// The point table of K after one Loop step, indexed by a function of K alone (so faces are
+/// planned in parallel): the vertices of K, then the vertex point of each vertex slot, then
+/// the edge point of each halfedge a → b with a < b (the other halfedges' entries are unused).
+pub(super) struct PointTable<'a> {
+    pub(super) k: &'a SimplicialSurface,
+    pub(super) slots: usize,
 }
 
-impl Builder<'_> {
-    fn sub_index(&mut self, p: SubPoint) -> Result<u32, MissingTriangle> {
-        if let Some(&i) = self.index.get(&p) {
-            return Ok(i);
-        }
-        let k = self.k;
-        let t = BaseTopology(k);
-        let st = match p {
-            SubPoint::Vertex(v) => {
-                let start = k.link_vertex(v, 0).ok_or(MissingTriangle {
-                    a: format!("{v:?}"),
-                    b: "no link".into(),
-                })?;
-                let r = ring(&t, v, start, k.num_faces() + 3)?;
-                Stencil::Vertex(v, r.into_boxed_slice())
-            }
+impl PointTable<'_> {
+    fn len(&self) -> usize {
+        2 * self.slots + self.k.num_halfedges()
+    }
+
+    pub(super) fn sub_index(&self, p: SubPoint) -> Result<u32, MissingTriangle> {
+        let i = match p {
+            SubPoint::Vertex(v) => self.slots + v.idx(),
             SubPoint::Edge(a, b) => {
-                let miss = || MissingTriangle {
+                let h = self.k.halfedge(a, b).ok_or_else(|| MissingTriangle {
                     a: format!("{a:?}"),
                     b: format!("{b:?}"),
-                };
-                let c = crate::surface::loop_subdiv::topology::Topology::third(&t, a, b)
-                    .ok_or_else(miss)?;
-                let d = crate::surface::loop_subdiv::topology::Topology::third(&t, b, a)
-                    .ok_or_else(miss)?;
-                Stencil::Edge([a, b, c, d])
+                })?;
+                2 * self.slots + h.idx()
             }
         };
-        let base = |v: VertexId| k.position(v);
-        self.pos.push(stencil_point::<f64>(&st, &base, 53));
-        self.stencils.push(st);
-        let i = (self.pos.len() - 1) as u32;
-        self.index.insert(p, i);
-        Ok(i)
+        // `new` checked that the table's length fits in u32.
+        Ok(i as u32)
+    }
+
+    /// The stencil of entry i (`None` for an unused entry).
+    pub(super) fn stencil(&self, i: usize) -> Result<Option<Stencil>, MissingTriangle> {
+        let (k, slots) = (self.k, self.slots);
+        let t = BaseTopology(k);
+        if i < slots {
+            return Ok(Some(Stencil::Base));
+        }
+        if i < 2 * slots {
+            let v = VertexId((i - slots) as u32);
+            let Some(start) = k.link_vertex(v, 0) else {
+                return Ok(None);
+            };
+            let r = ring(&t, v, start, k.num_faces() + 3)?;
+            return Ok(Some(Stencil::Vertex(v, r.into_boxed_slice())));
+        }
+        let h = crate::mesh::HalfedgeId((i - 2 * slots) as u32);
+        let (a, b) = (k.origin(h), k.dest(h));
+        if a >= b {
+            return Ok(None);
+        }
+        let miss = || MissingTriangle {
+            a: format!("{a:?}"),
+            b: format!("{b:?}"),
+        };
+        let c = t.third(a, b).ok_or_else(miss)?;
+        let d = t.third(b, a).ok_or_else(miss)?;
+        Ok(Some(Stencil::Edge([a, b, c, d])))
     }
 }
 
@@ -207,7 +254,7 @@ fn stencil_point<S: Scalar>(
         }
     };
     match st {
-        Stencil::Base => {}
+        Stencil::Base | Stencil::Unused => {}
         Stencil::Vertex(v, r) => {
             let (wc, wr) = vertex_weights::<S>(r.len() as u32, prec);
             add(&wc, bp(*v));
@@ -224,6 +271,84 @@ fn stencil_point<S: Scalar>(
         }
     }
     acc
+}
+
+/// The plan of face f of K: one patch (at most one corner of valence ≠ 6) or four
+/// sub-patches after one Loop step, their nets as indices into the [`PointTable`].
+pub(super) fn plan_of(k: &SimplicialSurface, f: FaceId) -> Result<Plan, LoopError> {
+    let table = PointTable {
+        k,
+        slots: k.vertex_slots(),
+    };
+    let cap = MAX_VALENCE as usize + 1;
+    let c = k.face(f);
+    let irregular: Vec<usize> = (0..3).filter(|&i| k.degree(c[i]) != 6).collect();
+    let err = |source| LoopError::Net { face: f.0, source };
+    if irregular.len() <= 1 {
+        let rot = irregular.first().copied().unwrap_or(0);
+        let (v, a, bb) = (c[rot], c[(rot + 1) % 3], c[(rot + 2) % 3]);
+        let net = gather_net(&BaseTopology(k), v, a, bb, cap).map_err(err)?;
+        return Ok(Plan::Direct {
+            rot: rot as u8,
+            patch: Patch {
+                valence: k.degree(v),
+                net: net.iter().map(|p| p.0).collect(),
+            },
+        });
+    }
+    let sub_t = SubTopology(BaseTopology(k));
+    let e = |i: usize, j: usize| SubPoint::edge(c[i], c[j]);
+    let vp = |i: usize| SubPoint::Vertex(c[i]);
+    let tris = [
+        (vp(0), e(0, 1), e(0, 2), k.degree(c[0])),
+        (vp(1), e(1, 2), e(0, 1), k.degree(c[1])),
+        (vp(2), e(0, 2), e(1, 2), k.degree(c[2])),
+        (e(0, 1), e(1, 2), e(0, 2), 6),
+    ];
+    let mut patches = Vec::with_capacity(4);
+    for (v, a, bb, valence) in tris {
+        let net = gather_net(&sub_t, v, a, bb, cap).map_err(err)?;
+        let idx = net
+            .into_iter()
+            .map(|p| table.sub_index(p))
+            .collect::<Result<Box<[u32]>, _>>()
+            .map_err(err)?;
+        patches.push(Patch { valence, net: idx });
+    }
+    let arr: [Patch; 4] = patches.try_into().map_err(|_| LoopError::Eigen(0))?;
+    Ok(Plan::Split(Box::new(arr)))
+}
+
+/// Every face's plan and the point table with f64 positions (in parallel).
+fn build_all(k: &SimplicialSurface) -> Result<Built, LoopError> {
+    let face_ids: Vec<FaceId> = k.faces().collect();
+    let plans: Vec<Plan> = face_ids
+        .par_iter()
+        .map(|&f| plan_of(k, f))
+        .collect::<Result<_, _>>()?;
+    let table = PointTable {
+        k,
+        slots: k.vertex_slots(),
+    };
+    let entries: Vec<(Stencil, [f64; 3])> = (0..table.len())
+        .into_par_iter()
+        .map(|i| -> Result<(Stencil, [f64; 3]), LoopError> {
+            Ok(match table.stencil(i).map_err(LoopError::PointTable)? {
+                Some(Stencil::Base) => (Stencil::Base, k.position(VertexId(i as u32))),
+                Some(st) => {
+                    let p = stencil_point::<f64>(&st, &|v: VertexId| k.position(v), 53);
+                    (st, p)
+                }
+                None => (Stencil::Unused, [f64::NAN; 3]),
+            })
+        })
+        .collect::<Result<_, _>>()?;
+    let (stencils, pos) = entries.into_iter().unzip();
+    Ok(Built {
+        plans,
+        stencils,
+        pos,
+    })
 }
 
 impl LoopSurface {
@@ -244,62 +369,18 @@ impl LoopSurface {
             }
         }
         let slots = k.vertex_slots();
-        let mut b = Builder {
-            k,
-            stencils: vec![Stencil::Base; slots],
-            pos: (0..slots).map(|i| k.position(VertexId(i as u32))).collect(),
-            index: HashMap::new(),
-        };
-        let cap = MAX_VALENCE as usize + 1;
-        let base_t = BaseTopology(k);
-        let sub_t = SubTopology(BaseTopology(k));
-        let mut plans = Vec::with_capacity(k.num_faces());
-        let mut faces = Vec::with_capacity(k.num_faces());
-        for f in k.faces() {
-            let c = k.face(f);
-            faces.push(c);
-            let irregular: Vec<usize> = (0..3).filter(|&i| k.degree(c[i]) != 6).collect();
-            let err = |source| LoopError::Net { face: f.0, source };
-            let plan = if irregular.len() <= 1 {
-                let rot = irregular.first().copied().unwrap_or(0);
-                let (v, a, bb) = (c[rot], c[(rot + 1) % 3], c[(rot + 2) % 3]);
-                let net = gather_net(&base_t, v, a, bb, cap).map_err(err)?;
-                if irregular.is_empty() {
-                    stats.regular_faces += 1;
-                } else {
-                    stats.extraordinary_faces += 1;
-                }
-                Plan::Direct {
-                    rot: rot as u8,
-                    patch: Patch {
-                        valence: k.degree(v),
-                        net: net.iter().map(|p| p.0).collect(),
-                    },
-                }
-            } else {
-                stats.split_faces += 1;
-                let e = |i: usize, j: usize| SubPoint::edge(c[i], c[j]);
-                let vp = |i: usize| SubPoint::Vertex(c[i]);
-                let tris = [
-                    (vp(0), e(0, 1), e(0, 2), k.degree(c[0])),
-                    (vp(1), e(1, 2), e(0, 1), k.degree(c[1])),
-                    (vp(2), e(0, 2), e(1, 2), k.degree(c[2])),
-                    (e(0, 1), e(1, 2), e(0, 2), 6),
-                ];
-                let mut patches = Vec::with_capacity(4);
-                for (v, a, bb, valence) in tris {
-                    let net = gather_net(&sub_t, v, a, bb, cap).map_err(err)?;
-                    let idx = net
-                        .into_iter()
-                        .map(|p| b.sub_index(p))
-                        .collect::<Result<Box<[u32]>, _>>()
-                        .map_err(err)?;
-                    patches.push(Patch { valence, net: idx });
-                }
-                let arr: [Patch; 4] = patches.try_into().map_err(|_| LoopError::Eigen(0))?;
-                Plan::Split(Box::new(arr))
-            };
-            plans.push(plan);
+        if u32::try_from(2 * slots + k.num_halfedges()).is_err() {
+            return Err(LoopError::TooLarge {
+                points: 2 * slots + k.num_halfedges(),
+            });
+        }
+        let faces: Vec<[VertexId; 3]> = k.faces().map(|f| k.face(f)).collect();
+        for c in &faces {
+            match c.iter().filter(|&&v| k.degree(v) != 6).count() {
+                0 => stats.regular_faces += 1,
+                1 => stats.extraordinary_faces += 1,
+                _ => stats.split_faces += 1,
+            }
         }
         let mut pre: HashMap<CacheKey, Arc<dyn Any + Send + Sync>> = HashMap::new();
         for &n in stats.valences.keys() {
@@ -319,13 +400,14 @@ impl LoopSurface {
         Ok(LoopSurface {
             faces,
             base: (0..slots).map(|i| k.position(VertexId(i as u32))).collect(),
-            stencils: b.stencils,
-            pos: b.pos,
-            plans,
+            topo: Arc::new(k.clone()),
+            built: std::sync::OnceLock::new(),
             pre,
             basis_f64,
             cache: Mutex::new(HashMap::new()),
             authors_origin: None,
+            tables: std::sync::OnceLock::new(),
+            linear: std::sync::OnceLock::new(),
             fast: std::sync::OnceLock::new(),
             stats,
         })
@@ -405,13 +487,37 @@ impl LoopSurface {
         Some(v)
     }
 
-    fn point<S: Scalar>(&self, i: u32, prec: u32) -> [S; 3] {
+    /// Every face's plan and the point table (built on first use).
+    fn built(&self) -> Result<&Built, LoopError> {
+        self.built
+            .get_or_init(|| build_all(&self.topo))
+            .as_ref()
+            .map_err(Clone::clone)
+    }
+
+    fn point<S: Scalar>(&self, built: &Built, i: u32, prec: u32) -> [S; 3] {
         let i = i as usize;
+        let nan = || std::array::from_fn(|_| S::from_f64(f64::NAN, prec));
         if S::from_i64(0, prec).precision_bits() <= 53 {
-            return self.pos[i].map(|x| S::from_f64(x, prec));
+            return built
+                .pos
+                .get(i)
+                .map_or_else(nan, |p| p.map(|x| S::from_f64(x, prec)));
         }
-        match &self.stencils[i] {
-            Stencil::Base => self.base[i].map(|x| S::from_f64(x, prec)),
+        let Some(st) = built.stencils.get(i) else {
+            return nan();
+        };
+        match st {
+            Stencil::Base => self
+                .base
+                .get(i)
+                .map_or([f64::NAN; 3], |p| *p)
+                .map(|x| S::from_f64(x, prec)),
+            Stencil::Unused => [
+                S::from_f64(f64::NAN, prec),
+                S::from_f64(f64::NAN, prec),
+                S::from_f64(f64::NAN, prec),
+            ],
             st => stencil_point::<S>(st, &|v: VertexId| self.base[v.idx()], prec),
         }
     }
@@ -460,8 +566,10 @@ impl LoopSurface {
         let caller: [[i64; 3]; 3] = [[1, -1, -1], [0, 1, 0], [0, 0, 1]];
         let sb: [S; 3] = std::array::from_fn(|i| bary[perm[i]].clone());
         let sa: [[i64; 3]; 3] = std::array::from_fn(|i| caller[perm[i]]);
-        let split = matches!(self.plans[f.idx()], Plan::Split(_));
-        let (patch, lb, la, rot) = match &self.plans[f.idx()] {
+        let built = self.built()?;
+        let plan = built.plans.get(f.idx()).ok_or(LoopError::NoSuchFace(f.0))?;
+        let split = matches!(plan, Plan::Split(_));
+        let (patch, lb, la, rot) = match plan {
             Plan::Direct { rot, patch } => (patch, sb, sa, *rot as usize),
             Plan::Split(ps) => {
                 let lin = |coef: [(i64, usize); 2], k: i64| -> ([i64; 3], S) {
@@ -500,7 +608,7 @@ impl LoopSurface {
         let net: Vec<[S; 3]> = patch
             .net
             .iter()
-            .map(|&i| self.point::<S>(i, prec))
+            .map(|&i| self.point::<S>(built, i, prec))
             .collect();
         let basis = self
             .cached(0, prec, || basis_in::<S>(prec))
@@ -573,24 +681,53 @@ impl LoopSurface {
         Ok(self.jet::<f64>(f, corners, &bary, false)?.p)
     }
 
+    /// Per valence ≠ 6: the f64 eigen-structure and Stam's tabulated sub-nets.
+    fn valence_tables(&self) -> Option<&ValenceTables> {
+        self.tables
+            .get_or_init(|| {
+                let authors = self.authors_origin.is_some();
+                let mut tables = HashMap::new();
+                for &n in self.stats.valences.keys() {
+                    let key = (std::any::TypeId::of::<EigenStructure<f64>>(), n, 53);
+                    let es = self
+                        .pre
+                        .get(&key)?
+                        .clone()
+                        .downcast::<EigenStructure<f64>>()
+                        .ok()?;
+                    let table = Arc::new(SubNetTable::new(&es, authors));
+                    tables.insert(n, (es, table));
+                }
+                Some(tables)
+            })
+            .as_ref()
+    }
+
+    /// The weight form of [`Self::valence_tables`] (`linear`).
+    pub(super) fn linear_tables(&self) -> Option<&HashMap<u32, LinearValence>> {
+        self.linear
+            .get_or_init(|| {
+                Some(
+                    self.valence_tables()?
+                        .iter()
+                        .map(|(&n, (es, t))| (n, LinearValence::new(es, t.clone())))
+                        .collect(),
+                )
+            })
+            .as_ref()
+    }
+
     /// Every face's nets gathered and projected once, in f64 (in parallel).
     fn build_fast(&self) -> Option<Vec<FastPlan>> {
         use rayon::prelude::*;
-        let authors = self.authors_origin.is_some();
-        let mut tables = HashMap::new();
-        for &n in self.stats.valences.keys() {
-            let key = (std::any::TypeId::of::<EigenStructure<f64>>(), n, 53);
-            let es = self
-                .pre
-                .get(&key)?
-                .clone()
-                .downcast::<EigenStructure<f64>>()
-                .ok()?;
-            let table = Arc::new(SubNetTable::new(&es, authors));
-            tables.insert(n, (es, table));
-        }
+        let tables = self.valence_tables()?;
+        let built = self.built().ok()?;
         let patch = |p: &Patch| -> Option<FastPatch> {
-            let net: Vec<[f64; 3]> = p.net.iter().map(|&i| self.pos[i as usize]).collect();
+            let net: Vec<[f64; 3]> = p
+                .net
+                .iter()
+                .map(|&i| built.pos.get(i as usize).copied())
+                .collect::<Option<_>>()?;
             let es = if p.valence == 6 {
                 None
             } else {
@@ -598,7 +735,8 @@ impl LoopSurface {
             };
             FastPatch::new(net, es)
         };
-        self.plans
+        built
+            .plans
             .par_iter()
             .map(|plan| match plan {
                 Plan::Direct { rot, patch: p } => Some(FastPlan::Direct {
@@ -651,6 +789,9 @@ impl crate::surface::TargetSurface for LoopSurface {
     fn eval(&self, f: FaceId, corners: [VertexId; 3], bary: [f64; 3]) -> [f64; 3] {
         self.eval_f64(f, corners, self.profile_bary(f, corners, bary))
             .unwrap_or([f64::NAN; 3])
+    }
+    fn linear(&self) -> Option<&dyn crate::surface::target::LinearTarget> {
+        self.authors_origin.is_none().then_some(self as _)
     }
 }
 

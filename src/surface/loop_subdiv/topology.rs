@@ -14,6 +14,18 @@ pub trait Topology {
     type P: Copy + Eq + std::fmt::Debug;
     /// The vertex c with (a, b, c) a triangle in the mesh's orientation, if [a, b] is an edge.
     fn third(&self, a: Self::P, b: Self::P) -> Option<Self::P>;
+    /// [`ring`]; a mesh that stores its rings may answer faster (same answer).
+    fn ring_of(
+        &self,
+        v: Self::P,
+        start: Self::P,
+        cap: usize,
+    ) -> Result<Vec<Self::P>, MissingTriangle>
+    where
+        Self: Sized,
+    {
+        walk_ring(self, v, start, cap)
+    }
 }
 
 /// A connectivity defect found while gathering a net (cannot happen on a closed simplicial
@@ -37,6 +49,16 @@ fn third_or<T: Topology>(t: &T, a: T::P, b: T::P) -> Result<T::P, MissingTriangl
 /// The ring of v counter-clockwise from `start`: r₀ = start, r_{i+1} = third(v, rᵢ); at most
 /// `cap` vertices.
 pub fn ring<T: Topology>(
+    t: &T,
+    v: T::P,
+    start: T::P,
+    cap: usize,
+) -> Result<Vec<T::P>, MissingTriangle> {
+    t.ring_of(v, start, cap)
+}
+
+/// [`ring`] by walking [`Topology::third`].
+pub fn walk_ring<T: Topology>(
     t: &T,
     v: T::P,
     start: T::P,
@@ -103,6 +125,38 @@ impl Topology for BaseTopology<'_> {
     fn third(&self, a: VertexId, b: VertexId) -> Option<VertexId> {
         let k = self.0;
         k.halfedge(a, b).map(|h| k.dest(k.next(h)))
+    }
+    /// K stores each vertex's outgoing half-edges around its link: the ring is that list,
+    /// rotated to `start` and read in the direction `third` walks (checked on the first step
+    /// and the last; anything else walks).
+    fn ring_of(
+        &self,
+        v: VertexId,
+        start: VertexId,
+        cap: usize,
+    ) -> Result<Vec<VertexId>, MissingTriangle> {
+        let k = self.0;
+        let out = k.outgoing(v);
+        let m = out.len();
+        let at = out.iter().position(|&h| k.dest(h) == start);
+        if let (Some(j), true) = (at, m >= 3 && m <= cap) {
+            let next = k.dest(k.next(out[j]));
+            let step = if k.dest(out[(j + 1) % m]) == next {
+                Some(1)
+            } else if k.dest(out[(j + m - 1) % m]) == next {
+                Some(m - 1)
+            } else {
+                None
+            };
+            if let Some(step) = step {
+                let r: Vec<VertexId> = (0..m).map(|t| k.dest(out[(j + t * step) % m])).collect();
+                let last = r[m - 1];
+                if self.third(v, last) == Some(start) {
+                    return Ok(r);
+                }
+            }
+        }
+        walk_ring(self, v, start, cap)
     }
 }
 

@@ -1,0 +1,214 @@
+//! S′ on one face as fixed weights over vertices of K (the fit of Sec. 5.2, tabulated).
+//!
+//! The Loop limit point at a parameter point is a linear combination of vertex positions of K
+//! whose weights depend only on the combinatorics around the face: the valences and how the
+//! rings of its corners meet. The fit samples S′ at the same barycentric points for every
+//! vertex of one degree, so instead of evaluating S′ ~150 times per vertex it can apply one
+//! precomputed matrix per (degree, sector, local combinatorics) to the positions
+//! (`surface::pps`, the linear path). This module gives that combinatorial key and the
+//! weights; the weights come from the same tables as the f64 hot path (`super::fast`) and are
+//! checked against point evaluation (`loop_linear_weights_reproduce_the_limit_points` in
+//! `tests/loop_sprime.rs`).
+
+use super::fast::SubNetTable;
+use super::stam::{depth_cap, regular_weights_f64, stam_tile};
+use super::surface::{plan_of, split_sub_face, LoopSurface, Patch, Plan, PointTable, Stencil};
+use super::topology::{BaseTopology, Topology};
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::surface::target::{FaceStencil, LinearTarget};
+use std::sync::Arc;
+
+/// Per valence N ≠ 6: Stam's tabulated sub-nets and the eigen-projection as a K × K matrix
+/// (row-major; coordinates (C_in, C_out) = P · net), K = N + 6.
+pub(super) struct LinearValence {
+    table: Arc<SubNetTable>,
+    proj: Vec<f64>,
+    k: usize,
+}
+
+impl LinearValence {
+    pub(super) fn new(
+        es: &super::eigen::EigenStructure<f64>,
+        table: Arc<SubNetTable>,
+    ) -> LinearValence {
+        let k = es.n + 6;
+        let mut proj = vec![0.0; k * k];
+        // The projection is linear: column j is the projection of the j-th unit net.
+        for j in 0..k {
+            let mut net = vec![[0.0; 3]; k];
+            net[j][0] = 1.0;
+            let (cin, cout) = es.project(&net);
+            for (i, c) in cin.iter().chain(cout.iter()).enumerate() {
+                proj[i * k + j] = c[0];
+            }
+        }
+        LinearValence { table, proj, k }
+    }
+
+    /// Weights over the patch net of the point (x, y); `None` past the tabulated levels.
+    fn weights(&self, basis: &[[f64; 15]; 12], x: f64, y: f64) -> Option<Vec<f64>> {
+        let coords = match stam_tile(&x, &y, depth_cap(53), 53) {
+            // The vertex limit: coordinate 0 of C_in.
+            None => {
+                let mut c = vec![0.0; self.k];
+                c[0] = 1.0;
+                c
+            }
+            Some((n, sub, s, _)) => {
+                let phi = regular_weights_f64(basis, s.0, s.1);
+                self.table.combine_rows(sub, (n - 1) as usize, &phi)?
+            }
+        };
+        let mut w = vec![0.0; self.k];
+        for (ci, c) in coords.iter().enumerate() {
+            if *c == 0.0 {
+                continue;
+            }
+            let row = &self.proj[ci * self.k..(ci + 1) * self.k];
+            for (wj, pj) in w.iter_mut().zip(row) {
+                *wj += c * pj;
+            }
+        }
+        Some(w)
+    }
+}
+
+/// A point of the point table as weights over vertices of K: (vertex, weight).
+fn expansion(table: &PointTable, i: u32) -> Option<Vec<(VertexId, f64)>> {
+    Some(match table.stencil(i as usize).ok()?? {
+        Stencil::Base => vec![(VertexId(i), 1.0)],
+        Stencil::Vertex(c, r) => {
+            let (wc, wr) = super::rules::vertex_weights::<f64>(r.len() as u32, 53);
+            let mut e = vec![(c, wc)];
+            e.extend(r.iter().map(|&x| (x, wr)));
+            e
+        }
+        Stencil::Edge([a, b, c, d]) => vec![(a, 0.375), (b, 0.375), (c, 0.125), (d, 0.125)],
+        Stencil::Unused => return None,
+    })
+}
+
+impl LoopSurface {
+    /// Weights over the patch net at patch coordinates (x, y).
+    fn patch_weights(&self, patch: &Patch, x: f64, y: f64) -> Option<Vec<f64>> {
+        if patch.valence == 6 {
+            return Some(regular_weights_f64(&self.basis_f64, x, y).to_vec());
+        }
+        let lin = self.linear_tables()?.get(&patch.valence)?;
+        lin.weights(&self.basis_f64, x, y)
+    }
+}
+
+impl LinearTarget for LoopSurface {
+    /// The union of the closed rings of the corners, each ring counter-clockwise from the
+    /// next corner (in the orientation of K), numbered by first appearance from v, a, b; the
+    /// key is that numbering (ring lengths and which entries coincide) and the orientation of
+    /// (v, a, b). Every point of every sub-net of f (one Loop step) is a combination of these
+    /// vertices, so equal keys give equal weights.
+    fn stencil(
+        &self,
+        k: &SimplicialSurface,
+        _f: FaceId,
+        corners: [VertexId; 3],
+    ) -> Option<FaceStencil> {
+        if self.authors_origin.is_some() {
+            return None;
+        }
+        let [v, a, b] = corners;
+        let ccw = BaseTopology(k).third(v, a) == Some(b);
+        let order = if ccw { [v, a, b] } else { [v, b, a] };
+        let mut verts: Vec<VertexId> = Vec::with_capacity(24);
+        verts.extend([v, a, b]);
+        let mut key: Vec<u32> = Vec::with_capacity(32);
+        key.push(ccw as u32);
+        for j in 0..3 {
+            // The ring of order[j] from order[j + 1] (`SimplicialSurface::link` runs in the
+            // orientation of K, as `topology::ring` does).
+            let link = k.link(order[j]);
+            let start = link.iter().position(|&x| x == order[(j + 1) % 3])?;
+            key.push(link.len() as u32);
+            for t in 0..link.len() {
+                let x = link[(start + t) % link.len()];
+                let at = match verts.iter().position(|&y| y == x) {
+                    Some(p) => p,
+                    None => {
+                        verts.push(x);
+                        verts.len() - 1
+                    }
+                };
+                key.push(at as u32);
+            }
+        }
+        Some(FaceStencil { key, verts })
+    }
+
+    fn weights(
+        &self,
+        f: FaceId,
+        corners: [VertexId; 3],
+        stencil: &FaceStencil,
+        barys: &[[f64; 3]],
+    ) -> Option<Vec<f64>> {
+        let stored = self.corners(f)?;
+        let perm: [usize; 3] =
+            std::array::from_fn(|i| corners.iter().position(|&c| c == stored[i]).unwrap_or(3));
+        if perm.contains(&3) || perm[0] == perm[1] || perm[1] == perm[2] || perm[0] == perm[2] {
+            return None;
+        }
+        let k: &SimplicialSurface = &self.topo;
+        let plan = plan_of(k, f).ok()?;
+        let table = PointTable {
+            k,
+            slots: k.vertex_slots(),
+        };
+        let local = |v: VertexId| stencil.verts.iter().position(|&u| u == v);
+        // Each patch's net points as weights over the stencil.
+        let patches: Vec<&Patch> = match &plan {
+            Plan::Direct { patch, .. } => vec![patch],
+            Plan::Split(ps) => ps.iter().collect(),
+        };
+        let mut nets: Vec<Vec<Vec<(usize, f64)>>> = Vec::with_capacity(patches.len());
+        for p in &patches {
+            let mut net = Vec::with_capacity(p.net.len());
+            for &i in p.net.iter() {
+                let e = expansion(&table, i)?;
+                net.push(
+                    e.into_iter()
+                        .map(|(v, w)| Some((local(v)?, w)))
+                        .collect::<Option<Vec<_>>>()?,
+                );
+            }
+            nets.push(net);
+        }
+        let len = stencil.verts.len();
+        let mut out = vec![0.0; barys.len() * len];
+        for (bary, row) in barys.iter().zip(out.chunks_mut(len)) {
+            let sb = [bary[perm[0]], bary[perm[1]], bary[perm[2]]];
+            let (j, x, y) = match &plan {
+                Plan::Direct { rot, .. } => {
+                    let r = *rot as usize;
+                    (0, sb[(r + 1) % 3], sb[(r + 2) % 3])
+                }
+                Plan::Split(_) => {
+                    let j = split_sub_face(&sb, 53);
+                    let b = match j {
+                        3 => [1.0 - 2.0 * sb[0], 1.0 - 2.0 * sb[1]],
+                        c => [2.0 * sb[(c + 1) % 3], 2.0 * sb[(c + 2) % 3]],
+                    };
+                    (j, b[0], b[1])
+                }
+            };
+            let w = self.patch_weights(patches.get(j)?, x, y)?;
+            for (wi, e) in w.iter().zip(nets.get(j)?) {
+                for &(l, c) in e {
+                    row[l] += wi * c;
+                }
+            }
+        }
+        out.iter().all(|x| x.is_finite()).then_some(out)
+    }
+
+    fn position(&self, v: VertexId) -> Option<[f64; 3]> {
+        self.base.get(v.idx()).copied()
+    }
+}
