@@ -656,3 +656,31 @@ fn ms_t3_open_mesh_refused_with_typed_error_and_m_minus_stars_is_affine() {
         assert!(holds(r) && r.examined > 0, "{r:?}");
     }
 }
+
+#[test]
+fn ms_5_5_planted_collinear_knots_are_reported() {
+    let k = torus(24, 16);
+    let (at, mut sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    let r = pseudomanifold::msplines::mesh_spline_checks::check_knots_generic(&k, &sp);
+    assert!(matches!(r.verdict, Verdict::Holds), "{r:?}");
+    // Planted: t_{0,2} := the midpoint of v_0 and t_{0,1} (same face): three collinear knots.
+    let t1 = sp.clouds[0][1];
+    let at_v = k
+        .face(t1.face)
+        .iter()
+        .position(|v| v.0 == 0)
+        .expect("v_0 in the face");
+    let mut b = t1.bary.map(|x| x / 2.0);
+    b[at_v] += 0.5;
+    sp.clouds[0][2] = MeshPoint {
+        face: t1.face,
+        bary: b,
+    };
+    sp.record(&k, &at);
+    let r = pseudomanifold::msplines::mesh_spline_checks::check_knots_generic(&k, &sp);
+    println!("{r:?}");
+    assert!(
+        r.failed() && witness_text(&r).contains("collinear"),
+        "{r:?}"
+    );
+}

@@ -152,19 +152,6 @@ pub fn face_ring(k: &SimplicialSurface, f: FaceId) -> Vec<FaceId> {
 
 /// Sec. 5.5: knot clouds on M (seeded, generic), control points, and the recorded charts.
 pub fn assign(k: &SimplicialSurface, at: &Atlas, degree: usize, seed: u64) -> MeshSpline {
-    assign_with(k, at, degree, seed, false)
-}
-
-/// [`assign`], with `dyadic` barycentrics (multiples of 1/64) instead of generic ones: on a
-/// mesh whose chart images form a lattice (a generated torus) such knots fall on lines
-/// through other knots — not in general position (planted fault of `MS-5.5`).
-pub fn assign_with(
-    k: &SimplicialSurface,
-    at: &Atlas,
-    degree: usize,
-    seed: u64,
-    dyadic: bool,
-) -> MeshSpline {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut clouds = vec![Vec::new(); k.vertex_slots()];
     for v in k.vertices() {
@@ -183,14 +170,7 @@ pub fn assign_with(
                 let f = star[(o + l * step) % star.len()];
                 let i = at_v(f);
                 // Weights in (1/16, 5/16): inside the open star of v.
-                let (s, r) = if dyadic {
-                    (
-                        f64::from(rng.gen_range(4..20u32)) / 64.0,
-                        f64::from(rng.gen_range(4..20u32)) / 64.0,
-                    )
-                } else {
-                    (rng.gen_range(0.0625..0.3125), rng.gen_range(0.0625..0.3125))
-                };
+                let (s, r) = (rng.gen_range(0.0625..0.3125), rng.gen_range(0.0625..0.3125));
                 let mut b = [0.0; 3];
                 b[i] = 1.0 - s - r;
                 b[(i + 1) % 3] = s;
@@ -240,22 +220,30 @@ pub fn assign_with(
         planted_unconverted: None,
         convert_by_translation: false,
     };
-    for f in k.faces() {
-        for v in k.face(f) {
-            let Some(&alpha) = sp.chart_of_vertex.get(&v) else {
-                continue;
-            };
-            if let Ok(rec) = sp.corner_clouds_in(k, at, f, alpha) {
-                sp.home[f.idx()] = Some(alpha);
-                sp.recorded[f.idx()] = Some(rec);
-                break;
-            }
-        }
-    }
+    sp.record(k, at);
     sp
 }
 
 impl MeshSpline {
+    /// Sec. 5.5 (1)–(2): record each face's knots in the first chart at its corners that
+    /// holds them all (again after the clouds changed).
+    pub fn record(&mut self, k: &SimplicialSurface, at: &Atlas) {
+        for f in k.faces() {
+            self.home[f.idx()] = None;
+            self.recorded[f.idx()] = None;
+            for v in k.face(f) {
+                let Some(&alpha) = self.chart_of_vertex.get(&v) else {
+                    continue;
+                };
+                if let Ok(rec) = self.corner_clouds_in(k, at, f, alpha) {
+                    self.home[f.idx()] = Some(alpha);
+                    self.recorded[f.idx()] = Some(rec);
+                    break;
+                }
+            }
+        }
+    }
+
     /// The corner clouds of face J mapped into chart α (every knot must lie in U_α).
     pub fn corner_clouds_in(
         &self,

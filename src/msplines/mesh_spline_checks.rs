@@ -92,12 +92,13 @@ fn skipped_if_empty(mut r: CheckResult) -> CheckResult {
 }
 
 /// Sec. 5.5 / Sec. 3.1.2: the knots of every control point, in its recorded chart, are in
-/// general position — no three knots of any V_β^I collinear (exact orientation on the
-/// stored f64 images); faces without a recorded chart are counted, not judged.
+/// general position — no three knots of any V_β^I collinear — and the image of I and every
+/// Δ_β^I are positively oriented (the DMS conditions; exact orientation on the stored f64
+/// images); faces without a recorded chart are counted, not judged.
 pub fn check_knots_generic(k: &SimplicialSurface, sp: &MeshSpline) -> CheckResult {
     let mut r = CheckResult::new(
         "MS-5.5",
-        "knots of every V_β^I in general position in their recorded chart (exact)",
+        "knots of every V_β^I in general position, I and Δ_β^I positively oriented, in the recorded chart (exact)",
     );
     let betas = super::polar::multi_indices(sp.k);
     let mut unrecorded = 0usize;
@@ -121,6 +122,18 @@ pub fn check_knots_generic(k: &SimplicialSurface, sp: &MeshSpline) -> CheckResul
                         }
                     }
                 }
+            }
+            // DMS need Δ_β^I = [t_{0,β0}, t_{1,β1}, t_{2,β2}] proper, oriented like I.
+            let d = [b[0], b[0] + b[1] + 1, b[0] + b[1] + b[2] + 2];
+            let oi = robust::orient2d(c(rec[0][0]), c(rec[1][0]), c(rec[2][0]));
+            let od = robust::orient2d(c(v[d[0]]), c(v[d[1]]), c(v[d[2]]));
+            if bad.is_none() && !(oi > 0.0 && od > 0.0) {
+                r.offend(|| {
+                    Witness::new(
+                        format!("face {f}, β = {b:?}: in chart {:?}, image of I has orientation {oi:.3e} and Δ_β {od:.3e} (DMS need both > 0)", sp.home[f.idx()]),
+                        json!({"face": f.0, "beta": b, "kind": "orientation"}),
+                    )
+                });
             }
             if let Some(t) = bad {
                 r.offend(|| {
