@@ -473,7 +473,7 @@ fn spline_report(k: &SimplicialSurface, faces: usize) -> Vec<CheckResult> {
 }
 
 #[test]
-fn ms_5_5_ms_5_6_ms_d13_2_mesh_torus_spline_is_chart_independent() {
+fn ms_5_5_ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_torus_spline_is_chart_independent() {
     for (name, k) in [
         ("torus 24×16", torus(24, 16)),
         ("corpus torus.obj", corpus_torus()),
@@ -493,6 +493,31 @@ fn ms_5_5_ms_5_6_ms_d13_2_mesh_torus_spline_is_chart_independent() {
             "{name}: {ev:?}"
         );
     }
+}
+
+/// Sec. 5.6 step (3) literally: each control point's recorded knots shifted into the chart
+/// by the translation measured on its face.
+#[test]
+fn ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_literal_conversion_by_translation() {
+    let k = torus(24, 16);
+    let (at, mut sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    sp.convert_by_translation = true;
+    let rs = spline_checks(&k, &at, &sp, 0x5eed, 60);
+    for id in ["MS-5.6", "MS-DMS-PU-mesh", "MS-D13(2)-mesh"] {
+        let r = find(&rs, id);
+        println!("{r:?}");
+        assert!(
+            matches!(r.verdict, Verdict::Holds) && r.examined > 0,
+            "{r:?}"
+        );
+    }
+    let m = sample_spline(&k, &at, &sp, 2).expect("samples");
+    let worst = m
+        .positions
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |a, x| a.max(x.abs()));
+    println!("literal conversion, level-2 samples: max |coordinate| {worst:.3e}");
 }
 
 #[test]
@@ -551,7 +576,7 @@ fn ms_d13_1_mesh_ms_d13_1_mesh_corrected_charts_too_small_as_written_star_suffic
 }
 
 #[test]
-fn ms_5_6_eight_spline_undefined_near_the_singular_vertex_witness() {
+fn ms_5_6_ms_dms_pu_mesh_ms_5_5_eight_spline_undefined_near_the_singular_vertex_witness() {
     let k = eight();
     let rs = spline_report(&k, 300);
     for r in &rs {
@@ -564,10 +589,18 @@ fn ms_5_6_eight_spline_undefined_near_the_singular_vertex_witness() {
         "{}",
         witness_text(ev)
     );
+    // DMS conditions violated where ω nearly vanishes (thin images): Δ_β flipped, Σ N ≠ 1.
+    let kn = find(&rs, "MS-5.5");
+    assert!(
+        kn.failed() && witness_text(kn).contains("orientation"),
+        "{kn:?}"
+    );
+    let pu = find(&rs, "MS-DMS-PU-mesh");
+    assert!(pu.failed() && witness_text(pu).contains("Σ N ="), "{pu:?}");
     // Where F is defined, the charts still agree (Def. 13(2)).
     let d2 = find(&rs, "MS-D13(2)-mesh");
     println!("{d2:?}");
-    assert!(d2.examined > 0);
+    assert!(holds(d2) && d2.examined > 0, "{d2:?}");
 }
 
 #[test]

@@ -112,10 +112,9 @@ pub struct MeshSpline {
     /// (Sec. 5.6 step (3) skipped).
     pub planted_unconverted: Option<FaceId>,
     /// Sec. 5.6 step (3) literally: convert face J's recorded knots by the translation
-    /// φ_γ − φ_home measured on J. In f64 the same knot then gets slightly different
-    /// coordinates for different J (each conversion rounds), which breaks the half-open
-    /// decisions at points on knot lines such as the mesh vertices (= knots t_{v,0}); off by
-    /// default: each knot of M is mapped into U_γ once (the same map up to rounding).
+    /// φ_γ − φ_home measured on J (one knot then has slightly different f64 images for
+    /// different J). Off by default: each knot of M is mapped into U_γ once, the same map
+    /// up to rounding; both readings are tested.
     pub convert_by_translation: bool,
 }
 
