@@ -717,3 +717,42 @@ fn ms_5_5_planted_collinear_knots_are_reported() {
         "{r:?}"
     );
 }
+
+/// The CLI: `ppm msplines sample` writes a closed mesh of the torus's spline surface and
+/// reports its edge counts; on an open mesh it exits 1 naming the boundary (Thm. 3 row).
+#[test]
+fn ms_sample_ms_t3_cli_sample_torus_and_refuse_open_mesh() {
+    let dir = std::env::temp_dir().join(format!("ms_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let torus_path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good/torus.obj");
+    let out = dir.join("spline.obj");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
+        .args(["msplines", "sample"])
+        .arg(&torus_path)
+        .arg("--out")
+        .arg(&out)
+        .args(["--level", "1"])
+        .output()
+        .expect("ppm runs");
+    let err = String::from_utf8_lossy(&o.stderr);
+    println!("{err}");
+    assert!(o.status.success(), "{err}");
+    assert!(err.contains("0 otherwise"), "{err}");
+    let back = read_mesh(&out, &ReadOptions::default()).expect("reads back");
+    assert!(validate(&back).surface.is_some(), "closed surface");
+    let open = dir.join("open.off");
+    std::fs::write(
+        &open,
+        "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 3\n3 0 3 1\n",
+    )
+    .expect("write");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
+        .args(["msplines", "check"])
+        .arg(&open)
+        .output()
+        .expect("ppm runs");
+    let err = String::from_utf8_lossy(&o.stderr);
+    println!("{err}");
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -16,11 +16,12 @@ fn ps(p: &Pt<Q>) -> String {
     format!("({}, {})", p[0], p[1])
 }
 
-/// A jittered n×n grid (spacing 1, vertices moved by ≤ 1/10) split along one diagonal, with
+/// A jittered n×n grid (n ≥ 2; spacing 1, vertices moved by ≤ 1/10) split along one diagonal, with
 /// seeded generic rational clouds of radius ≤ `radius` (the knot clouds of eq. (1)), and
 /// the triangles whose three vertices are interior (every triangle sharing a vertex with
 /// them exists, so the whole 1-ring is present).
 pub fn planar_grid(n: usize, k: usize, radius: Q, seed: u64) -> (Dms<Q>, Vec<usize>) {
+    let n = n.max(2);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut clouds = Vec::new();
     for j in 0..n {
