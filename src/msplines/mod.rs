@@ -5,7 +5,9 @@
 //! SPEC.md IDs carry the prefix `MS-`.
 //!
 //! Data flows one way: [`homology`] (tree–cotree) → [`harmonic`] (cotangent Laplacian) →
-//! [`hodge`] (conjugate, ω) → [`zeros`] → [`atlas`] → [`view`] (gluing data) → checks.
+//! [`hodge`] (conjugate, ω) → [`zeros`] → [`atlas`] → [`view`] (gluing data) → checks; and
+//! for the spline itself: [`dms`] (the triangular B-spline basis of Sec. 3.1.2, exact or
+//! f64) → [`mesh_spline`] (Secs. 5.5–5.6 on the atlas) → [`spline_sample`] (a mesh file).
 
 pub mod atlas;
 pub mod atlas_checks;
