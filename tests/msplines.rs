@@ -756,3 +756,27 @@ fn ms_sample_ms_t3_cli_sample_torus_and_refuse_open_mesh() {
     assert_eq!(o.status.code(), Some(1), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// NaN is never "holds", zero samples is "skipped" (house rules), for the new checkers.
+#[test]
+fn ms_d13_2_mesh_ms_dms_pu_mesh_ms_dms_pu_nan_and_empty_domain() {
+    let k = torus(12, 8);
+    let (mut at, sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    let rs = spline_checks(&k, &at, &sp, 0x5eed, 0);
+    for id in ["MS-D13(2)-mesh", "MS-5.6", "MS-DMS-PU-mesh"] {
+        let r = find(&rs, id);
+        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    }
+    let (dms, _) = grid(2, 11);
+    let r = dc::check_partition(&dms, &[], 1, 10);
+    assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    // A chart whose images are NaN: every comparison with it fails.
+    for t in at.charts[0].faces.values_mut() {
+        *t = [[f64::NAN; 2]; 3];
+    }
+    let rs = spline_checks(&k, &at, &sp, 0x5eed, 400);
+    let d2 = find(&rs, "MS-D13(2)-mesh");
+    let pu = find(&rs, "MS-DMS-PU-mesh");
+    println!("{d2:?}\n{pu:?}");
+    assert!(d2.failed() || pu.failed(), "{d2:?} {pu:?}");
+}
