@@ -473,7 +473,7 @@ fn spline_report(k: &SimplicialSurface, faces: usize) -> Vec<CheckResult> {
 }
 
 #[test]
-fn ms_5_5_ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_torus_spline_is_chart_independent() {
+fn ms_5_5_ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_ms_3_1_3_1_mesh_torus_spline_is_chart_independent() {
     for (name, k) in [
         ("torus 24×16", torus(24, 16)),
         ("corpus torus.obj", corpus_torus()),
@@ -581,7 +581,8 @@ fn ms_d13_1_mesh_ms_d13_1_mesh_corrected_charts_too_small_as_written_star_suffic
 }
 
 #[test]
-fn ms_5_6_ms_dms_pu_mesh_ms_5_5_eight_spline_undefined_near_the_singular_vertex_witness() {
+fn ms_5_6_ms_dms_pu_mesh_ms_5_5_ms_3_1_3_1_mesh_eight_spline_undefined_near_the_singular_vertex_witness(
+) {
     let k = eight();
     let rs = spline_report(&k, 300);
     for r in &rs {
@@ -602,6 +603,12 @@ fn ms_5_6_ms_dms_pu_mesh_ms_5_5_eight_spline_undefined_near_the_singular_vertex_
     );
     let pu = find(&rs, "MS-DMS-PU-mesh");
     assert!(pu.failed() && witness_text(pu).contains("Σ N ="), "{pu:?}");
+    // Folded charts: faces outside the 1-ring of F have knots over F in the chart.
+    let ls = find(&rs, "MS-3.1.3(1)-mesh");
+    assert!(
+        ls.failed() && witness_text(ls).contains("outside the 1-ring"),
+        "{ls:?}"
+    );
     // Where F is defined, the charts still agree (Def. 13(2)).
     let d2 = find(&rs, "MS-D13(2)-mesh");
     println!("{d2:?}");

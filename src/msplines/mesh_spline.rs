@@ -342,6 +342,43 @@ impl MeshSpline {
         Ok(ev)
     }
 
+    /// Sec. 3.1.3(1) on M: Σ |N_β^J(u)| over the faces J of the 2-ring of p's face that are
+    /// not in its 1-ring (those whose knots chart γ holds), and how many were evaluated. The
+    /// evaluation above sums the 1-ring only; this is the mass it leaves out.
+    pub fn outside_ring_mass(
+        &self,
+        k: &SimplicialSurface,
+        at: &Atlas,
+        p: &MeshPoint,
+        gamma: u32,
+    ) -> Result<(f64, usize), SplineError> {
+        let u = image(at, gamma, p).ok_or(SplineError::FaceNotInChart {
+            face: p.face.0,
+            chart: gamma,
+            centre: at.charts[gamma as usize].centre.0,
+        })?;
+        let ring1: BTreeSet<FaceId> = face_ring(k, p.face).into_iter().collect();
+        let ring2: BTreeSet<FaceId> = ring1.iter().flat_map(|&j| face_ring(k, j)).collect();
+        let (mut mass, mut n) = (0.0, 0usize);
+        for j in ring2.difference(&ring1) {
+            let Ok(clouds) = self.corner_clouds_in(k, at, *j, gamma) else {
+                continue;
+            };
+            let dms = Dms {
+                k: self.k,
+                clouds: clouds.to_vec(),
+                triangles: vec![[0, 1, 2]],
+                overrides: Default::default(),
+                planted: Default::default(),
+            };
+            for b in multi_indices(self.k) {
+                mass += dms.basis(0, &b, &u)?.abs();
+                n += 1;
+            }
+        }
+        Ok((mass, n))
+    }
+
     /// F(p) in the first chart at a corner of p's face that can evaluate it.
     pub fn evaluate_anywhere(
         &self,

@@ -191,6 +191,11 @@ pub fn check_d13_2(
         "MS-5.6",
         "Sec. 5.6: F evaluable on every face of M ∖ Z (a chart at a corner holds its knots)",
     );
+    let mut ls = CheckResult::new(
+        "MS-3.1.3(1)-mesh",
+        "local support on M: basis functions of faces outside the 1-ring of F vanish on F",
+    );
+    ls.seed = Some(seed);
     let mut pu = CheckResult::new(
         "MS-DMS-PU-mesh",
         "DMS partition of unity on M: Σ_J Σ_β N_β^J = 1 in every evaluating chart",
@@ -239,6 +244,25 @@ pub fn check_d13_2(
             continue;
         }
         for (g, e) in &vals {
+            match sp.outside_ring_mass(k, at, &p, *g) {
+                Ok((mass, n)) => {
+                    ls.examined += n as u64;
+                    if !(mass == 0.0) {
+                        ls.offend(|| {
+                            Witness::new(
+                                format!("face {f} at {:?}, chart {g}: Σ|N_β^J| = {mass:.3e} over faces J outside the 1-ring", p.bary),
+                                json!({"face": f.0, "chart": g, "mass": mass}),
+                            )
+                        });
+                    }
+                }
+                Err(e) => {
+                    ls.eval_errors += 1;
+                    ls.offend(|| {
+                        Witness::new(format!("face {f}, chart {g}: {e}"), json!({"face": f.0}))
+                    });
+                }
+            }
             pu.examined += 1;
             // The knot triangles' least height h against the chart radius R is the
             // conditioning of the barycentric coordinates of the recurrence (k levels).
@@ -307,6 +331,9 @@ pub fn check_d13_2(
         skipped_if_empty(ev56.with_note(format!(
             "{undefined} sampled faces of M ∖ Z where no chart evaluates F"
         ))),
+        skipped_if_empty(ls.with_note(
+            "exact zero required (the base case of a basis function outside its knots' hull is 0)",
+        )),
         skipped_if_empty(pu.with_note(format!(
             "|Σ N − 1| worst {pu_worst:.2e}; tolerance 64ε·(1 + R/h)^k (R chart radius, h least knot-triangle height), largest shown"
         ))),
