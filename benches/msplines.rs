@@ -3,7 +3,7 @@
 //! koala.obj (the 50k-vertex corpus mesh) has genus 0, where Sec. 5 has no forms (Thm. 2), so
 //! its case times what the forms step spends there: the sparse Cholesky of the cotangent
 //! Laplacian and two solves (on d of an integer vertex function). The full pipeline is timed
-//! on a generated 20k-vertex torus and on the corpus's genus ≥ 1 meshes when present.
+//! on generated 20k- and 50k-vertex tori and on the corpus's genus ≥ 1 meshes when present.
 //! Run: `cargo bench --bench msplines`.
 
 use criterion::Criterion;
@@ -44,10 +44,16 @@ fn main() {
             |b| b.iter(|| harmonic_forms(&k, &ei, &taus).expect("solve")),
         );
     }
-    let mut cases = vec![(
-        "torus 20k".to_string(),
-        validate(&torus(100, 100)).surface.expect("torus"),
-    )];
+    let mut cases = vec![
+        (
+            "torus 20k".to_string(),
+            validate(&torus(100, 100)).surface.expect("torus"),
+        ),
+        (
+            "torus 50k".to_string(),
+            validate(&torus(250, 200)).surface.expect("torus"),
+        ),
+    ];
     for name in [
         "torus.obj",
         "eight.off",

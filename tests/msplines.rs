@@ -341,3 +341,454 @@ fn ms_f7_c2_planted_wrong_transition_shows_a_jump() {
     let r = circle::check_c2_with(&c, &pseudomanifold::msplines::polar::q(1, 7));
     assert!(r.failed() && !r.witnesses.is_empty());
 }
+
+// ---- Sec. 3.1.2–3.1.3: the triangular B-spline (DMS) basis over a planar triangulation ----
+
+use pseudomanifold::msplines::dms::{Dms, Planted};
+use pseudomanifold::msplines::dms_checks as dc;
+use pseudomanifold::msplines::polar::{q, Q};
+
+fn grid(k: usize, seed: u64) -> (Dms<Q>, Vec<usize>) {
+    dc::planar_grid(5, k, q(1, 8), seed)
+}
+
+fn witness_text(r: &CheckResult) -> String {
+    r.witnesses
+        .iter()
+        .map(|w| w.text.clone())
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+#[test]
+fn ms_dms_pu_ms_dms_3_1_3_3_partition_of_unity_and_completeness_exact_k2_k3() {
+    for (k, seed) in [(2usize, 11u64), (3, 12)] {
+        let (dms, interior) = grid(k, seed);
+        let pu = dc::check_partition(&dms, &interior, seed, 12);
+        println!("{pu:?}");
+        assert!(matches!(pu.verdict, Verdict::Holds), "k = {k}: {pu:?}");
+        assert!(pu.examined >= 12);
+        let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed);
+        let p = pc::random_poly(&mut rng, k);
+        let rp = dc::check_reproduction(&dms, &p, &interior, seed, 8);
+        assert!(matches!(rp.verdict, Verdict::Holds), "k = {k}: {rp:?}");
+    }
+}
+
+#[test]
+fn ms_dms_pu_ms_dms_3_1_3_3_planted_knot_moved_on_one_side_only_gives_witnesses() {
+    let (mut dms, interior) = grid(2, 11);
+    // Triangle interior[0] sees a moved copy of its corner-0 cloud; its neighbours keep the
+    // original: the clouds no longer agree across the shared vertex.
+    let i = interior[0];
+    let mut moved = dms.corner_cloud(i, 0).to_vec();
+    moved[1][0] += q(1, 23);
+    dms.overrides.insert((i, 0), moved);
+    let pu = dc::check_partition(&dms, &[i], 3, 12);
+    println!("{pu:?}");
+    assert!(pu.failed() && !pu.witnesses.is_empty(), "{pu:?}");
+    assert!(witness_text(&pu).contains("≠ 1"), "{}", witness_text(&pu));
+    let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(3);
+    let p = pc::random_poly(&mut rng, 2);
+    let rp = dc::check_reproduction(&dms, &p, &[i], 3, 8);
+    assert!(rp.failed() && !rp.witnesses.is_empty(), "{rp:?}");
+}
+
+#[test]
+fn ms_dms_pu_ms_dms_ck_1_planted_wrong_recurrence_weight_gives_witnesses() {
+    let (mut dms, interior) = grid(2, 11);
+    dms.planted = Planted::WrongWeight;
+    let pu = dc::check_partition(&dms, &interior, 5, 12);
+    assert!(pu.failed() && !pu.witnesses.is_empty(), "{pu:?}");
+    let ck = dc::check_continuity(&dms, &interior, 5, 40);
+    println!("{ck:?}");
+    assert!(ck.failed() && !ck.witnesses.is_empty(), "{ck:?}");
+}
+
+#[test]
+fn ms_dms_ck_1_basis_is_c_k_minus_1_across_knot_lines_exact_k2_k3() {
+    for (k, seed) in [(2usize, 21u64), (3, 22)] {
+        let (dms, interior) = grid(k, seed);
+        let ck = dc::check_continuity(&dms, &interior, seed, 40);
+        println!("{ck:?}");
+        assert!(matches!(ck.verdict, Verdict::Holds), "k = {k}: {ck:?}");
+        assert!(ck.examined >= 20, "{ck:?}");
+        // Not vacuous: the k-th derivative jumps on some lines.
+        assert!(!ck.note.contains("jumps on 0 "), "{}", ck.note);
+    }
+}
+
+#[test]
+fn ms_dms_ck_1_planted_collinear_knots_lower_the_continuity_with_a_witness() {
+    let (mut dms, interior) = grid(2, 21);
+    // t_{v,2} := midpoint of t_{v,0}, t_{v,1} at every vertex: three collinear knots in every
+    // V_β with β_i = 2.
+    for c in dms.clouds.iter_mut() {
+        c[2] = [
+            (&c[0][0] + &c[1][0]) / q(2, 1),
+            (&c[0][1] + &c[1][1]) / q(2, 1),
+        ];
+    }
+    let ck = dc::check_continuity(&dms, &interior, 21, 200);
+    println!("{ck:?}");
+    assert!(ck.failed(), "{ck:?}");
+    assert!(witness_text(&ck).contains("jumps"), "{}", witness_text(&ck));
+}
+
+#[test]
+fn ms_3_1_3_1_local_support_exact_and_planted_wide_cloud_caught() {
+    let (dms, interior) = grid(2, 31);
+    let ls = dc::check_local_support(&dms, &interior, 31, 6);
+    println!("{ls:?}");
+    assert!(matches!(ls.verdict, Verdict::Holds), "{ls:?}");
+    assert!(ls.examined > 100);
+    // Planted: clouds of radius 0.9 reach past the 1-ring.
+    let (wide, interior) = dc::planar_grid(5, 2, q(3, 2), 31);
+    let ls = dc::check_local_support(&wide, &interior, 31, 40);
+    println!("{ls:?}");
+    assert!(ls.failed(), "{ls:?}");
+    assert!(
+        witness_text(&ls).contains("outside the 1-ring"),
+        "{}",
+        witness_text(&ls)
+    );
+}
+
+// ---- Secs. 5.5–5.6 and Def. 13 on meshes: the manifold spline F on M ----
+
+use pseudomanifold::msplines::mesh_spline::MeshPoint;
+use pseudomanifold::msplines::pipeline::{spline, spline_checks};
+use pseudomanifold::msplines::spline_sample::{sample as sample_spline, SampleError};
+use pseudomanifold::surface::output::edge_use_counts;
+
+fn corpus_torus() -> SimplicialSurface {
+    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good/torus.obj");
+    let raw = read_mesh(&p, &ReadOptions::default()).expect("corpus torus reads");
+    validate(&raw).surface.expect("corpus torus is a surface")
+}
+
+fn spline_report(k: &SimplicialSurface, faces: usize) -> Vec<CheckResult> {
+    let (at, sp) = spline(k, 0, 3, 2, 0x5eed).expect("spline builds");
+    spline_checks(k, &at, &sp, 0x5eed, faces)
+}
+
+#[test]
+fn ms_5_5_ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_ms_3_1_3_1_mesh_torus_spline_is_chart_independent() {
+    for (name, k) in [
+        ("torus 24×16", torus(24, 16)),
+        ("corpus torus.obj", corpus_torus()),
+    ] {
+        let rs = spline_report(&k, 60);
+        for r in &rs {
+            println!("{name}: {r:?}");
+        }
+        let d2 = find(&rs, "MS-D13(2)-mesh");
+        assert!(
+            matches!(d2.verdict, Verdict::Holds) && d2.examined >= 60,
+            "{name}: {d2:?}"
+        );
+        let ev = find(&rs, "MS-5.6");
+        assert!(
+            matches!(ev.verdict, Verdict::Holds) && ev.examined >= 50,
+            "{name}: {ev:?}"
+        );
+    }
+}
+
+/// Sec. 5.6 step (3) literally: each control point's recorded knots shifted into the chart
+/// by the translation measured on its face.
+#[test]
+fn ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_literal_conversion_by_translation() {
+    let k = torus(24, 16);
+    let (at, mut sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    sp.convert_by_translation = true;
+    let rs = spline_checks(&k, &at, &sp, 0x5eed, 60);
+    for id in ["MS-5.6", "MS-DMS-PU-mesh", "MS-D13(2)-mesh"] {
+        let r = find(&rs, id);
+        println!("{r:?}");
+        assert!(
+            matches!(r.verdict, Verdict::Holds) && r.examined > 0,
+            "{r:?}"
+        );
+    }
+    let m = sample_spline(&k, &at, &sp, 2).expect("samples");
+    let worst = m
+        .positions
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |a, x| a.max(x.abs()));
+    println!("literal conversion, level-2 samples: max |coordinate| {worst:.3e}");
+}
+
+#[test]
+fn ms_d13_2_mesh_ms_dms_pu_mesh_planted_unconverted_knots_give_a_witness() {
+    let k = torus(24, 16);
+    let (at, mut sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    // Sec. 5.6 step (3) skipped for the knots of one face (tried in turn until a sampled
+    // point sees it): the charts keep the recorded coordinates of another chart.
+    let mut worst = None;
+    for f in k.faces() {
+        sp.planted_unconverted = Some(f);
+        let rs = spline_checks(&k, &at, &sp, 0x5eed, 60);
+        let d2 = find(&rs, "MS-D13(2)-mesh").clone();
+        if d2.failed() {
+            let pu = find(&rs, "MS-DMS-PU-mesh").clone();
+            assert!(
+                pu.failed(),
+                "the misplaced basis breaks Σ N = 1 too: {pu:?}"
+            );
+            worst = Some(d2);
+            break;
+        }
+    }
+    let d2 = worst.expect("some unconverted face shows in Def. 13(2)");
+    println!("{d2:?}");
+    assert!(
+        witness_text(&d2).contains("differ by"),
+        "{}",
+        witness_text(&d2)
+    );
+}
+
+#[test]
+fn ms_d13_1_mesh_ms_d13_1_mesh_corrected_charts_too_small_as_written_star_suffices() {
+    let k = torus(24, 16);
+    let rs = spline_report(&k, 4);
+    let lit = find(&rs, "MS-D13(1)-mesh");
+    println!("{lit:?}");
+    assert!(lit.failed() && !lit.witnesses.is_empty(), "{lit:?}");
+    assert!(
+        witness_text(lit).contains("outside chart"),
+        "{}",
+        witness_text(lit)
+    );
+    let cor = find(&rs, "MS-D13(1)-mesh-corrected");
+    println!("{cor:?}");
+    assert!(
+        matches!(cor.verdict, Verdict::Holds) && cor.examined > 0,
+        "{cor:?}"
+    );
+    // Planted: a knot of vertex 0 moved to a face far from its star is outside the charts.
+    let (at, mut sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    let far = pseudomanifold::mesh::FaceId((k.num_faces() / 2) as u32);
+    sp.clouds[0][1] = MeshPoint {
+        face: far,
+        bary: [0.25, 0.25, 0.5],
+    };
+    let rs = spline_checks(&k, &at, &sp, 0x5eed, 4);
+    let cor = find(&rs, "MS-D13(1)-mesh-corrected");
+    assert!(cor.failed() && !cor.witnesses.is_empty(), "{cor:?}");
+}
+
+#[test]
+fn ms_5_6_ms_dms_pu_mesh_ms_5_5_ms_3_1_3_1_mesh_eight_spline_undefined_near_the_singular_vertex_witness(
+) {
+    let k = eight();
+    let rs = spline_report(&k, 300);
+    for r in &rs {
+        println!("eight.off: {r:?}");
+    }
+    let ev = find(&rs, "MS-5.6");
+    assert!(ev.failed(), "{ev:?}");
+    assert!(
+        witness_text(ev).contains("F undefined"),
+        "{}",
+        witness_text(ev)
+    );
+    // DMS conditions violated where ω nearly vanishes (thin images): Δ_β flipped, Σ N ≠ 1.
+    let kn = find(&rs, "MS-5.5");
+    assert!(
+        kn.failed() && witness_text(kn).contains("orientation"),
+        "{kn:?}"
+    );
+    let pu = find(&rs, "MS-DMS-PU-mesh");
+    assert!(pu.failed() && witness_text(pu).contains("Σ N ="), "{pu:?}");
+    // Folded charts: faces outside the 1-ring of F have knots over F in the chart.
+    let ls = find(&rs, "MS-3.1.3(1)-mesh");
+    assert!(
+        ls.failed() && witness_text(ls).contains("outside the 1-ring"),
+        "{ls:?}"
+    );
+    // Where F is defined, the charts still agree (Def. 13(2)).
+    let d2 = find(&rs, "MS-D13(2)-mesh");
+    println!("{d2:?}");
+    assert!(holds(d2) && d2.examined > 0, "{d2:?}");
+}
+
+#[test]
+fn ms_sample_torus_spline_surface_is_watertight_and_near_m() {
+    let k = torus(12, 8);
+    let (at, sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    let m = sample_spline(&k, &at, &sp, 2).expect("torus samples");
+    // F approximates the PL surface M (control points = means of knot positions): the
+    // sample points stay within a tenth of the tube radius-ish scale of M's bounding box.
+    let pat = pseudomanifold::surface::output::sample_pattern_faces(
+        &k.faces().map(|f| k.face(f)).collect::<Vec<_>>(),
+        2,
+    )
+    .expect("pattern");
+    let mut worst = 0.0f64;
+    for (i, p) in pat.points.iter().enumerate() {
+        let vs = k.face(p.face);
+        for a in 0..3 {
+            let x: f64 = (0..3).map(|c| p.bary[c] * k.position(vs[c])[a]).sum();
+            worst = worst.max((x - m.positions[i][a]).abs());
+        }
+    }
+    println!("max |F − M| over the level-2 samples: {worst:.3e}");
+    assert!(worst < 0.25, "{worst}");
+    let (two, other) = edge_use_counts(&m.faces);
+    assert!(
+        two > 0 && other == 0,
+        "edges in two faces {two}, otherwise {other}"
+    );
+    assert_eq!(m.faces.len(), k.num_faces() * 16);
+    assert!(m.positions.iter().all(|p| p.iter().all(|x| x.is_finite())));
+    let dir = std::env::temp_dir().join(format!("ms_sample_{}.ply", std::process::id()));
+    pseudomanifold::surface::output::write_mesh_with_attributes(&dir, &m).expect("writes");
+    let back = read_mesh(&dir, &ReadOptions::default()).expect("reads back");
+    let _ = std::fs::remove_file(&dir);
+    let s = validate(&back)
+        .surface
+        .expect("sampled spline surface is a closed surface without self-intersection");
+    assert_eq!(s.num_faces(), m.faces.len());
+    // genus 2: sampling is refused with the face where F is undefined.
+    let e = eight();
+    let (at, sp) = spline(&e, 0, 3, 2, 0x5eed).expect("spline builds");
+    let err = sample_spline(&e, &at, &sp, 0).expect_err("undefined near the zero set");
+    assert!(matches!(err, SampleError::Undefined { .. }), "{err}");
+}
+
+/// Thm. 3 (open surfaces are affine): a bordered mesh is refused by the validator with a
+/// typed boundary error naming the edge; the one open surface the pipeline builds, M minus
+/// the open stars of the zero set on eight.off (genus 2 with holes), carries the affine
+/// (translation) atlas of Sec. 5.4 — an instance of Thm. 3, not a proof of it.
+#[test]
+fn ms_t3_open_mesh_refused_with_typed_error_and_m_minus_stars_is_affine() {
+    let mut raw = generate::octahedron();
+    raw.faces.pop();
+    raw.face_origin.pop();
+    let v = validate(&raw);
+    assert!(v.surface.is_none());
+    assert!(
+        v.report
+            .error_classes
+            .iter()
+            .any(|c| c.name() == "boundary"),
+        "{:?}",
+        v.report.error_classes
+    );
+    let text: String = v
+        .report
+        .checks
+        .iter()
+        .flat_map(|c| c.witnesses.iter().map(|w| w.text.clone()))
+        .collect::<Vec<_>>()
+        .join("; ");
+    assert!(
+        text.contains("edge [") && text.contains("1 triangle"),
+        "{text}"
+    );
+    let k = eight();
+    let (rep, _, at) = run(&k, &Options::default()).expect("eight runs");
+    let at = at.expect("atlas");
+    assert!(
+        at.removed.iter().any(|&r| r),
+        "some faces removed: M ∖ St(Z) is open"
+    );
+    for id in ["MS-D7", "MS-T4(atlas)"] {
+        let r = find(&rep.checks, id);
+        assert!(holds(r) && r.examined > 0, "{r:?}");
+    }
+}
+
+#[test]
+fn ms_5_5_planted_collinear_knots_are_reported() {
+    let k = torus(24, 16);
+    let (at, mut sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    let r = pseudomanifold::msplines::mesh_spline_checks::check_knots_generic(&k, &sp);
+    assert!(matches!(r.verdict, Verdict::Holds), "{r:?}");
+    // Planted: t_{0,2} := the midpoint of v_0 and t_{0,1} (same face): three collinear knots.
+    let t1 = sp.clouds[0][1];
+    let at_v = k
+        .face(t1.face)
+        .iter()
+        .position(|v| v.0 == 0)
+        .expect("v_0 in the face");
+    let mut b = t1.bary.map(|x| x / 2.0);
+    b[at_v] += 0.5;
+    sp.clouds[0][2] = MeshPoint {
+        face: t1.face,
+        bary: b,
+    };
+    sp.record(&k, &at);
+    let r = pseudomanifold::msplines::mesh_spline_checks::check_knots_generic(&k, &sp);
+    println!("{r:?}");
+    assert!(
+        r.failed() && witness_text(&r).contains("collinear"),
+        "{r:?}"
+    );
+}
+
+/// The CLI: `ppm msplines sample` writes a closed mesh of the torus's spline surface and
+/// reports its edge counts; on an open mesh it exits 1 naming the boundary (Thm. 3 row).
+#[test]
+fn ms_sample_ms_t3_cli_sample_torus_and_refuse_open_mesh() {
+    let dir = std::env::temp_dir().join(format!("ms_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let torus_path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good/torus.obj");
+    let out = dir.join("spline.obj");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
+        .args(["msplines", "sample"])
+        .arg(&torus_path)
+        .arg("--out")
+        .arg(&out)
+        .args(["--level", "1"])
+        .output()
+        .expect("ppm runs");
+    let err = String::from_utf8_lossy(&o.stderr);
+    println!("{err}");
+    assert!(o.status.success(), "{err}");
+    assert!(err.contains("0 otherwise"), "{err}");
+    let back = read_mesh(&out, &ReadOptions::default()).expect("reads back");
+    assert!(validate(&back).surface.is_some(), "closed surface");
+    let open = dir.join("open.off");
+    std::fs::write(
+        &open,
+        "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 2 3\n3 0 3 1\n",
+    )
+    .expect("write");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
+        .args(["msplines", "check"])
+        .arg(&open)
+        .output()
+        .expect("ppm runs");
+    let err = String::from_utf8_lossy(&o.stderr);
+    println!("{err}");
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// NaN is never "holds", zero samples is "skipped" (house rules), for the new checkers.
+#[test]
+fn ms_d13_2_mesh_ms_dms_pu_mesh_ms_dms_pu_nan_and_empty_domain() {
+    let k = torus(12, 8);
+    let (mut at, sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    let rs = spline_checks(&k, &at, &sp, 0x5eed, 0);
+    for id in ["MS-D13(2)-mesh", "MS-5.6", "MS-DMS-PU-mesh"] {
+        let r = find(&rs, id);
+        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    }
+    let (dms, _) = grid(2, 11);
+    let r = dc::check_partition(&dms, &[], 1, 10);
+    assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    // A chart whose images are NaN: every comparison with it fails.
+    for t in at.charts[0].faces.values_mut() {
+        *t = [[f64::NAN; 2]; 3];
+    }
+    let rs = spline_checks(&k, &at, &sp, 0x5eed, 400);
+    let d2 = find(&rs, "MS-D13(2)-mesh");
+    let pu = find(&rs, "MS-DMS-PU-mesh");
+    println!("{d2:?}\n{pu:?}");
+    assert!(d2.failed() || pu.failed(), "{d2:?} {pu:?}");
+}

@@ -3,6 +3,8 @@
 //! fails, 2 on unusable input (with the typed reason, e.g. genus 0 per Thm. 2).
 
 use crate::gluing::sampled::SampleConfig;
+use crate::msplines::pipeline::{spline, spline_checks};
+use crate::msplines::spline_sample::sample as sample_spline;
 use crate::msplines::{run, Options};
 use crate::report::render_text;
 use clap::{Args, Subcommand};
@@ -15,6 +17,34 @@ pub enum MsCommand {
     /// Holomorphic 1-form, zero points and affine atlas of a closed mesh (Sec. 5), with the
     /// checks of every statement (SPEC MS-*), including Def. 3.4.1 on the atlas.
     Check(MsCheckArgs),
+    /// Sample the manifold spline surface F(M) (Secs. 5.5–5.6, DMS basis of degree 2 on
+    /// ring-3 charts) to a mesh file, like `ppm sample`.
+    Sample(MsSampleArgs),
+}
+
+/// Arguments of `ppm msplines sample`.
+#[derive(Args, Debug)]
+pub struct MsSampleArgs {
+    /// The mesh file (OFF, OBJ, PLY): the domain M.
+    pub file: PathBuf,
+    /// Output mesh (.obj, .off or .ply).
+    #[arg(long, default_value = "msplines.obj")]
+    pub out: PathBuf,
+    /// Subdivision level: every face of M sampled on the barycentric grid of step 2^-level.
+    #[arg(long, default_value_t = 2)]
+    pub level: u32,
+    /// Which basis form ω_k (Sec. 5.1 step 2).
+    #[arg(long, default_value_t = 0)]
+    pub form: usize,
+    /// Degree k of the DMS spline (Sec. 3.1.2).
+    #[arg(long, default_value_t = 2)]
+    pub degree: usize,
+    /// Seed of the knot clouds (Sec. 5.5).
+    #[arg(long, default_value_t = 0x5eed)]
+    pub seed: u64,
+    /// Suppress the summary line.
+    #[arg(long)]
+    pub quiet: bool,
 }
 
 /// Arguments of `ppm msplines check`.
@@ -40,12 +70,39 @@ pub struct MsCheckArgs {
     /// Chart neighbourhoods visited by the Def. 3.4.1 checks.
     #[arg(long, default_value_t = 64)]
     pub views: usize,
+    /// Also build the degree-2 manifold spline on ring-3 charts (Secs. 5.5–5.6) and check
+    /// Def. 13 on it at this many seeded faces (0: off).
+    #[arg(long, default_value_t = 0)]
+    pub spline_faces: usize,
 }
 
 /// Run a `ppm msplines` subcommand.
 pub(crate) fn run_command(c: MsCommand) -> ExitCode {
     match c {
         MsCommand::Check(a) => check(&a),
+        MsCommand::Sample(a) => sample(&a),
+    }
+}
+
+fn sample(a: &MsSampleArgs) -> ExitCode {
+    let t0 = std::time::Instant::now();
+    let k = match super::load::surface(&a.file) {
+        Ok(k) => k,
+        Err(c) => return c,
+    };
+    let (at, sp) = match spline(&k, a.form, 3, a.degree, a.seed) {
+        Ok(x) => x,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    match sample_spline(&k, &at, &sp, a.level) {
+        Ok(m) => super::sample::write_sampled(&a.out, &m, a.quiet, t0),
+        Err(e) => {
+            eprintln!("error: {}: {e}", a.file.display());
+            ExitCode::from(1)
+        }
     }
 }
 
@@ -63,13 +120,24 @@ fn check(a: &MsCheckArgs) -> ExitCode {
         },
         views: a.views,
     };
-    let (rep, _, _) = match run(&k, &opt) {
+    let (mut rep, _, _) = match run(&k, &opt) {
         Ok(x) => x,
         Err(e) => {
             eprintln!("error: {e}");
             return ExitCode::from(2);
         }
     };
+    if a.spline_faces > 0 {
+        match spline(&k, a.form, 3, 2, a.seed) {
+            Ok((at, sp)) => rep
+                .checks
+                .extend(spline_checks(&k, &at, &sp, a.seed, a.spline_faces)),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
     if a.json {
         match serde_json::to_string_pretty(&rep) {
             Ok(s) => println!("{s}"),

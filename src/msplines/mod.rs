@@ -5,20 +5,28 @@
 //! SPEC.md IDs carry the prefix `MS-`.
 //!
 //! Data flows one way: [`homology`] (tree–cotree) → [`harmonic`] (cotangent Laplacian) →
-//! [`hodge`] (conjugate, ω) → [`zeros`] → [`atlas`] → [`view`] (gluing data) → checks.
+//! [`hodge`] (conjugate, ω) → [`zeros`] → [`atlas`] → [`view`] (gluing data) → checks; and
+//! for the spline itself: [`dms`] (the triangular B-spline basis of Sec. 3.1.2, exact or
+//! f64) → [`mesh_spline`] (Secs. 5.5–5.6 on the atlas) → [`spline_sample`] (a mesh file).
 
 pub mod atlas;
 pub mod atlas_checks;
 pub mod circle;
 pub mod claims;
 pub mod cochain;
+pub mod dms;
+pub mod dms_checks;
 pub mod error;
 pub mod harmonic;
 pub mod hodge;
 pub mod homology;
+pub mod mesh_spline;
+pub mod mesh_spline_checks;
 pub mod pipeline;
 pub mod polar;
 pub mod polar_checks;
+pub mod poly2;
+pub mod spline_sample;
 pub mod view;
 pub mod zeros;
 
