@@ -98,7 +98,7 @@ fn sample(a: &MsSampleArgs) -> ExitCode {
         }
     };
     match sample_spline(&k, &at, &sp, a.level) {
-        Ok(m) => super::sample::write_sampled(&a.out, &m, a.quiet, t0),
+        Ok(m) => super::sample::write_sampled("ppm msplines sample", &a.out, &m, a.quiet, t0),
         Err(e) => {
             eprintln!("error: {}: {e}", a.file.display());
             ExitCode::from(1)

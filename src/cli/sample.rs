@@ -103,13 +103,19 @@ pub fn run_sample(
             return ExitCode::from(1);
         }
     };
-    write_sampled(out, &m, quiet, t0)
+    write_sampled("ppm sample", out, &m, quiet, t0)
 }
 
 /// Writes a sampled surface (atomically, see `write_mesh_with_attributes`) and reports its
 /// edge-use counts (watertight: every edge in two faces); shared by every construction's
 /// `ppm sample`.
-pub(crate) fn write_sampled(out: &Path, m: &SampledMesh, quiet: bool, t0: Instant) -> ExitCode {
+pub(crate) fn write_sampled(
+    cmd: &str,
+    out: &Path,
+    m: &SampledMesh,
+    quiet: bool,
+    t0: Instant,
+) -> ExitCode {
     let (two, other) = edge_use_counts(&m.faces);
     if let Err(e) = write_mesh_with_attributes(out, m) {
         eprintln!("error: writing {}: {e}", out.display());
@@ -117,7 +123,7 @@ pub(crate) fn write_sampled(out: &Path, m: &SampledMesh, quiet: bool, t0: Instan
     }
     if !quiet {
         eprintln!(
-            "ppm sample: wrote {} ({} vertices, {} faces; {} edges in two faces, {} otherwise) in {:.2} s",
+            "{cmd}: wrote {} ({} vertices, {} faces; {} edges in two faces, {} otherwise) in {:.2} s",
             out.display(),
             m.positions.len(),
             m.faces.len(),

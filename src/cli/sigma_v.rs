@@ -112,5 +112,5 @@ pub fn run_sample(
             return ExitCode::from(1);
         }
     };
-    super::sample::write_sampled(out, &m, quiet, t0)
+    super::sample::write_sampled("ppm sample", out, &m, quiet, t0)
 }

@@ -33,10 +33,6 @@ impl Pt {
     pub fn cross(&self, o: &Pt) -> Q3 {
         &(&self.x * &o.y) - &(&self.y * &o.x)
     }
-    /// Scaled by `s`.
-    pub fn scale(&self, s: &Q3) -> Pt {
-        Pt::new(&self.x * s, &self.y * s)
-    }
 }
 
 impl fmt::Display for Pt {

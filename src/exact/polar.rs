@@ -271,11 +271,23 @@ impl fmt::Display for Region {
     }
 }
 
-/// The integers k with [lo, hi] + 2k meeting (−1, 1].
+fn floor_i64(x: Q) -> i64 {
+    x.floor().to_integer().try_into().unwrap_or(0)
+}
+
+/// The integers k with [lo, hi] + 2k meeting (−1, 1]: lo + 2k ≤ 1 and hi + 2k > −1, i.e.
+/// ⌊(−1 − hi)/2⌋ < k ≤ ⌊(1 − lo)/2⌋ (exactly; open or closed ends of [lo, hi] only decide
+/// whether an extreme k gives an empty piece, which the callers drop).
 fn shift_range(lo: &Q, hi: &Q) -> std::ops::RangeInclusive<i64> {
-    let to_i = |x: Q| -> i64 { x.floor().to_integer().try_into().unwrap_or(0) };
-    let kmin = to_i((q(-1, 1) - hi) / q(2, 1)) - 1;
-    let kmax = to_i((q(1, 1) - lo) / q(2, 1)) + 1;
+    let kmin = floor_i64((q(-1, 1) - hi) / q(2, 1)) + 1;
+    let kmax = floor_i64((q(1, 1) - lo) / q(2, 1));
+    kmin..=kmax
+}
+
+/// The integers k with `own` meeting `img` + 2k: 2k ∈ [own.lo − img.hi, own.hi − img.lo].
+fn overlap_shifts(own: &Interval, img: &Interval) -> std::ops::RangeInclusive<i64> {
+    let kmin = -floor_i64((&img.hi - &own.lo) / q(2, 1));
+    let kmax = floor_i64((&own.hi - &img.lo) / q(2, 1));
     kmin..=kmax
 }
 
@@ -474,10 +486,7 @@ impl Chain {
             for (j, pj) in ps.iter().enumerate() {
                 let img = pj.dom.affine_image(&pj.a, &pj.b);
                 let own = pi.dom.affine_image(&pi.a, &pi.b);
-                for k in shift_range(
-                    &(&own.lo - &img.hi - q(2, 1)),
-                    &(&own.hi - &img.lo + q(2, 1)),
-                ) {
+                for k in overlap_shifts(&own, &img) {
                     if i == j && k == 0 {
                         continue;
                     }
@@ -541,6 +550,51 @@ pub fn compare(lhs: &Chain, rhs: &Chain, dom: &Region) -> Comparison {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn interval_intersection_keeps_the_stricter_end() {
+        // Equal ends: closed only if both are (mutation campaign: `>`/`>=`, `&&`/`||`).
+        let closed = Interval::closed(q(0, 1), q(1, 1));
+        let open_lo = Interval::open_closed(q(0, 1), q(1, 1));
+        assert_eq!(closed.intersect(&open_lo), open_lo);
+        assert_eq!(open_lo.intersect(&closed), open_lo);
+        let open_hi = Interval::closed_open(q(0, 1), q(1, 1));
+        assert_eq!(closed.intersect(&open_hi), open_hi);
+        assert_eq!(open_hi.intersect(&closed), open_hi);
+    }
+
+    #[test]
+    fn region_union_merges_only_touching_intervals() {
+        let a = Interval::closed(q(0, 1), q(1, 1));
+        let b = Interval::closed(q(2, 1), q(3, 1));
+        let r = Region::from_intervals(vec![b.clone(), a.clone()]);
+        assert_eq!(r.0, vec![a.clone(), b]);
+        // [0, 1] ∪ (1, 2] = [0, 2]; [0, 1) ∪ (1, 2] stays two pieces.
+        let c = Interval::open_closed(q(1, 1), q(2, 1));
+        assert_eq!(
+            Region::from_intervals(vec![a, c.clone()]).0,
+            vec![Interval::closed(q(0, 1), q(2, 1))]
+        );
+        let d = Interval::closed_open(q(0, 1), q(1, 1));
+        assert_eq!(Region::from_intervals(vec![d, c]).0.len(), 2);
+    }
+
+    #[test]
+    fn shift_windows_are_exact() {
+        // [5/2, 3] + 2k meets (−1, 1] only for k = −1.
+        assert_eq!(shift_range(&q(5, 2), &q(3, 1)), -1..=-1);
+        // [−1, 1]: k = 0, and k = 1 for the point −1 + 2 = 1 (empty when −1 is an open end,
+        // as in (−1, 1]: the callers drop it); [1, 3]: k = 0 (the point 1) and k = −1.
+        assert_eq!(shift_range(&q(-1, 1), &q(1, 1)), 0..=1);
+        assert_eq!(shift_range(&q(1, 1), &q(3, 1)), -1..=0);
+        // Images far from (−1, 1] (chains ending in rotations are not reduced): own = [4, 5]
+        // meets img = (−1, 0] + 2k for k = 2, 3. (Before, the window was taken around
+        // −(own − img) with slack, which held only for images near (−1, 1].)
+        let own = Interval::closed(q(4, 1), q(5, 1));
+        let img = Interval::open_closed(q(-1, 1), q(0, 1));
+        assert_eq!(overlap_shifts(&own, &img), 2..=3);
+        assert_eq!(overlap_shifts(&img, &own), -3..=-2);
+    }
 
     #[test]
     fn conjugated_rotation_wraps_exactly_for_degree_three() {

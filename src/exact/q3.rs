@@ -220,9 +220,18 @@ mod tests {
         assert_eq!(Q3::new(q(3, 4), q(-1, 2)).signum(), Ordering::Less);
         assert_eq!(Q3::new(q(-3, 1), q(1, 1)).signum(), Ordering::Less);
         assert!(Q3::zero().inv().is_none());
-        for k in 0..12 {
+        for k in -12..24 {
             let (c, s) = cos_sin_sixth_pi(k);
             assert_eq!(&(&c * &c) + &(&s * &s), Q3::one());
+            // The signs too (c² + s² = 1 does not see them): against f64 cos and sin.
+            let f = |x: &Q3| {
+                use num_traits::ToPrimitive;
+                let r = |v: &Q| v.to_f64().unwrap_or(f64::NAN);
+                r(&x.a) + r(&x.b) * 3f64.sqrt()
+            };
+            let t = k as f64 * std::f64::consts::PI / 6.0;
+            assert!((f(&c) - t.cos()).abs() < 1e-12, "cos({k}π/6)");
+            assert!((f(&s) - t.sin()).abs() < 1e-12, "sin({k}π/6)");
         }
     }
 }

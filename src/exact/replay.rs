@@ -463,3 +463,43 @@ pub fn plant_sign_error(step: &mut Step) -> bool {
         _ => false,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rot_eq(lhs: Vec<(i64, i64)>, rhs: Vec<(i64, i64)>) -> StepVerdict {
+        let v = |x: Vec<(i64, i64)>| -> Vec<Q> {
+            x.into_iter()
+                .map(|(n, d)| Q::new(n.into(), d.into()))
+                .collect()
+        };
+        run_check(
+            &StepCheck::RotEq {
+                lhs: v(lhs),
+                rhs: v(rhs),
+            },
+            &BTreeMap::new(),
+        )
+        .0
+    }
+
+    #[test]
+    fn rotation_equality_is_mod_two_pi_and_reports_the_reduced_difference() {
+        // Angles in units of π: 1/3 + 2/3 = 1 ≡ 1 − 2 = −1, but 1 ≢ 0.
+        assert_eq!(
+            rot_eq(vec![(1, 3), (2, 3)], vec![(-1, 1)]),
+            StepVerdict::Holds
+        );
+        assert_eq!(rot_eq(vec![(3, 1)], vec![(1, 1)]), StepVerdict::Holds);
+        match rot_eq(vec![(1, 1)], vec![]) {
+            StepVerdict::Fails(s) => assert!(s.contains("by 1·π"), "{s}"),
+            v => panic!("a rotation by π taken for the identity: {v}"),
+        }
+        // The witness is the difference reduced into [0, 2): 5/2 ≡ 1/2.
+        match rot_eq(vec![(5, 2)], vec![]) {
+            StepVerdict::Fails(s) => assert!(s.contains("by 1/2·π"), "{s}"),
+            v => panic!("5π/2 taken for a multiple of 2π: {v}"),
+        }
+    }
+}

@@ -38,6 +38,7 @@ pub fn sample(
     let pat = sample_pattern_faces(&faces, level)?;
     let mut out = SampledMesh {
         faces: pat.faces,
+        title: "ppm msplines sample: manifold spline surface (Gu-He-Qin, Sec. 5.6)",
         ..SampledMesh::default()
     };
     for sp_pt in &pat.points {

@@ -31,6 +31,9 @@ pub struct SampledMesh {
     pub mean: Vec<f64>,
     /// Triangles as 0-based indices into the per-vertex arrays.
     pub faces: Vec<[u32; 3]>,
+    /// The OBJ header line: the command and what the surface is ("" = `ppm sample` of the
+    /// paper's PPS).
+    pub title: &'static str,
 }
 
 /// A sample point shared between faces: a mesh vertex, or the point of weight w on edge (a, b).
@@ -421,10 +424,12 @@ fn write_body(
     let (ps, ns, fs) = (&m.positions, &m.normals, &m.faces);
     match ext {
         "obj" => {
-            writeln!(
-                w,
-                "# ppm sample: C-infinity PPS surface (Siqueira-Xu-Gallier)"
-            )?;
+            let title = if m.title.is_empty() {
+                "ppm sample: C-infinity PPS surface (Siqueira-Xu-Gallier)"
+            } else {
+                m.title
+            };
+            writeln!(w, "# {title}")?;
             write_lines(&mut w, ps.len(), |i, b| {
                 writeln!(b, "v {:?} {:?} {:?}", ps[i][0], ps[i][1], ps[i][2])
             })?;

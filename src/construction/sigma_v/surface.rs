@@ -407,6 +407,7 @@ impl SigmaVPps {
             .collect();
         let mut out = SampledMesh {
             faces: pat.faces,
+            title: "ppm sample: C-infinity PPS surface, (sigma, v)-indexed construction (tutorial, Part IV)",
             ..SampledMesh::default()
         };
         for r in res {
