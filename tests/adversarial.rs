@@ -216,6 +216,7 @@ fn x_adv_14_failed_write_leaves_truncated_file() {
         gaussian: vec![0.0],
         mean: vec![0.0],
         faces: vec![],
+        title: "",
     };
     assert!(write_mesh_with_attributes(&target, &m).is_err());
     assert_eq!(std::fs::read_to_string(&target).expect("read"), "previous");
