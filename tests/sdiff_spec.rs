@@ -886,3 +886,156 @@ fn sd_6_2_distance_sd_6_2_topology_sd_l302_sd_l324_taubin_and_circle() {
         Verdict::Skipped { .. }
     ));
 }
+
+// ---- 3-D: monotonic coordinates on tetrahedra (Sec. 3.1, m = 3) ------------------------
+
+#[test]
+fn sd_l115_3_d_monotonic_maps_on_tetrahedra_are_certified_exactly() {
+    use pseudomanifold::sdiff::tet;
+    use rand::{Rng, SeedableRng};
+    // X = id: Jacobian numerator ≡ 1.
+    let id = [
+        Poly1::identity(),
+        Poly1::identity(),
+        Poly1::identity(),
+        Poly1::identity(),
+    ];
+    let (n, d) = tet::monotonic(&id);
+    assert_eq!(tet::jacobian_numerator(&n, &d), tet::Poly3::constant(q(1)));
+    // Seeded g_i = a t + b t² + c t³ (a > 0, b, c ≥ 0), one per vertex: every map certified.
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(115);
+    let mut certified = 0;
+    let samples = 30;
+    for _ in 0..samples {
+        let g: [Poly1; 4] = std::array::from_fn(|_| {
+            Poly1(vec![
+                q(0),
+                qr(rng.gen_range(1..=40), 10),
+                qr(rng.gen_range(0..=40), 10),
+                qr(rng.gen_range(0..=40), 10),
+            ])
+        });
+        match tet::monotonic_det(&g, Budget::default()) {
+            Decision::Certified { .. } => certified += 1,
+            d => panic!("{g:?}: {d:?}"),
+        }
+    }
+    assert_eq!(certified, samples);
+    println!("SD-L115(3-D): {certified} of {samples} seeded monotonic maps certified (seed 115)");
+    // The search behind `ppm sd claims` (extreme coefficients included).
+    let s = tet::search_monotonic(20, 115, Budget::default());
+    let r = claims::universal("SD-L115(3-D)", "search", &s, 20, 115);
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(s.certified, 20);
+    // Planted: g = t² at vertex 1 (g′(0) = 0) → det = 0 exactly on the face w_1 = 0; g′ < 0
+    // → refuted.
+    let mut flat = id.clone();
+    flat[1] = Poly1(vec![q(0), q(0), q(1)]);
+    match tet::monotonic_det(&flat, Budget::default()) {
+        Decision::Refuted { value, point, .. } => {
+            assert_eq!(value, "0");
+            // On the face w_1 = 0 (chart s = 0), where ∂x^1/∂s = g_1′(0)·… = 0.
+            assert_eq!(point[0], "0");
+        }
+        d => panic!("expected a refutation, got {d:?}"),
+    }
+    let mut bent = id.clone();
+    bent[2] = Poly1(vec![q(0), q(1), q(-3)]);
+    assert!(tet::monotonic_det(&bent, Budget::default()).refuted());
+}
+
+#[test]
+fn sd_cli_normals_c1_handle_polygonize_run_and_write_their_files() {
+    let bin = env!("CARGO_BIN_EXE_ppm");
+    let dir = std::env::temp_dir().join(format!("sdiff_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (mesh, kink) = (data("square.off"), data("kink_c1.toml"));
+    let run =
+        |args: &[&std::ffi::OsStr]| std::process::Command::new(bin).args(args).output().unwrap();
+    let solved = dir.join("solved.toml");
+    let out = run(&[
+        "sd".as_ref(),
+        "c1".as_ref(),
+        mesh.as_os_str(),
+        kink.as_os_str(),
+        "-o".as_ref(),
+        solved.as_os_str(),
+        "--json".as_ref(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|r| r["id"] == "SD-E12" && r["verdict"] == "holds"));
+    // The solved map is a diffeomorphism and 𝒪's one-sided normals agree (to the level shift).
+    let out = run(&[
+        "sd".as_ref(),
+        "check".as_ref(),
+        mesh.as_os_str(),
+        solved.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let out = run(&[
+        "sd".as_ref(),
+        "normals".as_ref(),
+        mesh.as_os_str(),
+        solved.as_os_str(),
+        "--json".as_ref(),
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(
+        v["points"][0]["curved_angle"].as_f64().unwrap() < 1e-9
+            && v["points"][0]["dx_jumps"] == true
+    );
+    // The handle sweep fails as written (exit 1) and names its first witness.
+    let out = run(&[
+        "sd".as_ref(),
+        "handle".as_ref(),
+        mesh.as_os_str(),
+        kink.as_os_str(),
+        "--edge".as_ref(),
+        "0,2".as_ref(),
+        "--steps".as_ref(),
+        "8".as_ref(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("u_h = 1/8 needs λ = 61/42"));
+    // Polygonization of the Fig. 4 circle writes 𝒪, O and the triangulation.
+    let (c, l, m) = (dir.join("c.obj"), dir.join("l.obj"), dir.join("m.off"));
+    let out = run(&[
+        "sd".as_ref(),
+        "polygonize".as_ref(),
+        "--curve".as_ref(),
+        "circle".as_ref(),
+        "-o".as_ref(),
+        c.as_os_str(),
+        "--linear".as_ref(),
+        l.as_os_str(),
+        "--mesh".as_ref(),
+        m.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "only the L302 erratum fails");
+    assert!(String::from_utf8_lossy(&out.stdout).contains("FAILS    SD-L302"));
+    for p in [&c, &l] {
+        assert!(std::fs::read_to_string(p).unwrap().contains("\nl "));
+    }
+    let raw = read_mesh(&m, &ReadOptions::default()).unwrap();
+    assert_eq!(raw.faces.len(), 186);
+    let out = run(&[
+        "sd".as_ref(),
+        "polygonize".as_ref(),
+        "--curve".as_ref(),
+        "lemniscate".as_ref(),
+        "-o".as_ref(),
+        c.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let _ = std::fs::remove_dir_all(&dir);
+}

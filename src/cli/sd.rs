@@ -447,6 +447,14 @@ pub fn run(a: SdArgs) -> ExitCode {
                 samples,
                 seed,
             ));
+            let s = crate::sdiff::tet::search_monotonic(samples.min(60), seed, b);
+            out.push(claims::universal(
+                "SD-L115(3-D)",
+                "Sec. 3.1: monotonic ⇒ injective, on the tetrahedron (chart w_1..w_3)",
+                &s,
+                samples.min(60),
+                seed,
+            ));
             emit(&out, json)
         }
     }

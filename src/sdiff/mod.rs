@@ -26,3 +26,4 @@ pub mod poly;
 pub mod polygonize;
 pub mod positivity;
 pub mod refine;
+pub mod tet;

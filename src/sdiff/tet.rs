@@ -136,9 +136,10 @@ impl Poly3 {
                         if a > j || b > k || c > l {
                             continue;
                         }
-                        acc += v
-                            * Q::from_integer(multinomial(n - a - b - c, &[i, j - a, k - b, l - c]))
-                            / Q::from_integer(multinomial(n, &[i, j, k, l]));
+                        acc += v * Q::from_integer(multinomial(
+                            n - a - b - c,
+                            &[i, j - a, k - b, l - c],
+                        )) / Q::from_integer(multinomial(n, &[i, j, k, l]));
                     }
                     match (i, j, k, l) {
                         (x, 0, 0, 0) if x == n => corners[0] = acc.clone(),
@@ -206,7 +207,9 @@ pub fn decide_tet(p: &Poly3, budget: Budget) -> Decision {
         let mut best = (0, 1, Q::zero());
         for a in 0..4 {
             for b in (a + 1)..4 {
-                let l: Q = (0..3).map(|k| (&t[a][k] - &t[b][k]) * (&t[a][k] - &t[b][k])).sum();
+                let l: Q = (0..3)
+                    .map(|k| (&t[a][k] - &t[b][k]) * (&t[a][k] - &t[b][k]))
+                    .sum();
                 if l > best.2 {
                     best = (a, b, l);
                 }
@@ -244,7 +247,10 @@ pub fn monotonic(g: &[Poly1; 4]) -> ([Poly3; 3], Poly3) {
 /// A = ∂N/∂(s, t, r) (matrix determinant lemma on D·A − N ∇Dᵀ), so with D > 0 the sign of
 /// det DX is the sign of the returned polynomial.
 pub fn jacobian_numerator(n: &[Poly3; 3], d: &Poly3) -> Poly3 {
-    let a: Vec<Vec<Poly3>> = n.iter().map(|ni| (0..3).map(|k| ni.d(k)).collect()).collect();
+    let a: Vec<Vec<Poly3>> = n
+        .iter()
+        .map(|ni| (0..3).map(|k| ni.d(k)).collect())
+        .collect();
     let m = |x: &Poly3, y: &Poly3| x.mul(y);
     let sub = |x: &Poly3, y: &Poly3| x.axpy(&q(-1), y);
     // adj(A)[i][j] = cofactor C[j][i].
@@ -261,13 +267,15 @@ pub fn jacobian_numerator(n: &[Poly3; 3], d: &Poly3) -> Poly3 {
             minor.axpy(&q(-2), &minor)
         }
     };
-    let det_a = (0..3).fold(Poly3::default(), |acc, c| acc.axpy(&q(1), &m(&a[0][c], &cof(0, c))));
+    let det_a = (0..3).fold(Poly3::default(), |acc, c| {
+        acc.axpy(&q(1), &m(&a[0][c], &cof(0, c)))
+    });
     let grad_d: Vec<Poly3> = (0..3).map(|k| d.d(k)).collect();
     let mut lemma = Poly3::default();
-    for i in 0..3 {
-        for j in 0..3 {
+    for (i, gi) in grad_d.iter().enumerate() {
+        for (j, nj) in n.iter().enumerate() {
             // ∇D_i · adj(A)[i][j] · N_j
-            lemma = lemma.axpy(&q(1), &m(&m(&grad_d[i], &cof(j, i)), &n[j]));
+            lemma = lemma.axpy(&q(1), &m(&m(gi, &cof(j, i)), nj));
         }
     }
     sub(&m(d, &det_a), &lemma)
@@ -281,4 +289,36 @@ pub fn monotonic_det(g: &[Poly1; 4], budget: Budget) -> Decision {
         return dd;
     }
     decide_tet(&jacobian_numerator(&n, &d), budget)
+}
+
+/// `SD-L115(3-D)`: seeded monotonic maps on the tetrahedron (g_i = a t + b t² + c t³ with
+/// a, b, c drawn as in the planar search), each certified or refuted exactly.
+pub fn search_monotonic(samples: usize, seed: u64, budget: Budget) -> super::claims::Search {
+    use rand::SeedableRng;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+    let mut s = super::claims::Search::default();
+    for _ in 0..samples {
+        let g: [Poly1; 4] = std::array::from_fn(|_| {
+            Poly1(vec![
+                q(0),
+                super::claims::unit_open(&mut rng) * q(10),
+                super::claims::unit_open(&mut rng) * q(10),
+                super::claims::unit_open(&mut rng) * q(10),
+            ])
+        });
+        match monotonic_det(&g, budget) {
+            Decision::Certified { .. } => s.certified += 1,
+            d @ Decision::Refuted { .. } => s.refuted.push((
+                format!(
+                    "{:?}",
+                    g.iter()
+                        .map(|p| p.0.iter().map(|x| x.to_string()).collect::<Vec<_>>())
+                        .collect::<Vec<_>>()
+                ),
+                d,
+            )),
+            Decision::Unresolved { .. } => s.unresolved += 1,
+        }
+    }
+    s
 }
