@@ -1039,3 +1039,69 @@ fn sd_cli_normals_c1_handle_polygonize_run_and_write_their_files() {
     assert_eq!(out.status.code(), Some(2));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn sd_l219_positive_fourier_motzkin_finds_proves_and_gives_up_within_budget() {
+    use linsys::{positive_solution, rref, Positive};
+    let row = |v: &[i64]| v.iter().map(|x| q(*x)).collect::<Vec<Q>>();
+    // x0 = 2 x1: the free unknown = 1 suffices.
+    let r = rref(vec![row(&[1, -2])], 2);
+    assert_eq!(positive_solution(&r, 100).0, Positive::FreeOnes);
+    // x0 = −2 x1 + x2: free ones give x0 = −1; Fourier–Motzkin finds x2 ≥ 3.
+    let r = rref(vec![row(&[1, 2, -1])], 3);
+    let (p, x) = positive_solution(&r, 100);
+    assert!(matches!(p, Positive::FourierMotzkin { .. }), "{p:?}");
+    let x = x.unwrap();
+    assert!(
+        x.iter().all(|v| *v >= q(1)) && &x[0] + q(2) * &x[1] - &x[2] == q(0),
+        "{x:?}"
+    );
+    // x0 = x1 − x2 needs one combination (t1 − t2 ≥ 1 with t2 ≥ 1): over a zero budget it is
+    // undecided, not a guess; within budget it is found.
+    let r = rref(vec![row(&[1, -1, 1])], 3);
+    assert!(matches!(
+        positive_solution(&r, 0).0,
+        Positive::Undecided { .. }
+    ));
+    assert!(matches!(
+        positive_solution(&r, 10).0,
+        Positive::FourierMotzkin { .. }
+    ));
+    // x0 = −x1: Fourier–Motzkin derives 0 ≥ 2; x0 = 0 forced: 0 ≥ 1.
+    assert!(matches!(
+        positive_solution(&rref(vec![row(&[1, 1])], 2), 100).0,
+        Positive::Infeasible { .. }
+    ));
+    assert!(matches!(
+        positive_solution(&rref(vec![row(&[1, 0])], 2), 100).0,
+        Positive::Infeasible { .. }
+    ));
+}
+
+#[test]
+fn sd_l203_sd_e12_sd_l219_a_single_triangle_is_skipped_not_held() {
+    // No interior edge: nothing to examine, reported as skipped (never as holds).
+    let raw = pseudomanifold::mesh::raw::RawMesh {
+        positions: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        faces: vec![[0, 1, 2]],
+        face_origin: vec![0],
+        vertex_origin: vec![0, 1, 2],
+        ..Default::default()
+    };
+    let k = validate(&raw).unwrap().0;
+    let f = vec![q(-1), q(1), q(1)];
+    let (spec, cm) = rational_fixed(&k, 2);
+    let (r, pts) = normals::check_l203(&k, &cm, &f, &q(0));
+    assert!(
+        pts.is_empty() && matches!(r.verdict, Verdict::Skipped { .. }),
+        "{r:?}"
+    );
+    for r in c1::verify(&k, &cm, &f, &q(0), c1::Scope::AllInteriorEdges) {
+        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    }
+    let run = c1::run(&k, &spec, &f, &q(0), c1::Scope::AllInteriorEdges, 100).unwrap();
+    assert_eq!(run.solved.counts[0], 0);
+    for r in &run.report {
+        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    }
+}

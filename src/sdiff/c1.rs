@@ -465,6 +465,13 @@ pub fn run(
         _ => {}
     }
     report.push(p);
+    if eqs == 0 {
+        for r in report.iter_mut() {
+            r.verdict = Verdict::Skipped {
+                reason: "no interior edge in scope: no equation".into(),
+            };
+        }
+    }
     let solution = solved
         .weights
         .as_ref()
