@@ -503,3 +503,605 @@ fn sd_l168_level_at_a_vertex_is_a_typed_error() {
         Err(iso::IsoError::LevelAtVertex { vertex: 0, .. })
     ));
 }
+
+// ---- Sec. 5: one-sided normals (L203) and the C¹ system (Eq. (12), L213–L225) ----------
+
+use pseudomanifold::sdiff::{c1, linsys, normals};
+
+fn inline(text: &str) -> params::MapSpec {
+    params::parse(text, Path::new("inline.toml")).unwrap()
+}
+
+/// The kink of the linear isocurve on the diagonal of square.off: ∇f̂ = (2, 1) in triangle 0,
+/// (3, 0) in triangle 1.
+fn kink_values() -> Vec<Q> {
+    vec![q(-1), q(1), q(2), q(-1), q(1)]
+}
+
+#[test]
+fn sd_l203_identity_keeps_the_kink_and_a_derivative_jump_alone_does_not_smooth() {
+    let k = square();
+    let f = kink_values();
+    // X = id (degree 1, fixed control points): no derivative jump, 𝒪 = O keeps its kink.
+    let id = inline("family = \"polynomial\"\ndegree = 1\n");
+    let cm = id.build(&k, Path::new("inline.toml")).unwrap();
+    let (r, pts) = normals::check_l203(&k, &cm, &f, &q(0));
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    let p = pts
+        .iter()
+        .find(|p| p.edge == [0, 2])
+        .expect("O crosses the diagonal");
+    assert!(p.linear_kink && !p.curved_smooth && !p.dx_jumps, "{p:?}");
+    assert!(
+        (pseudomanifold::sdiff::poly::to_f64(&p.u.parse::<Q>().unwrap()) - 1.0 / 3.0).abs() < 1e-15
+    );
+    assert_eq!(p.curved_cross, p.linear_cross);
+    assert_ne!(p.curved_cross, "0");
+    println!(
+        "SD-L203 identity: u = {}, ∇F_σ = {:?}, ∇F_σ′ = {:?}, cross = {}, angle = {:.6} rad",
+        p.u, p.sides[0].grad, p.sides[1].grad, p.curved_cross, p.curved_angle
+    );
+    // A monotonic map (Eq. (9)) has a derivative jump on the diagonal, and 𝒪 still kinks: the
+    // jump is necessary (L203), not sufficient.
+    let (km, _, cmm) = load("monotonic.toml");
+    let (r, pts) = normals::check_l203(&km, &cmm, &f, &q(0));
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    let p = pts.iter().find(|p| p.edge == [0, 2]).unwrap();
+    assert!(p.dx_jumps && p.linear_kink && !p.curved_smooth, "{p:?}");
+    println!(
+        "SD-L203 monotonic: u = {}, level through p = {}, angle 𝒪 {:.6} vs O {:.6} rad, DX jumps",
+        p.u, p.level_f64, p.curved_angle, p.linear_angle
+    );
+}
+
+#[test]
+fn sd_l203_planted_smooth_curve_without_a_jump_is_reported_with_a_witness() {
+    // A record that contradicts L201–L203 (𝒪 C¹, O kinked, DX continuous) must be an offence.
+    let k = square();
+    let id = inline("family = \"polynomial\"\ndegree = 1\n");
+    let cm = id.build(&k, Path::new("inline.toml")).unwrap();
+    let e = k
+        .interior_edges()
+        .into_iter()
+        .find(|e| (e.0, e.1) == (0, 2))
+        .unwrap();
+    let mut p = normals::one_sided(&k, &cm, &kink_values(), e, &qr(1, 3)).unwrap();
+    assert_eq!(p.u, "1/3");
+    p.curved_smooth = true;
+    let mut r = CheckResult::new("SD-L203", "planted");
+    normals::record(&mut r, &p);
+    assert!(r.failed());
+    assert!(
+        r.witnesses[0].text.contains("edge [0, 2]"),
+        "{:?}",
+        r.witnesses
+    );
+}
+
+fn rational_fixed(k: &PlanarComplex, n: usize) -> (params::MapSpec, ComplexMap) {
+    let spec = inline(&format!("family = \"rational\"\ndegree = {n}\n"));
+    let cm = spec.build(k, Path::new("inline.toml")).unwrap();
+    (spec, cm)
+}
+
+fn grid(n: usize) -> PlanarComplex {
+    let m =
+        pseudomanifold::sdiff::refine::Mesh2::kuhn(n, n, [0.0, 0.0], [n as f64, n as f64], 10_000);
+    validate(&m.to_raw().0).unwrap().0
+}
+
+/// f(x, y) = (x − c)² + (y − c)² − c²/2 + 1/8 at the vertices (c = n/2): a closed linear
+/// isocurve around the centre of the grid, never 0 at a vertex.
+fn grid_values(k: &PlanarComplex, n: usize) -> Vec<Q> {
+    let c = qr(n as i64, 2);
+    k.points
+        .iter()
+        .map(|p| {
+            let (dx, dy) = (&p[0] - &c, &p[1] - &c);
+            &dx * &dx + &dy * &dy - &c * &c / q(2) + qr(1, 8)
+        })
+        .collect()
+}
+
+#[test]
+fn sd_e12_sd_e12_n_square_system_solved_exactly_positive_weights_and_c1_verified() {
+    let k = square();
+    let f = kink_values();
+    for n in 2..=4 {
+        let (spec, cm) = rational_fixed(&k, n);
+        let sys = c1::build(&k, &cm, &f, &q(0), c1::Scope::AllInteriorEdges).unwrap();
+        let sol = c1::solve(&sys, 20_000);
+        let w = sol
+            .weights
+            .clone()
+            .unwrap_or_else(|| panic!("n = {n}: {:?}", sol.positive));
+        assert!(c1::residuals(&sys, &w).iter().all(|r| *r == q(0)));
+        assert!(w.iter().all(|x| *x >= q(1)));
+        let spec2 = c1::with_weights(&spec, &sys, &w);
+        let cm2 = spec2.build(&k, Path::new("inline.toml")).unwrap();
+        let [rn, rf] = c1::verify(&k, &cm2, &f, &q(0), c1::Scope::AllInteriorEdges);
+        assert_eq!(rn.verdict, Verdict::Holds, "{rn:?}");
+        assert_eq!(rf.verdict, Verdict::Holds, "{rf:?}");
+        // Positive weights, fixed control points: a diffeomorphism (SD-L161), certified.
+        let all = check_all(&k, &cm2, &Options::default());
+        assert_eq!(by_id(&all, "SD-L101(det)").verdict, Verdict::Holds);
+        // L203, the positive case: at 𝒪's crossing of the diagonal DX jumps and the normals
+        // agree (to the level shift of the nearest rational point).
+        let (_, pts) = normals::check_l203(&k, &cm2, &f, &q(0));
+        let p = pts.iter().find(|p| p.edge == [0, 2]).unwrap();
+        assert!(
+            p.dx_jumps && p.linear_kink && p.curved_angle < 1e-9,
+            "{p:?}"
+        );
+        // Before: weights 1 (X = id), the curve kinks.
+        let (_, pts0) = normals::check_l203(&k, &cm, &f, &q(0));
+        let p0 = pts0.iter().find(|p| p.edge == [0, 2]).unwrap();
+        println!(
+            "SD-E12 n = {n}: {} equations, {} unknowns ({} involved), rank {}, positive by {:?}; angle of 𝒪 at δ: {:.3e} (X = id: {:.6}); weights {:?}; {}",
+            sol.counts[0], sol.counts[1], sol.counts[2], sol.rank, sol.positive, p.curved_angle, p0.curved_angle,
+            w.iter().map(|x| x.to_string()).collect::<Vec<_>>(), rf.note
+        );
+    }
+}
+
+#[test]
+fn sd_e12_n_planted_dropped_equation_and_perturbed_weight_give_witnesses() {
+    let k = square();
+    let f = kink_values();
+    let (spec, cm) = rational_fixed(&k, 3);
+    let mut sys = c1::build(&k, &cm, &f, &q(0), c1::Scope::AllInteriorEdges).unwrap();
+    // Perturbed weight: a solved system with one involved weight doubled.
+    let sol = c1::solve(&sys, 20_000);
+    let mut w = sol.weights.clone().unwrap();
+    let u = sys.equations[0].terms[0].0;
+    w[u] = &w[u] * q(2);
+    let cm2 = c1::with_weights(&spec, &sys, &w)
+        .build(&k, Path::new("inline.toml"))
+        .unwrap();
+    let [rn, rf] = c1::verify(&k, &cm2, &f, &q(0), c1::Scope::AllInteriorEdges);
+    assert!(rn.failed() && rf.failed(), "{rn:?} {rf:?}");
+    assert!(
+        rn.witnesses[0].text.contains("at u = "),
+        "{:?}",
+        rn.witnesses
+    );
+    println!("SD-E12 planted weight: {}", rn.witnesses[0].text);
+    // Dropped equation: solve without the edge's last equation; with the free unknowns = 1 the
+    // dropped condition does not hold, and the check says where.
+    sys.equations.pop();
+    let sol = c1::solve(&sys, 20_000);
+    let w = sol.weights.unwrap();
+    let full = c1::build(&k, &cm, &f, &q(0), c1::Scope::AllInteriorEdges).unwrap();
+    let res = c1::residuals(&full, &w);
+    assert_ne!(res.last().unwrap(), &q(0));
+    let cm3 = c1::with_weights(&spec, &full, &w)
+        .build(&k, Path::new("inline.toml"))
+        .unwrap();
+    let [rn, _] = c1::verify(&k, &cm3, &f, &q(0), c1::Scope::AllInteriorEdges);
+    assert!(rn.failed(), "{rn:?}");
+    println!("SD-E12 planted dropped equation: {}", rn.witnesses[0].text);
+}
+
+#[test]
+fn sd_l219_counts_rank_and_positive_solutions_on_the_square_and_on_grids() {
+    // square.off: 5 vertices, 7 edges (1 interior... 2 interior), 3 triangles.
+    let k = square();
+    let f = kink_values();
+    for n in 1..=4 {
+        let (_, cm) = rational_fixed(&k, n);
+        let sys = c1::build(&k, &cm, &f, &q(0), c1::Scope::AllInteriorEdges).unwrap();
+        let sol = c1::solve(&sys, 20_000);
+        assert_eq!(sol.counts[0], 2 * n);
+        assert_eq!(
+            sol.counts[1],
+            5 + 7 * (n - 1) + 3 * (n - 1) * n.saturating_sub(2) / 2
+        );
+        println!(
+            "SD-L219 square n = {n}: eqs {}, unknowns {}, involved {}, rank {}, {:?}",
+            sol.counts[0], sol.counts[1], sol.counts[2], sol.rank, sol.positive
+        );
+    }
+    for g in [2usize, 3] {
+        let k = grid(g);
+        let f = grid_values(&k, g);
+        let (v, e, t) = (k.points.len(), 3 * g * g + 2 * g, 2 * g * g);
+        let e_int = e - 4 * g;
+        for n in 1..=4 {
+            let (_, cm) = rational_fixed(&k, n);
+            let sys = c1::build(&k, &cm, &f, &q(0), c1::Scope::AllInteriorEdges).unwrap();
+            let sol = c1::solve(&sys, 20_000);
+            assert_eq!(sol.counts[0], n * e_int);
+            assert_eq!(
+                sol.counts[1],
+                v + e * (n - 1) + t * (n - 1) * n.saturating_sub(2) / 2
+            );
+            println!("SD-L219 grid {g}x{g} n = {n}: eqs {}, unknowns {}, involved {}, rank {}, nullity {}, {:?}", sol.counts[0], sol.counts[1], sol.counts[2], sol.rank, sol.counts[1] - sol.rank, sol.positive);
+            if let Some(w) = &sol.weights {
+                let sys_w = c1::err(&sys, w);
+                assert_eq!(sys_w, q(0));
+            } else if let linsys::Positive::Infeasible { .. } = sol.positive {
+                // L225: err is homogeneous of degree 2, so err(β/2^k) = err(β)/4^k → 0 while
+                // no β > 0 has err = 0: the infimum 0 is not attained.
+                let ones = vec![q(1); sys.unknowns.len()];
+                let e1 = c1::err(&sys, &ones);
+                let half: Vec<Q> = ones.iter().map(|x| x / q(1024)).collect();
+                assert_eq!(c1::err(&sys, &half), &e1 / q(1024 * 1024));
+                println!("SD-L225 grid {g}x{g} n = {n}: err(1) = {e1}, err(1/1024) = err(1)/2^20, no β > 0 with err = 0 (Fourier–Motzkin)");
+            }
+        }
+    }
+}
+
+#[test]
+fn sd_l219_sd_l219_positive_crossed_edges_only_on_grids() {
+    // (12) on the edges crossed by O only (𝒪 meets no other edge): the corrected scope.
+    for g in [2usize, 3] {
+        let k = grid(g);
+        let f = grid_values(&k, g);
+        for n in 1..=3 {
+            let spec = inline(&format!("family = \"rational\"\ndegree = {n}\n"));
+            let run = c1::run(&k, &spec, &f, &q(0), c1::Scope::CrossedEdges, 20_000).unwrap();
+            let all = c1::run(&k, &spec, &f, &q(0), c1::Scope::AllInteriorEdges, 20_000).unwrap();
+            println!(
+                "SD-L219 grid {g}x{g} n = {n}: crossed only: {} / {:?}; all edges: {:?}",
+                run.report[0].note, run.solved.positive, all.solved.positive
+            );
+            if let Some(sol) = &run.solution {
+                for r in &run.report[2..] {
+                    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+                }
+                let cm = sol.build(&k, Path::new("inline.toml")).unwrap();
+                let checks = check_all(&k, &cm, &Options::default());
+                assert_eq!(by_id(&checks, "SD-L101(det)").verdict, Verdict::Holds);
+                // The solved map reads back from its TOML.
+                let back = params::parse(&sol.to_toml(), Path::new("solved.toml")).unwrap();
+                assert_eq!(back.weights, sol.weights);
+            }
+        }
+    }
+}
+
+#[test]
+fn sd_l225_homogeneous_objective_has_infimum_zero_and_no_minimiser_on_the_2x2_grid() {
+    // Degree 1 on the 2×2 grid: (12) on every interior edge says q_v (f_v − c) = L(v) with L
+    // affine (N is one linear function); f < 0 at the centre and > 0 at its 8 neighbours, so
+    // q > 0 would need L < 0 at the centre and > 0 around it, impossible for an affine L
+    // (the centre is the midpoint of two neighbours). Fourier–Motzkin proves the same.
+    let k = grid(2);
+    let f = grid_values(&k, 2);
+    let centre = k
+        .points
+        .iter()
+        .position(|p| p[0] == q(1) && p[1] == q(1))
+        .unwrap();
+    assert!(f[centre] < q(0));
+    assert!(f.iter().enumerate().all(|(i, x)| i == centre || *x > q(0)));
+    let spec = inline("family = \"rational\"\ndegree = 1\n");
+    let run = c1::run(&k, &spec, &f, &q(0), c1::Scope::AllInteriorEdges, 20_000).unwrap();
+    assert!(matches!(
+        run.solved.positive,
+        linsys::Positive::Infeasible { .. }
+    ));
+    // err(β) > 0 for every β > 0, yet err(β/2^k) = err(β)/4^k → 0: inf = 0, not attained.
+    let ones = vec![q(1); run.system.unknowns.len()];
+    let mut e = c1::err(&run.system, &ones);
+    assert!(e > q(0));
+    let mut beta = ones.clone();
+    for _ in 0..10 {
+        beta = beta.iter().map(|x| x / q(2)).collect();
+        let next = c1::err(&run.system, &beta);
+        assert_eq!(next, &e / q(4));
+        e = next;
+    }
+    println!(
+        "SD-L225: err(1) = {}, err(2^-10) = {e}",
+        c1::err(&run.system, &ones)
+    );
+}
+
+#[test]
+fn sd_6_1_handle_restricted_sweep_on_the_diagonal_is_certified_exactly_inside_the_predicted_interval(
+) {
+    use pseudomanifold::sdiff::handles;
+    let k = square();
+    let f = kink_values();
+    let s = handles::sweep(&k, &f, &q(0), (0, 2), 32, Budget::default()).unwrap();
+    assert_eq!(s.u_linear, "1/3");
+    let [w, r] = handles::judge(&s);
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert!(w.failed(), "{w:?}");
+    assert!(w.witnesses[0].text.contains("needs λ"), "{:?}", w.witnesses);
+    let ok: Vec<f64> = s
+        .steps
+        .iter()
+        .filter(|x| x.diffeomorphism)
+        .map(|x| x.u_f64)
+        .collect();
+    assert!(ok
+        .iter()
+        .all(|u| *u > s.predicted[0] && *u < s.predicted[1]));
+    assert!(!ok.is_empty());
+    println!(
+        "SD-6.1(handle): {} — {} of {} positions certified; first witness: {}",
+        w.note,
+        ok.len(),
+        s.steps.len(),
+        w.witnesses[0].text
+    );
+    // Planted: a step claimed certified outside the interval is caught by the restricted row.
+    let mut bad = s.clone();
+    bad.steps[0].diffeomorphism = true;
+    let [_, r] = handles::judge(&bad);
+    assert!(
+        r.failed() && r.witnesses[0].text.contains("predicted false"),
+        "{r:?}"
+    );
+    // An edge O does not cross is a typed error.
+    assert!(handles::sweep(&k, &f, &q(0), (1, 2), 8, Budget::default()).is_err());
+}
+
+#[test]
+fn sd_6_2_distance_sd_6_2_topology_sd_l302_sd_l324_taubin_and_circle() {
+    use pseudomanifold::sdiff::{implicit::Implicit, polygonize};
+    // Fewer steps and a coarser reference than the CLI defaults (400, 512²), to keep the test
+    // short; the SPEC row quotes `ppm sd polygonize` with the defaults.
+    let opts = polygonize::Options {
+        max_steps: 120,
+        reference_grid: 256,
+        ..Default::default()
+    };
+    for g in [Implicit::taubin(), Implicit::circle()] {
+        let out = polygonize::polygonize(&g, &opts).unwrap();
+        for r in &out.report {
+            println!(
+                "{} {}: {:?} examined {} — {} {:?}",
+                g.name,
+                r.id,
+                r.verdict,
+                r.examined,
+                r.note,
+                r.witnesses.first().map(|w| &w.text)
+            );
+        }
+        assert_eq!(by_id(&out.report, "SD-L101(det)").verdict, Verdict::Holds);
+        assert_eq!(by_id(&out.report, "SD-L168").verdict, Verdict::Holds);
+        assert!(out.iso.curved.to_obj().contains("\nl "));
+        assert!(polygonize::to_off(&out.mesh).starts_with("OFF\n"));
+    }
+    // Planted: a zero grid is a typed error, and a wrong curve (g shifted by 1, no zero in the
+    // box) gives empty curves, reported as skipped, never as holds.
+    assert!(polygonize::polygonize(
+        &Implicit::circle(),
+        &polygonize::Options {
+            grid: 0,
+            ..Default::default()
+        }
+    )
+    .is_err());
+    let mut shifted = Implicit::circle();
+    shifted.terms.push((0, 0, q(1)));
+    let out = polygonize::polygonize(&shifted, &opts).unwrap();
+    assert!(matches!(
+        by_id(&out.report, "SD-6.2(distance)").verdict,
+        Verdict::Skipped { .. }
+    ));
+}
+
+// ---- 3-D: monotonic coordinates on tetrahedra (Sec. 3.1, m = 3) ------------------------
+
+#[test]
+fn sd_l115_3_d_monotonic_maps_on_tetrahedra_are_certified_exactly() {
+    use pseudomanifold::sdiff::tet;
+    use rand::{Rng, SeedableRng};
+    // X = id: Jacobian numerator ≡ 1.
+    let id = [
+        Poly1::identity(),
+        Poly1::identity(),
+        Poly1::identity(),
+        Poly1::identity(),
+    ];
+    let (n, d) = tet::monotonic(&id);
+    assert_eq!(tet::jacobian_numerator(&n, &d), tet::Poly3::constant(q(1)));
+    // Seeded g_i = a t + b t² + c t³ (a > 0, b, c ≥ 0), one per vertex: every map certified.
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(115);
+    let mut certified = 0;
+    let samples = 30;
+    for _ in 0..samples {
+        let g: [Poly1; 4] = std::array::from_fn(|_| {
+            Poly1(vec![
+                q(0),
+                qr(rng.gen_range(1..=40), 10),
+                qr(rng.gen_range(0..=40), 10),
+                qr(rng.gen_range(0..=40), 10),
+            ])
+        });
+        match tet::monotonic_det(&g, Budget::default()) {
+            Decision::Certified { .. } => certified += 1,
+            d => panic!("{g:?}: {d:?}"),
+        }
+    }
+    assert_eq!(certified, samples);
+    println!("SD-L115(3-D): {certified} of {samples} seeded monotonic maps certified (seed 115)");
+    // The search behind `ppm sd claims` (extreme coefficients included).
+    let s = tet::search_monotonic(20, 115, Budget::default());
+    let r = claims::universal("SD-L115(3-D)", "search", &s, 20, 115);
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(s.certified, 20);
+    // Planted: g = t² at vertex 1 (g′(0) = 0) → det = 0 exactly on the face w_1 = 0; g′ < 0
+    // → refuted.
+    let mut flat = id.clone();
+    flat[1] = Poly1(vec![q(0), q(0), q(1)]);
+    match tet::monotonic_det(&flat, Budget::default()) {
+        Decision::Refuted { value, point, .. } => {
+            assert_eq!(value, "0");
+            // On the face w_1 = 0 (chart s = 0), where ∂x^1/∂s = g_1′(0)·… = 0.
+            assert_eq!(point[0], "0");
+        }
+        d => panic!("expected a refutation, got {d:?}"),
+    }
+    let mut bent = id.clone();
+    bent[2] = Poly1(vec![q(0), q(1), q(-3)]);
+    assert!(tet::monotonic_det(&bent, Budget::default()).refuted());
+}
+
+#[test]
+fn sd_cli_normals_c1_handle_polygonize_run_and_write_their_files() {
+    let bin = env!("CARGO_BIN_EXE_ppm");
+    let dir = std::env::temp_dir().join(format!("sdiff_cli_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (mesh, kink) = (data("square.off"), data("kink_c1.toml"));
+    let run =
+        |args: &[&std::ffi::OsStr]| std::process::Command::new(bin).args(args).output().unwrap();
+    let solved = dir.join("solved.toml");
+    let out = run(&[
+        "sd".as_ref(),
+        "c1".as_ref(),
+        mesh.as_os_str(),
+        kink.as_os_str(),
+        "-o".as_ref(),
+        solved.as_os_str(),
+        "--json".as_ref(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(v
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|r| r["id"] == "SD-E12" && r["verdict"] == "holds"));
+    // The solved map is a diffeomorphism and 𝒪's one-sided normals agree (to the level shift).
+    let out = run(&[
+        "sd".as_ref(),
+        "check".as_ref(),
+        mesh.as_os_str(),
+        solved.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let out = run(&[
+        "sd".as_ref(),
+        "normals".as_ref(),
+        mesh.as_os_str(),
+        solved.as_os_str(),
+        "--json".as_ref(),
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(
+        v["points"][0]["curved_angle"].as_f64().unwrap() < 1e-9
+            && v["points"][0]["dx_jumps"] == true
+    );
+    // The handle sweep fails as written (exit 1) and names its first witness.
+    let out = run(&[
+        "sd".as_ref(),
+        "handle".as_ref(),
+        mesh.as_os_str(),
+        kink.as_os_str(),
+        "--edge".as_ref(),
+        "0,2".as_ref(),
+        "--steps".as_ref(),
+        "8".as_ref(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("u_h = 1/8 needs λ = 61/42"));
+    // Polygonization of the Fig. 4 circle writes 𝒪, O and the triangulation.
+    let (c, l, m) = (dir.join("c.obj"), dir.join("l.obj"), dir.join("m.off"));
+    let out = run(&[
+        "sd".as_ref(),
+        "polygonize".as_ref(),
+        "--curve".as_ref(),
+        "circle".as_ref(),
+        "-o".as_ref(),
+        c.as_os_str(),
+        "--linear".as_ref(),
+        l.as_os_str(),
+        "--mesh".as_ref(),
+        m.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "only the L302 erratum fails");
+    assert!(String::from_utf8_lossy(&out.stdout).contains("FAILS    SD-L302"));
+    for p in [&c, &l] {
+        assert!(std::fs::read_to_string(p).unwrap().contains("\nl "));
+    }
+    let raw = read_mesh(&m, &ReadOptions::default()).unwrap();
+    assert_eq!(raw.faces.len(), 186);
+    let out = run(&[
+        "sd".as_ref(),
+        "polygonize".as_ref(),
+        "--curve".as_ref(),
+        "lemniscate".as_ref(),
+        "-o".as_ref(),
+        c.as_os_str(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn sd_l219_positive_fourier_motzkin_finds_proves_and_gives_up_within_budget() {
+    use linsys::{positive_solution, rref, Positive};
+    let row = |v: &[i64]| v.iter().map(|x| q(*x)).collect::<Vec<Q>>();
+    // x0 = 2 x1: the free unknown = 1 suffices.
+    let r = rref(vec![row(&[1, -2])], 2);
+    assert_eq!(positive_solution(&r, 100).0, Positive::FreeOnes);
+    // x0 = −2 x1 + x2: free ones give x0 = −1; Fourier–Motzkin finds x2 ≥ 3.
+    let r = rref(vec![row(&[1, 2, -1])], 3);
+    let (p, x) = positive_solution(&r, 100);
+    assert!(matches!(p, Positive::FourierMotzkin { .. }), "{p:?}");
+    let x = x.unwrap();
+    assert!(
+        x.iter().all(|v| *v >= q(1)) && &x[0] + q(2) * &x[1] - &x[2] == q(0),
+        "{x:?}"
+    );
+    // x0 = x1 − x2 needs one combination (t1 − t2 ≥ 1 with t2 ≥ 1): over a zero budget it is
+    // undecided, not a guess; within budget it is found.
+    let r = rref(vec![row(&[1, -1, 1])], 3);
+    assert!(matches!(
+        positive_solution(&r, 0).0,
+        Positive::Undecided { .. }
+    ));
+    assert!(matches!(
+        positive_solution(&r, 10).0,
+        Positive::FourierMotzkin { .. }
+    ));
+    // x0 = −x1: Fourier–Motzkin derives 0 ≥ 2; x0 = 0 forced: 0 ≥ 1.
+    assert!(matches!(
+        positive_solution(&rref(vec![row(&[1, 1])], 2), 100).0,
+        Positive::Infeasible { .. }
+    ));
+    assert!(matches!(
+        positive_solution(&rref(vec![row(&[1, 0])], 2), 100).0,
+        Positive::Infeasible { .. }
+    ));
+}
+
+#[test]
+fn sd_l203_sd_e12_sd_l219_a_single_triangle_is_skipped_not_held() {
+    // No interior edge: nothing to examine, reported as skipped (never as holds).
+    let raw = pseudomanifold::mesh::raw::RawMesh {
+        positions: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        faces: vec![[0, 1, 2]],
+        face_origin: vec![0],
+        vertex_origin: vec![0, 1, 2],
+        ..Default::default()
+    };
+    let k = validate(&raw).unwrap().0;
+    let f = vec![q(-1), q(1), q(1)];
+    let (spec, cm) = rational_fixed(&k, 2);
+    let (r, pts) = normals::check_l203(&k, &cm, &f, &q(0));
+    assert!(
+        pts.is_empty() && matches!(r.verdict, Verdict::Skipped { .. }),
+        "{r:?}"
+    );
+    for r in c1::verify(&k, &cm, &f, &q(0), c1::Scope::AllInteriorEdges) {
+        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    }
+    let run = c1::run(&k, &spec, &f, &q(0), c1::Scope::AllInteriorEdges, 100).unwrap();
+    assert_eq!(run.solved.counts[0], 0);
+    for r in &run.report {
+        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    }
+}

@@ -8,13 +8,22 @@
 //! [`params::MapSpec::build`] (the map), [`checks::check_all`], [`iso::isocurves`], and the
 //! seeded claim searches of [`claims`]. SPEC IDs: `SD-…`.
 
+pub mod c1;
 pub mod checks;
 pub mod claims;
 pub mod complex;
+pub mod edge;
+pub mod handles;
+pub mod implicit;
 pub mod interval;
 pub mod inverse;
 pub mod iso;
+pub mod linsys;
 pub mod maps;
+pub mod normals;
 pub mod params;
 pub mod poly;
+pub mod polygonize;
 pub mod positivity;
+pub mod refine;
+pub mod tet;

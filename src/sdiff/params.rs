@@ -463,3 +463,49 @@ impl MapSpec {
         }
     }
 }
+
+impl MapSpec {
+    /// The spec as a parameter file (exact numbers as "p/q" strings); reads back to the same
+    /// spec with [`parse`].
+    pub fn to_toml(&self) -> String {
+        use std::fmt::Write;
+        let mut s = String::new();
+        let family = match self.family {
+            FamilySpec::Monotonic => "monotonic",
+            FamilySpec::Polynomial => "polynomial",
+            FamilySpec::Rational => "rational",
+        };
+        let _ = writeln!(s, "family = \"{family}\"");
+        if self.family != FamilySpec::Monotonic {
+            let _ = writeln!(s, "degree = {}", self.degree);
+        }
+        let tri = |t: &Option<usize>| t.map(|f| format!("triangle = {f}\n")).unwrap_or_default();
+        let mut control: Vec<_> = self.control.iter().collect();
+        control.sort_by(|a, b| a.0.cmp(b.0));
+        for ((t, m), p) in control {
+            let _ = write!(
+                s,
+                "[[control]]\nat = {m:?}\npoint = [\"{}\", \"{}\"]\n{}",
+                p[0],
+                p[1],
+                tri(t)
+            );
+        }
+        let mut weights: Vec<_> = self.weights.iter().collect();
+        weights.sort_by(|a, b| a.0.cmp(b.0));
+        for ((t, m), w) in weights {
+            let _ = write!(s, "[[weight]]\nat = {m:?}\nq = \"{w}\"\n{}", tri(t));
+        }
+        let mut g: Vec<_> = self.g.iter().collect();
+        g.sort_by_key(|x| *x.0);
+        for (v, p) in g {
+            let cs: Vec<String> = p.0.iter().map(|c| format!("\"{c}\"")).collect();
+            let _ = write!(s, "[[g]]\nvertex = {v}\ncoeffs = [{}]\n", cs.join(", "));
+        }
+        if let Some((f, c)) = &self.iso {
+            let fs: Vec<String> = f.iter().map(|x| format!("\"{x}\"")).collect();
+            let _ = write!(s, "[iso]\nf = [{}]\nc = \"{c}\"\n", fs.join(", "));
+        }
+        s
+    }
+}
