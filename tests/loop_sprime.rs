@@ -608,17 +608,7 @@ fn loop_mp_fast_path_equals_the_generic_evaluation() {
             let mut count = 0;
             for f in k.faces() {
                 let c = k.face(f);
-                let mut pts: Vec<[f64; 3]> = (0..6)
-                    .map(|_| {
-                        let (a, b): (f64, f64) = (rng.gen(), rng.gen());
-                        let (a, b) = if a + b > 1.0 {
-                            (1.0 - a, 1.0 - b)
-                        } else {
-                            (a, b)
-                        };
-                        [1.0 - a - b, a, b]
-                    })
-                    .collect();
+                let mut pts = bary_points(&mut rng, 6);
                 for e in [20, 30, 40] {
                     let t = (2.0f64).powi(-e);
                     pts.push([1.0 - 2.0 * t, t, t]);
