@@ -209,8 +209,10 @@ impl Region {
                     i.lo < last.hi || (i.lo == last.hi && (last.hi_closed || i.lo_closed));
                 if touches {
                     if i.hi > last.hi || (i.hi == last.hi && i.hi_closed) {
+                        // Decided before `last.hi` moves: [0, 1] ∪ [1/2, 2) is [0, 2).
+                        let closed = i.hi_closed || (i.hi == last.hi && last.hi_closed);
                         last.hi = i.hi.clone();
-                        last.hi_closed = i.hi_closed || (i.hi == last.hi && last.hi_closed);
+                        last.hi_closed = closed;
                     }
                     continue;
                 }
@@ -577,6 +579,22 @@ mod tests {
         );
         let d = Interval::closed_open(q(0, 1), q(1, 1));
         assert_eq!(Region::from_intervals(vec![d, c]).0.len(), 2);
+        // An interval inside the last one leaves it alone; one that extends it brings its own
+        // upper end: [0, 3] ∪ [1, 2] = [0, 3], [0, 1] ∪ [1/2, 2) = [0, 2) (it used to come out
+        // as [0, 2], the closedness read after the end had moved).
+        let big = Interval::closed(q(0, 1), q(3, 1));
+        assert_eq!(
+            Region::from_intervals(vec![big.clone(), Interval::closed(q(1, 1), q(2, 1))]).0,
+            vec![big]
+        );
+        assert_eq!(
+            Region::from_intervals(vec![
+                Interval::closed(q(0, 1), q(1, 1)),
+                Interval::closed_open(q(1, 2), q(2, 1))
+            ])
+            .0,
+            vec![Interval::closed_open(q(0, 1), q(2, 1))]
+        );
     }
 
     #[test]
