@@ -21,6 +21,7 @@ pub mod iso;
 pub mod linsys;
 pub mod maps;
 pub mod normals;
+pub mod objectives;
 pub mod params;
 pub mod poly;
 pub mod polygonize;
