@@ -1335,3 +1335,54 @@ fn sd_l268_sd_l268_restricted_minimiser_over_x1_is_not_a_diffeomorphism_for_a_ha
     assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
     println!("SD-L268 handle inside: {}", r.note);
 }
+
+// ---- Sec. 6.2: SUBDIVIDE (L306–L312) and the locality of the optimiser (L314–L316) -----
+
+#[test]
+fn sd_l310_sd_l316_stand_in_subdivide_is_conforming_and_local() {
+    use pseudomanifold::sdiff::refine::Mesh2;
+    use pseudomanifold::sdiff::subdivide::{check_l316, subdivide};
+    // Refine towards the circle |p − (1/2, 1/2)| = 3/10 on a 4×4 Kuhn grid of [0, 1]²: always
+    // the largest crossed triangle (lowest level, then smallest id), 150 calls.
+    let mut mesh = Mesh2::kuhn(4, 4, [0.0, 0.0], [1.0, 1.0], 100_000);
+    let g = |p: [f64; 2]| (p[0] - 0.5).powi(2) + (p[1] - 0.5).powi(2) - 0.09;
+    let mut steps = Vec::new();
+    for _ in 0..150 {
+        let id = mesh
+            .alive_ids()
+            .into_iter()
+            .filter(|&t| {
+                let v = mesh.tris[t].map(|x| g(mesh.points[x as usize]));
+                v.iter().any(|x| *x < 0.0) && v.iter().any(|x| *x > 0.0)
+            })
+            .min_by_key(|&t| (mesh.level[t], t))
+            .unwrap();
+        steps.push(subdivide(&mut mesh, id).unwrap());
+    }
+    // SD-L310: the stand-in keeps K a simplicial complex (SD-K: conforming, oriented, no
+    // overlap) after every call.
+    let (raw, _) = mesh.to_raw();
+    let (k, _) = validate(&raw).unwrap();
+    let r = check_l316(&steps);
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    let ks: Vec<usize> = steps.iter().map(|s| s.new_vertices.len()).collect();
+    assert!(ks.iter().any(|&x| x > 1), "no propagation seen: {ks:?}");
+    println!(
+        "SD-L310/SD-L316: {} triangles, {} vertices; {}",
+        k.triangles.len(),
+        k.points.len(),
+        r.note
+    );
+    // Planted: a created triangle outside every new star; a call that inserts nothing; no call.
+    let mut bad = steps.clone();
+    bad[3].created.push((0, [0, 1, 5]));
+    let r = check_l316(&bad);
+    assert!(
+        r.failed() && r.witnesses[0].text.contains("call 3"),
+        "{r:?}"
+    );
+    let mut bad = steps.clone();
+    bad[0].new_vertices.clear();
+    assert!(check_l316(&bad).failed());
+    assert!(matches!(check_l316(&[]).verdict, Verdict::Skipped { .. }));
+}

@@ -27,4 +27,5 @@ pub mod poly;
 pub mod polygonize;
 pub mod positivity;
 pub mod refine;
+pub mod subdivide;
 pub mod tet;
