@@ -1386,3 +1386,93 @@ fn sd_l310_sd_l316_stand_in_subdivide_is_conforming_and_local() {
     assert!(check_l316(&bad).failed());
     assert!(matches!(check_l316(&[]).verdict, Verdict::Skipped { .. }));
 }
+
+// ---- 3-D: the polynomial family on a tetrahedron (L141, L146 with m = 3) ----------------
+
+#[test]
+fn sd_l141_3_d_sd_l146_3_d_polynomial_maps_on_a_tetrahedron_are_certified_exactly() {
+    use pseudomanifold::sdiff::tet::{jacobian_numerator, Poly3};
+    use pseudomanifold::sdiff::tet_maps::*;
+    use rand::SeedableRng;
+    // A positive constant is certified (degree 0: every corner is the one coefficient; before
+    // this row the corners e_1..e_3 of a constant were left at 0 and D = 1 was "refuted").
+    let one = pseudomanifold::sdiff::tet::decide_tet(&Poly3::constant(q(1)), Budget::default());
+    assert!(one.certified(), "{one:?}");
+    let neg = pseudomanifold::sdiff::tet::decide_tet(&Poly3::constant(q(-1)), Budget::default());
+    assert!(matches!(neg, Decision::Refuted { .. }), "{neg:?}");
+    // X = id (b_I = I/n): numerator ≡ 1 for n = 1..4.
+    for n in 1..=4 {
+        let (num, d) = tet_map(n, &fixed_control4(n), None);
+        assert_eq!(
+            jacobian_numerator(&num, &d),
+            Poly3::constant(q(1)),
+            "n = {n}"
+        );
+    }
+    // L141 (m = 3): adjusted quadratics, seeded.
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(141);
+    let (mut ok141, samples141) = (0, 40);
+    for _ in 0..samples141 {
+        let c = random_adjusted4(2, &mut rng);
+        let (num, d) = tet_map(2, &c, None);
+        match tet_det(&num, &d, Budget::default()) {
+            Decision::Certified { .. } => ok141 += 1,
+            x => {
+                let j = jacobian_numerator(&num, &d);
+                let v: Vec<String> = [
+                    [q(1), q(0), q(0)],
+                    [q(0), q(0), q(0)],
+                    [q(0), q(1), q(0)],
+                    [q(0), q(0), q(1)],
+                ]
+                .iter()
+                .map(|p| j.eval(p).to_string())
+                .collect();
+                panic!(
+                    "{x:?}; numerator at the vertices {v:?}; deg {}; D {:?}",
+                    j.deg(),
+                    d
+                )
+            }
+        }
+    }
+    // L146 (m = 3): degree 4, the solitary (1,1,1,1) anywhere in the open tetrahedron.
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(146);
+    let (mut ok146, samples146) = (0, 20);
+    for _ in 0..samples146 {
+        let c = random_fixed_solitary4(&mut rng);
+        let (num, d) = tet_map(4, &c, None);
+        match tet_det(&num, &d, Budget::default()) {
+            Decision::Certified { .. } => ok146 += 1,
+            x => panic!("{c:?}: {x:?}"),
+        }
+    }
+    println!("SD-L141(3-D): {ok141}/{samples141} certified (seed 141); SD-L146(3-D): {ok146}/{samples146} (seed 146)");
+    // Planted: a quadratic whose edge (0, 1) control point lies beyond vertex 1 (not adjusted):
+    // det refuted at an exact point; negative weight in Eq. (11): D refuted.
+    let mut c = fixed_control4(2);
+    let k = multi_indices4(2)
+        .iter()
+        .position(|i| *i == [1, 1, 0, 0])
+        .unwrap();
+    c[k] = [qr(-1, 2), qr(3, 2), q(0), q(0)];
+    let (num, d) = tet_map(2, &c, None);
+    assert!(
+        matches!(
+            tet_det(&num, &d, Budget::default()),
+            Decision::Refuted { .. }
+        ),
+        "planted fold certified"
+    );
+    let mut w = vec![q(1); multi_indices4(2).len()];
+    w[0] = q(-3);
+    let (num, d) = tet_map(2, &fixed_control4(2), Some(&w));
+    let dec = tet_det(&num, &d, Budget::default());
+    assert!(matches!(dec, Decision::Refuted { .. }), "{dec:?}");
+    // Eq. (11) with positive weights and fixed points (L161 in 3-D), degree 2.
+    let w: Vec<Q> = (0..multi_indices4(2).len())
+        .map(|i| q(1 + i as i64))
+        .collect();
+    let (num, d) = tet_map(2, &fixed_control4(2), Some(&w));
+    assert!(tet_det(&num, &d, Budget::default()).certified());
+}

@@ -29,3 +29,4 @@ pub mod positivity;
 pub mod refine;
 pub mod subdivide;
 pub mod tet;
+pub mod tet_maps;
