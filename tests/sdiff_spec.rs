@@ -1105,3 +1105,374 @@ fn sd_l203_sd_e12_sd_l219_a_single_triangle_is_skipped_not_held() {
         assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
     }
 }
+
+// ---- the normal-based objectives: L229–L233 (Sec. 5) and L262–L268 (Sec. 6.1) ----------
+
+use pseudomanifold::sdiff::objectives::{self, Handle, HandleErrorKind};
+
+/// square.off scaled by `s` (validated again).
+fn scaled_square(s: i64) -> PlanarComplex {
+    let mut k = square();
+    for p in &mut k.points {
+        *p = [&p[0] * q(s), &p[1] * q(s)];
+    }
+    k
+}
+
+#[test]
+fn sd_l231_sd_l231_corrected_normal_deviation_is_positive_on_exactly_c1_curves_as_written() {
+    let k = square();
+    let f = kink_values();
+    let crossed = [[0u32, 2u32]];
+    // X = id: O kinks on the diagonal; every sample sees the same gap 2 − 4/√5.
+    let id = inline("family = \"polynomial\"\ndegree = 1\n");
+    let cm = id.build(&k, Path::new("inline.toml")).unwrap();
+    let devs = objectives::normal_deviation(&k, &cm, &f, 7);
+    let d = devs.iter().find(|d| d.edge == [0, 2]).unwrap();
+    let expect = 2.0 - 4.0 / 5f64.sqrt();
+    assert!(d
+        .samples
+        .iter()
+        .all(|s| (s.gap - expect).abs() < 8.0 * f64::EPSILON));
+    assert!(!d.zero);
+    println!(
+        "SD-L231 X = id: err(diagonal) = {:.6e} over 7 samples (7·(2 − 4/√5))",
+        d.err
+    );
+    // Scale invariance (unit normals; unlike SD-L225 no homogeneity): K scaled by 3, same err.
+    let k3 = scaled_square(3);
+    let cm3 = id.build(&k3, Path::new("inline.toml")).unwrap();
+    let d3 = objectives::normal_deviation(&k3, &cm3, &f, 7);
+    assert_eq!(d3.iter().find(|d| d.edge == [0, 2]).unwrap().err, d.err);
+    // The exactly C¹ rational maps of SD-E12: err(δ) > 0 as written (samples on δ), while the
+    // normals agree at 𝒪's crossing (the corrected reading: sample 𝒪 ∩ δ).
+    for n in 2..=4 {
+        let (spec, cm0) = rational_fixed(&k, n);
+        let sys = c1::build(&k, &cm0, &f, &q(0), c1::Scope::AllInteriorEdges).unwrap();
+        let w = c1::solve(&sys, 20_000).weights.unwrap();
+        let cm2 = c1::with_weights(&spec, &sys, &w)
+            .build(&k, Path::new("inline.toml"))
+            .unwrap();
+        let [_, rf] = c1::verify(&k, &cm2, &f, &q(0), c1::Scope::AllInteriorEdges);
+        assert_eq!(rf.verdict, Verdict::Holds, "{rf:?}");
+        let devs = objectives::normal_deviation(&k, &cm2, &f, 7);
+        let r = objectives::judge_l231(&devs, &crossed, true);
+        assert!(r.failed(), "{r:?}");
+        assert!(r.witnesses[0].text.contains("edge [0, 2]"));
+        let e = k
+            .interior_edges()
+            .into_iter()
+            .find(|e| (e.0, e.1) == (0, 2))
+            .unwrap();
+        let u = normals::crossing(&k, &cm2, &f, &q(0), e).unwrap();
+        let [ga, gb] = [e.2, e.3].map(|t| {
+            normals::side_value_gradient(&k, &cm2, &f, t, (0, 2), &u)
+                .unwrap()
+                .1
+        });
+        let (_, at_crossing) = objectives::unit_gap(&ga, &gb).unwrap();
+        assert!(at_crossing < 1e-20, "{at_crossing}");
+        println!(
+            "SD-L231 n = {n}: {}; at 𝒪's crossing u ≈ {:.6}: ‖n − n′‖² = {at_crossing:.3e}; witness: {}",
+            r.note,
+            pseudomanifold::sdiff::poly::to_f64(&u),
+            r.witnesses[0].text
+        );
+    }
+    // Planted faults: the identity claimed C¹ → witness; zero samples → skipped; an undefined
+    // normal → offence, not a pass.
+    let r = objectives::judge_l231(&devs, &crossed, true);
+    assert!(
+        r.failed() && r.witnesses[0].text.contains("u = 1/8"),
+        "{r:?}"
+    );
+    let r0 = objectives::judge_l231(
+        &objectives::normal_deviation(&k, &cm, &f, 0),
+        &crossed,
+        true,
+    );
+    assert!(matches!(r0.verdict, Verdict::Skipped { .. }), "{r0:?}");
+    let mut bad = devs.clone();
+    bad.iter_mut().for_each(|d| d.undefined = 1);
+    let r = objectives::judge_l231(&bad, &crossed, false);
+    assert!(
+        r.failed() && r.witnesses[0].text.contains("undefined"),
+        "{r:?}"
+    );
+}
+
+/// Handles at O's crossings of the three crossed edges of square.off (f = kink_values), with
+/// p(ε) on (0, 2) at `u02`, and the rational unit normal (24/25, 7/25).
+fn handles(u02: Q) -> Vec<Handle> {
+    let n = [qr(24, 25), qr(7, 25)];
+    vec![
+        Handle {
+            edge: (0, 1),
+            u: qr(1, 2),
+            n: n.clone(),
+        },
+        Handle {
+            edge: (0, 2),
+            u: u02,
+            n: n.clone(),
+        },
+        Handle {
+            edge: (2, 3),
+            u: qr(2, 3),
+            n,
+        },
+    ]
+}
+
+#[test]
+fn sd_l262_handle_error_is_exact_in_position_and_carries_units_of_length_squared() {
+    let k = square();
+    let f = kink_values();
+    let id = inline("family = \"polynomial\"\ndegree = 1\n");
+    let cm = id.build(&k, Path::new("inline.toml")).unwrap();
+    // Handles at O's crossings: every position term is exactly 0 for X = id.
+    let cells = objectives::handle_errors(&k, &cm, &f, &handles(qr(1, 3))).unwrap();
+    assert!(cells.iter().all(|c| c.position == "0"), "{cells:?}");
+    assert!(cells.iter().any(|c| !c.normal_zero));
+    // X_1 fitted to a handle inside the adjusted range (SD-6.1(handle)): exactly 0 again.
+    let l = pseudomanifold::sdiff::handles::lambda_for(&qr(1, 3), &qr(1, 4));
+    let cm1 = pseudomanifold::sdiff::handles::quadratic_spec(
+        &k,
+        &std::collections::HashMap::from([((0, 2), l.clone())]),
+    )
+    .build(&k, Path::new("x1"))
+    .unwrap();
+    let c1s = objectives::handle_errors(&k, &cm1, &f, &handles(qr(1, 4))).unwrap();
+    assert!(c1s.iter().all(|c| c.position == "0"), "{c1s:?}");
+    // A handle off 𝒪 (u = 1/2 on the diagonal, X = id): the position term is a squared length:
+    // K scaled by 3 multiplies it by exactly 9, the normal term is unchanged.
+    let e1 = objectives::handle_errors(&k, &cm, &f, &handles(qr(1, 2))).unwrap();
+    let k3 = scaled_square(3);
+    let cm3 = id.build(&k3, Path::new("inline.toml")).unwrap();
+    let e3 = objectives::handle_errors(&k3, &cm3, &f, &handles(qr(1, 2))).unwrap();
+    for (a, b) in e1.iter().zip(&e3) {
+        let (pa, pb) = (
+            a.position.parse::<Q>().unwrap(),
+            b.position.parse::<Q>().unwrap(),
+        );
+        assert_eq!(pb, pa * q(9));
+        assert_eq!(a.normal, b.normal);
+    }
+    println!(
+        "SD-L262: X = id, handle u = 1/2 on (0, 2): position terms {:?} (×9 after scaling K by 3), normal terms {:?}; λ = {l} fits u_h = 1/4 with position 0",
+        e1.iter().map(|c| c.position.clone()).collect::<Vec<_>>(),
+        e1.iter().map(|c| c.normal).collect::<Vec<_>>()
+    );
+    // Planted: n not a unit vector, a missing handle: typed errors naming the edge.
+    let mut h = handles(qr(1, 3));
+    h[1].n = [q(1), q(1)];
+    assert_eq!(
+        objectives::handle_errors(&k, &cm, &f, &h).unwrap_err(),
+        HandleErrorKind::NotUnit(0, 2, "2".into())
+    );
+    let h = handles(qr(1, 3))[..2].to_vec();
+    assert_eq!(
+        objectives::handle_errors(&k, &cm, &f, &h).unwrap_err(),
+        HandleErrorKind::Missing(2, 3)
+    );
+}
+
+#[test]
+fn sd_l268_sd_l268_restricted_minimiser_over_x1_is_not_a_diffeomorphism_for_a_handle_outside_the_adjusted_range(
+) {
+    let k = square();
+    let f = kink_values();
+    let lam_star = pseudomanifold::sdiff::handles::lambda_for(&qr(1, 3), &qr(1, 32));
+    assert_eq!(lam_star, qr(1021, 186));
+    let mut grid: Vec<Q> = (-16..=128).map(|j| qr(j, 16)).collect();
+    grid.push(lam_star.clone());
+    // α = 0: the position terms alone; their exact minimum 0 is at λ* = 1021/186 only.
+    let (pts, best) =
+        objectives::scan_l268(&k, &f, &handles(qr(1, 32)), (0, 2), 0.0, &grid).unwrap();
+    let zeros: Vec<_> = pts.iter().filter(|p| p.position == "0").collect();
+    assert_eq!(zeros.len(), 1);
+    assert_eq!(zeros[0].lambda, "1021/186");
+    let (b, det) = best.unwrap();
+    let r = objectives::judge_l268(&b, &det, 0.0);
+    assert!(
+        r.failed() && r.witnesses[0].text.contains("1021/186"),
+        "{r:?}"
+    );
+    println!(
+        "SD-L268 α = 0: {}; witness: {}",
+        r.note, r.witnesses[0].text
+    );
+    // α = 1/100 on the same grid: the minimiser.
+    let (_, best) =
+        objectives::scan_l268(&k, &f, &handles(qr(1, 32)), (0, 2), 0.01, &grid).unwrap();
+    let (b, det) = best.unwrap();
+    let r = objectives::judge_l268(&b, &det, 0.01);
+    println!(
+        "SD-L268 α = 1/100: {} → {:?} {:?}",
+        r.note,
+        r.verdict,
+        r.witnesses.first().map(|w| &w.text)
+    );
+    assert!(r.failed(), "{r:?}");
+    // Restricted to the adjusted range 0 < λ < 1 (SD-L141): the minimiser is a diffeomorphism,
+    // and the handle is not met (objective > 0).
+    let inside: Vec<Q> = (1..16).map(|j| qr(j, 16)).collect();
+    let (_, best) =
+        objectives::scan_l268(&k, &f, &handles(qr(1, 32)), (0, 2), 0.01, &inside).unwrap();
+    let (b, det) = best.unwrap();
+    let r = objectives::judge_l268(&b, &det, 0.01);
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert!(b.objective > 0.0);
+    println!("SD-L268(restricted) α = 1/100, λ ∈ (0, 1): {}", r.note);
+    // A handle inside the adjusted range (u_h = 1/4): the α = 0 minimiser is a diffeomorphism.
+    let lam = pseudomanifold::sdiff::handles::lambda_for(&qr(1, 3), &qr(1, 4));
+    let mut grid2 = grid.clone();
+    grid2.push(lam.clone());
+    let (_, best) = objectives::scan_l268(&k, &f, &handles(qr(1, 4)), (0, 2), 0.0, &grid2).unwrap();
+    let (b, det) = best.unwrap();
+    assert_eq!(b.lambda, lam.to_string());
+    let r = objectives::judge_l268(&b, &det, 0.0);
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    println!("SD-L268 handle inside: {}", r.note);
+}
+
+// ---- Sec. 6.2: SUBDIVIDE (L306–L312) and the locality of the optimiser (L314–L316) -----
+
+#[test]
+fn sd_l310_sd_l316_stand_in_subdivide_is_conforming_and_local() {
+    use pseudomanifold::sdiff::refine::Mesh2;
+    use pseudomanifold::sdiff::subdivide::{check_l316, subdivide};
+    // Refine towards the circle |p − (1/2, 1/2)| = 3/10 on a 4×4 Kuhn grid of [0, 1]²: always
+    // the largest crossed triangle (lowest level, then smallest id), 150 calls.
+    let mut mesh = Mesh2::kuhn(4, 4, [0.0, 0.0], [1.0, 1.0], 100_000);
+    let g = |p: [f64; 2]| (p[0] - 0.5).powi(2) + (p[1] - 0.5).powi(2) - 0.09;
+    let mut steps = Vec::new();
+    for _ in 0..150 {
+        let id = mesh
+            .alive_ids()
+            .into_iter()
+            .filter(|&t| {
+                let v = mesh.tris[t].map(|x| g(mesh.points[x as usize]));
+                v.iter().any(|x| *x < 0.0) && v.iter().any(|x| *x > 0.0)
+            })
+            .min_by_key(|&t| (mesh.level[t], t))
+            .unwrap();
+        steps.push(subdivide(&mut mesh, id).unwrap());
+    }
+    // SD-L310: the stand-in keeps K a simplicial complex (SD-K: conforming, oriented, no
+    // overlap) after every call.
+    let (raw, _) = mesh.to_raw();
+    let (k, _) = validate(&raw).unwrap();
+    let r = check_l316(&steps);
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    let ks: Vec<usize> = steps.iter().map(|s| s.new_vertices.len()).collect();
+    assert!(ks.iter().any(|&x| x > 1), "no propagation seen: {ks:?}");
+    println!(
+        "SD-L310/SD-L316: {} triangles, {} vertices; {}",
+        k.triangles.len(),
+        k.points.len(),
+        r.note
+    );
+    // Planted: a created triangle outside every new star; a call that inserts nothing; no call.
+    let mut bad = steps.clone();
+    bad[3].created.push((0, [0, 1, 5]));
+    let r = check_l316(&bad);
+    assert!(
+        r.failed() && r.witnesses[0].text.contains("call 3"),
+        "{r:?}"
+    );
+    let mut bad = steps.clone();
+    bad[0].new_vertices.clear();
+    assert!(check_l316(&bad).failed());
+    assert!(matches!(check_l316(&[]).verdict, Verdict::Skipped { .. }));
+}
+
+// ---- 3-D: the polynomial family on a tetrahedron (L141, L146 with m = 3) ----------------
+
+#[test]
+fn sd_l141_3_d_sd_l146_3_d_polynomial_maps_on_a_tetrahedron_are_certified_exactly() {
+    use pseudomanifold::sdiff::tet::{jacobian_numerator, Poly3};
+    use pseudomanifold::sdiff::tet_maps::*;
+    use rand::SeedableRng;
+    // A positive constant is certified (degree 0: every corner is the one coefficient; before
+    // this row the corners e_1..e_3 of a constant were left at 0 and D = 1 was "refuted").
+    let one = pseudomanifold::sdiff::tet::decide_tet(&Poly3::constant(q(1)), Budget::default());
+    assert!(one.certified(), "{one:?}");
+    let neg = pseudomanifold::sdiff::tet::decide_tet(&Poly3::constant(q(-1)), Budget::default());
+    assert!(matches!(neg, Decision::Refuted { .. }), "{neg:?}");
+    // X = id (b_I = I/n): numerator ≡ 1 for n = 1..4.
+    for n in 1..=4 {
+        let (num, d) = tet_map(n, &fixed_control4(n), None);
+        assert_eq!(
+            jacobian_numerator(&num, &d),
+            Poly3::constant(q(1)),
+            "n = {n}"
+        );
+    }
+    // L141 (m = 3): adjusted quadratics, seeded.
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(141);
+    let (mut ok141, samples141) = (0, 40);
+    for _ in 0..samples141 {
+        let c = random_adjusted4(2, &mut rng);
+        let (num, d) = tet_map(2, &c, None);
+        match tet_det(&num, &d, Budget::default()) {
+            Decision::Certified { .. } => ok141 += 1,
+            x => {
+                let j = jacobian_numerator(&num, &d);
+                let v: Vec<String> = [
+                    [q(1), q(0), q(0)],
+                    [q(0), q(0), q(0)],
+                    [q(0), q(1), q(0)],
+                    [q(0), q(0), q(1)],
+                ]
+                .iter()
+                .map(|p| j.eval(p).to_string())
+                .collect();
+                panic!(
+                    "{x:?}; numerator at the vertices {v:?}; deg {}; D {:?}",
+                    j.deg(),
+                    d
+                )
+            }
+        }
+    }
+    // L146 (m = 3): degree 4, the solitary (1,1,1,1) anywhere in the open tetrahedron.
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(146);
+    let (mut ok146, samples146) = (0, 20);
+    for _ in 0..samples146 {
+        let c = random_fixed_solitary4(&mut rng);
+        let (num, d) = tet_map(4, &c, None);
+        match tet_det(&num, &d, Budget::default()) {
+            Decision::Certified { .. } => ok146 += 1,
+            x => panic!("{c:?}: {x:?}"),
+        }
+    }
+    println!("SD-L141(3-D): {ok141}/{samples141} certified (seed 141); SD-L146(3-D): {ok146}/{samples146} (seed 146)");
+    // Planted: a quadratic whose edge (0, 1) control point lies beyond vertex 1 (not adjusted):
+    // det refuted at an exact point; negative weight in Eq. (11): D refuted.
+    let mut c = fixed_control4(2);
+    let k = multi_indices4(2)
+        .iter()
+        .position(|i| *i == [1, 1, 0, 0])
+        .unwrap();
+    c[k] = [qr(-1, 2), qr(3, 2), q(0), q(0)];
+    let (num, d) = tet_map(2, &c, None);
+    assert!(
+        matches!(
+            tet_det(&num, &d, Budget::default()),
+            Decision::Refuted { .. }
+        ),
+        "planted fold certified"
+    );
+    let mut w = vec![q(1); multi_indices4(2).len()];
+    w[0] = q(-3);
+    let (num, d) = tet_map(2, &fixed_control4(2), Some(&w));
+    let dec = tet_det(&num, &d, Budget::default());
+    assert!(matches!(dec, Decision::Refuted { .. }), "{dec:?}");
+    // Eq. (11) with positive weights and fixed points (L161 in 3-D), degree 2.
+    let w: Vec<Q> = (0..multi_indices4(2).len())
+        .map(|i| q(1 + i as i64))
+        .collect();
+    let (num, d) = tet_map(2, &fixed_control4(2), Some(&w));
+    assert!(tet_det(&num, &d, Budget::default()).certified());
+}

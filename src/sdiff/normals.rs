@@ -104,6 +104,23 @@ fn strs(a: &[Q; 2]) -> [String; 2] {
     [a[0].to_string(), a[1].to_string()]
 }
 
+/// F = f̂∘X on triangle `tri` at parameter `u` of its edge a→b: the value and the plane
+/// gradient ∇F|σ, exact. `None` when a or b is not a vertex of `tri` or D vanishes there.
+pub fn side_value_gradient(
+    k: &PlanarComplex,
+    cm: &ComplexMap,
+    fv: &[Q],
+    tri: usize,
+    (a, b): (u32, u32),
+    u: &Q,
+) -> Option<(Q, [Q; 2])> {
+    let m = cm.maps.get(tri)?;
+    let (la, lb) = (local(k, tri, a)?, local(k, tri, b)?);
+    let st = chart_point(la, lb, u);
+    let (val, fs, ft) = quotient_derivs(&f_numerator(k, tri, m, fv), &m.den, &st)?;
+    Some((val, Frame::of(k, tri).plane_gradient(&fs, &ft)))
+}
+
 /// The one-sided data at parameter `u` of the interior edge (a, b) shared by triangles f, g,
 /// for vertex values `fv`. `None` when a denominator vanishes at p.
 pub fn one_sided(

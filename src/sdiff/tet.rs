@@ -141,12 +141,11 @@ impl Poly3 {
                             &[i, j - a, k - b, l - c],
                         )) / Q::from_integer(multinomial(n, &[i, j, k, l]));
                     }
-                    match (i, j, k, l) {
-                        (x, 0, 0, 0) if x == n => corners[0] = acc.clone(),
-                        (0, x, 0, 0) if x == n => corners[1] = acc.clone(),
-                        (0, 0, x, 0) if x == n => corners[2] = acc.clone(),
-                        (0, 0, 0, x) if x == n => corners[3] = acc.clone(),
-                        _ => {}
+                    // For n = 0 the one coefficient is every corner's value.
+                    for (c, x) in [i, j, k, l].into_iter().enumerate() {
+                        if x == n {
+                            corners[c] = acc.clone();
+                        }
                     }
                     all.push(acc);
                 }
