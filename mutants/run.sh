@@ -26,7 +26,7 @@ modules() {
     cat <<'EOF'
 mesh-validate|src/mesh/validate/*.rs|mesh_validate harness_planted fuzz_regressions
 gluing-exact1d|src/gluing/exact1d/*.rs|lib gluing_paper_examples gluing_planted gluing_crossval gluing_topology harness_planted
-gluing-sampled|src/gluing/sampled/*.rs|gluing_planted gluing_crossval gluing_stereo_ppm harness_planted gluing_generic_scalar
+gluing-sampled|src/gluing/sampled/*.rs|lib gluing_planted gluing_crossval gluing_stereo_ppm harness_planted gluing_generic_scalar
 construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|lib construction_maps construction_mesh harness_planted construction_explore
 surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/admissible.rs|lib surface_spec harness_planted loop_sprime|corpus
 certify|src/certify/*.rs|lib certify_provers

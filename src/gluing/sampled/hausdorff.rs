@@ -261,3 +261,82 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
 pub fn check_4<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> CheckResult {
     check_4_with_radii(g, cfg).0
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::SeedableRng;
+
+    /// The whole plane, glued to itself by the identity (every ball sample is kept).
+    struct Plane;
+
+    impl GluingData<2> for Plane {
+        type S = f64;
+        fn indices(&self) -> Vec<Idx> {
+            vec![0, 1]
+        }
+        fn in_p_domain(&self, _: Idx, _: &Point<f64, 2>) -> bool {
+            true
+        }
+        fn in_gluing_domain(&self, _: Idx, _: Idx, _: &Point<f64, 2>) -> bool {
+            true
+        }
+        fn phi(&self, _: Idx, _: Idx, p: &Point<f64, 2>) -> Option<Point<f64, 2>> {
+            Some(*p)
+        }
+        fn sample_p_domain(&self, _: Idx, _: &mut ChaCha8Rng, _: usize) -> Vec<Point<f64, 2>> {
+            vec![]
+        }
+        fn sample_gluing_domain(
+            &self,
+            _: Idx,
+            _: Idx,
+            _: &mut ChaCha8Rng,
+            _: usize,
+        ) -> Vec<Point<f64, 2>> {
+            vec![]
+        }
+        fn gluing_boundary_points(
+            &self,
+            _: Idx,
+            _: Idx,
+            _: &mut ChaCha8Rng,
+            _: usize,
+        ) -> Vec<Point<f64, 2>> {
+            vec![]
+        }
+    }
+
+    /// D3.4.1(4)'s separating balls are searched with 96 points of the ball: in every
+    /// direction, half at uniform radii, half at the geometric radii 0.999·r·2⁻ᵏ, k < 40 (how
+    /// close to x a separation must hold). The mutation campaign found nothing checked this.
+    #[test]
+    fn d3_4_1_4_ball_samples_are_uniform_and_geometric_in_every_direction() {
+        let mut rng = ChaCha8Rng::seed_from_u64(4);
+        let (x, r) = ([0.25, -0.5], 0.125);
+        let ps = ball_samples(&Plane, 0, 1, &x, r, &mut rng);
+        assert!(ps.len() >= 94, "{} of 96 kept", ps.len());
+        let radii: Vec<f64> = ps.iter().map(|p| dist(p, &x)).collect();
+        assert!(radii.iter().all(|&d| d < r), "a sample outside the ball");
+        // Geometric radii, to rounding: 0.999·r·2⁻ᵏ for some k < 40.
+        let geometric =
+            |d: f64| (0..40).any(|k| (d - 0.999 * r * 2f64.powi(-k)).abs() <= 1e-14 * r);
+        let g = radii.iter().filter(|&&d| geometric(d)).count();
+        assert!((44..=50).contains(&g), "{g} geometric radii");
+        assert!(radii.iter().any(|&d| d < r * 1e-9), "no radius near x");
+        let uniform: Vec<f64> = radii.iter().copied().filter(|&d| !geometric(d)).collect();
+        let mean = uniform.iter().sum::<f64>() / uniform.len() as f64;
+        assert!(
+            (0.3 * r..0.7 * r).contains(&mean),
+            "uniform radii mean {mean}"
+        );
+        // Every quadrant is visited.
+        for (sx, sy) in [(1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0)] {
+            assert!(
+                ps.iter()
+                    .any(|p| (p[0] - x[0]) * sx > 0.0 && (p[1] - x[1]) * sy > 0.0),
+                "quadrant ({sx}, {sy}) empty"
+            );
+        }
+    }
+}
