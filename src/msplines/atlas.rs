@@ -201,13 +201,63 @@ pub fn develop(
     }
 }
 
-/// Sec. 5.4 steps (1)–(5): remove the zeros' faces, build one chart per surviving vertex.
+/// Sec. 5.4 steps (1)–(5) as written: remove the zeros' faces, build one chart per surviving
+/// vertex on its whole surviving k-ring (connected or not).
 pub fn build(
     k: &SimplicialSurface,
     ei: &EdgeIndex,
     om: &OneForm,
     zeros: &[VertexId],
     ring: u32,
+) -> Result<Atlas, MsError> {
+    build_with(k, ei, om, zeros, ring, false)
+}
+
+/// The corrected atlas (SPEC `MS-D4-corrected`): the open stars of `singular` (from
+/// [`super::zeros::ZeroSet::singular_vertices`]) removed, and a surviving k-ring that falls
+/// apart into pieces joined only at vertices gives one chart per edge-connected piece (a
+/// chart must be reached face by face from its first face).
+pub fn build_corrected(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    om: &OneForm,
+    singular: &[VertexId],
+    ring: u32,
+) -> Result<Atlas, MsError> {
+    build_with(k, ei, om, singular, ring, true)
+}
+
+/// The edge-connected pieces of a face set, each sorted, in order of their least face.
+fn edge_components(k: &SimplicialSurface, faces: &BTreeSet<FaceId>) -> Vec<BTreeSet<FaceId>> {
+    let mut seen: BTreeSet<FaceId> = BTreeSet::new();
+    let mut out = Vec::new();
+    for &f0 in faces {
+        if !seen.insert(f0) {
+            continue;
+        }
+        let mut comp = BTreeSet::from([f0]);
+        let mut q = VecDeque::from([f0]);
+        while let Some(f) = q.pop_front() {
+            for h in face_halfedges(f) {
+                let g = k.face_of(k.twin(h));
+                if faces.contains(&g) && seen.insert(g) {
+                    comp.insert(g);
+                    q.push_back(g);
+                }
+            }
+        }
+        out.push(comp);
+    }
+    out
+}
+
+fn build_with(
+    k: &SimplicialSurface,
+    ei: &EdgeIndex,
+    om: &OneForm,
+    zeros: &[VertexId],
+    ring: u32,
+    split: bool,
 ) -> Result<Atlas, MsError> {
     if !(1..=4).contains(&ring) {
         return Err(MsError::RingRadius { k: ring });
@@ -228,7 +278,13 @@ pub fn build(
         if faces.is_empty() {
             continue;
         }
-        charts.push(develop(k, ei, om, v, &faces));
+        if split {
+            for piece in edge_components(k, &faces) {
+                charts.push(develop(k, ei, om, v, &piece));
+            }
+        } else {
+            charts.push(develop(k, ei, om, v, &faces));
+        }
     }
     let mut charts_of_face = vec![Vec::new(); k.num_faces()];
     for (a, ch) in charts.iter().enumerate() {

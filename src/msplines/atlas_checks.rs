@@ -11,6 +11,7 @@ use crate::report::{CheckResult, Verdict, Witness, MAX_WITNESSES};
 use rand::{Rng, SeedableRng};
 use robust::{orient2d, Coord};
 use serde_json::json;
+use std::collections::BTreeSet;
 
 fn c(p: P2) -> Coord<f64> {
     Coord { x: p[0], y: p[1] }
@@ -65,13 +66,77 @@ fn interiors_overlap(s: &[P2; 3], t: &[P2; 3]) -> bool {
 /// oriented (exact), pairwise interior-disjoint (exact), and the developing map consistent
 /// (a vertex reached along two paths lands on one point up to rounding).
 pub fn check_charts_injective(at: &Atlas) -> CheckResult {
-    let mut r = CheckResult::new(
+    injective(
+        at,
+        "MS-D4",
+        "charts φ_α injective (oriented, non-overlapping images)",
+    )
+    .0
+}
+
+/// `MS-D4` on the atlas of Sec. 5.4 as written, with every non-injective chart classified by
+/// what the corrected atlas removes: it holds a face with flipped or degenerate image, or its
+/// centre is a corner of one (a fan whose positive angles exceed 2π), or its ring touches a
+/// removed star and falls apart (faces unreached), or none of these (reported as "other").
+pub fn check_charts_injective_as_written(
+    k: &SimplicialSurface,
+    at: &Atlas,
+    bad_faces: &BTreeSet<FaceId>,
+) -> CheckResult {
+    let (mut r, bad) = injective(
+        at,
         "MS-D4",
         "charts φ_α injective (oriented, non-overlapping images)",
     );
+    let (mut holds_flip, mut centre_flip, mut split, mut other) = (0, 0, 0, 0);
+    for a in &bad {
+        let ch = &at.charts[*a];
+        if ch.faces.keys().any(|f| bad_faces.contains(f)) {
+            holds_flip += 1;
+        } else if bad_faces.iter().any(|f| k.face(*f).contains(&ch.centre)) {
+            centre_flip += 1;
+        } else if ch.unreached > 0 {
+            split += 1;
+        } else {
+            other += 1;
+        }
+    }
+    r.note = format!(
+        "{}; {} non-injective charts: {holds_flip} hold a flipped/degenerate face image, {centre_flip} are centred at a corner of one, {split} have a ring split by the removed stars, {other} other",
+        r.note,
+        bad.len()
+    );
+    r
+}
+
+/// `MS-D4-corrected`: the same test on the corrected atlas
+/// ([`super::atlas::build_corrected`]: open stars of every vertex with w_v ≠ 1 and of every
+/// corner of a flipped or degenerate face image removed, rings split into edge-connected
+/// pieces); the note gives how much of M it covers.
+pub fn check_charts_injective_corrected(at: &Atlas) -> CheckResult {
+    let kept = at.removed.iter().filter(|&&r| !r).count();
+    let n = at.removed.len();
+    let (mut r, _) = injective(
+        at,
+        "MS-D4-corrected",
+        "corrected atlas (stars of w_v ≠ 1 and of flipped faces' corners removed): charts injective",
+    );
+    r.note = format!(
+        "{}; {} removed vertices, atlas covers {kept} of {n} faces",
+        r.note,
+        at.zeros.len()
+    );
+    r
+}
+
+/// The check and the indices of the charts that fail it.
+fn injective(at: &Atlas, id: &str, name: &str) -> (CheckResult, Vec<usize>) {
+    let mut r = CheckResult::new(id, name);
     let mut worst: f64 = 0.0;
+    let mut bad = Vec::new();
     for (a, ch) in at.charts.iter().enumerate() {
         r.examined += 1;
+        let before = r.offenders;
         let tris: Vec<(&FaceId, &[P2; 3])> = ch.faces.iter().collect();
         for (f, t) in &tris {
             if orient2d(c(t[0]), c(t[1]), c(t[2])) <= 0.0 {
@@ -102,9 +167,12 @@ pub fn check_charts_injective(at: &Atlas) -> CheckResult {
         if ch.unreached > 0 {
             r.offend(|| Witness::new(format!("chart at vertex {}: {} faces of the k-ring not connected to p_α through U_α", ch.centre, ch.unreached), json!({"chart": a, "unreached": ch.unreached, "kind": "disconnected"})));
         }
+        if r.offenders > before {
+            bad.push(a);
+        }
     }
     r.worst_deviation = Some(worst);
-    r.with_note("orientation and overlap exact (Shewchuk predicates); developing consistency to 128·ε·Σ|ω| along the path")
+    (r.with_note("orientation and overlap exact (Shewchuk predicates); developing consistency to 128·ε·Σ|ω| along the path"), bad)
 }
 
 /// The translation t with φ_β = φ_α + t on a common face, and the largest deviation of the

@@ -168,3 +168,80 @@ pub fn check_cor2(z: &ZeroSet, genus: usize) -> CheckResult {
     };
     r
 }
+
+/// `MS-T4(index)-corrected` (exact): a vertex of positive index (w_v ≤ 0) is a corner of a
+/// face whose image under ω is flipped or degenerate. If every face of the star of v has a
+/// positively oriented image, the image angles at φ(v) lie in (0, π) and sum to 2π·w_v, so
+/// w_v ≥ 1: the proof's "only negative indices" holds wherever ω preserves orientation.
+pub fn check_indices_corrected(k: &crate::mesh::SimplicialSurface, z: &ZeroSet) -> CheckResult {
+    let mut r = CheckResult::new(
+        "MS-T4(index)-corrected",
+        "every vertex with w_v ≤ 0 is a corner of a face with flipped or degenerate image",
+    );
+    r.examined = z.non_positive.len() as u64;
+    let corners: std::collections::BTreeSet<_> = z
+        .flipped
+        .iter()
+        .chain(&z.ambiguous_faces)
+        .flat_map(|f| k.face(*f))
+        .collect();
+    for &(v, w) in &z.non_positive {
+        if !corners.contains(&v) {
+            r.offend(|| {
+                Witness::new(
+                    format!("vertex {v}: w_v = {w} but every face of its star has a positively oriented image"),
+                    json!({"vertex": v.0, "winding": w}),
+                )
+            });
+        }
+    }
+    if r.examined == 0 {
+        r.verdict = Verdict::Skipped {
+            reason: "no vertex with w_v ≤ 0 (the statement as written holds)".into(),
+        };
+    }
+    r.with_note(format!(
+        "{} vertices with w_v ≤ 0, {} flipped and {} degenerate face images",
+        z.non_positive.len(),
+        z.flipped.len(),
+        z.ambiguous_faces.len()
+    ))
+}
+
+/// `MS-3.4.3-corrected` (exact): for the discrete ω, the zeros counted with multiplicity
+/// minus the positive indices equal 2g − 2 − F⁻ (Σ over the lists of zeros and of w_v ≤ 0,
+/// independently of `MS-GB`'s sum over all windings); with no flipped face this is the
+/// paper's count 2g − 2.
+pub fn check_zero_count_corrected(z: &ZeroSet, genus: usize) -> CheckResult {
+    let mut r = CheckResult::new(
+        "MS-3.4.3-corrected",
+        "Σ orders of zeros − Σ_{w_v ≤ 0} (1 − w_v) = 2g − 2 − F⁻ (= 2g − 2 when no face flips)",
+    );
+    r.examined = z.windings.len() as u64;
+    if !z.undecided.is_empty() || !z.ambiguous_faces.is_empty() {
+        r.verdict = Verdict::Skipped {
+            reason: format!(
+                "{} undecided windings, {} faces with degenerate or inconsistent image",
+                z.undecided.len(),
+                z.ambiguous_faces.len()
+            ),
+        };
+        return r;
+    }
+    let orders: i64 = z.zeros.iter().map(|x| x.1).sum();
+    let positive: i64 = z.non_positive.iter().map(|x| 1 - x.1).sum();
+    let want = 2 * genus as i64 - 2 - z.flipped.len() as i64;
+    if orders - positive != want {
+        r.offend(|| {
+            Witness::new(
+                format!("Σ orders {orders} − Σ positive indices {positive} ≠ 2g − 2 − F⁻ = {want}"),
+                json!({"orders": orders, "positive": positive, "want": want}),
+            )
+        });
+    }
+    r.with_note(format!(
+        "Σ orders {orders}, Σ positive indices {positive}, F⁻ = {}, 2g − 2 = {}",
+        z.flipped.len(),
+        2 * genus as i64 - 2
+    ))
+}

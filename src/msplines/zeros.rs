@@ -78,6 +78,8 @@ pub struct ZeroSet {
     pub undecided: Vec<VertexId>,
     /// Faces whose image [0, ω01, ω02] is negatively oriented at every corner.
     pub flipped_faces: u64,
+    /// Those faces.
+    pub flipped: Vec<crate::mesh::FaceId>,
     /// Faces whose image is degenerate or whose corners disagree on the orientation.
     pub ambiguous_faces: Vec<crate::mesh::FaceId>,
 }
@@ -96,7 +98,7 @@ pub fn locate(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm) -> ZeroSet {
         }
         windings.push((v, w));
     }
-    let mut flipped_faces = 0;
+    let mut flipped = Vec::new();
     let mut ambiguous_faces = Vec::new();
     for f in k.faces() {
         let hs = face_halfedges(f);
@@ -109,7 +111,7 @@ pub fn locate(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm) -> ZeroSet {
             })
             .collect();
         if signs.iter().all(|&s| s < 0.0) {
-            flipped_faces += 1;
+            flipped.push(f);
         } else if !signs.iter().all(|&s| s > 0.0) {
             ambiguous_faces.push(f);
         }
@@ -119,12 +121,31 @@ pub fn locate(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm) -> ZeroSet {
         zeros,
         non_positive,
         undecided,
-        flipped_faces,
+        flipped_faces: flipped.len() as u64,
+        flipped,
         ambiguous_faces,
     }
 }
 
 impl ZeroSet {
+    /// The vertices of the corrected Sec. 5.4 removal (SPEC `MS-D4-corrected`): every vertex
+    /// with w_v ≠ 1 or undecided, and every corner of a face whose image is flipped or
+    /// ambiguous. A vertex outside this set has w_v = 1 and a star of positively oriented
+    /// image triangles, whose angles at φ(v) are in (0, π) and sum to 2π·w_v = 2π: the
+    /// developed star is an embedded fan, so every sub-fan is injective.
+    pub fn singular_vertices(&self, k: &SimplicialSurface) -> Vec<VertexId> {
+        let mut s: std::collections::BTreeSet<VertexId> = self
+            .windings
+            .iter()
+            .filter(|(_, w)| *w != Winding::Decided(1))
+            .map(|(v, _)| *v)
+            .collect();
+        for f in self.flipped.iter().chain(&self.ambiguous_faces) {
+            s.extend(k.face(*f));
+        }
+        s.into_iter().collect()
+    }
+
     /// Σ_v (w_v − 1) over the decided vertices.
     pub fn total_order(&self) -> i64 {
         self.windings
