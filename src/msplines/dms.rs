@@ -1,4 +1,4 @@
-//! Sec. 3.1.2 beyond one B-patch: the triangular B-spline (DMS, [3]) basis over a planar
+//! Sec. 3.1.2 beyond one B-patch: the triangular B-spline (DMS, \[3\]) basis over a planar
 //! triangulation with a knot cloud per vertex, F(u) = Σ_I Σ_{|β|=k} c_β^I N_β^I(u) with
 //! N_β^I = |det Δ_β^I| · M(u | V_β^I), V_β^I the k+3 knots t_{i,0..β_i} of L139 and M the
 //! bivariate simplex spline (Micchelli's recurrence M(u|V) = Σ_j λ_j(u) M(u|V∖w_j), λ the

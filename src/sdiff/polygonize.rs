@@ -3,7 +3,7 @@
 //!
 //! What is implemented (and where it departs from the paper, stated in SPEC `SD-6.2`):
 //! * K_0 = Kuhn grid over the box; the cell of largest err is refined by newest-vertex
-//!   bisection (conforming; the paper's stellar SUBDIVIDE [15] is not available to us);
+//!   bisection (conforming; the paper's stellar SUBDIVIDE \[15\] is not available to us);
 //! * err(σ) = Σ_j |g(p_j)|² over 8 samples of the linear patch θ, i.e. the paper's L302 with
 //!   X = id (we do not run the paper's optimiser during refinement);
 //! * L324's stopping rule with an exact natural inclusion function: a crossed cell is not

@@ -1,6 +1,6 @@
 //! Triangulations of a box for Mello–Velho Sec. 6.2: the canonical (Kuhn) triangulation K_0 of
 //! a grid of squares, each split by its diagonal, and conforming refinement by newest-vertex
-//! bisection (our stand-in for the paper's SUBDIVIDE "with adaptive propagation" [15], L308:
+//! bisection (our stand-in for the paper's SUBDIVIDE "with adaptive propagation" \[15\], L308:
 //! bisecting a triangle first bisects the neighbour across its refinement edge when that
 //! neighbour's refinement edge differs, so the mesh stays conforming).
 

@@ -4,7 +4,7 @@
 //! subdivision" (L316).
 //!
 //! The paper does not specify SUBDIVIDE: L310 names it "the subdivision of σ with adaptive
-//! propagation" and cites [15]. Our stand-in is the newest-vertex bisection of
+//! propagation" and cites \[15\]. Our stand-in is the newest-vertex bisection of
 //! [`Mesh2::bisect`] (bisect σ's refinement edge, first bisecting the neighbour across it when
 //! its refinement edge differs). This module records what each call inserts and checks the
 //! locality L316 relies on: every triangle a call creates has one of the call's new vertices,
