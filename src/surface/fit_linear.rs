@@ -72,7 +72,7 @@ fn key_hash(fit: usize, sector: usize, key: &[u32]) -> u64 {
 pub(super) fn fit_linear<'a>(
     k: &SimplicialSurface,
     lin: &dyn LinearTarget,
-    fits: &[&DegreeFit],
+    fits: &[DegreeFit],
     jobs: Vec<(usize, Job<'a>)>,
 ) -> Vec<(usize, Job<'a>)> {
     // The sectors of every vertex, with their stencils.
@@ -153,7 +153,7 @@ pub(super) fn fit_linear<'a>(
     let mats: Vec<Option<Vec<f64>>> = reps
         .par_iter()
         .map(|&(fi, i, (f, c, st, _))| {
-            let fit = fits[fi];
+            let fit = &fits[fi];
             let idx = by_sector[fi].get(i)?;
             let at = pinv_t[fi].get(i)?;
             let barys: Vec<[f64; 3]> = idx.iter().map(|&j| fit.samples[j].bary).collect();
@@ -196,6 +196,7 @@ pub(super) fn fit_linear<'a>(
 struct Scratch {
     union: Vec<VertexId>,
     merged: Vec<f64>,
+    acc: Vec<f64>,
 }
 
 /// out = Σ_i M_i P_i, the M_i first summed into one matrix over the union of the sectors'
@@ -213,7 +214,7 @@ fn apply(
     if out.len() != kk {
         return false;
     }
-    let Scratch { union, merged } = scratch;
+    let Scratch { union, merged, acc } = scratch;
     union.clear();
     merged.clear();
     for ((_, _, st, _), &r) in secs.iter().zip(slot) {
@@ -235,7 +236,8 @@ fn apply(
         }
     }
     // x, y, z of X_v side by side (one pass of each column per coordinate).
-    let mut acc = vec![0.0; 3 * kk];
+    acc.clear();
+    acc.resize(3 * kk, 0.0);
     let (ax, rest) = acc.split_at_mut(kk);
     let (ay, az) = rest.split_at_mut(kk);
     for (&u, col) in union.iter().zip(merged.chunks_exact(kk)) {

@@ -214,23 +214,22 @@ impl Pps {
         } else if let Some(lin) = target.linear() {
             // Targets linear in the positions (the Loop S′): one matrix per local
             // combinatorics (`fit_linear`); what it cannot serve samples S′.
-            let fits: Vec<&DegreeFit> = factored.iter().collect();
+            let offset = &offset;
             let jobs: Vec<(usize, super::fit_linear::Job)> = tasks
                 .into_iter()
                 .flat_map(|(fit, vs)| {
+                    // The index of the task's fit in `factored` (the same degree).
                     let fi = factored
                         .iter()
                         .position(|f| f.info.m == fit.info.m)
                         .unwrap_or(0);
                     vs.into_iter()
-                        .map(move |(v, out)| (fi, (v, 0, out)))
-                        .collect::<Vec<_>>()
+                        .map(move |(v, out)| (fi, (v, offset[v.idx()], out)))
                 })
-                .map(|(fi, (v, _, out))| (fi, (v, offset[v.idx()], out)))
                 .collect();
-            let rest = super::fit_linear::fit_linear(k, lin, &fits, jobs);
+            let rest = super::fit_linear::fit_linear(k, lin, &factored, jobs);
             rest.into_par_iter().for_each(|(fi, (v, off, out))| {
-                fit_vertex(k, target, v, off, fits[fi], out);
+                fit_vertex(k, target, v, off, &factored[fi], out);
             });
         } else {
             tasks

@@ -8,7 +8,7 @@
 
 use super::eigen::EigenStructure;
 use super::stam::{depth_cap, regular_point_f64, stam_tile};
-use super::surface::split_sub_face;
+use super::surface::split_patch_point;
 use std::sync::Arc;
 
 /// One patch, ready for f64 evaluation.
@@ -195,14 +195,8 @@ impl FastPlan {
                 patch.point(basis, sb[(r + 1) % 3], sb[(r + 2) % 3], authors_jordan)
             }
             FastPlan::Split(ps) => {
-                // The sub-triangle (`split_sub_face`, as `LoopSurface::jet`) and the patch
-                // coordinates in it: 2·sb of the next two corners, or 1 − 2·sb in the middle.
-                let j = split_sub_face(&sb, 53);
-                let b = match j {
-                    3 => [1.0 - 2.0 * sb[0], 1.0 - 2.0 * sb[1]],
-                    c => [2.0 * sb[(c + 1) % 3], 2.0 * sb[(c + 2) % 3]],
-                };
-                ps[j].point(basis, b[0], b[1], authors_jordan)
+                let (j, x, y) = split_patch_point(&sb);
+                ps[j].point(basis, x, y, authors_jordan)
             }
         }
     }

@@ -12,8 +12,8 @@
 
 use super::fast::SubNetTable;
 use super::stam::{depth_cap, regular_weights_f64, stam_tile};
-use super::surface::{plan_of, split_sub_face, LoopSurface, Patch, Plan, PointTable, Stencil};
-use super::topology::{BaseTopology, Topology};
+use super::surface::{plan_of, split_patch_point, LoopSurface, Patch, Plan, PointTable, Stencil};
+use super::topology::{link_from, BaseTopology, Topology};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::surface::target::{FaceStencil, LinearTarget};
 use std::sync::Arc;
@@ -122,13 +122,9 @@ impl LinearTarget for LoopSurface {
         let mut key: Vec<u32> = Vec::with_capacity(32);
         key.push(ccw as u32);
         for j in 0..3 {
-            // The ring of order[j] from order[j + 1] (`SimplicialSurface::link` runs in the
-            // orientation of K, as `topology::ring` does).
-            let link = k.link(order[j]);
-            let start = link.iter().position(|&x| x == order[(j + 1) % 3])?;
-            key.push(link.len() as u32);
-            for t in 0..link.len() {
-                let x = link[(start + t) % link.len()];
+            // The ring of order[j] from order[j + 1].
+            key.push(k.degree(order[j]));
+            for x in link_from(k, order[j], order[(j + 1) % 3])? {
                 let at = match verts.iter().position(|&y| y == x) {
                     Some(p) => p,
                     None => {
@@ -189,14 +185,7 @@ impl LinearTarget for LoopSurface {
                     let r = *rot as usize;
                     (0, sb[(r + 1) % 3], sb[(r + 2) % 3])
                 }
-                Plan::Split(_) => {
-                    let j = split_sub_face(&sb, 53);
-                    let b = match j {
-                        3 => [1.0 - 2.0 * sb[0], 1.0 - 2.0 * sb[1]],
-                        c => [2.0 * sb[(c + 1) % 3], 2.0 * sb[(c + 2) % 3]],
-                    };
-                    (j, b[0], b[1])
-                }
+                Plan::Split(_) => split_patch_point(&sb),
             };
             let w = self.patch_weights(patches.get(j)?, x, y)?;
             for (wi, e) in w.iter().zip(nets.get(j)?) {

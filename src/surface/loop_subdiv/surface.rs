@@ -802,3 +802,13 @@ pub(super) fn split_sub_face<S: Scalar>(sb: &[S; 3], prec: u32) -> usize {
     let half = S::from_ratio(1, 2, prec);
     (0..3).find(|&c| sb[c].lt(&half).is_false()).unwrap_or(3)
 }
+
+/// In f64: the sub-triangle of a split face holding `sb` ([`split_sub_face`]) and the patch
+/// coordinates there, 2·sb of the next two corners, or 1 − 2·sb in the middle (as
+/// `LoopSurface::jet`); one function for the hot path (`fast`) and the weights (`linear`).
+pub(super) fn split_patch_point(sb: &[f64; 3]) -> (usize, f64, f64) {
+    match split_sub_face(sb, 53) {
+        3 => (3, 1.0 - 2.0 * sb[0], 1.0 - 2.0 * sb[1]),
+        c => (c, 2.0 * sb[(c + 1) % 3], 2.0 * sb[(c + 2) % 3]),
+    }
+}

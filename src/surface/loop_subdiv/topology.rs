@@ -126,38 +126,31 @@ impl Topology for BaseTopology<'_> {
         let k = self.0;
         k.halfedge(a, b).map(|h| k.dest(k.next(h)))
     }
-    /// K stores each vertex's outgoing half-edges around its link: the ring is that list,
-    /// rotated to `start` and read in the direction `third` walks (checked on the first step
-    /// and the last; anything else walks).
+    /// K stores each ring: [`link_from`] (anything else, e.g. `start` not a neighbour,
+    /// walks, and reports what is missing).
     fn ring_of(
         &self,
         v: VertexId,
         start: VertexId,
         cap: usize,
     ) -> Result<Vec<VertexId>, MissingTriangle> {
-        let k = self.0;
-        let out = k.outgoing(v);
-        let m = out.len();
-        let at = out.iter().position(|&h| k.dest(h) == start);
-        if let (Some(j), true) = (at, m >= 3 && m <= cap) {
-            let next = k.dest(k.next(out[j]));
-            let step = if k.dest(out[(j + 1) % m]) == next {
-                Some(1)
-            } else if k.dest(out[(j + m - 1) % m]) == next {
-                Some(m - 1)
-            } else {
-                None
-            };
-            if let Some(step) = step {
-                let r: Vec<VertexId> = (0..m).map(|t| k.dest(out[(j + t * step) % m])).collect();
-                let last = r[m - 1];
-                if self.third(v, last) == Some(start) {
-                    return Ok(r);
-                }
-            }
+        if let Some(r) = link_from(self.0, v, start).filter(|_| self.0.degree(v) as usize <= cap) {
+            return Ok(r.collect());
         }
         walk_ring(self, v, start, cap)
     }
+}
+
+/// The ring of v in K from `start` ([`ring`] without walking): `SimplicialSurface::link`
+/// rotated, since the link runs the way `third` walks. `None` if `start` is not in it.
+pub fn link_from(
+    k: &SimplicialSurface,
+    v: VertexId,
+    start: VertexId,
+) -> Option<impl Iterator<Item = VertexId> + '_> {
+    let link = k.link(v);
+    let at = link.iter().position(|&x| x == start)?;
+    Some(link[at..].iter().chain(&link[..at]).copied())
 }
 
 /// A vertex of K after one Loop step: the vertex point of a vertex of K, or the edge point of
