@@ -158,11 +158,21 @@ fn fail(e: String) -> ExitCode {
     ExitCode::from(2)
 }
 
-fn load_iso(
-    mesh: &Path,
-    params_path: &Path,
-) -> Result<(complex::PlanarComplex, params::MapSpec, params::ComplexMap), String> {
-    load(mesh, params_path).map(|(k, s, cm, _)| (k, s, cm))
+/// The complex, its map and the \[iso\] table (f per vertex, level c) the Secs. 5–6 commands need.
+type IsoInput = (
+    complex::PlanarComplex,
+    params::MapSpec,
+    params::ComplexMap,
+    Vec<crate::sdiff::poly::Q>,
+    crate::sdiff::poly::Q,
+);
+
+fn load_iso(mesh: &Path, params_path: &Path) -> Result<IsoInput, String> {
+    let (k, spec, cm, _) = load(mesh, params_path)?;
+    let Some((f, c)) = spec.iso.clone() else {
+        return Err(format!("{}: no [iso] table", params_path.display()));
+    };
+    Ok((k, spec, cm, f, c))
 }
 
 fn emit(results: &[CheckResult], json: bool) -> ExitCode {
@@ -250,12 +260,9 @@ pub fn run(a: SdArgs) -> ExitCode {
             params: p,
             json,
         } => {
-            let (k, spec, cm) = match load_iso(&mesh, &p) {
+            let (k, _, cm, f, c) = match load_iso(&mesh, &p) {
                 Ok(x) => x,
                 Err(e) => return fail(e),
-            };
-            let Some((f, c)) = spec.iso.clone() else {
-                return fail(format!("{}: no [iso] table", p.display()));
             };
             let (r, points) = normals::check_l203(&k, &cm, &f, &c);
             if json {
@@ -288,12 +295,9 @@ pub fn run(a: SdArgs) -> ExitCode {
             output,
             json,
         } => {
-            let (k, spec, _) = match load_iso(&mesh, &p) {
+            let (k, spec, _, f, c) = match load_iso(&mesh, &p) {
                 Ok(x) => x,
                 Err(e) => return fail(e),
-            };
-            let Some((f, c)) = spec.iso.clone() else {
-                return fail(format!("{}: no [iso] table", p.display()));
             };
             if spec.family == params::FamilySpec::Monotonic {
                 return fail(format!("{}: (12) is for the rational family (Eq. (11)); give degree and control points", p.display()));
@@ -322,12 +326,9 @@ pub fn run(a: SdArgs) -> ExitCode {
             steps,
             json,
         } => {
-            let (k, spec, _) = match load_iso(&mesh, &p) {
+            let (k, _, _, f, c) = match load_iso(&mesh, &p) {
                 Ok(x) => x,
                 Err(e) => return fail(e),
-            };
-            let Some((f, c)) = spec.iso.clone() else {
-                return fail(format!("{}: no [iso] table", p.display()));
             };
             if edge.len() != 2 || !(2..=4096).contains(&steps) {
                 return fail("--edge needs two vertex ids and --steps 2..=4096".into());

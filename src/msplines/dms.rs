@@ -255,6 +255,15 @@ pub struct Dms<S> {
     pub planted: Planted,
 }
 
+/// Knots of N_β^I that span no triangle.
+fn collinear(triangle: usize, beta: &[usize; 3], knots: Vec<usize>) -> DmsError {
+    DmsError::Collinear {
+        triangle,
+        beta: *beta,
+        knots,
+    }
+}
+
 impl<S: Scalar> Dms<S> {
     /// The cloud triangle I sees at corner c.
     pub fn corner_cloud(&self, i: usize, c: usize) -> &[Pt<S>] {
@@ -283,26 +292,23 @@ impl<S: Scalar> Dms<S> {
         }
         Ok((v, delta))
     }
-    /// N_β^I(u) = |det Δ_β^I| · M(u|V_β^I).
-    pub fn basis(&self, i: usize, b: &[usize; 3], u: &Pt<S>) -> Result<S, DmsError> {
+    /// V_β^I and the scale |det Δ_β^I| of N_β^I; a collinear Δ_β^I is an error.
+    fn scaled_knots(&self, i: usize, b: &[usize; 3]) -> Result<(Vec<Pt<S>>, S), DmsError> {
         let (v, d) = self.v_beta(i, b)?;
         let scale = det(&v[d[0]], &v[d[1]], &v[d[2]]).abs();
         if scale.is_zero() {
-            return Err(DmsError::Collinear {
-                triangle: i,
-                beta: *b,
-                knots: d.to_vec(),
-            });
+            return Err(collinear(i, b, d.to_vec()));
         }
+        Ok((v, scale))
+    }
+    /// N_β^I(u) = |det Δ_β^I| · M(u|V_β^I).
+    pub fn basis(&self, i: usize, b: &[usize; 3], u: &Pt<S>) -> Result<S, DmsError> {
+        let (v, scale) = self.scaled_knots(i, b)?;
         let m = SimplexSpline {
             knots: &v,
             planted: self.planted,
         };
-        let val = m.at(u).map_err(|knots| DmsError::Collinear {
-            triangle: i,
-            beta: *b,
-            knots,
-        })?;
+        let val = m.at(u).map_err(|knots| collinear(i, b, knots))?;
         Ok(scale * val)
     }
     /// Σ_{I ∈ tris} Σ_β c(I, β)·N_β^I(u).
@@ -346,24 +352,12 @@ impl Dms<Q> {
     }
     /// The polynomial piece of N_β^I on the cell containing u.
     pub fn basis_piece(&self, i: usize, b: &[usize; 3], u: &Pt<Q>) -> Result<Poly2, DmsError> {
-        let (v, d) = self.v_beta(i, b)?;
-        let scale = det(&v[d[0]], &v[d[1]], &v[d[2]]).abs();
-        if scale.is_zero() {
-            return Err(DmsError::Collinear {
-                triangle: i,
-                beta: *b,
-                knots: d.to_vec(),
-            });
-        }
+        let (v, scale) = self.scaled_knots(i, b)?;
         let m = SimplexSpline {
             knots: &v,
             planted: self.planted,
         };
-        let p = m.piece(u).map_err(|knots| DmsError::Collinear {
-            triangle: i,
-            beta: *b,
-            knots,
-        })?;
+        let p = m.piece(u).map_err(|knots| collinear(i, b, knots))?;
         Ok(p.scale(&scale))
     }
 }
