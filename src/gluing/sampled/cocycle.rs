@@ -297,3 +297,7 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
     }
     r.finish("")
 }
+
+#[cfg(test)]
+#[path = "cocycle_tests.rs"]
+mod tests;
