@@ -174,39 +174,147 @@ pub(super) fn fit_linear<'a>(
             Some(m)
         })
         .collect();
+    // Vertices whose sectors have the same matrices (e.g. every vertex of one degree whose
+    // neighbours are regular) share the merged matrix Σ_i M_i over the union of their stencils
+    // when their stencils also meet the same way (the same layout): it is summed once.
+    let mut groups: HashMap<(usize, &[usize]), usize, BuildHasherDefault<Fnv1a>> =
+        HashMap::default();
+    let mut members: Vec<usize> = Vec::new();
+    let group_of: Vec<Option<usize>> = jobs
+        .iter()
+        .zip(&slot)
+        .map(|((fi, _), sl)| {
+            let sl = sl.as_deref()?;
+            let g = *groups.entry((*fi, sl)).or_insert_with(|| {
+                members.push(0);
+                members.len() - 1
+            });
+            members[g] += 1;
+            Some(g)
+        })
+        .collect();
+    let mut first: Vec<Option<usize>> = vec![None; members.len()];
+    for (j, g) in group_of.iter().enumerate() {
+        if let Some(g) = *g {
+            first[g].get_or_insert(j);
+        }
+    }
+    let shared: Vec<Option<Shared>> = first
+        .par_iter()
+        .zip(&members)
+        .map_init(Scratch::default, |scratch, (rep, &count)| {
+            let rep = (*rep)?;
+            if count < SHARE_MIN {
+                return None;
+            }
+            let (secs, sl) = (sectors[rep].as_ref()?, slot[rep].as_ref()?);
+            let kk = fits[jobs[rep].0].info.unknowns;
+            union_layout(secs, &mut scratch.union, &mut scratch.places);
+            merge(secs, sl, &mats, kk, scratch)?;
+            Some(Shared {
+                places: scratch.places.clone(),
+                merged: scratch.merged.clone(),
+            })
+        })
+        .collect();
     // X_v = Σ_i M_i P_i.
     jobs.into_par_iter()
         .zip(sectors)
         .zip(slot)
-        .map_init(Scratch::default, |scratch, ((job, secs), slot)| {
+        .zip(group_of)
+        .map_init(Scratch::default, |scratch, (((job, secs), slot), g)| {
             let (fi, (v, off, out)) = job;
             let (Some(secs), Some(slot)) = (secs, slot) else {
                 return Some((fi, (v, off, out)));
             };
             let kk = fits[fi].info.unknowns;
-            let served = apply(lin, &secs, &slot, &mats, kk, out, scratch);
+            let shared = g.and_then(|g| shared[g].as_ref());
+            let served = apply(lin, &secs, &slot, &mats, shared, kk, out, scratch);
             (!served).then_some((fi, (v, off, out)))
         })
         .flatten()
         .collect()
 }
 
+/// Vertices with the same matrices share their merged matrix from this many on (below it the
+/// sum is as cheap as the comparison of layouts).
+const SHARE_MIN: usize = 4;
+
+/// The merged matrix of a group of vertices and the layout it was summed for.
+struct Shared {
+    places: Vec<u32>,
+    merged: Vec<f64>,
+}
+
 /// Per-thread buffers of [`apply`].
 #[derive(Default)]
 struct Scratch {
     union: Vec<VertexId>,
+    places: Vec<u32>,
     merged: Vec<f64>,
     acc: Vec<f64>,
 }
 
+/// The union of the sectors' stencils (in order of first appearance) and, for every column of
+/// every sector's stencil, its place in the union.
+fn union_layout(secs: &[Sector], union: &mut Vec<VertexId>, places: &mut Vec<u32>) {
+    union.clear();
+    places.clear();
+    for (_, _, st, _) in secs {
+        for &u in &st.verts {
+            let at = match union.iter().position(|&x| x == u) {
+                Some(p) => p,
+                None => {
+                    union.push(u);
+                    union.len() - 1
+                }
+            };
+            places.push(at as u32);
+        }
+    }
+}
+
+/// Σ_i M_i summed into `scratch.merged` over the union laid out in `scratch.places`; `None`
+/// when a matrix is missing.
+fn merge(
+    secs: &[Sector],
+    slot: &[usize],
+    mats: &[Option<Vec<f64>>],
+    kk: usize,
+    scratch: &mut Scratch,
+) -> Option<()> {
+    let Scratch {
+        union,
+        places,
+        merged,
+        ..
+    } = scratch;
+    merged.clear();
+    merged.resize(union.len() * kk, 0.0);
+    let mut at = places.iter();
+    for ((_, _, st, _), &r) in secs.iter().zip(slot) {
+        let m = mats.get(r)?.as_ref()?;
+        for col in m.chunks_exact(kk).take(st.verts.len()) {
+            let p = *at.next()? as usize;
+            for (g, w) in merged[p * kk..(p + 1) * kk].iter_mut().zip(col) {
+                *g += w;
+            }
+        }
+    }
+    Some(())
+}
+
 /// out = Σ_i M_i P_i, the M_i first summed into one matrix over the union of the sectors'
-/// stencils (neighbouring sectors share most vertices, so this halves the products); false
-/// (out untouched) when a matrix or a position is missing.
+/// stencils (neighbouring sectors share most vertices, so this halves the products), or taken
+/// from `shared` when its layout is this vertex's; false (out untouched) when a matrix or a
+/// position is missing.
+#[allow(clippy::too_many_arguments)]
 fn apply(
     lin: &dyn LinearTarget,
     secs: &[Sector],
     slot: &[usize],
     mats: &[Option<Vec<f64>>],
+    shared: Option<&Shared>,
     kk: usize,
     out: &mut [[f64; 3]],
     scratch: &mut Scratch,
@@ -214,27 +322,19 @@ fn apply(
     if out.len() != kk {
         return false;
     }
-    let Scratch { union, merged, acc } = scratch;
-    union.clear();
-    merged.clear();
-    for ((_, _, st, _), &r) in secs.iter().zip(slot) {
-        let Some(Some(m)) = mats.get(r) else {
-            return false;
-        };
-        for (&u, col) in st.verts.iter().zip(m.chunks_exact(kk)) {
-            let at = match union.iter().position(|&x| x == u) {
-                Some(p) => p,
-                None => {
-                    union.push(u);
-                    merged.resize(union.len() * kk, 0.0);
-                    union.len() - 1
-                }
-            };
-            for (g, w) in merged[at * kk..(at + 1) * kk].iter_mut().zip(col) {
-                *g += w;
-            }
+    union_layout(secs, &mut scratch.union, &mut scratch.places);
+    let merged: &[f64] = match shared {
+        Some(sh) if sh.places == scratch.places && sh.merged.len() == scratch.union.len() * kk => {
+            &sh.merged
         }
-    }
+        _ => {
+            if merge(secs, slot, mats, kk, scratch).is_none() {
+                return false;
+            }
+            &scratch.merged
+        }
+    };
+    let Scratch { union, acc, .. } = scratch;
     // x, y, z of X_v side by side (one pass of each column per coordinate).
     acc.clear();
     acc.resize(3 * kk, 0.0);
