@@ -122,6 +122,8 @@ enum SdCommand {
         #[arg(long)]
         json: bool,
     },
+    #[command(flatten)]
+    D3(super::sd3::Sd3Command),
 }
 
 fn load(
@@ -153,7 +155,7 @@ fn load(
     Ok((k, spec, cm, rep))
 }
 
-fn fail(e: String) -> ExitCode {
+pub(super) fn fail(e: String) -> ExitCode {
     eprintln!("error: {e}");
     ExitCode::from(2)
 }
@@ -175,7 +177,7 @@ fn load_iso(mesh: &Path, params_path: &Path) -> Result<IsoInput, String> {
     Ok((k, spec, cm, f, c))
 }
 
-fn emit(results: &[CheckResult], json: bool) -> ExitCode {
+pub(super) fn emit(results: &[CheckResult], json: bool) -> ExitCode {
     if json {
         match serde_json::to_string_pretty(results) {
             Ok(s) => println!("{s}"),
@@ -458,5 +460,6 @@ pub fn run(a: SdArgs) -> ExitCode {
             ));
             emit(&out, json)
         }
+        SdCommand::D3(c) => super::sd3::run(c),
     }
 }
