@@ -117,10 +117,10 @@ pub fn det_enclosure(m: &TetMap, b: [I; 3]) -> (I, I) {
                     pos.get(&i).copied().unwrap_or(0)
                 };
                 let e0 = up(0);
-                for dir in 0..3 {
-                    let e = up(dir + 1);
-                    for c in 0..4 {
-                        d[c][dir] = d[c][dir] + (pts[e][c] - pts[e0][c]) * bj;
+                let es: [usize; 3] = std::array::from_fn(|dir| up(dir + 1));
+                for (c, dc) in d.iter_mut().enumerate() {
+                    for (dir, x) in dc.iter_mut().enumerate() {
+                        *x = *x + (pts[es[dir]][c] - pts[e0][c]) * bj;
                     }
                 }
             }
@@ -144,10 +144,10 @@ pub fn det_enclosure(m: &TetMap, b: [I; 3]) -> (I, I) {
         }
     };
     let mut lemma = pt(0.0);
-    for i in 0..3 {
+    for (i, gi) in d[3].iter().enumerate() {
         for (j, nj) in v.iter().take(3).enumerate() {
             // ∇D_i · adj(A)_ij · N_j, adj(A)_ij = C_ji.
-            lemma = lemma + d[3][i] * cof(j, i) * *nj;
+            lemma = lemma + *gi * cof(j, i) * *nj;
         }
     }
     (v[3], v[3] * det3(&a) - lemma)
