@@ -1,4 +1,5 @@
-//! `ppm sd …`: simplicial diffeomorphisms of a planar complex (Mello–Velho; SPEC rows SD-…).
+//! `ppm sd …`: simplicial diffeomorphisms of a planar complex (Mello–Velho; SPEC rows SD-…);
+//! the 3-D subcommands (`check3`, `iso3`, `claims3`) are in `sd3`.
 
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::report::{render_text, CheckResult};

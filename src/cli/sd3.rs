@@ -159,8 +159,8 @@ pub fn run(c: Sd3Command) -> ExitCode {
                 tet_search::random_rational_adjusted4(2, r)
             });
             let mut r = claims::universal(
-                "SD-L161(3-D,adjusted)",
-                "beyond Sec. 3.3: adjusted, not fixed, q > 0, n = 2 (no claim: a finding)",
+                "SD-L161(3-D)",
+                "beyond Sec. 3.3: adjusted, not fixed, q > 0, n = 2 (no claim: a warning if refuted)",
                 &s,
                 samples,
                 seed,
