@@ -10,6 +10,7 @@ mod progress;
 pub mod render;
 mod sample;
 mod sd;
+mod sd3;
 mod sigma_v;
 mod tsv_diff;
 

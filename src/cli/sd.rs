@@ -1,4 +1,5 @@
-//! `ppm sd …`: simplicial diffeomorphisms of a planar complex (Mello–Velho; SPEC rows SD-…).
+//! `ppm sd …`: simplicial diffeomorphisms of a planar complex (Mello–Velho; SPEC rows SD-…);
+//! the 3-D subcommands (`check3`, `iso3`, `claims3`) are in `sd3`.
 
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::report::{render_text, CheckResult};
@@ -122,6 +123,8 @@ enum SdCommand {
         #[arg(long)]
         json: bool,
     },
+    #[command(flatten)]
+    D3(super::sd3::Sd3Command),
 }
 
 fn load(
@@ -153,7 +156,7 @@ fn load(
     Ok((k, spec, cm, rep))
 }
 
-fn fail(e: String) -> ExitCode {
+pub(super) fn fail(e: String) -> ExitCode {
     eprintln!("error: {e}");
     ExitCode::from(2)
 }
@@ -175,7 +178,7 @@ fn load_iso(mesh: &Path, params_path: &Path) -> Result<IsoInput, String> {
     Ok((k, spec, cm, f, c))
 }
 
-fn emit(results: &[CheckResult], json: bool) -> ExitCode {
+pub(super) fn emit(results: &[CheckResult], json: bool) -> ExitCode {
     if json {
         match serde_json::to_string_pretty(results) {
             Ok(s) => println!("{s}"),
@@ -458,5 +461,6 @@ pub fn run(a: SdArgs) -> ExitCode {
             ));
             emit(&out, json)
         }
+        SdCommand::D3(c) => super::sd3::run(c),
     }
 }

@@ -7,6 +7,11 @@
 //! Entry points: [`complex::validate`] (a planar complex with boundary), [`params::read`] and
 //! [`params::MapSpec::build`] (the map), [`checks::check_all`], [`iso::isocurves`], and the
 //! seeded claim searches of [`claims`]. SPEC IDs: `SD-…`.
+//!
+//! 3-D (m = 3, tetrahedral complexes with boundary, rows `SD-…(3-D)`): [`tet_complex::read`] and
+//! [`tet_complex::validate`] (the `.tets` format, docs/sdiff-3d.md), [`tet_params::read`] and
+//! [`tet_params::MapSpec3::build`], [`tet_checks::check_all3`] (exact, and the interval route of
+//! [`tet_interval`]), [`tet_iso::isosurfaces`], and the rational search of [`tet_search`].
 
 pub mod c1;
 pub mod checks;
@@ -29,4 +34,10 @@ pub mod positivity;
 pub mod refine;
 pub mod subdivide;
 pub mod tet;
+pub mod tet_checks;
+pub mod tet_complex;
+pub mod tet_interval;
+pub mod tet_iso;
 pub mod tet_maps;
+pub mod tet_params;
+pub mod tet_search;

@@ -9,7 +9,7 @@
 
 use super::maps::Poly1;
 use super::poly::{multinomial, q, qr, to_f64, Q};
-use super::positivity::{Budget, Decision};
+use super::positivity::{Budget, Decision, Strictness};
 use num_traits::{One, Signed, Zero};
 use std::collections::BTreeMap;
 
@@ -167,6 +167,15 @@ pub fn reference_tet() -> [[Q; 3]; 4] {
 
 /// Decide p > 0 on the closed reference tetrahedron (strict), exactly.
 pub fn decide_tet(p: &Poly3, budget: Budget) -> Decision {
+    decide_tet_with(p, Strictness::Positive, budget)
+}
+
+/// Decide p > 0 or p ≥ 0 (`strict`) on the closed reference tetrahedron, exactly.
+pub fn decide_tet_with(p: &Poly3, strict: Strictness, budget: Budget) -> Decision {
+    let bad = |v: &Q| match strict {
+        Strictness::Positive => !v.is_positive(),
+        Strictness::NonNegative => v.is_negative(),
+    };
     let n = p.deg();
     let mut stack = vec![(reference_tet(), 0u32)];
     let (mut pieces, mut deepest) = (0usize, 0u32);
@@ -176,7 +185,7 @@ pub fn decide_tet(p: &Poly3, budget: Budget) -> Decision {
         deepest = deepest.max(depth);
         let (coeffs, corners) = p.compose_affine(&t).bernstein(n);
         for (c, v) in corners.iter().enumerate() {
-            if !v.is_positive() {
+            if bad(v) {
                 let pt = &t[c];
                 let w0 = Q::one() - &pt[0] - &pt[1] - &pt[2];
                 let w = [w0, pt[0].clone(), pt[1].clone(), pt[2].clone()];
@@ -188,7 +197,7 @@ pub fn decide_tet(p: &Poly3, budget: Budget) -> Decision {
                 };
             }
         }
-        if coeffs.iter().all(|c| c.is_positive()) {
+        if coeffs.iter().all(|c| !bad(c)) {
             let m = coeffs.iter().min().cloned().unwrap_or_else(Q::zero);
             lower = Some(match lower {
                 Some(l) if l < m => l,

@@ -3,7 +3,7 @@
 //! exact det DX certificate of `tet` (D > 0 first, then the Jacobian numerator). Used for the
 //! 3-D readings of L141 (adjusted quadratics) and L146 (degree 4, every non-solitary control
 //! point fixed, the solitary (1,1,1,1) free in the open tetrahedron; proved for m = 3).
-//! There is no interval route in 3-D (the planar `interval` module is 2-D only).
+//! The independent interval route for tetrahedra is `tet_interval`.
 
 use super::claims::unit_open;
 use super::poly::{multinomial, q, Q};

@@ -1,0 +1,445 @@
+//! Parameter files (TOML) for a simplicial map on a tetrahedral complex, and the per-tetrahedron
+//! maps x = (N_0, N_1, N_2, N_3) / D they define (Mello–Velho Eqs. (9)–(11) with m = 3).
+//!
+//! The same format as the planar `params` with points in ℝ³ and `tet = f` for a per-tetrahedron
+//! override. Keys are global vertex multisets, so tetrahedra sharing a face share its control
+//! points and weights by construction (Sec. 3, "share the same control parameters in its common
+//! face"); an override is how a disagreement is planted.
+//!
+//! ```toml
+//! family = "rational"       # polynomial | rational | monotonic
+//! degree = 2
+//! [[control]]               # unlisted control points are fixed: c_I = Σ I_i v_i / n
+//! at = [0, 1]               # the multiset I of global vertex ids, |I| = degree
+//! point = ["1/3", "0", "0"] # c_I in ℝ³
+//! [[weight]]                # rational only; unlisted weights are 1
+//! at = [0, 0]
+//! q = "2"
+//! [[g]]                     # monotonic only; unlisted g are g(t) = t
+//! vertex = 0
+//! coeffs = ["0", "1", "1/2"]
+//! [iso]                     # optional: f per vertex and the level c (Sec. 4)
+//! f = ["-1", "1", "1", "1"]
+//! c = "0"
+//! ```
+
+use super::maps::Poly1;
+use super::params::{parse_number, FamilySpec, Multiset, ParamError, MAX_FILE_BYTES};
+use super::poly::{q, Q};
+use super::tet::Poly3;
+use super::tet_complex::TetComplex;
+use super::tet_maps::{bernstein4, fixed_control4, multi_indices4};
+use num_traits::Zero;
+use serde::Deserialize;
+use std::collections::HashMap;
+use std::path::Path;
+
+/// Largest degree accepted in 3-D (the Jacobian numerator of Eq. (11) has degree 4n − 3).
+pub const MAX_DEGREE_3D: usize = 6;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawParams {
+    family: String,
+    #[serde(default)]
+    degree: Option<usize>,
+    #[serde(default)]
+    control: Vec<RawControl>,
+    #[serde(default)]
+    weight: Vec<RawWeight>,
+    #[serde(default)]
+    g: Vec<RawG>,
+    #[serde(default)]
+    iso: Option<RawIso>,
+}
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawControl {
+    at: Vec<u32>,
+    point: Vec<toml::Value>,
+    #[serde(default)]
+    tet: Option<usize>,
+}
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawWeight {
+    at: Vec<u32>,
+    q: toml::Value,
+    #[serde(default)]
+    tet: Option<usize>,
+}
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawG {
+    vertex: u32,
+    coeffs: Vec<toml::Value>,
+}
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawIso {
+    f: Vec<toml::Value>,
+    #[serde(default)]
+    c: Option<toml::Value>,
+}
+
+/// A parsed 3-D parameter file.
+#[derive(Debug, Clone)]
+pub struct MapSpec3 {
+    /// The family.
+    pub family: FamilySpec,
+    /// Degree n (polynomial / rational).
+    pub degree: usize,
+    /// Control points c_I in ℝ³ by multiset; `(Some(f), I)` overrides in tetrahedron f.
+    pub control: HashMap<(Option<usize>, Multiset), [Q; 3]>,
+    /// Weights q_I.
+    pub weights: HashMap<(Option<usize>, Multiset), Q>,
+    /// g_v per vertex (monotonic).
+    pub g: HashMap<u32, Poly1>,
+    /// Iso-values f_v and the level c, when given.
+    pub iso: Option<(Vec<Q>, Q)>,
+}
+
+/// Which family of Sec. 3 a tetrahedron's map belongs to.
+pub type Family3 = FamilySpec;
+
+/// One map of the reference tetrahedron, x = (N_0, N_1, N_2, N_3) / D in barycentric
+/// components over the chart (s, t, r) = (w_1, w_2, w_3).
+#[derive(Debug, Clone)]
+pub struct TetMap {
+    /// The family.
+    pub family: Family3,
+    /// Degree n (Eqs. (10), (11)); 0 for Eq. (9).
+    pub degree: usize,
+    /// Control points b_I (barycentric, in ℚ⁴), indexed by `multi_indices4(degree)`.
+    pub control: Vec<[Q; 4]>,
+    /// Weights q_I (all 1 for Eq. (10)).
+    pub weights: Vec<Q>,
+    /// g_0..g_3 of Eq. (9); empty otherwise.
+    pub g: Vec<Poly1>,
+    /// Numerators N_0..N_3.
+    pub num: [Poly3; 4],
+    /// Denominator D (1 for Eq. (10)).
+    pub den: Poly3,
+}
+
+impl TetMap {
+    /// Eqs. (10) (`weights` = None) and (11).
+    pub fn bezier(n: usize, control: Vec<[Q; 4]>, weights: Option<Vec<Q>>) -> TetMap {
+        let family = if weights.is_some() {
+            FamilySpec::Rational
+        } else {
+            FamilySpec::Polynomial
+        };
+        let weights = weights.unwrap_or_else(|| vec![q(1); control.len()]);
+        let mut num: [Poly3; 4] = Default::default();
+        let mut den = Poly3::default();
+        for (k, i) in multi_indices4(n).into_iter().enumerate() {
+            let b = bernstein4(i);
+            for (c, nc) in num.iter_mut().enumerate() {
+                let coef = &weights[k] * &control[k][c];
+                if !coef.is_zero() {
+                    *nc = nc.axpy(&coef, &b);
+                }
+            }
+            den = den.axpy(&weights[k], &b);
+        }
+        if family == FamilySpec::Polynomial {
+            den = Poly3::constant(q(1));
+        }
+        TetMap {
+            family,
+            degree: n,
+            control,
+            weights,
+            g: Vec::new(),
+            num,
+            den,
+        }
+    }
+    /// Eq. (9): x^i = g_i(w^i) / Σ_j g_j(w^j).
+    pub fn monotonic(g: [Poly1; 4]) -> TetMap {
+        let num: [Poly3; 4] = std::array::from_fn(|i| compose(&g[i], &Poly3::w(i)));
+        let den = num
+            .iter()
+            .fold(Poly3::default(), |acc, x| acc.axpy(&q(1), x));
+        TetMap {
+            family: FamilySpec::Monotonic,
+            degree: 0,
+            control: Vec::new(),
+            weights: Vec::new(),
+            g: g.to_vec(),
+            num,
+            den,
+        }
+    }
+    /// Σ_c N_c − D (the zero polynomial iff Eq. (1) holds for x).
+    pub fn unity_defect(&self) -> Poly3 {
+        self.num
+            .iter()
+            .fold(self.den.axpy(&q(-2), &self.den), |acc, x| {
+                acc.axpy(&q(1), x)
+            })
+    }
+    /// N_1..N_3 (the chart components).
+    pub fn chart_num(&self) -> [Poly3; 3] {
+        [
+            self.num[1].clone(),
+            self.num[2].clone(),
+            self.num[3].clone(),
+        ]
+    }
+}
+
+/// g∘w as a trivariate polynomial (Horner).
+pub fn compose(g: &Poly1, w: &Poly3) -> Poly3 {
+    g.0.iter().rev().fold(Poly3::default(), |acc, c| {
+        acc.mul(w).axpy(&q(1), &Poly3::constant(c.clone()))
+    })
+}
+
+/// Reads and parses a 3-D parameter file.
+pub fn read(path: &Path) -> Result<MapSpec3, ParamError> {
+    let meta = std::fs::metadata(path).map_err(|source| ParamError::Io {
+        path: path.into(),
+        source,
+    })?;
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(ParamError::TooLarge {
+            path: path.into(),
+            bytes: meta.len(),
+        });
+    }
+    let text = std::fs::read_to_string(path).map_err(|source| ParamError::Io {
+        path: path.into(),
+        source,
+    })?;
+    parse(&text, path)
+}
+
+/// Parses the text of a 3-D parameter file (`path` only names it in errors).
+pub fn parse(text: &str, path: &Path) -> Result<MapSpec3, ParamError> {
+    let raw: RawParams = toml::from_str(text).map_err(|e| ParamError::Syntax {
+        path: path.into(),
+        message: e.to_string(),
+    })?;
+    let bad = |entry: String, message: String| ParamError::Bad {
+        path: path.into(),
+        entry,
+        message,
+    };
+    let family = match raw.family.as_str() {
+        "polynomial" => FamilySpec::Polynomial,
+        "rational" => FamilySpec::Rational,
+        "monotonic" => FamilySpec::Monotonic,
+        other => {
+            return Err(bad(
+                "family".into(),
+                format!("'{other}' is not polynomial, rational or monotonic"),
+            ))
+        }
+    };
+    let degree = match (family, raw.degree) {
+        (FamilySpec::Monotonic, _) => 0,
+        (_, None) => return Err(bad("degree".into(), "required for this family".into())),
+        (_, Some(0)) => return Err(bad("degree".into(), "must be at least 1".into())),
+        (_, Some(n)) if n > MAX_DEGREE_3D => {
+            return Err(bad(
+                "degree".into(),
+                format!("{n} is above the 3-D limit {MAX_DEGREE_3D}"),
+            ))
+        }
+        (_, Some(n)) => n,
+    };
+    let key = |at: &[u32], entry: &str| -> Result<Multiset, ParamError> {
+        if at.len() != degree {
+            return Err(bad(
+                entry.into(),
+                format!("`at` has {} ids, the degree is {degree}", at.len()),
+            ));
+        }
+        let mut m = at.to_vec();
+        m.sort_unstable();
+        Ok(m)
+    };
+    let mut control = HashMap::new();
+    for (k, c) in raw.control.iter().enumerate() {
+        let entry = format!("control[{k}]");
+        if family == FamilySpec::Monotonic {
+            return Err(bad(
+                entry,
+                "control points belong to the polynomial and rational families".into(),
+            ));
+        }
+        if c.point.len() != 3 {
+            return Err(bad(entry, "`point` needs three coordinates".into()));
+        }
+        let mut p: [Q; 3] = Default::default();
+        for (j, v) in c.point.iter().enumerate() {
+            p[j] = parse_number(v).map_err(|m| bad(entry.clone(), m))?;
+        }
+        if control.insert((c.tet, key(&c.at, &entry)?), p).is_some() {
+            return Err(bad(entry, "given twice".into()));
+        }
+    }
+    let mut weights = HashMap::new();
+    for (k, w) in raw.weight.iter().enumerate() {
+        let entry = format!("weight[{k}]");
+        if family != FamilySpec::Rational {
+            return Err(bad(entry, "weights belong to the rational family".into()));
+        }
+        let v = parse_number(&w.q).map_err(|m| bad(entry.clone(), m))?;
+        if weights.insert((w.tet, key(&w.at, &entry)?), v).is_some() {
+            return Err(bad(entry, "given twice".into()));
+        }
+    }
+    let mut g = HashMap::new();
+    for (k, e) in raw.g.iter().enumerate() {
+        let entry = format!("g[{k}]");
+        if family != FamilySpec::Monotonic {
+            return Err(bad(entry, "g belongs to the monotonic family".into()));
+        }
+        if e.coeffs.is_empty() || e.coeffs.len() > MAX_DEGREE_3D + 1 {
+            return Err(bad(
+                entry,
+                format!("needs 1 to {} coefficients", MAX_DEGREE_3D + 1),
+            ));
+        }
+        let cs = e
+            .coeffs
+            .iter()
+            .map(parse_number)
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|m| bad(entry.clone(), m))?;
+        if g.insert(e.vertex, Poly1(cs)).is_some() {
+            return Err(bad(entry, "given twice".into()));
+        }
+    }
+    let iso = match raw.iso {
+        None => None,
+        Some(i) => {
+            let f =
+                i.f.iter()
+                    .map(parse_number)
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(|m| bad("iso.f".into(), m))?;
+            let c = match &i.c {
+                Some(v) => parse_number(v).map_err(|m| bad("iso.c".into(), m))?,
+                None => Q::zero(),
+            };
+            Some((f, c))
+        }
+    };
+    Ok(MapSpec3 {
+        family,
+        degree,
+        control,
+        weights,
+        g,
+        iso,
+    })
+}
+
+impl MapSpec3 {
+    /// Checks every key names vertices of the complex and a face of some tetrahedron (of the
+    /// named one for an override); then builds one map per tetrahedron.
+    pub fn build(&self, k: &TetComplex, path: &Path) -> Result<Vec<TetMap>, ParamError> {
+        let bad = |entry: String, message: String| ParamError::Bad {
+            path: path.into(),
+            entry,
+            message,
+        };
+        let nv = k.points.len() as u32;
+        let face_of_some = |m: &Multiset, tet: Option<usize>| -> bool {
+            k.tets
+                .iter()
+                .enumerate()
+                .any(|(f, t)| tet.map_or(true, |x| x == f) && m.iter().all(|v| t.contains(v)))
+        };
+        let keys = self
+            .control
+            .keys()
+            .map(|x| ("control", x))
+            .chain(self.weights.keys().map(|x| ("weight", x)));
+        for (what, (tet, m)) in keys {
+            if let Some(f) = tet {
+                if *f >= k.tets.len() {
+                    return Err(bad(
+                        format!("{what} at {m:?}"),
+                        format!(
+                            "tetrahedron {f} does not exist ({} tetrahedra)",
+                            k.tets.len()
+                        ),
+                    ));
+                }
+            }
+            if m.iter().any(|&v| v >= nv) || !face_of_some(m, *tet) {
+                return Err(bad(
+                    format!("{what} at {m:?}"),
+                    "names no face of a tetrahedron of K".into(),
+                ));
+            }
+        }
+        for v in self.g.keys() {
+            if *v >= nv {
+                return Err(bad(
+                    format!("g at vertex {v}"),
+                    format!("the complex has {nv} vertices"),
+                ));
+            }
+        }
+        if let Some((f, _)) = &self.iso {
+            if f.len() != nv as usize {
+                return Err(bad(
+                    "iso.f".into(),
+                    format!("{} values for {nv} vertices", f.len()),
+                ));
+            }
+        }
+        Ok((0..k.tets.len()).map(|f| self.map_of(k, f)).collect())
+    }
+
+    /// The global multiset of a local multi-index in tetrahedron f.
+    pub fn global_key(k: &TetComplex, f: usize, i: [usize; 4]) -> Multiset {
+        let t = k.tets[f];
+        let mut m: Vec<u32> = (0..4)
+            .flat_map(|c| std::iter::repeat(t[c]).take(i[c]))
+            .collect();
+        m.sort_unstable();
+        m
+    }
+
+    fn map_of(&self, k: &TetComplex, f: usize) -> TetMap {
+        match self.family {
+            FamilySpec::Monotonic => {
+                let t = k.tets[f];
+                TetMap::monotonic(
+                    t.map(|v| self.g.get(&v).cloned().unwrap_or_else(Poly1::identity)),
+                )
+            }
+            FamilySpec::Polynomial | FamilySpec::Rational => {
+                let n = self.degree;
+                let fixed = fixed_control4(n);
+                let mut control = Vec::new();
+                let mut weights = Vec::new();
+                for (idx, i) in multi_indices4(n).into_iter().enumerate() {
+                    let key = Self::global_key(k, f, i);
+                    let c = self
+                        .control
+                        .get(&(Some(f), key.clone()))
+                        .or_else(|| self.control.get(&(None, key.clone())));
+                    control.push(match c {
+                        Some(p) => k.barycentric(f, p),
+                        None => fixed[idx].clone(),
+                    });
+                    let w = self
+                        .weights
+                        .get(&(Some(f), key.clone()))
+                        .or_else(|| self.weights.get(&(None, key)));
+                    weights.push(w.cloned().unwrap_or_else(|| q(1)));
+                }
+                let weights = (self.family == FamilySpec::Rational).then_some(weights);
+                TetMap::bezier(n, control, weights)
+            }
+        }
+    }
+}
