@@ -12,7 +12,7 @@ use pseudomanifold::sdiff::simplex_poly::{
 };
 use pseudomanifold::sdiff::simplex_search::{
     closed_form_top, fixed_solitary_control, judge, near_vertex_control, search_fixed_solitary,
-    search_with,
+    search_with, vertex_configuration, vertex_configurations,
 };
 use pseudomanifold::sdiff::{tet, tet_maps};
 use rand::SeedableRng;
@@ -549,4 +549,30 @@ fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1(
     // A missing handle is a typed error naming the edge.
     let e = optimise(&k, &f, &h[..2], &o).unwrap_err();
     assert!(e.to_string().contains("(2, 3)"), "{e}");
+}
+
+/// Every corner configuration for n = 4 on the 4-simplex (4⁵ = 1024: each of the 5 solitary
+/// points 1/1000 from one vertex of its facet). Long (minutes): run with `--ignored`.
+#[test]
+#[ignore]
+fn sd_l146_4_d_every_vertex_configuration_of_degree_4_is_certified() {
+    let (m, n) = (4, 4);
+    let total = vertex_configurations(m, n);
+    assert_eq!(total, 1024);
+    let mut code = 0usize;
+    let t = Instant::now();
+    let s = search_with(m, n, total, 0, Budget::default(), |m, n, _| {
+        let c = vertex_configuration(m, n, code);
+        code += 1;
+        c
+    })
+    .unwrap();
+    let r = judge("SD-L146(4-D)", &s);
+    println!(
+        "SD-L146(4-D) every vertex configuration, m = 4, n = 4: {total} configurations, {:.1} s: {} [{}]",
+        t.elapsed().as_secs_f64(),
+        r.verdict.label(),
+        r.note
+    );
+    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
 }

@@ -51,12 +51,17 @@ pub fn fixed_solitary_control(m: usize, n: usize, rng: &mut ChaCha8Rng) -> Vec<V
 /// put at (1 − ε)·(a seeded vertex of its face) + ε·(the face's centroid), ε = 1/1000 (open).
 pub fn near_vertex_control(m: usize, n: usize, rng: &mut ChaCha8Rng) -> Vec<Vec<Q>> {
     use rand::Rng;
+    near_vertex_with(m, n, |size| rng.gen_range(0..size))
+}
+
+/// The solitary points near the vertices chosen by `pick(face size)` (in index order).
+fn near_vertex_with(m: usize, n: usize, mut pick: impl FnMut(usize) -> usize) -> Vec<Vec<Q>> {
     let eps = qr(1, 1000);
     let mut control = fixed_control(m, n);
     for (b, i) in control.iter_mut().zip(indices(m, n)) {
         if is_solitary(&i) {
             let supp: Vec<usize> = (0..=m).filter(|&k| i[k] > 0).collect();
-            let v = supp[rng.gen_range(0..supp.len())];
+            let v = supp[pick(supp.len()) % supp.len()];
             let share = &eps / q(supp.len() as i64);
             *b = (0..=m)
                 .map(|k| {
@@ -71,6 +76,25 @@ pub fn near_vertex_control(m: usize, n: usize, rng: &mut ChaCha8Rng) -> Vec<Vec<
         }
     }
     control
+}
+
+/// Number of vertex configurations: Π over solitary I of |supp I| (saturating).
+pub fn vertex_configurations(m: usize, n: usize) -> usize {
+    indices(m, n)
+        .iter()
+        .filter(|i| is_solitary(i))
+        .fold(1usize, |acc, i| acc.saturating_mul(i.iter().sum::<usize>()))
+}
+
+/// Configuration number `code` (mixed radix over the solitary points in index order) of
+/// [`near_vertex_control`]'s corners: every corner of the search space, enumerated.
+pub fn vertex_configuration(m: usize, n: usize, code: usize) -> Vec<Vec<Q>> {
+    let mut rest = code;
+    near_vertex_with(m, n, |size| {
+        let d = rest % size;
+        rest /= size;
+        d
+    })
 }
 
 /// 1 + (m+1)!·Σ_k (c_k − 1/(m+1))·Π_{j≠k} w_j: det DX for n = m + 1 with the solitary point
