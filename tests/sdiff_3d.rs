@@ -702,6 +702,7 @@ fn sd_params_3_d_errors_name_the_file_and_entry() {
         ("family = \"polynomial\"\ndegree = 1\n[[weight]]\nat = [0]\nq = 2", "rational"),
         ("family = \"monotonic\"\n[[g]]\nvertex = 0\ncoeffs = []", "coefficients"),
         ("family = \"polynomial\"\ndegree = 1\n[[control]]\nat = [0]\npoint = [\"1/0\", \"2\", \"3\"]", "zero denominator"),
+        ("family = \"polynomial\"\ndegree = 1\n[[control]]\nat = [0]\npoint = [\"1\", \"2\", \"3\"]\ntriangle = 0", "`triangle` is a key of planar files"),
     ];
     for (text, needle) in cases {
         let e = tet_params::parse(text, p).unwrap_err().to_string();

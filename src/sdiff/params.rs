@@ -100,6 +100,8 @@ struct RawControl {
     point: Vec<toml::Value>,
     #[serde(default)]
     triangle: Option<usize>,
+    #[serde(default)]
+    tet: Option<usize>,
 }
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -108,6 +110,23 @@ struct RawWeight {
     q: toml::Value,
     #[serde(default)]
     triangle: Option<usize>,
+    #[serde(default)]
+    tet: Option<usize>,
+}
+
+/// The cell override of an entry: `triangle = f` in 2-D files, `tet = f` in 3-D ones (the
+/// other key is an error, not ignored).
+fn cell_of<const D: usize>(
+    triangle: Option<usize>,
+    tet: Option<usize>,
+) -> Result<Option<usize>, String> {
+    match (D, triangle, tet) {
+        (2, t, None) | (3, None, t) => Ok(t),
+        (2, _, Some(_)) => {
+            Err("`tet` is a key of 3-D files; a planar file overrides with `triangle`".into())
+        }
+        _ => Err("`triangle` is a key of planar files; a 3-D file overrides with `tet`".into()),
+    }
 }
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -138,15 +157,16 @@ pub enum FamilySpec {
 /// A sorted global-vertex multiset (the key of a control point or weight).
 pub type Multiset = Vec<u32>;
 
-/// A parsed parameter file.
+/// A parsed parameter file for simplices of dimension D (the planar one, D = 2, and the
+/// tetrahedral one of `tet_params`, D = 3: one format, one parser).
 #[derive(Debug, Clone)]
-pub struct MapSpec {
+pub struct Spec<const D: usize> {
     /// The family.
     pub family: FamilySpec,
     /// Degree n (polynomial / rational).
     pub degree: usize,
-    /// Control points c_I in the plane, by multiset; `(Some(f), I)` overrides in triangle f.
-    pub control: HashMap<(Option<usize>, Multiset), [Q; 2]>,
+    /// Control points c_I in ℝ^D, by multiset; `(Some(f), I)` overrides in simplex f.
+    pub control: HashMap<(Option<usize>, Multiset), [Q; D]>,
     /// Weights q_I.
     pub weights: HashMap<(Option<usize>, Multiset), Q>,
     /// g_v per vertex (monotonic).
@@ -154,6 +174,9 @@ pub struct MapSpec {
     /// Iso-values f_v and the level c, when given.
     pub iso: Option<(Vec<Q>, Q)>,
 }
+
+/// A parsed planar parameter file.
+pub type MapSpec = Spec<2>;
 
 /// Parses a number: integer, "p/q", decimal string, or float (exact double).
 pub(crate) fn parse_number(v: &toml::Value) -> Result<Q, String> {
@@ -203,8 +226,21 @@ fn parse_str(s: &str) -> Result<Q, String> {
     Ok(Q::from_integer(int(s)?))
 }
 
-/// Reads and parses a parameter file.
+/// Reads and parses a planar parameter file.
 pub fn read(path: &Path) -> Result<MapSpec, ParamError> {
+    read_spec(path, MAX_DEGREE)
+}
+
+/// Parses the text of a planar parameter file (`path` only names it in errors).
+pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
+    parse_spec(text, path, MAX_DEGREE)
+}
+
+/// Reads and parses a parameter file for dimension D, degrees up to `max_degree`.
+pub(crate) fn read_spec<const D: usize>(
+    path: &Path,
+    max_degree: usize,
+) -> Result<Spec<D>, ParamError> {
     let meta = std::fs::metadata(path).map_err(|source| ParamError::Io {
         path: path.into(),
         source,
@@ -219,11 +255,15 @@ pub fn read(path: &Path) -> Result<MapSpec, ParamError> {
         path: path.into(),
         source,
     })?;
-    parse(&text, path)
+    parse_spec(&text, path, max_degree)
 }
 
-/// Parses the text of a parameter file (`path` only names it in errors).
-pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
+/// Parses the text of a parameter file for dimension D (`path` only names it in errors).
+pub(crate) fn parse_spec<const D: usize>(
+    text: &str,
+    path: &Path,
+    max_degree: usize,
+) -> Result<Spec<D>, ParamError> {
     let raw: RawParams = toml::from_str(text).map_err(|e| ParamError::Syntax {
         path: path.into(),
         message: e.to_string(),
@@ -248,10 +288,10 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
         (FamilySpec::Monotonic, _) => 0,
         (_, None) => return Err(bad("degree".into(), "required for this family".into())),
         (_, Some(0)) => return Err(bad("degree".into(), "must be at least 1".into())),
-        (_, Some(n)) if n > MAX_DEGREE => {
+        (_, Some(n)) if n > max_degree => {
             return Err(bad(
                 "degree".into(),
-                format!("{n} is above the limit {MAX_DEGREE}"),
+                format!("{n} is above the limit {max_degree} for dimension {D}"),
             ))
         }
         (_, Some(n)) => n,
@@ -276,15 +316,19 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
                 "control points belong to the polynomial and rational families".into(),
             ));
         }
-        if c.point.len() != 2 {
-            return Err(bad(entry, "`point` needs two coordinates".into()));
+        if c.point.len() != D {
+            let n = ["two", "three"]
+                .get(D.wrapping_sub(2))
+                .copied()
+                .unwrap_or("D");
+            return Err(bad(entry, format!("`point` needs {n} coordinates")));
         }
-        let x = parse_number(&c.point[0]).map_err(|m| bad(entry.clone(), m))?;
-        let y = parse_number(&c.point[1]).map_err(|m| bad(entry.clone(), m))?;
-        if control
-            .insert((c.triangle, key(&c.at, &entry)?), [x, y])
-            .is_some()
-        {
+        let mut p: [Q; D] = std::array::from_fn(|_| Q::from_integer(0.into()));
+        for (slot, v) in p.iter_mut().zip(&c.point) {
+            *slot = parse_number(v).map_err(|m| bad(entry.clone(), m))?;
+        }
+        let cell = cell_of::<D>(c.triangle, c.tet).map_err(|m| bad(entry.clone(), m))?;
+        if control.insert((cell, key(&c.at, &entry)?), p).is_some() {
             return Err(bad(entry, "given twice".into()));
         }
     }
@@ -295,10 +339,8 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
             return Err(bad(entry, "weights belong to the rational family".into()));
         }
         let v = parse_number(&w.q).map_err(|m| bad(entry.clone(), m))?;
-        if weights
-            .insert((w.triangle, key(&w.at, &entry)?), v)
-            .is_some()
-        {
+        let cell = cell_of::<D>(w.triangle, w.tet).map_err(|m| bad(entry.clone(), m))?;
+        if weights.insert((cell, key(&w.at, &entry)?), v).is_some() {
             return Err(bad(entry, "given twice".into()));
         }
     }
@@ -308,10 +350,10 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
         if family != FamilySpec::Monotonic {
             return Err(bad(entry, "g belongs to the monotonic family".into()));
         }
-        if e.coeffs.is_empty() || e.coeffs.len() > MAX_DEGREE + 1 {
+        if e.coeffs.is_empty() || e.coeffs.len() > max_degree + 1 {
             return Err(bad(
                 entry,
-                format!("needs 1 to {} coefficients", MAX_DEGREE + 1),
+                format!("needs 1 to {} coefficients", max_degree + 1),
             ));
         }
         let cs = e
@@ -339,7 +381,7 @@ pub fn parse(text: &str, path: &Path) -> Result<MapSpec, ParamError> {
             Some((f, c))
         }
     };
-    Ok(MapSpec {
+    Ok(Spec {
         family,
         degree,
         control,
@@ -356,62 +398,70 @@ pub struct ComplexMap {
     pub maps: Vec<SimplexMap>,
 }
 
-impl MapSpec {
-    /// Checks every key names vertices of the complex and a face of some triangle; then builds
-    /// the per-triangle maps.
-    pub fn build(&self, k: &PlanarComplex, path: &Path) -> Result<ComplexMap, ParamError> {
+impl<const D: usize> Spec<D> {
+    /// Checks every key names vertices of the complex and a face of some cell (of the named
+    /// one for an override), every g a vertex, and that `iso.f` has one value per vertex.
+    pub(crate) fn check_keys<const C: usize>(
+        &self,
+        path: &Path,
+        nv: usize,
+        cells: &[[u32; C]],
+        cell: &str,
+    ) -> Result<(), ParamError> {
         let bad = |entry: String, message: String| ParamError::Bad {
             path: path.into(),
             entry,
             message,
         };
-        let nv = k.points.len() as u32;
-        let faces_of = |m: &Multiset, tri: Option<usize>| -> bool {
-            k.triangles
+        let face_of_some = |m: &Multiset, only: Option<usize>| -> bool {
+            cells
                 .iter()
                 .enumerate()
-                .any(|(f, t)| tri.map_or(true, |x| x == f) && m.iter().all(|v| t.contains(v)))
+                .any(|(f, t)| only.map_or(true, |x| x == f) && m.iter().all(|v| t.contains(v)))
         };
-        for (tri, m) in self.control.keys() {
-            if let Some(f) = tri {
-                if *f >= k.triangles.len() {
+        let keys = self
+            .control
+            .keys()
+            .map(|x| ("control", x))
+            .chain(self.weights.keys().map(|x| ("weight", x)));
+        for (what, (only, m)) in keys {
+            if let Some(f) = only {
+                if *f >= cells.len() {
                     return Err(bad(
-                        format!("control at {m:?}"),
-                        format!("triangle {f} does not exist"),
+                        format!("{what} at {m:?}"),
+                        format!("{cell} {f} does not exist ({} in K)", cells.len()),
                     ));
                 }
             }
-            if m.iter().any(|&v| v >= nv) || !faces_of(m, *tri) {
+            if m.iter().any(|&v| v as usize >= nv) || !face_of_some(m, *only) {
                 return Err(bad(
-                    format!("control at {m:?}"),
-                    "names no face of a triangle of K".into(),
+                    format!("{what} at {m:?}"),
+                    format!("names no face of a {cell} of K"),
                 ));
             }
         }
-        for (tri, m) in self.weights.keys() {
-            if m.iter().any(|&v| v >= nv) || !faces_of(m, *tri) {
-                return Err(bad(
-                    format!("weight at {m:?}"),
-                    "names no face of a triangle of K".into(),
-                ));
-            }
-        }
-        for v in self.g.keys() {
-            if *v >= nv {
-                return Err(bad(
-                    format!("g at vertex {v}"),
-                    format!("the complex has {nv} vertices"),
-                ));
-            }
+        if let Some(v) = self.g.keys().find(|&&v| v as usize >= nv) {
+            return Err(bad(
+                format!("g at vertex {v}"),
+                format!("the complex has {nv} vertices"),
+            ));
         }
         if let Some((f, _)) = &self.iso {
-            if f.len() != nv as usize {
+            if f.len() != nv {
                 return Err(bad(
                     "iso.f".into(),
                     format!("{} values for {nv} vertices", f.len()),
                 ));
             }
         }
+        Ok(())
+    }
+}
+
+impl MapSpec {
+    /// Checks the keys ([`Spec::check_keys`]); then builds the per-triangle maps.
+    pub fn build(&self, k: &PlanarComplex, path: &Path) -> Result<ComplexMap, ParamError> {
+        self.check_keys(path, k.points.len(), &k.triangles, "triangle")?;
         let maps = (0..k.triangles.len()).map(|f| self.map_of(k, f)).collect();
         Ok(ComplexMap { maps })
     }

@@ -24,80 +24,19 @@
 //! ```
 
 use super::maps::Poly1;
-use super::params::{parse_number, FamilySpec, Multiset, ParamError, MAX_FILE_BYTES};
+use super::params::{parse_spec, read_spec, FamilySpec, Multiset, ParamError, Spec};
 use super::poly::{q, Q};
 use super::tet::Poly3;
 use super::tet_complex::TetComplex;
 use super::tet_maps::{bernstein4, fixed_control4, multi_indices4};
 use num_traits::Zero;
-use serde::Deserialize;
-use std::collections::HashMap;
 use std::path::Path;
 
 /// Largest degree accepted in 3-D (the Jacobian numerator of Eq. (11) has degree 4n − 3).
 pub const MAX_DEGREE_3D: usize = 6;
 
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawParams {
-    family: String,
-    #[serde(default)]
-    degree: Option<usize>,
-    #[serde(default)]
-    control: Vec<RawControl>,
-    #[serde(default)]
-    weight: Vec<RawWeight>,
-    #[serde(default)]
-    g: Vec<RawG>,
-    #[serde(default)]
-    iso: Option<RawIso>,
-}
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawControl {
-    at: Vec<u32>,
-    point: Vec<toml::Value>,
-    #[serde(default)]
-    tet: Option<usize>,
-}
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawWeight {
-    at: Vec<u32>,
-    q: toml::Value,
-    #[serde(default)]
-    tet: Option<usize>,
-}
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawG {
-    vertex: u32,
-    coeffs: Vec<toml::Value>,
-}
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RawIso {
-    f: Vec<toml::Value>,
-    #[serde(default)]
-    c: Option<toml::Value>,
-}
-
-/// A parsed 3-D parameter file.
-#[derive(Debug, Clone)]
-pub struct MapSpec3 {
-    /// The family.
-    pub family: FamilySpec,
-    /// Degree n (polynomial / rational).
-    pub degree: usize,
-    /// Control points c_I in ℝ³ by multiset; `(Some(f), I)` overrides in tetrahedron f.
-    pub control: HashMap<(Option<usize>, Multiset), [Q; 3]>,
-    /// Weights q_I.
-    pub weights: HashMap<(Option<usize>, Multiset), Q>,
-    /// g_v per vertex (monotonic).
-    pub g: HashMap<u32, Poly1>,
-    /// Iso-values f_v and the level c, when given.
-    pub iso: Option<(Vec<Q>, Q)>,
-}
+/// A parsed 3-D parameter file (the planar format with points in ℝ³, `params::Spec`).
+pub type MapSpec3 = Spec<3>;
 
 /// Which family of Sec. 3 a tetrahedron's map belongs to.
 pub type Family3 = FamilySpec;
@@ -199,202 +138,19 @@ pub fn compose(g: &Poly1, w: &Poly3) -> Poly3 {
 
 /// Reads and parses a 3-D parameter file.
 pub fn read(path: &Path) -> Result<MapSpec3, ParamError> {
-    let meta = std::fs::metadata(path).map_err(|source| ParamError::Io {
-        path: path.into(),
-        source,
-    })?;
-    if meta.len() > MAX_FILE_BYTES {
-        return Err(ParamError::TooLarge {
-            path: path.into(),
-            bytes: meta.len(),
-        });
-    }
-    let text = std::fs::read_to_string(path).map_err(|source| ParamError::Io {
-        path: path.into(),
-        source,
-    })?;
-    parse(&text, path)
+    read_spec(path, MAX_DEGREE_3D)
 }
 
 /// Parses the text of a 3-D parameter file (`path` only names it in errors).
 pub fn parse(text: &str, path: &Path) -> Result<MapSpec3, ParamError> {
-    let raw: RawParams = toml::from_str(text).map_err(|e| ParamError::Syntax {
-        path: path.into(),
-        message: e.to_string(),
-    })?;
-    let bad = |entry: String, message: String| ParamError::Bad {
-        path: path.into(),
-        entry,
-        message,
-    };
-    let family = match raw.family.as_str() {
-        "polynomial" => FamilySpec::Polynomial,
-        "rational" => FamilySpec::Rational,
-        "monotonic" => FamilySpec::Monotonic,
-        other => {
-            return Err(bad(
-                "family".into(),
-                format!("'{other}' is not polynomial, rational or monotonic"),
-            ))
-        }
-    };
-    let degree = match (family, raw.degree) {
-        (FamilySpec::Monotonic, _) => 0,
-        (_, None) => return Err(bad("degree".into(), "required for this family".into())),
-        (_, Some(0)) => return Err(bad("degree".into(), "must be at least 1".into())),
-        (_, Some(n)) if n > MAX_DEGREE_3D => {
-            return Err(bad(
-                "degree".into(),
-                format!("{n} is above the 3-D limit {MAX_DEGREE_3D}"),
-            ))
-        }
-        (_, Some(n)) => n,
-    };
-    let key = |at: &[u32], entry: &str| -> Result<Multiset, ParamError> {
-        if at.len() != degree {
-            return Err(bad(
-                entry.into(),
-                format!("`at` has {} ids, the degree is {degree}", at.len()),
-            ));
-        }
-        let mut m = at.to_vec();
-        m.sort_unstable();
-        Ok(m)
-    };
-    let mut control = HashMap::new();
-    for (k, c) in raw.control.iter().enumerate() {
-        let entry = format!("control[{k}]");
-        if family == FamilySpec::Monotonic {
-            return Err(bad(
-                entry,
-                "control points belong to the polynomial and rational families".into(),
-            ));
-        }
-        if c.point.len() != 3 {
-            return Err(bad(entry, "`point` needs three coordinates".into()));
-        }
-        let mut p: [Q; 3] = Default::default();
-        for (j, v) in c.point.iter().enumerate() {
-            p[j] = parse_number(v).map_err(|m| bad(entry.clone(), m))?;
-        }
-        if control.insert((c.tet, key(&c.at, &entry)?), p).is_some() {
-            return Err(bad(entry, "given twice".into()));
-        }
-    }
-    let mut weights = HashMap::new();
-    for (k, w) in raw.weight.iter().enumerate() {
-        let entry = format!("weight[{k}]");
-        if family != FamilySpec::Rational {
-            return Err(bad(entry, "weights belong to the rational family".into()));
-        }
-        let v = parse_number(&w.q).map_err(|m| bad(entry.clone(), m))?;
-        if weights.insert((w.tet, key(&w.at, &entry)?), v).is_some() {
-            return Err(bad(entry, "given twice".into()));
-        }
-    }
-    let mut g = HashMap::new();
-    for (k, e) in raw.g.iter().enumerate() {
-        let entry = format!("g[{k}]");
-        if family != FamilySpec::Monotonic {
-            return Err(bad(entry, "g belongs to the monotonic family".into()));
-        }
-        if e.coeffs.is_empty() || e.coeffs.len() > MAX_DEGREE_3D + 1 {
-            return Err(bad(
-                entry,
-                format!("needs 1 to {} coefficients", MAX_DEGREE_3D + 1),
-            ));
-        }
-        let cs = e
-            .coeffs
-            .iter()
-            .map(parse_number)
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(|m| bad(entry.clone(), m))?;
-        if g.insert(e.vertex, Poly1(cs)).is_some() {
-            return Err(bad(entry, "given twice".into()));
-        }
-    }
-    let iso = match raw.iso {
-        None => None,
-        Some(i) => {
-            let f =
-                i.f.iter()
-                    .map(parse_number)
-                    .collect::<Result<Vec<_>, _>>()
-                    .map_err(|m| bad("iso.f".into(), m))?;
-            let c = match &i.c {
-                Some(v) => parse_number(v).map_err(|m| bad("iso.c".into(), m))?,
-                None => Q::zero(),
-            };
-            Some((f, c))
-        }
-    };
-    Ok(MapSpec3 {
-        family,
-        degree,
-        control,
-        weights,
-        g,
-        iso,
-    })
+    parse_spec(text, path, MAX_DEGREE_3D)
 }
 
 impl MapSpec3 {
     /// Checks every key names vertices of the complex and a face of some tetrahedron (of the
     /// named one for an override); then builds one map per tetrahedron.
     pub fn build(&self, k: &TetComplex, path: &Path) -> Result<Vec<TetMap>, ParamError> {
-        let bad = |entry: String, message: String| ParamError::Bad {
-            path: path.into(),
-            entry,
-            message,
-        };
-        let nv = k.points.len() as u32;
-        let face_of_some = |m: &Multiset, tet: Option<usize>| -> bool {
-            k.tets
-                .iter()
-                .enumerate()
-                .any(|(f, t)| tet.map_or(true, |x| x == f) && m.iter().all(|v| t.contains(v)))
-        };
-        let keys = self
-            .control
-            .keys()
-            .map(|x| ("control", x))
-            .chain(self.weights.keys().map(|x| ("weight", x)));
-        for (what, (tet, m)) in keys {
-            if let Some(f) = tet {
-                if *f >= k.tets.len() {
-                    return Err(bad(
-                        format!("{what} at {m:?}"),
-                        format!(
-                            "tetrahedron {f} does not exist ({} tetrahedra)",
-                            k.tets.len()
-                        ),
-                    ));
-                }
-            }
-            if m.iter().any(|&v| v >= nv) || !face_of_some(m, *tet) {
-                return Err(bad(
-                    format!("{what} at {m:?}"),
-                    "names no face of a tetrahedron of K".into(),
-                ));
-            }
-        }
-        for v in self.g.keys() {
-            if *v >= nv {
-                return Err(bad(
-                    format!("g at vertex {v}"),
-                    format!("the complex has {nv} vertices"),
-                ));
-            }
-        }
-        if let Some((f, _)) = &self.iso {
-            if f.len() != nv as usize {
-                return Err(bad(
-                    "iso.f".into(),
-                    format!("{} values for {nv} vertices", f.len()),
-                ));
-            }
-        }
+        self.check_keys(path, k.points.len(), &k.tets, "tetrahedron")?;
         Ok((0..k.tets.len()).map(|f| self.map_of(k, f)).collect())
     }
 
