@@ -448,16 +448,33 @@ fn sd_e11_hyp_3_d_planted_negative_weight_is_caught() {
 
 #[test]
 fn sd_l101_det_3_d_planted_fold_is_refuted_exactly_and_the_interval_route_does_not_certify_it() {
-    let r = run("cube6.tets", "planted3_fold.toml");
+    let (k, _, maps) = load("cube6.tets", "planted3_fold.toml");
+    let r = check_all3(&k, &maps, &Options3::default());
     let det = by_id(&r, "SD-L101(det,3-D)");
     assert!(det.failed());
     // Edge (0, 1) is in tetrahedra 0 and 1 only.
     assert_eq!(det.offenders, 2, "{det:?}");
     println!("SD-L101(det,3-D) witness: {}", det.witnesses[0].text);
-    // X leaves σ near vertex 1 (x^0 < 0 on the edge for u > 5/7); the exact non-strict
-    // decision does not find a corner there within its budget (the pieces at vertex 1 keep a
-    // corner value 0 on the face w_0 = 0): it must not say "holds".
-    assert_ne!(by_id(&r, "SD-D1(inside,3-D)").verdict, Verdict::Holds);
+    // X leaves σ near vertex 1 (x^0 < 0 on the edge for u > 5/7). The pieces at vertex 1 keep
+    // a corner value 0 on the face w_0 = 0 and run out of depth; the others are still finished,
+    // and one has a corner where x^0·D² < 0: refuted, with an exact point re-evaluated here.
+    let inside = by_id(&r, "SD-D1(inside,3-D)");
+    assert!(inside.failed(), "{inside:?}");
+    for w in &inside.witnesses {
+        println!("SD-D1(inside,3-D) witness: {}", w.text);
+        let f = w.data["tet"].as_u64().expect("tet") as usize;
+        let c = w.data["component"].as_u64().expect("component") as usize;
+        let pt: [Q; 3] = std::array::from_fn(|i| {
+            w.data["w123"][i]
+                .as_str()
+                .expect("exact coordinate")
+                .parse::<Q>()
+                .expect("rational")
+        });
+        assert!(pt.iter().all(|x| *x >= q(0)) && pt.iter().sum::<Q>() <= q(1));
+        let v = maps[f].num[c].mul(&maps[f].den).eval(&pt);
+        assert!(v < q(0), "x^{c}·D² = {v} at {pt:?}");
+    }
     assert!(!by_id(&r, "SD-L101(interval,3-D)").failed());
     // Non-injective, exactly: on edge (0, 1), X(u) = 2u(1 − u)·6/5 + u² (the fraction of the way
     // to vertex 1), and X(u) = 1 iff (1 − u)(1 − 7u/5) = 0: u = 5/7 and u = 1 have one image.

@@ -6,10 +6,12 @@
 //! * a corner coefficient is the value at that corner, so a corner coefficient ≤ 0 (< 0 for
 //!   the non-strict question) is an exact counterexample;
 //! * otherwise the piece is split into four by its edge midpoints, up to a depth and a piece
-//!   budget (bounded time): then the answer is *unresolved*, never a guess.
+//!   budget (bounded time): a piece past it is left open and the other pieces are still
+//!   examined ([`Cover`]), so a counterexample anywhere wins; with a piece left open the answer
+//!   is *unresolved*, never a guess.
 
 use super::poly::{qr, to_f64, Poly2, Q};
-use num_traits::{Signed, Zero};
+use num_traits::Signed;
 
 /// Strict (p > 0) or non-strict (p ≥ 0).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -84,6 +86,77 @@ impl Default for Budget {
 
 type Tri = [[Q; 2]; 3];
 
+/// The bookkeeping shared by the branch-and-bound deciders ([`decide_on`],
+/// `tet::decide_tet_with`, `simplex_poly::decide`). A piece neither certified nor refuted that
+/// is past the depth budget, or met once the piece budget is spent, is left *open* and the
+/// other pieces are still examined: a counterexample at a corner of any examined piece wins
+/// over "unresolved", and an open piece never counts as certified. Nothing is split once the
+/// piece budget is spent, so at most `max_pieces` plus the pending stack (≤ (k − 1)·depth + 1
+/// for k children per split) pieces are examined.
+#[derive(Debug, Clone)]
+pub struct Cover {
+    /// Pieces examined.
+    pub pieces: usize,
+    /// Deepest piece examined.
+    pub deepest: u32,
+    /// Pieces left open (past a budget).
+    pub open: usize,
+    lower: Option<Q>,
+    max_depth: u32,
+    max_pieces: usize,
+}
+
+impl Cover {
+    /// A cover of no pieces yet; `max_depth` in the engine's units of subdivision.
+    pub fn new(max_depth: u32, max_pieces: usize) -> Cover {
+        Cover {
+            pieces: 0,
+            deepest: 0,
+            open: 0,
+            lower: None,
+            max_depth,
+            max_pieces,
+        }
+    }
+    /// Count a piece taken at `depth`.
+    pub fn visit(&mut self, depth: u32) {
+        self.pieces += 1;
+        self.deepest = self.deepest.max(depth);
+    }
+    /// A certified piece: its coefficients bound p from below.
+    pub fn certify(&mut self, coeffs: &[Q]) {
+        if let Some(m) = coeffs.iter().min() {
+            if self.lower.as_ref().map_or(true, |l| m < l) {
+                self.lower = Some(m.clone());
+            }
+        }
+    }
+    /// Whether an undecided piece at `depth` may be split; if not it is left open.
+    pub fn split(&mut self, depth: u32) -> bool {
+        if depth >= self.max_depth || self.pieces >= self.max_pieces {
+            self.open += 1;
+            false
+        } else {
+            true
+        }
+    }
+    /// After the last piece (no counterexample found): certified iff no piece was left open.
+    pub fn finish(&self) -> Decision {
+        if self.open > 0 {
+            Decision::Unresolved {
+                pieces: self.pieces,
+                depth: self.deepest,
+            }
+        } else {
+            Decision::Certified {
+                pieces: self.pieces,
+                depth: self.deepest,
+                lower_bound: self.lower.as_ref().map(to_f64).unwrap_or(f64::NAN),
+            }
+        }
+    }
+}
+
 /// Decide p > 0 (or p ≥ 0) on the closed reference triangle.
 pub fn decide(p: &Poly2, strict: Strictness, budget: Budget) -> Decision {
     decide_on(p, reference_triangle(), strict, budget)
@@ -106,12 +179,9 @@ pub fn decide_on(p: &Poly2, tri: Tri, strict: Strictness, budget: Budget) -> Dec
         Strictness::NonNegative => v.is_negative(),
     };
     let mut stack: Vec<(Tri, u32)> = vec![(tri, 0)];
-    let mut pieces = 0usize;
-    let mut deepest = 0u32;
-    let mut lower: Option<Q> = None;
+    let mut cover = Cover::new(budget.max_depth, budget.max_pieces);
     while let Some((t, depth)) = stack.pop() {
-        pieces += 1;
-        deepest = deepest.max(depth);
+        cover.visit(depth);
         let coeffs = p.compose_affine(&t).bernstein(n);
         // Corners of the piece: indices (n,0,0), (0,n,0), (0,0,n) hold p at t[0], t[1], t[2].
         let corners = [
@@ -133,18 +203,11 @@ pub fn decide_on(p: &Poly2, tri: Tri, strict: Strictness, budget: Budget) -> Dec
             }
         }
         if coeffs.iter().all(|c| !bad(c)) {
-            let m = coeffs.iter().min().cloned().unwrap_or_else(Q::zero);
-            lower = Some(match lower {
-                Some(l) if l < m => l,
-                _ => m,
-            });
+            cover.certify(&coeffs);
             continue;
         }
-        if depth >= budget.max_depth || pieces >= budget.max_pieces {
-            return Decision::Unresolved {
-                pieces,
-                depth: deepest,
-            };
+        if !cover.split(depth) {
+            continue;
         }
         let mid = |a: &[Q; 2], b: &[Q; 2]| -> [Q; 2] {
             let h = qr(1, 2);
@@ -156,9 +219,5 @@ pub fn decide_on(p: &Poly2, tri: Tri, strict: Strictness, budget: Budget) -> Dec
         stack.push(([m20.clone(), m12.clone(), t[2].clone()], depth + 1));
         stack.push(([m12, m20, m01], depth + 1));
     }
-    Decision::Certified {
-        pieces,
-        depth: deepest,
-        lower_bound: lower.as_ref().map(to_f64).unwrap_or(f64::NAN),
-    }
+    cover.finish()
 }

@@ -12,11 +12,12 @@
 //! Decision: all Bernstein coefficients > 0 on a piece certify it (convex hull), a corner
 //! coefficient ≤ 0 is the exact value at that corner (a counterexample), otherwise the longest
 //! edge (chart length) is bisected by de Casteljau on every line of coefficients parallel to
-//! it, under a [`Budget`]; past it the answer is *unresolved*, never a guess. Sizes are bounded
-//! before any work ([`MAX_DIM`], [`MAX_COEFFICIENTS`]): a typed [`SimplexError`].
+//! it, under a [`Budget`]; a piece past it is left open and the others are finished
+//! (`positivity::Cover`: a counterexample anywhere wins), and with a piece left open the answer
+//! is *unresolved*, never a guess. Sizes are bounded before any work ([`MAX_DIM`], [`MAX_COEFFICIENTS`]): a typed [`SimplexError`].
 
 use super::poly::{multinomial, q, qr, to_f64, Q};
-use super::positivity::{Budget, Strictness};
+use super::positivity::{Budget, Cover, Decision, Strictness};
 use num_traits::{One, Signed, Zero};
 use std::collections::{BTreeMap, HashMap};
 
@@ -525,12 +526,9 @@ pub fn decide(
         .map(|c| (0..=m).map(|k| if k == c { q(1) } else { q(0) }).collect())
         .collect();
     let mut stack = vec![(reference, p.bernstein(), 0u32)];
-    let (mut pieces, mut deepest) = (0usize, 0u32);
-    let mut lower: Option<Q> = None;
-    let max_depth = budget.max_depth.saturating_mul(m as u32);
+    let mut cover = Cover::new(budget.max_depth.saturating_mul(m as u32), budget.max_pieces);
     while let Some((verts, coeffs, depth)) = stack.pop() {
-        pieces += 1;
-        deepest = deepest.max(depth);
+        cover.visit(depth);
         for (c, &cp) in corner_pos.iter().enumerate() {
             if bad(&coeffs[cp]) {
                 return Ok(SimplexDecision::Refuted {
@@ -542,18 +540,11 @@ pub fn decide(
             }
         }
         if coeffs.iter().all(|c| !bad(c)) {
-            if let Some(mn) = coeffs.iter().min() {
-                if lower.as_ref().map_or(true, |l| mn < l) {
-                    lower = Some(mn.clone());
-                }
-            }
+            cover.certify(&coeffs);
             continue;
         }
-        if depth >= max_depth || pieces >= budget.max_pieces {
-            return Ok(SimplexDecision::Unresolved {
-                pieces,
-                depth: deepest,
-            });
+        if !cover.split(depth) {
+            continue;
         }
         // Longest edge in the chart (components 1..m), first in index order on ties.
         let mut best = (0, 1, Q::zero());
@@ -582,10 +573,20 @@ pub fn decide(
         stack.push((v1, left, depth + 1));
         stack.push((v2, right, depth + 1));
     }
-    Ok(SimplexDecision::Certified {
-        pieces,
-        depth: deepest,
-        lower_bound: lower.as_ref().map(to_f64).unwrap_or(f64::NAN),
+    Ok(match cover.finish() {
+        Decision::Certified {
+            pieces,
+            depth,
+            lower_bound,
+        } => SimplexDecision::Certified {
+            pieces,
+            depth,
+            lower_bound,
+        },
+        _ => SimplexDecision::Unresolved {
+            pieces: cover.pieces,
+            depth: cover.deepest,
+        },
     })
 }
 

@@ -2,14 +2,15 @@
 //! on a tetrahedron, x^i = g_i(w^i) / Σ_j g_j(w^j), i = 0..3, and the exact certificate of
 //! det DX > 0 on the closed tetrahedron — the same method as the planar `positivity`: the
 //! Bernstein–Bézier coefficients over ℚ of the Jacobian numerator, all > 0 a certificate, a
-//! corner value ≤ 0 a counterexample, otherwise bisection of the longest edge under a budget.
+//! corner value ≤ 0 a counterexample, otherwise bisection of the longest edge under a budget
+//! (a piece past it is left open and the others finished, `positivity::Cover`).
 //!
 //! det DX is independent of the embedding of the tetrahedron (DX = J·A·J⁻¹ in the plane), so
 //! the reference tetrahedron ⟨0, e_1, e_2, e_3⟩ with chart (s, t, r) = (w_1, w_2, w_3) suffices.
 
 use super::maps::Poly1;
 use super::poly::{multinomial, q, qr, to_f64, Q};
-use super::positivity::{Budget, Decision, Strictness};
+use super::positivity::{Budget, Cover, Decision, Strictness};
 use num_traits::{One, Signed, Zero};
 use std::collections::BTreeMap;
 
@@ -178,11 +179,10 @@ pub fn decide_tet_with(p: &Poly3, strict: Strictness, budget: Budget) -> Decisio
     };
     let n = p.deg();
     let mut stack = vec![(reference_tet(), 0u32)];
-    let (mut pieces, mut deepest) = (0usize, 0u32);
-    let mut lower: Option<Q> = None;
+    // Depth in units of three bisections (one planar 1-to-4 split's worth of shrinking).
+    let mut cover = Cover::new(budget.max_depth.saturating_mul(3), budget.max_pieces);
     while let Some((t, depth)) = stack.pop() {
-        pieces += 1;
-        deepest = deepest.max(depth);
+        cover.visit(depth);
         let (coeffs, corners) = p.compose_affine(&t).bernstein(n);
         for (c, v) in corners.iter().enumerate() {
             if bad(v) {
@@ -198,18 +198,11 @@ pub fn decide_tet_with(p: &Poly3, strict: Strictness, budget: Budget) -> Decisio
             }
         }
         if coeffs.iter().all(|c| !bad(c)) {
-            let m = coeffs.iter().min().cloned().unwrap_or_else(Q::zero);
-            lower = Some(match lower {
-                Some(l) if l < m => l,
-                _ => m,
-            });
+            cover.certify(&coeffs);
             continue;
         }
-        if depth >= budget.max_depth * 3 || pieces >= budget.max_pieces {
-            return Decision::Unresolved {
-                pieces,
-                depth: deepest,
-            };
+        if !cover.split(depth) {
+            continue;
         }
         // Bisect the longest edge (squared chart length).
         let mut best = (0, 1, Q::zero());
@@ -232,11 +225,7 @@ pub fn decide_tet_with(p: &Poly3, strict: Strictness, budget: Budget) -> Decisio
         stack.push((t1, depth + 1));
         stack.push((t2, depth + 1));
     }
-    Decision::Certified {
-        pieces,
-        depth: deepest,
-        lower_bound: lower.as_ref().map(to_f64).unwrap_or(f64::NAN),
-    }
+    cover.finish()
 }
 
 /// Eq. (9) on the reference tetrahedron: (N_1, N_2, N_3, D) with N_i = g_i(w_i), D = Σ_j g_j(w_j).
