@@ -576,3 +576,158 @@ fn sd_l146_4_d_every_vertex_configuration_of_degree_4_is_certified() {
     );
     assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
 }
+
+fn report_of<'a>(
+    r: &'a [pseudomanifold::report::CheckResult],
+    id: &str,
+) -> &'a pseudomanifold::report::CheckResult {
+    r.iter().find(|c| c.id == id).unwrap()
+}
+
+fn print_reports(name: &str, r: &[pseudomanifold::report::CheckResult]) {
+    for c in r {
+        println!(
+            "{name} {}: {:?} examined {} worst {:?} — {} {:?}",
+            c.id,
+            c.verdict,
+            c.examined,
+            c.worst_deviation,
+            c.note,
+            c.witnesses.first().map(|w| &w.text)
+        );
+    }
+}
+
+/// `SD-L314`: the optimiser of L314 run after each SUBDIVIDE on the star of the new vertices,
+/// against the closed-form fit of `SD-6.2(distance)`, on the circle of Fig. 4 and Taubin's
+/// quartic (the fixtures of `polygonize`), with fewer steps than the CLI defaults.
+#[test]
+fn sd_l314_sd_l314_distance_sd_l316_local_optimiser_during_refinement_vs_closed_form_fit() {
+    use pseudomanifold::sdiff::{implicit::Implicit, optimise::OptimiseOptions, polygonize};
+    let opts = polygonize::Options {
+        max_steps: 60,
+        reference_grid: 256,
+        ..Default::default()
+    };
+    let local = OptimiseOptions {
+        grid: 8,
+        refine: 6,
+        sweeps: 4,
+        ..Default::default()
+    };
+    for g in [Implicit::circle(), Implicit::taubin()] {
+        let t0 = Instant::now();
+        let closed = polygonize::polygonize(&g, &opts).unwrap();
+        let t1 = Instant::now();
+        let (opt, run) = polygonize::polygonize_local(&g, &opts, &local).unwrap();
+        let t2 = Instant::now();
+        println!(
+            "{}: closed form {:.1?}, local optimiser {:.1?}",
+            g.name,
+            t1 - t0,
+            t2 - t1
+        );
+        print_reports(&format!("{} closed", g.name), &closed.report);
+        print_reports(&format!("{} L314", g.name), &opt.report);
+        // The refinement is driven by err with X = id: the same triangulation either way.
+        assert_eq!(closed.mesh.faces, opt.mesh.faces);
+        let l314 = report_of(&opt.report, "SD-L314");
+        assert_eq!(l314.verdict, Verdict::Holds, "{}", l314.note);
+        assert!(l314.examined > 0);
+        assert!(!run.lambdas.is_empty());
+        // Every accepted result is certified on its star, so the whole X_1 is a diffeomorphism.
+        assert_eq!(
+            report_of(&opt.report, "SD-L101(det)").verdict,
+            Verdict::Holds
+        );
+        assert_eq!(
+            report_of(&opt.report, "SD-6.2(topology)").verdict,
+            Verdict::Holds
+        );
+        let d = |r: &[pseudomanifold::report::CheckResult]| {
+            report_of(r, "SD-6.2(distance)").worst_deviation.unwrap()
+        };
+        println!(
+            "{}: max distance of 𝒪 to g = 0: closed form {:.3e}, L314 optimiser {:.3e}",
+            g.name,
+            d(&closed.report),
+            d(&opt.report)
+        );
+        assert!(d(&opt.report).is_finite());
+    }
+}
+
+/// `SD-L314` planted faults: a search range that forces every control point beyond its edge's
+/// end folds every star — each fold is reported with a witness and none is accepted (X_1 = id,
+/// certified); an empty range is an error offence; no subdivision is skipped.
+#[test]
+fn sd_l314_planted_folds_are_reported_never_accepted() {
+    use pseudomanifold::sdiff::refine_optimise::{rational_unit, Outcome};
+    use pseudomanifold::sdiff::{implicit::Implicit, optimise::OptimiseOptions, polygonize};
+    let opts = polygonize::Options {
+        max_steps: 8,
+        reference_grid: 128,
+        ..Default::default()
+    };
+    let beyond = OptimiseOptions {
+        lo: q(3),
+        hi: q(4),
+        grid: 2,
+        refine: 1,
+        sweeps: 1,
+        ..Default::default()
+    };
+    let (p, run) = polygonize::polygonize_local(&Implicit::circle(), &opts, &beyond).unwrap();
+    print_reports("planted", &p.report);
+    let l314 = report_of(&p.report, "SD-L314");
+    assert_eq!(l314.verdict, Verdict::Fails);
+    assert!(!l314.witnesses.is_empty());
+    assert!(run
+        .steps
+        .iter()
+        .any(|s| matches!(s.outcome, Outcome::Folded(_))));
+    assert!(run
+        .steps
+        .iter()
+        .all(|s| !matches!(s.outcome, Outcome::Accepted)));
+    assert!(run.lambdas.is_empty());
+    assert_eq!(report_of(&p.report, "SD-L101(det)").verdict, Verdict::Holds);
+    let empty = OptimiseOptions {
+        grid: 0,
+        ..Default::default()
+    };
+    let (p, _) = polygonize::polygonize_local(&Implicit::circle(), &opts, &empty).unwrap();
+    let l314 = report_of(&p.report, "SD-L314");
+    assert_eq!(l314.verdict, Verdict::Fails);
+    assert!(l314.witnesses[0].text.contains("empty search range"));
+    let none = polygonize::Options {
+        max_steps: 0,
+        ..opts
+    };
+    let (p, _) =
+        polygonize::polygonize_local(&Implicit::circle(), &none, &OptimiseOptions::default())
+            .unwrap();
+    assert!(matches!(
+        report_of(&p.report, "SD-L314").verdict,
+        Verdict::Skipped { .. }
+    ));
+    // The handle normals: exactly unit, within 2⁻²⁰ of the direction, in every quadrant.
+    for v in [
+        [1.0, 0.0],
+        [-3.0, 4.0],
+        [-1.0, -1e-9],
+        [0.2, -5.0],
+        [-1.0, 0.0],
+    ] {
+        let n = rational_unit(v).unwrap();
+        assert_eq!(&n[0] * &n[0] + &n[1] * &n[1], q(1));
+        let l = (v[0] * v[0] + v[1] * v[1]).sqrt();
+        let nf = n.clone().map(|x| pseudomanifold::sdiff::poly::to_f64(&x));
+        assert!(
+            (nf[0] - v[0] / l).abs() + (nf[1] - v[1] / l).abs() < 1e-5,
+            "{v:?}"
+        );
+    }
+    assert!(rational_unit([0.0, 0.0]).is_none());
+    assert!(rational_unit([f64::NAN, 1.0]).is_none());
+}

@@ -33,6 +33,7 @@ pub mod poly;
 pub mod polygonize;
 pub mod positivity;
 pub mod refine;
+pub mod refine_optimise;
 pub mod simplex_poly;
 pub mod simplex_search;
 pub mod subdivide;

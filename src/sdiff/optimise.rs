@@ -92,7 +92,7 @@ pub struct Optimum {
     pub lambdas: Vec<([u32; 2], String)>,
     /// Σ_σ err(σ, β) at the result.
     pub objective: f64,
-    /// The objective at the start (every λ = 1/2, X = id).
+    /// The objective at the start (for [`optimise`]: every λ = 1/2, X = id).
     pub start: f64,
     /// The objective after each sweep.
     pub history: Vec<f64>,
@@ -149,6 +149,21 @@ pub fn optimise(
     handles: &[Handle],
     o: &OptimiseOptions,
 ) -> Result<(Optimum, Lambdas), OptimiseError> {
+    let es = edges(k);
+    let start = es.iter().map(|&e| (e, qr(1, 2))).collect();
+    optimise_edges(k, fv, handles, o, &es, start)
+}
+
+/// The same descent over the λ of the edges `free` only, from `start` (every edge of K needs a
+/// value; a missing one is 1/2): the local optimiser of L314 (`SD-L314`).
+pub fn optimise_edges(
+    k: &PlanarComplex,
+    fv: &[Q],
+    handles: &[Handle],
+    o: &OptimiseOptions,
+    free: &[(u32, u32)],
+    start: Lambdas,
+) -> Result<(Optimum, Lambdas), OptimiseError> {
     if o.lo >= o.hi || o.grid == 0 {
         return Err(OptimiseError::EmptyRange {
             lo: o.lo.to_string(),
@@ -156,8 +171,25 @@ pub fn optimise(
             grid: o.grid,
         });
     }
-    let es = edges(k);
-    let mut lam: HashMap<(u32, u32), Q> = es.iter().map(|&e| (e, qr(1, 2))).collect();
+    let mut lam = start;
+    for e in edges(k) {
+        lam.entry(e).or_insert_with(|| qr(1, 2));
+    }
+    let es: Vec<_> = free
+        .iter()
+        .copied()
+        .filter(|e| lam.contains_key(e))
+        .collect();
+    // A free λ starts inside the search box (nearest end), so the result lies in it.
+    for e in &es {
+        if let Some(x) = lam.get_mut(e) {
+            if *x < o.lo {
+                *x = o.lo.clone();
+            } else if *x > o.hi {
+                *x = o.hi.clone();
+            }
+        }
+    }
     let mut evaluations = 0usize;
     let mut eval = |l: &HashMap<(u32, u32), Q>| -> Result<f64, OptimiseError> {
         evaluations += 1;

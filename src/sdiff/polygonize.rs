@@ -5,7 +5,8 @@
 //! * K_0 = Kuhn grid over the box; the cell of largest err is refined by newest-vertex
 //!   bisection (conforming; the paper's stellar SUBDIVIDE \[15\] is not available to us);
 //! * err(σ) = Σ_j |g(p_j)|² over 8 samples of the linear patch θ, i.e. the paper's L302 with
-//!   X = id (we do not run the paper's optimiser during refinement);
+//!   X = id (`polygonize_local` also runs the optimiser of L314 after each subdivision on the
+//!   star of the new vertices, `SD-L314`, instead of the closed-form fit below);
 //! * L324's stopping rule with an exact natural inclusion function: a crossed cell is not
 //!   subdivided when 0 ∉ □g(I_σ) or ⟨□∇g(I_σ), □∇g(I_σ)⟩ > 0;
 //! * afterwards X = X_1 (quadratic, one control point per crossed edge) is fitted in closed form
@@ -19,10 +20,13 @@ use super::handles::{lambda_for, quadratic_spec};
 use super::implicit::{mul_range, Implicit};
 use super::inverse::newton;
 use super::iso::{isocurves, IsoError, Isocurves};
+use super::optimise::OptimiseOptions;
 use super::params::{ComplexMap, ParamError};
 use super::poly::{from_f64, q, qr, to_f64, Q};
 use super::positivity::Budget;
 use super::refine::{Mesh2, RefineError};
+use super::refine_optimise::{root_on_edge, LocalRun};
+use super::subdivide::subdivide;
 use crate::mesh::raw::RawMesh;
 use crate::report::{CheckResult, Verdict, Witness};
 use num_traits::{Signed, Zero};
@@ -186,6 +190,28 @@ pub fn reference_topology(g: &Implicit, n: usize) -> (usize, usize) {
 
 /// Runs the adaptive polygonization of `g` and measures it.
 pub fn polygonize(g: &Implicit, opts: &Options) -> Result<Polygonization, PolygonizeError> {
+    Ok(run(g, opts, None)?.0)
+}
+
+/// The same with the optimiser of L314 run after each SUBDIVIDE on the star of the new
+/// vertices (`SD-L314`, `refine_optimise`), X_1 built from its accepted λ instead of the
+/// closed-form fit; the report gains `SD-L314`.
+pub fn polygonize_local(
+    g: &Implicit,
+    opts: &Options,
+    local: &OptimiseOptions,
+) -> Result<(Polygonization, LocalRun), PolygonizeError> {
+    let (mut p, run) = run(g, opts, Some(local))?;
+    let run = run.unwrap_or_default();
+    p.report.push(super::refine_optimise::judge(&run, local));
+    Ok((p, run))
+}
+
+fn run(
+    g: &Implicit,
+    opts: &Options,
+    local: Option<&OptimiseOptions>,
+) -> Result<(Polygonization, Option<LocalRun>), PolygonizeError> {
     if opts.grid == 0 {
         return Err(PolygonizeError::EmptyGrid);
     }
@@ -201,6 +227,7 @@ pub fn polygonize(g: &Implicit, opts: &Options) -> Result<Polygonization, Polygo
     let mut err: HashMap<usize, f64> = HashMap::new();
     let mut done: HashSet<usize> = HashSet::new();
     let (mut steps, mut skipped_by_l324, mut budget_hit) = (0usize, 0usize, false);
+    let mut local_run = local.map(|_| LocalRun::default());
     loop {
         while vals.len() < mesh.points.len() {
             let p = mesh.points[vals.len()];
@@ -233,8 +260,13 @@ pub fn polygonize(g: &Implicit, opts: &Options) -> Result<Polygonization, Polygo
             skipped_by_l324 += 1;
             continue;
         }
-        match mesh.bisect(id) {
-            Ok(_) => steps += 1,
+        match subdivide(&mut mesh, id) {
+            Ok(step) => {
+                if let (Some(o), Some(lr)) = (local, local_run.as_mut()) {
+                    lr.after_subdivide(g, &mesh, &step, steps, o);
+                }
+                steps += 1
+            }
             Err(RefineError::Budget(_)) | Err(RefineError::NoSuchTriangle(_)) => {
                 budget_hit = true;
                 break;
@@ -247,19 +279,48 @@ pub fn polygonize(g: &Implicit, opts: &Options) -> Result<Polygonization, Polygo
         Err(e) => return Err(PolygonizeError::Complex(e.to_string())),
     };
     let f: Vec<Q> = k.points.iter().map(|p| g.eval(&p[0], &p[1])).collect();
-    let (cm, clamped, fitted) = fit(g, &k, &f)?;
+    let (cm, how) = match &local_run {
+        None => {
+            let (cm, clamped, fitted) = fit(g, &k, &f)?;
+            (
+                cm,
+                format!(
+                    "{fitted} edge control points fitted, {clamped} clamped into [1/64, 63/64]"
+                ),
+            )
+        }
+        Some(lr) => {
+            // Edges bisected after their λ was accepted are gone from K.
+            let alive: HashSet<(u32, u32)> = super::optimise::edges(&k).into_iter().collect();
+            let lambdas: HashMap<(u32, u32), Q> = lr
+                .lambdas
+                .iter()
+                .filter(|(e, _)| alive.contains(e))
+                .map(|(e, l)| (*e, l.clone()))
+                .collect();
+            let n = lambdas.len();
+            let spec = quadratic_spec(&k, &lambdas);
+            (
+                spec.build(&k, Path::new("(L314 X_1)"))?,
+                format!("{n} edge control points from the optimiser of L314"),
+            )
+        }
+    };
     let iso = isocurves(&k, &cm, &f, &q(0))?;
     let mut report = iso.report.clone();
     let (mut det, _) = det_positive_exact(&cm, Budget::default());
-    det.note = format!("fitted X_1 on {} triangles; {fitted} edge control points fitted, {clamped} clamped into [1/64, 63/64]", k.triangles.len());
+    det.note = format!("X_1 on {} triangles; {how}", k.triangles.len());
     report.push(det);
     report.push(run_note(steps, skipped_by_l324, budget_hit, &k, opts));
     report.extend(measure(g, &k, &cm, &f, &iso, opts));
-    Ok(Polygonization {
-        mesh: raw,
-        iso,
-        report,
-    })
+    Ok((
+        Polygonization {
+            mesh: raw,
+            iso,
+            report,
+        },
+        local_run,
+    ))
 }
 
 fn run_note(
@@ -307,22 +368,9 @@ fn fit(g: &Implicit, k: &PlanarComplex, f: &[Q]) -> Result<(ComplexMap, usize, u
             continue;
         }
         let u_o = fa / (fa - fb);
-        let (pa, pb) = (k.points_f64[a as usize], k.points_f64[b as usize]);
-        let at = |u: f64| g.eval_f64(pa[0] + u * (pb[0] - pa[0]), pa[1] + u * (pb[1] - pa[1]));
-        let (mut l, mut h) = (0.0f64, 1.0f64);
-        let neg = at(0.0) < 0.0;
-        for _ in 0..60 {
-            let m = 0.5 * (l + h);
-            if (at(m) < 0.0) == neg {
-                l = m;
-            } else {
-                h = m;
-            }
-        }
-        let u_g = from_f64(0.5 * (l + h)).unwrap_or_else(|| qr(1, 2));
-        if u_g.is_zero() || u_g == q(1) {
+        let Some(u_g) = root_on_edge(g, k.points_f64[a as usize], k.points_f64[b as usize]) else {
             continue;
-        }
+        };
         let mut lam = lambda_for(&u_o, &u_g);
         if lam < lo {
             lam = lo.clone();

@@ -165,27 +165,27 @@ impl Mesh2 {
         [self.add([m, b, apex], lv), self.add([m, apex, c], lv)]
     }
 
+    /// Triangle `id`'s vertices listed counterclockwise.
+    pub fn oriented(&self, id: usize) -> [u32; 3] {
+        let [a, b, c] = self.tris[id];
+        let (pa, pb, pc) = (
+            self.points[a as usize],
+            self.points[b as usize],
+            self.points[c as usize],
+        );
+        let o = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0]);
+        if o > 0.0 {
+            [a, b, c]
+        } else {
+            [a, c, b]
+        }
+    }
+
     /// The alive triangles as a mesh (z = 0), each listed counterclockwise; with the map from
     /// its face index to the triangle id.
     pub fn to_raw(&self) -> (RawMesh, Vec<usize>) {
         let ids = self.alive_ids();
-        let faces = ids
-            .iter()
-            .map(|&i| {
-                let [a, b, c] = self.tris[i];
-                let (pa, pb, pc) = (
-                    self.points[a as usize],
-                    self.points[b as usize],
-                    self.points[c as usize],
-                );
-                let o = (pb[0] - pa[0]) * (pc[1] - pa[1]) - (pb[1] - pa[1]) * (pc[0] - pa[0]);
-                if o > 0.0 {
-                    [a, b, c]
-                } else {
-                    [a, c, b]
-                }
-            })
-            .collect::<Vec<_>>();
+        let faces = ids.iter().map(|&i| self.oriented(i)).collect::<Vec<_>>();
         let raw = RawMesh {
             positions: self.points.iter().map(|p| [p[0], p[1], 0.0]).collect(),
             face_origin: (0..faces.len() as u64).collect(),
