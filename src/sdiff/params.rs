@@ -401,7 +401,7 @@ pub struct ComplexMap {
 impl<const D: usize> Spec<D> {
     /// Checks every key names vertices of the complex and a face of some cell (of the named
     /// one for an override), every g a vertex, and that `iso.f` has one value per vertex.
-    pub(crate) fn check_keys<const C: usize>(
+    pub fn check_keys<const C: usize>(
         &self,
         path: &Path,
         nv: usize,
