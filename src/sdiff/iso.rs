@@ -41,19 +41,6 @@ impl Polylines {
     pub fn topology(&self) -> (usize, usize) {
         let n = self.points.len();
         let mut parent: Vec<usize> = (0..n).collect();
-        fn find(p: &mut [usize], x: usize) -> usize {
-            let mut r = x;
-            while p[r] != r {
-                r = p[r];
-            }
-            let mut y = x;
-            while p[y] != r {
-                let nx = p[y];
-                p[y] = r;
-                y = nx;
-            }
-            r
-        }
         let mut deg = vec![0usize; n];
         for e in &self.segments {
             deg[e[0]] += 1;
@@ -312,4 +299,20 @@ fn crossing_segments(p: &Polylines) -> Vec<(usize, usize)> {
         }
     }
     out
+}
+
+/// Union–find root of x with path compression (the topology of the isocurves and of the
+/// 3-D isosurfaces, `tet_iso`).
+pub(super) fn find(p: &mut [usize], x: usize) -> usize {
+    let mut r = x;
+    while p[r] != r {
+        r = p[r];
+    }
+    let mut y = x;
+    while p[y] != r {
+        let nx = p[y];
+        p[y] = r;
+        y = nx;
+    }
+    r
 }

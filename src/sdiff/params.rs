@@ -399,6 +399,20 @@ pub struct ComplexMap {
 }
 
 impl<const D: usize> Spec<D> {
+    /// The control point (when given) and the weight (1 when not) of the multiset `key` in
+    /// simplex f: the override for f first, then the entry of every simplex.
+    pub fn entry(&self, f: usize, key: Multiset) -> (Option<&[Q; D]>, Q) {
+        let c = self
+            .control
+            .get(&(Some(f), key.clone()))
+            .or_else(|| self.control.get(&(None, key.clone())));
+        let w = self
+            .weights
+            .get(&(Some(f), key.clone()))
+            .or_else(|| self.weights.get(&(None, key)));
+        (c, w.cloned().unwrap_or_else(|| Q::from_integer(1.into())))
+    }
+
     /// Checks every key names vertices of the complex and a face of some cell (of the named
     /// one for an override), every g a vertex, and that `iso.f` has one value per vertex.
     pub fn check_keys<const C: usize>(
@@ -490,19 +504,12 @@ impl MapSpec {
                 let mut weights = Vec::new();
                 for (idx, i) in multi_indices(n).into_iter().enumerate() {
                     let key = Self::global_key(k, f, i);
-                    let c = self
-                        .control
-                        .get(&(Some(f), key.clone()))
-                        .or_else(|| self.control.get(&(None, key.clone())));
+                    let (c, w) = self.entry(f, key);
                     control.push(match c {
                         Some(p) => k.barycentric(f, p),
                         None => fixed[idx].clone(),
                     });
-                    let w = self
-                        .weights
-                        .get(&(Some(f), key.clone()))
-                        .or_else(|| self.weights.get(&(None, key)));
-                    weights.push(w.cloned().unwrap_or_else(|| Q::from_integer(1.into())));
+                    weights.push(w);
                 }
                 if self.family == FamilySpec::Polynomial {
                     SimplexMap::polynomial(n, control)

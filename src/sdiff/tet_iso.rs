@@ -14,6 +14,7 @@
 //! construction with X = id, where it is exact up to the crossing points' rounding (f̂ is linear
 //! on every small tetrahedron).
 
+use super::iso::find;
 use super::poly::{q, to_f64, Q};
 use super::tet::Poly3;
 use super::tet_complex::TetComplex;
@@ -53,20 +54,6 @@ pub struct Topology {
     pub boundary_loops: usize,
     /// Edges of more than two triangles.
     pub nonmanifold_edges: usize,
-}
-
-fn find(p: &mut [usize], x: usize) -> usize {
-    let mut r = x;
-    while p[r] != r {
-        r = p[r];
-    }
-    let mut y = x;
-    while p[y] != r {
-        let nx = p[y];
-        p[y] = r;
-        y = nx;
-    }
-    r
 }
 
 impl TriMesh {

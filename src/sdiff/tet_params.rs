@@ -179,19 +179,12 @@ impl MapSpec3 {
                 let mut weights = Vec::new();
                 for (idx, i) in multi_indices4(n).into_iter().enumerate() {
                     let key = Self::global_key(k, f, i);
-                    let c = self
-                        .control
-                        .get(&(Some(f), key.clone()))
-                        .or_else(|| self.control.get(&(None, key.clone())));
+                    let (c, w) = self.entry(f, key);
                     control.push(match c {
                         Some(p) => k.barycentric(f, p),
                         None => fixed[idx].clone(),
                     });
-                    let w = self
-                        .weights
-                        .get(&(Some(f), key.clone()))
-                        .or_else(|| self.weights.get(&(None, key)));
-                    weights.push(w.cloned().unwrap_or_else(|| q(1)));
+                    weights.push(w);
                 }
                 let weights = (self.family == FamilySpec::Rational).then_some(weights);
                 TetMap::bezier(n, control, weights)
