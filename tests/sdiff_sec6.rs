@@ -19,6 +19,9 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
 
+mod common;
+use common::sdiff::{handles, square};
+
 fn kind(d: &Decision) -> &'static str {
     match d {
         Decision::Certified { .. } => "certified",
@@ -432,37 +435,6 @@ fn sd_l146_4_d_planted_faults_are_reported_with_witnesses() {
 }
 
 // ---- Sec. 6.1, L268: the optimiser over all control points of X_1 -------------------------
-
-fn square() -> pseudomanifold::sdiff::complex::PlanarComplex {
-    use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/sdiff/square.off");
-    let raw = read_mesh(&path, &ReadOptions::default()).unwrap();
-    pseudomanifold::sdiff::complex::validate(&raw).unwrap().0
-}
-
-/// The handles of `SD-L262`/`SD-L268` (tests/sdiff_spec.rs): O's crossings of the three
-/// crossed edges of square.off for f = (−1, 1, 2, −1, 1), (0, 2) moved to `u02`, n = (24/25, 7/25).
-fn handles(u02: Q) -> Vec<pseudomanifold::sdiff::objectives::Handle> {
-    use pseudomanifold::sdiff::objectives::Handle;
-    let n = [qr(24, 25), qr(7, 25)];
-    vec![
-        Handle {
-            edge: (0, 1),
-            u: qr(1, 2),
-            n: n.clone(),
-        },
-        Handle {
-            edge: (0, 2),
-            u: u02,
-            n: n.clone(),
-        },
-        Handle {
-            edge: (2, 3),
-            u: qr(2, 3),
-            n,
-        },
-    ]
-}
 
 #[test]
 fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1() {

@@ -10,18 +10,10 @@ use pseudomanifold::sdiff::params::{self, ComplexMap};
 use pseudomanifold::sdiff::poly::{bernstein_basis, multi_indices, q, qr, Poly2, Q};
 use pseudomanifold::sdiff::positivity::{decide, Budget, Decision, Strictness};
 use pseudomanifold::sdiff::{interval, iso};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-fn data(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/sdiff")
-        .join(name)
-}
-
-fn square() -> PlanarComplex {
-    let raw = read_mesh(&data("square.off"), &ReadOptions::default()).unwrap();
-    validate(&raw).unwrap().0
-}
+mod common;
+use common::sdiff::{data, handles, square};
 
 fn load(name: &str) -> (PlanarComplex, params::MapSpec, ComplexMap) {
     let k = square();
@@ -1108,7 +1100,7 @@ fn sd_l203_sd_e12_sd_l219_a_single_triangle_is_skipped_not_held() {
 
 // ---- the normal-based objectives: L229–L233 (Sec. 5) and L262–L268 (Sec. 6.1) ----------
 
-use pseudomanifold::sdiff::objectives::{self, Handle, HandleErrorKind};
+use pseudomanifold::sdiff::objectives::{self, HandleErrorKind};
 
 /// square.off scaled by `s` (validated again).
 fn scaled_square(s: i64) -> PlanarComplex {
@@ -1199,29 +1191,6 @@ fn sd_l231_sd_l231_corrected_normal_deviation_is_positive_on_exactly_c1_curves_a
         r.failed() && r.witnesses[0].text.contains("undefined"),
         "{r:?}"
     );
-}
-
-/// Handles at O's crossings of the three crossed edges of square.off (f = kink_values), with
-/// p(ε) on (0, 2) at `u02`, and the rational unit normal (24/25, 7/25).
-fn handles(u02: Q) -> Vec<Handle> {
-    let n = [qr(24, 25), qr(7, 25)];
-    vec![
-        Handle {
-            edge: (0, 1),
-            u: qr(1, 2),
-            n: n.clone(),
-        },
-        Handle {
-            edge: (0, 2),
-            u: u02,
-            n: n.clone(),
-        },
-        Handle {
-            edge: (2, 3),
-            u: qr(2, 3),
-            n,
-        },
-    ]
 }
 
 #[test]

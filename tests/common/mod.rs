@@ -4,6 +4,8 @@
 
 #![allow(dead_code)]
 
+pub mod sdiff;
+
 use std::path::{Path, PathBuf};
 
 /// One row of `../shared/meshes/manifest.tsv`.
