@@ -38,8 +38,32 @@ impl Hasher for Fnv1a {
 /// One vertex to fit: its id, its label offset and its control points (written in place).
 pub(super) type Job<'a> = (VertexId, u32, &'a mut [[f64; 3]]);
 
-/// A sector of a vertex: its face, corners (v, a, b), stencil and the hash of its key.
-type Sector = (FaceId, [VertexId; 3], FaceStencil, u64);
+/// A sector of a vertex: its face, corners (v, a, b), where its key and stencil vertices
+/// lie in the vertex's [`Sectors`] and the hash of its key.
+struct Sector {
+    face: FaceId,
+    corners: [VertexId; 3],
+    key: std::ops::Range<usize>,
+    verts: std::ops::Range<usize>,
+    hash: u64,
+}
+
+/// The sectors of one vertex, their keys and stencil vertices in two shared buffers (one
+/// allocation each per vertex instead of two per sector).
+struct Sectors {
+    list: Vec<Sector>,
+    keys: Vec<u32>,
+    verts: Vec<VertexId>,
+}
+
+impl Sectors {
+    fn key(&self, s: &Sector) -> &[u32] {
+        &self.keys[s.key.clone()]
+    }
+    fn verts(&self, s: &Sector) -> &[VertexId] {
+        &self.verts[s.verts.clone()]
+    }
+}
 
 /// What a matrix A⁺_i W_i depends on: the degree's fit, the sector and the stencil key (its
 /// hash computed once, in parallel).
@@ -76,42 +100,63 @@ pub(super) fn fit_linear<'a>(
     jobs: Vec<(usize, Job<'a>)>,
 ) -> Vec<(usize, Job<'a>)> {
     // The sectors of every vertex, with their stencils.
-    let sectors: Vec<Option<Vec<Sector>>> = jobs
+    let sectors: Vec<Option<Sectors>> = jobs
         .par_iter()
-        .map(|(fi, (v, off, _))| {
-            let m = k.degree(*v);
-            let outgoing = k.outgoing(*v);
-            (0..m)
-                .map(|i| {
+        .map_init(
+            || FaceStencil {
+                key: Vec::new(),
+                verts: Vec::new(),
+            },
+            |st, (fi, (v, off, _))| {
+                let m = k.degree(*v);
+                let outgoing = k.outgoing(*v);
+                let mut out = Sectors {
+                    list: Vec::with_capacity(m as usize),
+                    keys: Vec::with_capacity(24 * m as usize),
+                    verts: Vec::with_capacity(14 * m as usize),
+                };
+                for i in 0..m {
                     let h = outgoing[((i + off) % m) as usize];
                     let a = k.dest(h);
                     let b = k.dest(outgoing[((i + off + 1) % m) as usize]);
-                    let f = k.face_of(h);
-                    let c = [*v, a, b];
-                    let st = lin.stencil(k, f, c)?;
+                    let face = k.face_of(h);
+                    let corners = [*v, a, b];
+                    lin.stencil_into(k, face, corners, st)?;
+                    let key = out.keys.len()..out.keys.len() + st.key.len();
+                    let verts = out.verts.len()..out.verts.len() + st.verts.len();
+                    out.keys.extend_from_slice(&st.key);
+                    out.verts.extend_from_slice(&st.verts);
                     let hash = key_hash(*fi, i as usize, &st.key);
-                    Some((f, c, st, hash))
-                })
-                .collect()
-        })
+                    out.list.push(Sector {
+                        face,
+                        corners,
+                        key,
+                        verts,
+                        hash,
+                    });
+                }
+                Some(out)
+            },
+        )
         .collect();
     // One representative per (fit, sector, key), in job order.
     let mut keys: HashMap<MatrixKey, usize, BuildHasherDefault<Fnv1a>> = HashMap::default();
-    let mut reps: Vec<(usize, usize, &Sector)> = Vec::new();
+    let mut reps: Vec<(usize, usize, &Sectors, &Sector)> = Vec::new();
     let mut slot: Vec<Option<Vec<usize>>> = Vec::with_capacity(jobs.len());
     for ((fi, _), secs) in jobs.iter().zip(&sectors) {
         slot.push(secs.as_ref().map(|secs| {
-            secs.iter()
+            secs.list
+                .iter()
                 .enumerate()
                 .map(|(i, s)| {
                     let key = MatrixKey {
                         fit: *fi,
                         sector: i,
-                        key: &s.2.key,
-                        hash: s.3,
+                        key: secs.key(s),
+                        hash: s.hash,
                     };
                     *keys.entry(key).or_insert_with(|| {
-                        reps.push((*fi, i, s));
+                        reps.push((*fi, i, secs, s));
                         reps.len() - 1
                     })
                 })
@@ -152,13 +197,13 @@ pub(super) fn fit_linear<'a>(
     // M_i stored transposed (|stencil| × kk), so the products run along kk.
     let mats: Vec<Option<Vec<f64>>> = reps
         .par_iter()
-        .map(|&(fi, i, (f, c, st, _))| {
+        .map(|&(fi, i, secs, s)| {
             let fit = &fits[fi];
             let idx = by_sector[fi].get(i)?;
             let at = pinv_t[fi].get(i)?;
             let barys: Vec<[f64; 3]> = idx.iter().map(|&j| fit.samples[j].bary).collect();
-            let w = lin.weights(*f, *c, st, &barys)?;
-            let (kk, len) = (fit.info.unknowns, st.verts.len());
+            let w = lin.weights(s.face, s.corners, secs.verts(s), &barys)?;
+            let (kk, len) = (fit.info.unknowns, s.verts.len());
             let mut m = vec![0.0; kk * len];
             for s in 0..idx.len() {
                 let a = &at[s * kk..(s + 1) * kk];
@@ -236,9 +281,9 @@ pub(super) fn fit_linear<'a>(
         .collect()
 }
 
-/// Vertices with the same matrices share their merged matrix from this many on (below it the
-/// sum is as cheap as the comparison of layouts).
-const SHARE_MIN: usize = 4;
+/// Vertices with the same matrices share their merged matrix from this many on: from two
+/// on, one sum and a copy read less memory than two sums (koala: merge time −25 %).
+const SHARE_MIN: usize = 2;
 
 /// The merged matrix of a group of vertices and the layout it was summed for.
 struct Shared {
@@ -257,11 +302,11 @@ struct Scratch {
 
 /// The union of the sectors' stencils (in order of first appearance) and, for every column of
 /// every sector's stencil, its place in the union.
-fn union_layout(secs: &[Sector], union: &mut Vec<VertexId>, places: &mut Vec<u32>) {
+fn union_layout(secs: &Sectors, union: &mut Vec<VertexId>, places: &mut Vec<u32>) {
     union.clear();
     places.clear();
-    for (_, _, st, _) in secs {
-        for &u in &st.verts {
+    for s in &secs.list {
+        for &u in secs.verts(s) {
             let at = match union.iter().position(|&x| x == u) {
                 Some(p) => p,
                 None => {
@@ -277,7 +322,7 @@ fn union_layout(secs: &[Sector], union: &mut Vec<VertexId>, places: &mut Vec<u32
 /// Σ_i M_i summed into `scratch.merged` over the union laid out in `scratch.places`; `None`
 /// when a matrix is missing.
 fn merge(
-    secs: &[Sector],
+    secs: &Sectors,
     slot: &[usize],
     mats: &[Option<Vec<f64>>],
     kk: usize,
@@ -292,9 +337,9 @@ fn merge(
     merged.clear();
     merged.resize(union.len() * kk, 0.0);
     let mut at = places.iter();
-    for ((_, _, st, _), &r) in secs.iter().zip(slot) {
+    for (s, &r) in secs.list.iter().zip(slot) {
         let m = mats.get(r)?.as_ref()?;
-        for col in m.chunks_exact(kk).take(st.verts.len()) {
+        for col in m.chunks_exact(kk).take(s.verts.len()) {
             let p = *at.next()? as usize;
             for (g, w) in merged[p * kk..(p + 1) * kk].iter_mut().zip(col) {
                 *g += w;
@@ -311,7 +356,7 @@ fn merge(
 #[allow(clippy::too_many_arguments)]
 fn apply(
     lin: &dyn LinearTarget,
-    secs: &[Sector],
+    secs: &Sectors,
     slot: &[usize],
     mats: &[Option<Vec<f64>>],
     shared: Option<&Shared>,
@@ -340,14 +385,17 @@ fn apply(
     acc.resize(3 * kk, 0.0);
     let (ax, rest) = acc.split_at_mut(kk);
     let (ay, az) = rest.split_at_mut(kk);
+    let (ax, ay, az) = (&mut ax[..kk], &mut ay[..kk], &mut az[..kk]);
     for (&u, col) in union.iter().zip(merged.chunks_exact(kk)) {
         let Some(p) = lin.position(u) else {
             return false;
         };
-        for (((x, y), z), w) in ax.iter_mut().zip(ay.iter_mut()).zip(az.iter_mut()).zip(col) {
-            *x += w * p[0];
-            *y += w * p[1];
-            *z += w * p[2];
+        // Indexed over slices of one known length, so the loop is vectorised.
+        let col = &col[..kk];
+        for c in 0..kk {
+            ax[c] += col[c] * p[0];
+            ay[c] += col[c] * p[1];
+            az[c] += col[c] * p[2];
         }
     }
     for (c, o) in out.iter_mut().enumerate() {

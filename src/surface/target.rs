@@ -85,20 +85,38 @@ pub struct FaceStencil {
 
 /// A target surface that is a fixed linear combination of vertex positions on each face.
 pub trait LinearTarget: Sync {
-    /// The stencil of f seen from `corners`; `None` when the face has no such form.
+    /// The stencil of f seen from `corners`, written into `out` (its buffers reused: the fit
+    /// asks for one stencil per sector, ~6 per vertex, where two fresh vectors each time
+    /// showed in profiles); `None` when the face has no such form.
+    fn stencil_into(
+        &self,
+        k: &SimplicialSurface,
+        f: FaceId,
+        corners: [VertexId; 3],
+        out: &mut FaceStencil,
+    ) -> Option<()>;
+    /// The stencil of f seen from `corners`, in fresh buffers ([`Self::stencil_into`]).
     fn stencil(
         &self,
         k: &SimplicialSurface,
         f: FaceId,
         corners: [VertexId; 3],
-    ) -> Option<FaceStencil>;
-    /// Row-major |barys| × |verts|: the weights of the stencil's vertices at each point
-    /// (barycentric w.r.t. `corners`); `None` when a point cannot be expressed.
+    ) -> Option<FaceStencil> {
+        let mut out = FaceStencil {
+            key: Vec::new(),
+            verts: Vec::new(),
+        };
+        self.stencil_into(k, f, corners, &mut out)?;
+        Some(out)
+    }
+    /// Row-major |barys| × |verts|: the weights of a stencil's vertices `verts`
+    /// ([`FaceStencil::verts`]) at each point (barycentric w.r.t. `corners`); `None` when a
+    /// point cannot be expressed.
     fn weights(
         &self,
         f: FaceId,
         corners: [VertexId; 3],
-        stencil: &FaceStencil,
+        verts: &[VertexId],
         barys: &[[f64; 3]],
     ) -> Option<Vec<f64>>;
     /// The position of a vertex of K.

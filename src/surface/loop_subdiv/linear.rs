@@ -105,21 +105,23 @@ impl LinearTarget for LoopSurface {
     /// key is that numbering (ring lengths and which entries coincide) and the orientation of
     /// (v, a, b). Every point of every sub-net of f (one Loop step) is a combination of these
     /// vertices, so equal keys give equal weights.
-    fn stencil(
+    fn stencil_into(
         &self,
         k: &SimplicialSurface,
         _f: FaceId,
         corners: [VertexId; 3],
-    ) -> Option<FaceStencil> {
+        out: &mut FaceStencil,
+    ) -> Option<()> {
         if self.authors_origin.is_some() {
             return None;
         }
         let [v, a, b] = corners;
         let ccw = BaseTopology(k).third(v, a) == Some(b);
         let order = if ccw { [v, a, b] } else { [v, b, a] };
-        let mut verts: Vec<VertexId> = Vec::with_capacity(24);
+        let FaceStencil { key, verts } = out;
+        verts.clear();
+        key.clear();
         verts.extend([v, a, b]);
-        let mut key: Vec<u32> = Vec::with_capacity(32);
         key.push(ccw as u32);
         for j in 0..3 {
             // The ring of order[j] from order[j + 1].
@@ -135,14 +137,14 @@ impl LinearTarget for LoopSurface {
                 key.push(at as u32);
             }
         }
-        Some(FaceStencil { key, verts })
+        Some(())
     }
 
     fn weights(
         &self,
         f: FaceId,
         corners: [VertexId; 3],
-        stencil: &FaceStencil,
+        verts: &[VertexId],
         barys: &[[f64; 3]],
     ) -> Option<Vec<f64>> {
         let stored = self.corners(f)?;
@@ -157,7 +159,7 @@ impl LinearTarget for LoopSurface {
             k,
             slots: k.vertex_slots(),
         };
-        let local = |v: VertexId| stencil.verts.iter().position(|&u| u == v);
+        let local = |v: VertexId| verts.iter().position(|&u| u == v);
         // Each patch's net points as weights over the stencil.
         let patches: Vec<&Patch> = match &plan {
             Plan::Direct { patch, .. } => vec![patch],
@@ -176,7 +178,7 @@ impl LinearTarget for LoopSurface {
             }
             nets.push(net);
         }
-        let len = stencil.verts.len();
+        let len = verts.len();
         let mut out = vec![0.0; barys.len() * len];
         for (bary, row) in barys.iter().zip(out.chunks_mut(len)) {
             let sb = [bary[perm[0]], bary[perm[1]], bary[perm[2]]];
