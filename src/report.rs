@@ -6,7 +6,7 @@
 use serde::Serialize;
 
 pub mod harness;
-pub use harness::{dev_max, Check, OnError, Restricted};
+pub use harness::{dev_max, uniform_in_triangle, Check, OnError, Restricted};
 
 /// A progress hook of a long computation, called with (items done, total); the command line
 /// decides whether and how to show it (the library prints nothing). Items are what the

@@ -90,12 +90,7 @@ fn loop_mp_eval_f64_matches_mp256() {
         for _ in 0..40 {
             let f = FaceId(rng.gen_range(0..k.num_faces() as u32));
             let c = k.face(f);
-            let (a, b): (f64, f64) = (rng.gen(), rng.gen());
-            let (a, b) = if a + b > 1.0 {
-                (1.0 - a, 1.0 - b)
-            } else {
-                (a, b)
-            };
+            let [_, a, b] = pseudomanifold::report::uniform_in_triangle(&mut rng);
             // Also points very close to a corner (deep tiles).
             for bary in [
                 [1.0 - a - b, a, b],
@@ -665,15 +660,7 @@ fn linear_fixtures() -> Vec<(&'static str, SimplicialSurface)> {
 /// Seeded barycentric points of a triangle, with its corners and edge midpoints.
 fn bary_points(rng: &mut rand_chacha::ChaCha8Rng, n: usize) -> Vec<[f64; 3]> {
     let mut pts: Vec<[f64; 3]> = (0..n)
-        .map(|_| {
-            let (a, b): (f64, f64) = (rng.gen(), rng.gen());
-            let (a, b) = if a + b > 1.0 {
-                (1.0 - a, 1.0 - b)
-            } else {
-                (a, b)
-            };
-            [1.0 - a - b, a, b]
-        })
+        .map(|_| pseudomanifold::report::uniform_in_triangle(rng))
         .collect();
     pts.extend([
         [1.0, 0.0, 0.0],
@@ -696,7 +683,7 @@ fn weights_deviation(
     r: f64,
 ) -> Option<(f64, f64, [f64; 3])> {
     use pseudomanifold::surface::target::LinearTarget;
-    let w = s.weights(f, corners, stencil, pts)?;
+    let w = s.weights(f, corners, &stencil.verts, pts)?;
     let len = stencil.verts.len();
     // (ratio dev/bound, dev, bound, point): the worst point; NaN ranks worst.
     let mut worst = (0.0f64, 0.0f64, 0.0f64, [0.0; 3]);
@@ -772,7 +759,7 @@ fn loop_linear_fit_weights_reproduce_s_prime_and_depend_on_the_key_only() {
                 count += pts.len();
                 // Equal keys, equal weights (to rounding: both sides are sums over the same
                 // sub-net structure).
-                let w = s.weights(f, corners, &st, &pts).expect("weights");
+                let w = s.weights(f, corners, &st.verts, &pts).expect("weights");
                 match by_key.get(&st.key) {
                     Some(w0) => {
                         let d = w
@@ -800,7 +787,7 @@ fn loop_linear_fit_weights_reproduce_s_prime_and_depend_on_the_key_only() {
                 let Some(other) = s.stencil(&k, g, [corners[0], d, corners[1]]) else {
                     continue;
                 };
-                if let Some(wo) = s.weights(g, [corners[0], d, corners[1]], &other, &pts) {
+                if let Some(wo) = s.weights(g, [corners[0], d, corners[1]], &other.verts, &pts) {
                     let fake = pseudomanifold::surface::target::FaceStencil {
                         key: other.key.clone(),
                         verts: other.verts.clone(),

@@ -187,6 +187,16 @@ fn c5_3_support_holds_in_mp_restricted_in_f64() {
         "{:?}",
         r.verdict
     );
+    // The restriction is the thin annulus where γ_v is 0 in f64 inside Ω_v, measured from
+    // the sampled points: 0 < width ≤ 10^-3·r (the inner samples sit 10^-1·r … 10^-13·r
+    // from the rim; the annulus is where e^(2s) overflows, far thinner than 10^-1·r).
+    let width = r.worst_deviation.expect("the width is reported");
+    let rad = pps.consts_f64().degree(5).expect("degree 5").radius;
+    eprintln!("f64 underflow annulus width {width:e} of r = {rad}");
+    assert!(
+        width > 0.0 && width <= 1e-3 * rad,
+        "width {width:e}, r {rad}"
+    );
 }
 
 #[test]

@@ -46,6 +46,20 @@ pub fn enclosure_exceeds(lo: f64, hi: f64, tol: f64) -> bool {
     !(lo <= tol && lo.is_finite() && hi.is_finite())
 }
 
+/// A uniformly distributed point of the standard triangle as barycentric coordinates
+/// (λ, μ, ν): (μ, ν) uniform in the unit square, folded across μ + ν = 1. Every sampled check
+/// of a statement "for all points of a triangle" draws from this one function (two `f64`
+/// draws per point), so a sampler that leaves the triangle is caught by its test here.
+pub fn uniform_in_triangle<R: rand::Rng + ?Sized>(rng: &mut R) -> [f64; 3] {
+    let (a, b): (f64, f64) = (rng.gen(), rng.gen());
+    let (a, b) = if a + b > 1.0 {
+        (1.0 - a, 1.0 - b)
+    } else {
+        (a, b)
+    };
+    [1.0 - a - b, a, b]
+}
+
 /// Accumulates the result of one check under the rules of this module.
 #[derive(Debug, Clone)]
 pub struct Check {
@@ -462,5 +476,35 @@ mod tests {
             v[1].verdict,
             Verdict::HoldsRestricted { domain: "d".into() }
         );
+    }
+
+    /// The triangle sampler stays in the closed triangle, is uniform there (each coordinate's
+    /// mean 1/3; the part μ + ν > 1/2 has 3/4 of the area) and is determined by the seed.
+    #[test]
+    fn x_harness_uniform_in_triangle_is_uniform_in_the_triangle() {
+        use rand::SeedableRng;
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        let n = 40_000;
+        let (mut mean, mut far) = ([0.0; 3], 0usize);
+        for _ in 0..n {
+            let b = uniform_in_triangle(&mut rng);
+            assert!(b.iter().all(|x| (0.0..=1.0).contains(x)), "{b:?}");
+            assert!(
+                (b.iter().sum::<f64>() - 1.0).abs() <= 2.0 * f64::EPSILON,
+                "{b:?}"
+            );
+            for d in 0..3 {
+                mean[d] += b[d] / n as f64;
+            }
+            far += usize::from(b[1] + b[2] > 0.5);
+        }
+        // Standard error of a mean ≈ 0.24/√n = 0.0012; of the fraction ≈ 0.0022.
+        for m in mean {
+            assert!((m - 1.0 / 3.0).abs() < 0.006, "{mean:?}");
+        }
+        assert!((far as f64 / n as f64 - 0.75).abs() < 0.011, "{far}");
+        let again = uniform_in_triangle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(7));
+        let first = uniform_in_triangle(&mut rand_chacha::ChaCha8Rng::seed_from_u64(7));
+        assert_eq!(again, first);
     }
 }

@@ -4,7 +4,7 @@
 use super::maps::SimplexMap;
 use super::params::ComplexMap;
 use crate::report::{CheckResult, Witness};
-use rand::{Rng, SeedableRng};
+use rand::SeedableRng;
 use serde_json::json;
 
 /// Newton's answer.
@@ -82,11 +82,8 @@ pub fn inversion_spot_check(cm: &ComplexMap, seed: u64, per_triangle: usize) -> 
         let tol = tolerance(m);
         r.tolerance = Some(r.tolerance.map_or(tol, |t: f64| t.max(tol)));
         for _ in 0..per_triangle {
-            let (mut a, mut b): (f64, f64) = (rng.gen(), rng.gen());
-            if a + b > 1.0 {
-                (a, b) = (1.0 - a, 1.0 - b);
-            }
-            let y = [a, b];
+            let t = crate::report::uniform_in_triangle(&mut rng);
+            let y = [t[1], t[2]];
             r.examined += 1;
             let starts = [y, [0.2, 0.2], [0.6, 0.2], [0.2, 0.6]];
             let sols: Vec<Preimage> = starts

@@ -289,13 +289,7 @@ pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
             [1.0 / 3.0; 3],
         ];
         for _ in 0..8 {
-            let (a, b): (f64, f64) = (rng.gen(), rng.gen());
-            let (a, b) = if a + b > 1.0 {
-                (1.0 - a, 1.0 - b)
-            } else {
-                (a, b)
-            };
-            pts.push([1.0 - a - b, a, b]);
+            pts.push(crate::report::uniform_in_triangle(&mut rng));
         }
         for b in pts {
             r.examined += 1;

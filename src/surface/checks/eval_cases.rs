@@ -48,14 +48,7 @@ pub fn check_eval_cases(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckResul
             .max(tolerance(pps, w, f64::EPSILON))
             .max(tolerance(pps, x, f64::EPSILON));
         for _ in 0..opts.samples_per_vertex {
-            let a: f64 = rng.gen();
-            let b: f64 = rng.gen();
-            let (a, b) = if a + b > 1.0 {
-                (1.0 - a, 1.0 - b)
-            } else {
-                (a, b)
-            };
-            let bary = [1.0 - a - b, a, b];
+            let bary = uniform_in_triangle(&mut rng);
             let qp = canonical_point(&bary, c);
             let ic = qp.norm2() < 0.75;
             let id = (qp.x - 1.0).powi(2) + qp.y.powi(2) < 0.75;
@@ -133,14 +126,7 @@ pub fn check_cover(r2: f64, seed: u64, n: usize) -> CheckResult {
         [0.5, 0., 0.5],
     ];
     for _ in 0..n {
-        let a: f64 = rng.gen();
-        let b: f64 = rng.gen();
-        let (a, b) = if a + b > 1.0 {
-            (1.0 - a, 1.0 - b)
-        } else {
-            (a, b)
-        };
-        pts.push([1.0 - a - b, a, b]);
+        pts.push(uniform_in_triangle(&mut rng));
     }
     for b in pts {
         let q = [b[1] * 0.5 + b[2], -b[1] * s3h];

@@ -17,7 +17,7 @@ use super::profile::Profile;
 use super::scalar_ext::SurfaceScalar;
 use crate::construction::{Mp, PpmGluing, Scalar, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
-use crate::report::{dev_max, Check, CheckResult, OnError, Verdict, Witness};
+use crate::report::{dev_max, uniform_in_triangle, Check, CheckResult, OnError, Verdict, Witness};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;

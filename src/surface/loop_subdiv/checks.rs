@@ -610,7 +610,6 @@ pub fn check_pps_distance(
     target: &dyn crate::surface::TargetSurface,
     seed: u64,
 ) -> CheckResult {
-    use rand::Rng;
     let mut r = CheckResult::new(
         "C6.2-mimics",
         "PPS ↔ S′ distance at eval samples (max / p99) [measured]",
@@ -630,13 +629,7 @@ pub fn check_pps_distance(
             [1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0],
         ];
         for _ in 0..3 {
-            let (a, b): (f64, f64) = (rng.gen(), rng.gen());
-            let (a, b) = if a + b > 1.0 {
-                (1.0 - a, 1.0 - b)
-            } else {
-                (a, b)
-            };
-            bs.push([1.0 - a - b, a, b]);
+            bs.push(crate::report::uniform_in_triangle(&mut rng));
         }
         for b in bs {
             r.examined += 1;
