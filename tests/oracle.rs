@@ -229,3 +229,82 @@ fn oracle_mp_values_agree_across_precisions() {
         assert!(d < 1e-70, "{d}");
     }
 }
+
+/// AU-tables, the unit of `ppm diff` on a TSV table: deviations are relative to the
+/// bounding-box diagonal of K (computed here from the positions), per row and per coordinate
+/// column; a table of this crate's own S′ values agrees exactly; a value shifted by δ of the
+/// diagonal in x is reported as δ in the point and x statistics and 0 in y and z, and fails
+/// a tolerance below δ; a row with a field missing is refused naming its line.
+#[test]
+fn au_tables_tsv_units_columns_and_field_count() {
+    use pseudomanifold::mesh::VertexId;
+    use pseudomanifold::oracle::tsv_diff::{diagonal, diff_rows, parse_tsv, TsvError};
+    use pseudomanifold::surface::TargetSurface;
+    let mesh = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/authors_pps/cube.off");
+    let raw = read_mesh(&mesh, &ReadOptions::default()).expect("mesh");
+    let k = validate(&raw).surface.expect("surface");
+    let positions: Vec<[f64; 3]> = k.vertices().map(|v| k.position(v)).collect();
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in &positions {
+        for d in 0..3 {
+            lo[d] = lo[d].min(p[d]);
+            hi[d] = hi[d].max(p[d]);
+        }
+    }
+    let expected = (0..3).map(|d| (hi[d] - lo[d]).powi(2)).sum::<f64>().sqrt();
+    let diag = diagonal(&k);
+    assert_eq!(diag, expected);
+    // Translated away from the origin: the diagonal is a length, not a position.
+    let mut moved = raw.clone();
+    for p in &mut moved.positions {
+        p[0] += 10.0;
+        p[2] -= 3.0;
+    }
+    let km = validate(&moved).surface.expect("surface");
+    assert!((diagonal(&km) - diag).abs() <= 1e-12 * diag);
+
+    let (pn, pps) = common::authors_code_pps(&k);
+    let mut text = String::from("face\tlambda\tmu\tnu\tsprime_x\tsprime_y\tsprime_z\n");
+    for (f, corners) in raw.faces.iter().enumerate() {
+        for b in [[0.2, 0.3, 0.5], [1.0 / 3.0; 3]] {
+            let fid = pseudomanifold::mesh::FaceId(f as u32);
+            let p = pn.eval(fid, corners.map(VertexId), b);
+            text.push_str(&format!(
+                "{f}\t{}\t{}\t{}\t{}\t{}\t{}\n",
+                b[0], b[1], b[2], p[0], p[1], p[2]
+            ));
+        }
+    }
+    let mut rows = parse_tsv(&text, k.num_faces()).expect("rows");
+    let r = diff_rows(&k, &raw.faces, &pps, &pn, &rows, 1e-12, 3);
+    let q = &r.quantities[0];
+    assert_eq!(q.name, "sprime");
+    assert_eq!(q.point.count, rows.len());
+    assert_eq!(q.point.max, 0.0, "own values must agree exactly");
+    assert!(r.within_tolerance);
+    let delta = 1e-6;
+    if let Some(p) = rows[3].sprime.as_mut() {
+        p[0] += delta * diag;
+    }
+    let r = diff_rows(&k, &raw.faces, &pps, &pn, &rows, delta / 2.0, 3);
+    let q = &r.quantities[0];
+    assert!(
+        (q.point.max - delta).abs() <= 1e-9 * delta,
+        "{}",
+        q.point.max
+    );
+    assert!((q.columns[0].max - delta).abs() <= 1e-9 * delta);
+    assert_eq!((q.columns[1].max, q.columns[2].max), (0.0, 0.0));
+    assert!(!r.within_tolerance, "a deviation above the tolerance");
+    assert!(diff_rows(&k, &raw.faces, &pps, &pn, &rows, 2.0 * delta, 3).within_tolerance);
+
+    let short = "face\tlambda\tmu\tnu\tsprime_x\tsprime_y\tsprime_z\n0\t1\t0\t0\t1\t1\n";
+    match parse_tsv(short, k.num_faces()) {
+        Err(TsvError::FieldCount {
+            line: 2,
+            found: 6,
+            expected: 7,
+        }) => {}
+        other => panic!("{other:?}"),
+    }
+}

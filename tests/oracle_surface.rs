@@ -143,6 +143,20 @@ fn diff_surface_self_test_within_printed_bound() {
                 && bound <= (maps + f(&r, "f64_bound_patch_max")) * 1.000001
         );
         assert!(f(&r["stats"], "max") <= 2.0 * bound);
+        // R-diff-f64-bound: the default tolerance is 2 × the largest printed bound (both f64
+        // evaluations are within it of the exact value), and the text names no non-finite
+        // vertex when there is none.
+        assert_eq!(f(&r, "tolerance"), 2.0 * bound);
+        let text = Command::new(env!("CARGO_BIN_EXE_ppm"))
+            .args(["diff", "--mesh"])
+            .arg(mesh)
+            .arg("--surface")
+            .arg(&out)
+            .output()
+            .expect("run ppm diff --surface");
+        let text = String::from_utf8_lossy(&text.stdout);
+        assert!(text.contains("tolerance"), "{text}");
+        assert!(!text.contains("non-finite coordinates"), "{text}");
         assert!(f(&r, "reference_error_max") <= bound);
         assert!(f(&r, "mp_deviation_max") <= 2.0 * bound);
         assert_eq!(r["bound_violations"], 0);
@@ -506,4 +520,86 @@ fn diff_table_of_theta_catches_planted_sign_flip() {
     assert!(!r.within_tolerance);
     assert!(r.stats.max > 1e-3, "{}", r.stats.max);
     assert_eq!(r.worst[0].request["op"], "theta");
+}
+
+fn ok(s: &mut Session, line: &str) -> pseudomanifold::oracle::Response {
+    let r = s.handle_line(line);
+    assert!(r.ok, "{line}: {r:?}");
+    r
+}
+
+/// R-oracle-shape: the session state follows the requests — the precision it reports is the
+/// one set, S′ answers at a corner with the mesh vertex (Sec. 5.1) (barycentric 0 is inside
+/// the simplex), a point outside the simplex is `not_in_domain`.
+#[test]
+fn r_oracle_shape_precision_and_sprime_at_corners() {
+    let k = load(&ico());
+    let mut s = Session::with_surface(k.clone());
+    ok(&mut s, r#"{"op":"set_precision","bits":200}"#);
+    assert_eq!(s.bits(), 200);
+    for (face, corner) in [(0u32, 0usize), (7, 1), (19, 2)] {
+        let mut bary = [0.0; 3];
+        bary[corner] = 1.0;
+        let r = ok(
+            &mut s,
+            &format!(r#"{{"op":"sprime","face":{face},"bary":{bary:?}}}"#),
+        );
+        let got: Vec<f64> = serde_json::from_value(r.f64.clone().expect("f64")).expect("f64");
+        let v = k.face(FaceId(face))[corner];
+        assert_eq!(got, k.position(v).to_vec(), "face {face} corner {corner}");
+        assert_eq!(r.mp_bits, Some(200));
+    }
+    let r = s.handle_line(r#"{"op":"sprime","face":0,"bary":[-0.5,0.5,1.0]}"#);
+    assert_eq!(r.error.expect("error")["kind"], "not_in_domain");
+}
+
+/// SV-D3 and SV-diff in the oracle: κ must lie in the open interval (0, 1); the (σ, v)
+/// surface and its MPFR constants are rebuilt when the mesh or the precision changes (the
+/// answer equals a fresh session's).
+#[test]
+fn sv_d3_oracle_kappa_open_interval_and_state_follows_mesh_and_precision() {
+    let set = r#"{"op":"set_construction","construction":"sigma-v","kappa":0.3}"#;
+    for bad in ["0", "1", "1.0", "-0.1"] {
+        let mut s = Session::new();
+        let r = s.handle_line(&format!(
+            r#"{{"op":"set_construction","construction":"sigma-v","kappa":{bad}}}"#
+        ));
+        assert!(!r.ok, "kappa {bad} accepted");
+        assert_eq!(r.error.expect("error")["kind"], "malformed_request");
+    }
+    let q = r#"{"op":"eval","face":2,"bary":[0.2,0.3,0.5]}"#;
+    let load_line = |p: &Path| format!(r#"{{"op":"load","path":{:?}}}"#, p.display().to_string());
+    let fresh = |mesh: &Path, bits: u32| {
+        let mut s = Session::new();
+        ok(&mut s, &load_line(mesh));
+        ok(&mut s, set);
+        ok(
+            &mut s,
+            &format!(r#"{{"op":"set_precision","bits":{bits}}}"#),
+        );
+        ok(&mut s, q)
+    };
+    let mut s = Session::new();
+    ok(&mut s, &load_line(&ico()));
+    ok(&mut s, set);
+    ok(&mut s, r#"{"op":"set_precision","bits":64}"#);
+    let low = ok(&mut s, q);
+    assert_eq!(low.value, fresh(&ico(), 64).value);
+    ok(&mut s, r#"{"op":"set_precision","bits":256}"#);
+    let high = ok(&mut s, q);
+    assert_eq!(
+        high.value,
+        fresh(&ico(), 256).value,
+        "stale 64-bit constants"
+    );
+    assert_ne!(high.value, low.value);
+    let oct = data("octahedron.obj");
+    ok(&mut s, &load_line(&oct));
+    let other = ok(&mut s, q);
+    let want = fresh(&oct, 256);
+    assert_eq!(
+        other.value, want.value,
+        "stale surface of the previous mesh"
+    );
+    assert_eq!(other.f64, want.f64);
 }
