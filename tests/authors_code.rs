@@ -101,15 +101,7 @@ fn au_tables_diff_reports_planted_faults() {
     );
     let (k, faces) = load(&mesh);
     let mut rs = rows(&table, &k);
-    let pn = PnTriangles::for_profile(&k, Profile::AuthorsCode);
-    let pps = Pps::build(
-        &k,
-        &pn,
-        PpsOptions {
-            profile: Profile::AuthorsCode,
-            ..PpsOptions::default()
-        },
-    );
+    let (pn, pps) = common::authors_code_pps(&k);
     // One value shifted by 1e-6 of the diagonal: reported first, with its line and face.
     let shifted_line = rs[7].line;
     if let Some(p) = rs[7].pps.as_mut() {

@@ -189,12 +189,13 @@ fn c3_4_1_3c_and_4_cross_validation_is_not_vacuous() {
 /// 3(c) hold, so do 3(a) and 3(b); and the antecedent and the failures both occur.
 #[test]
 fn c3_4_1_3ab_from_3c_on_random_data() {
-    let (mut antecedent, mut broken_ab) = (0, 0);
+    let (mut antecedent, mut broken_ab, mut total) = (0, 0, 0);
     for seed in 0..150 {
         let g = random_gluing(seed, 2 + (seed % 2) as u32, true);
         if !well_formed(&g) {
             continue;
         }
+        total += 1;
         let c = !decide::check_3c(&g).failed();
         let a = !decide::check_3a(&g).failed();
         let b = !decide::check_3b(&g).failed();
@@ -207,9 +208,13 @@ fn c3_4_1_3ab_from_3c_on_random_data() {
             assert!(!c, "seed {seed}");
         }
     }
+    // Both sides in good measure (the generator plants a 3(a)/3(b) fault in one piece of six),
+    // since the property test above learns something only where 3(c) holds: measured 82 and
+    // 62 of 150; with a fault in five pieces of six it would be 34 and 116.
+    eprintln!("{total} well formed: {antecedent} with 3(c), {broken_ab} with 3(a)/3(b) broken");
     assert!(
-        antecedent > 10 && broken_ab > 10,
-        "{antecedent} with 3(c), {broken_ab} with 3(a)/3(b) broken"
+        3 * antecedent >= total && 3 * broken_ab >= total,
+        "{total} well formed: {antecedent} with 3(c), {broken_ab} with 3(a)/3(b) broken"
     );
 }
 

@@ -797,3 +797,31 @@ fn fit_vertex(
         *out_c = acc;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::generate::icosahedron;
+    use crate::mesh::validate::validate;
+    use crate::surface::PnTriangles;
+
+    /// The locality key of `eval_batch_f64` (Sec. 6.1.4 evaluated in storage order): a face's
+    /// key is the smallest breadth-first storage rank of its corners, so the faces around the
+    /// first-stored vertex come first and the keys spread over the mesh; an unknown face sorts
+    /// last.
+    #[test]
+    fn c6_1_4_locality_key_is_the_first_corner_in_storage_order() {
+        let k = validate(&icosahedron()).surface.expect("valid");
+        let pps = Pps::build(&k, &PnTriangles::new(&k), PpsOptions::default());
+        let mut keys = Vec::new();
+        for f in k.faces() {
+            let want = k.face(f).iter().map(|&v| pps.storage_rank(v)).min();
+            assert_eq!(Some(pps.locality_key(f)), want, "face {f}");
+            keys.push(pps.locality_key(f));
+        }
+        // Five faces meet at the first-stored vertex (the icosahedron's valence).
+        assert_eq!(keys.iter().filter(|&&x| x == 0).count(), 5);
+        assert!(keys.iter().any(|&x| x > 0));
+        assert_eq!(pps.locality_key(FaceId(k.num_faces() as u32)), u32::MAX);
+    }
+}

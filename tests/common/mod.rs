@@ -107,3 +107,24 @@ pub fn tsv_quantity(r: &pseudomanifold::oracle::tsv_diff::TsvReport, name: &str)
     assert_eq!(q.point.errors, 0, "{name}: rows not evaluable");
     (q.point.count, q.point.max)
 }
+
+/// S′ and the PPS of `--profile authors-code` (PN triangles as their code builds them), the
+/// model the authors' tables are compared with (AU-tables).
+pub fn authors_code_pps(
+    k: &pseudomanifold::mesh::SimplicialSurface,
+) -> (
+    pseudomanifold::surface::PnTriangles,
+    pseudomanifold::surface::Pps,
+) {
+    use pseudomanifold::surface::{PnTriangles, Pps, PpsOptions, Profile};
+    let pn = PnTriangles::for_profile(k, Profile::AuthorsCode);
+    let pps = Pps::build(
+        k,
+        &pn,
+        PpsOptions {
+            profile: Profile::AuthorsCode,
+            ..PpsOptions::default()
+        },
+    );
+    (pn, pps)
+}
