@@ -1,9 +1,11 @@
 //! The fit of Sec. 5.2 for targets that are linear in the vertex positions
 //! ([`LinearTarget`], the Loop limit surface): X_v = A⁺ D_v with D_v the samples of S′, and
-//! on sector i the samples are W_i P (W_i the weights of the sector's samples over the face's
-//! stencil, P its positions), so X_v = Σ_i (A⁺_i W_i) P_i. The matrix A⁺_i W_i depends only on
-//! (degree, sector, stencil key): it is computed once per key, from the first vertex (in the
-//! storage order) that has it, so the result does not depend on the thread schedule.
+//! on sector i the samples are W_i P_i (W_i the weights of the sector's samples over the
+//! face's stencil, P_i its positions). W_i depends only on (degree, sector, stencil key): it
+//! is computed once per key, from the first vertex (in the storage order) that has it, so the
+//! result does not depend on the thread schedule. Per vertex, D_v = (W_i P_i)_i costs a few
+//! thousand multiplications, and A⁺ D_v is one GEMM per chunk of vertices of one degree, as
+//! on the cubic-net path (`pps::fit_batch`).
 
 use super::fit::DegreeFit;
 use super::target::{FaceStencil, LinearTarget};
@@ -12,26 +14,44 @@ use rayon::prelude::*;
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
-/// FNV-1a: the keys are ~30 small integers hashed ~300k times per construction, where std's
-/// SipHash (DoS-resistant, not needed for keys derived from K) showed in profiles; no
-/// non-cryptographic hasher crate is among the dependencies, and this is ten lines.
+/// A word-at-a-time multiplicative hash (FxHash's step, with murmur3's finaliser so the low
+/// bits the table indexes by depend on every word): the keys are ~25 small integers hashed
+/// ~300k times per construction, where std's SipHash (DoS-resistant, not needed for keys
+/// derived from K) and then a byte-at-a-time FNV-1a showed in profiles; no non-cryptographic
+/// hasher crate is among the dependencies, and this is a few lines.
 #[derive(Default)]
-struct Fnv1a(u64);
+struct WordHash(u64);
 
-impl Hasher for Fnv1a {
+impl WordHash {
+    fn mix(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x517c_c1b7_2722_0a95);
+    }
+}
+
+impl Hasher for WordHash {
     fn finish(&self) -> u64 {
-        self.0
+        let mut h = self.0;
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+        h ^ (h >> 33)
     }
     fn write(&mut self, bytes: &[u8]) {
-        let mut h = if self.0 == 0 {
-            0xcbf2_9ce4_8422_2325
-        } else {
-            self.0
-        };
-        for &b in bytes {
-            h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
+        for chunk in bytes.chunks(8) {
+            let mut w = [0u8; 8];
+            w[..chunk.len()].copy_from_slice(chunk);
+            self.mix(u64::from_le_bytes(w));
         }
-        self.0 = h;
+    }
+    fn write_u32(&mut self, x: u32) {
+        self.mix(x as u64);
+    }
+    fn write_u64(&mut self, x: u64) {
+        self.mix(x);
+    }
+    fn write_usize(&mut self, x: usize) {
+        self.mix(x as u64);
     }
 }
 
@@ -65,7 +85,7 @@ impl Sectors {
     }
 }
 
-/// What a matrix A⁺_i W_i depends on: the degree's fit, the sector and the stencil key (its
+/// What a weight matrix W_i depends on: the degree's fit, the sector and the stencil key (its
 /// hash computed once, in parallel).
 #[derive(PartialEq, Eq)]
 struct MatrixKey<'a> {
@@ -82,7 +102,7 @@ impl std::hash::Hash for MatrixKey<'_> {
 }
 
 fn key_hash(fit: usize, sector: usize, key: &[u32]) -> u64 {
-    let mut h = Fnv1a::default();
+    let mut h = WordHash::default();
     h.write_u64(fit as u64);
     h.write_u64(sector as u64);
     for &x in key {
@@ -99,48 +119,53 @@ pub(super) fn fit_linear<'a>(
     fits: &[DegreeFit],
     jobs: Vec<(usize, Job<'a>)>,
 ) -> Vec<(usize, Job<'a>)> {
-    // The sectors of every vertex, with their stencils.
-    let sectors: Vec<Option<Sectors>> = jobs
-        .par_iter()
-        .map_init(
-            || FaceStencil {
-                key: Vec::new(),
-                verts: Vec::new(),
-            },
-            |st, (fi, (v, off, _))| {
-                let m = k.degree(*v);
-                let outgoing = k.outgoing(*v);
-                let mut out = Sectors {
-                    list: Vec::with_capacity(m as usize),
-                    keys: Vec::with_capacity(24 * m as usize),
-                    verts: Vec::with_capacity(14 * m as usize),
-                };
-                for i in 0..m {
-                    let h = outgoing[((i + off) % m) as usize];
-                    let a = k.dest(h);
-                    let b = k.dest(outgoing[((i + off + 1) % m) as usize]);
-                    let face = k.face_of(h);
-                    let corners = [*v, a, b];
-                    lin.stencil_into(k, face, corners, st)?;
-                    let key = out.keys.len()..out.keys.len() + st.key.len();
-                    let verts = out.verts.len()..out.verts.len() + st.verts.len();
-                    out.keys.extend_from_slice(&st.key);
-                    out.verts.extend_from_slice(&st.verts);
-                    let hash = key_hash(*fi, i as usize, &st.key);
-                    out.list.push(Sector {
-                        face,
-                        corners,
-                        key,
-                        verts,
-                        hash,
-                    });
-                }
-                Some(out)
-            },
-        )
-        .collect();
+    // The sectors of every vertex, with their stencils; beside them, the tables the weights
+    // need (built once, on one thread).
+    let (sectors, ()): (Vec<Option<Sectors>>, ()) = rayon::join(
+        || {
+            jobs.par_iter()
+                .map_init(
+                    || FaceStencil {
+                        key: Vec::new(),
+                        verts: Vec::new(),
+                    },
+                    |st, (fi, (v, off, _))| {
+                        let m = k.degree(*v);
+                        let outgoing = k.outgoing(*v);
+                        let mut out = Sectors {
+                            list: Vec::with_capacity(m as usize),
+                            keys: Vec::with_capacity(24 * m as usize),
+                            verts: Vec::with_capacity(14 * m as usize),
+                        };
+                        for i in 0..m {
+                            let h = outgoing[((i + off) % m) as usize];
+                            let a = k.dest(h);
+                            let b = k.dest(outgoing[((i + off + 1) % m) as usize]);
+                            let face = k.face_of(h);
+                            let corners = [*v, a, b];
+                            lin.stencil_into(k, face, corners, st)?;
+                            let key = out.keys.len()..out.keys.len() + st.key.len();
+                            let verts = out.verts.len()..out.verts.len() + st.verts.len();
+                            out.keys.extend_from_slice(&st.key);
+                            out.verts.extend_from_slice(&st.verts);
+                            let hash = key_hash(*fi, i as usize, &st.key);
+                            out.list.push(Sector {
+                                face,
+                                corners,
+                                key,
+                                verts,
+                                hash,
+                            });
+                        }
+                        Some(out)
+                    },
+                )
+                .collect()
+        },
+        || lin.prepare(),
+    );
     // One representative per (fit, sector, key), in job order.
-    let mut keys: HashMap<MatrixKey, usize, BuildHasherDefault<Fnv1a>> = HashMap::default();
+    let mut keys: HashMap<MatrixKey, usize, BuildHasherDefault<WordHash>> = HashMap::default();
     let mut reps: Vec<(usize, usize, &Sectors, &Sector)> = Vec::new();
     let mut slot: Vec<Option<Vec<usize>>> = Vec::with_capacity(jobs.len());
     for ((fi, _), secs) in jobs.iter().zip(&sectors) {
@@ -175,231 +200,204 @@ pub(super) fn fit_linear<'a>(
             s
         })
         .collect();
-    // A⁺ restricted to each sector's samples, transposed (n_i × kk).
-    let pinv_t: Vec<Vec<Vec<f64>>> = fits
+    // A⁺ with its columns in sector-major sample order (kk × n, column-major), so the samples
+    // of one sector fill consecutive rows of D; and where each sector's rows start.
+    let pinv_sm: Vec<(Vec<f64>, Vec<usize>)> = fits
         .iter()
         .zip(&by_sector)
         .map(|(fit, secs)| {
             let (n, kk) = (fit.samples.len(), fit.info.unknowns);
-            secs.iter()
-                .map(|idx| {
-                    let mut t = vec![0.0; idx.len() * kk];
-                    for (s, &j) in idx.iter().enumerate() {
-                        for row in 0..kk {
-                            t[s * kk + row] = fit.pinv[row * n + j];
-                        }
-                    }
-                    t
-                })
-                .collect()
+            let mut t = Vec::with_capacity(n * kk);
+            let mut starts = vec![0];
+            for idx in secs {
+                for &j in idx {
+                    t.extend((0..kk).map(|row| fit.pinv[row * n + j]));
+                }
+                starts.push(starts.last().copied().unwrap_or(0) + idx.len());
+            }
+            (t, starts)
         })
         .collect();
-    // M_i stored transposed (|stencil| × kk), so the products run along kk.
-    let mats: Vec<Option<Vec<f64>>> = reps
+    // W_i per key, stored transposed (|stencil| × n_i): the weights of the sector's samples
+    // over its stencil.
+    let weights: Vec<Option<Vec<f64>>> = reps
         .par_iter()
         .map(|&(fi, i, secs, s)| {
             let fit = &fits[fi];
-            let idx = by_sector[fi].get(i)?;
-            let at = pinv_t[fi].get(i)?;
-            let barys: Vec<[f64; 3]> = idx.iter().map(|&j| fit.samples[j].bary).collect();
+            let barys: Vec<[f64; 3]> = by_sector[fi]
+                .get(i)?
+                .iter()
+                .map(|&j| fit.samples[j].bary)
+                .collect();
             let w = lin.weights(s.face, s.corners, secs.verts(s), &barys)?;
-            let (kk, len) = (fit.info.unknowns, s.verts.len());
-            let mut m = vec![0.0; kk * len];
-            for s in 0..idx.len() {
-                let a = &at[s * kk..(s + 1) * kk];
-                for (col, &wv) in w[s * len..(s + 1) * len].iter().enumerate() {
-                    if wv == 0.0 {
-                        continue;
-                    }
-                    for (o, x) in m[col * kk..(col + 1) * kk].iter_mut().zip(a) {
-                        *o += x * wv;
-                    }
+            let (n_i, len) = (barys.len(), s.verts.len());
+            let mut wt = vec![0.0; w.len()];
+            for (r, row) in w.chunks_exact(len).enumerate() {
+                for (c, x) in row.iter().enumerate() {
+                    wt[c * n_i + r] = *x;
                 }
             }
-            Some(m)
+            Some(wt)
         })
         .collect();
-    // Vertices whose sectors have the same matrices (e.g. every vertex of one degree whose
-    // neighbours are regular) share the merged matrix Σ_i M_i over the union of their stencils
-    // when their stencils also meet the same way (the same layout): it is summed once.
-    let mut groups: HashMap<(usize, &[usize]), usize, BuildHasherDefault<Fnv1a>> =
-        HashMap::default();
-    let mut members: Vec<usize> = Vec::new();
-    let group_of: Vec<Option<usize>> = jobs
-        .iter()
-        .zip(&slot)
-        .map(|((fi, _), sl)| {
-            let sl = sl.as_deref()?;
-            let g = *groups.entry((*fi, sl)).or_insert_with(|| {
-                members.push(0);
-                members.len() - 1
-            });
-            members[g] += 1;
-            Some(g)
-        })
-        .collect();
-    let mut first: Vec<Option<usize>> = vec![None; members.len()];
-    for (j, g) in group_of.iter().enumerate() {
-        if let Some(g) = *g {
-            first[g].get_or_insert(j);
+    // X = A⁺ D per chunk of vertices of one degree: D's columns are the samples of S′ (W_i P_i
+    // on sector i), the product one GEMM, as the cubic-net path does with its nets.
+    let mut chunks: Vec<Vec<Item>> = Vec::new();
+    for item in jobs.into_iter().zip(&sectors).zip(&slot) {
+        match chunks.last_mut() {
+            Some(c) if c.len() < CHUNK && c[0].0 .0 .0 == item.0 .0 .0 => c.push(item),
+            _ => chunks.push(vec![item]),
         }
     }
-    let shared: Vec<Option<Shared>> = first
-        .par_iter()
-        .zip(&members)
-        .map_init(Scratch::default, |scratch, (rep, &count)| {
-            let rep = (*rep)?;
-            if count < SHARE_MIN {
-                return None;
-            }
-            let (secs, sl) = (sectors[rep].as_ref()?, slot[rep].as_ref()?);
-            let kk = fits[jobs[rep].0].info.unknowns;
-            union_layout(secs, &mut scratch.union, &mut scratch.places);
-            merge(secs, sl, &mats, kk, scratch)?;
-            Some(Shared {
-                places: scratch.places.clone(),
-                merged: scratch.merged.clone(),
-            })
+    let rest = chunks
+        .into_par_iter()
+        .map_init(ChunkScratch::default, |sc, chunk| {
+            apply_chunk(lin, chunk, &weights, &pinv_sm, sc)
         })
+        .flatten_iter()
         .collect();
-    // X_v = Σ_i M_i P_i.
-    jobs.into_par_iter()
-        .zip(sectors)
-        .zip(slot)
-        .zip(group_of)
-        .map_init(Scratch::default, |scratch, (((job, secs), slot), g)| {
-            let (fi, (v, off, out)) = job;
-            let (Some(secs), Some(slot)) = (secs, slot) else {
-                return Some((fi, (v, off, out)));
-            };
-            let kk = fits[fi].info.unknowns;
-            let shared = g.and_then(|g| shared[g].as_ref());
-            let served = apply(lin, &secs, &slot, &mats, shared, kk, out, scratch);
-            (!served).then_some((fi, (v, off, out)))
-        })
-        .flatten()
-        .collect()
+    rest
 }
 
-/// Vertices with the same matrices share their merged matrix from this many on: from two
-/// on, one sum and a copy read less memory than two sums (koala: merge time −25 %).
-const SHARE_MIN: usize = 2;
+/// Vertices per GEMM of [`apply_chunk`] (D is samples × 3·CHUNK: ~0.5 MB for degree 6).
+const CHUNK: usize = 128;
 
-/// The merged matrix of a group of vertices and the layout it was summed for.
-struct Shared {
-    places: Vec<u32>,
-    merged: Vec<f64>,
-}
-
-/// Per-thread buffers of [`apply`].
+/// Per-thread buffers of [`apply_chunk`] (D and X are ~0.5 MB: fresh ones per chunk were
+/// mapped and faulted in by the allocator each time).
 #[derive(Default)]
-struct Scratch {
-    union: Vec<VertexId>,
-    places: Vec<u32>,
-    merged: Vec<f64>,
-    acc: Vec<f64>,
+struct ChunkScratch {
+    d: Vec<f64>,
+    x: Vec<f64>,
+    positions: Vec<[f64; 3]>,
 }
 
-/// The union of the sectors' stencils (in order of first appearance) and, for every column of
-/// every sector's stencil, its place in the union.
-fn union_layout(secs: &Sectors, union: &mut Vec<VertexId>, places: &mut Vec<u32>) {
-    union.clear();
-    places.clear();
-    for s in &secs.list {
-        for &u in secs.verts(s) {
-            let at = match union.iter().position(|&x| x == u) {
-                Some(p) => p,
-                None => {
-                    union.push(u);
-                    union.len() - 1
-                }
+/// A vertex to fit with its sectors and their weight matrices (indices into the per-key list).
+/// Borrowed, so the per-vertex buffers are freed at the end on one thread (freed inside the
+/// parallel loop, on another thread than the one that allocated them, they showed as
+/// allocator lock contention).
+type Item<'a, 's> = (
+    ((usize, Job<'a>), &'s Option<Sectors>),
+    &'s Option<Vec<usize>>,
+);
+
+/// X_v = A⁺ D_v for the vertices of `chunk` (all of one degree's fit): the samples of S′ on
+/// sector i are W_i P_i (W_i per key, P_i the stencil's positions), written into the columns
+/// of D, then one product with A⁺. Computed in this order, not as precomputed products
+/// A⁺_i W_i (kk × |stencil| per key, 23 MB on koala), because those, read once per vertex,
+/// made the fit memory-bound; the weights are a third of their size. Returns the vertices it
+/// could not serve (a missing weight matrix or position).
+fn apply_chunk<'a>(
+    lin: &dyn LinearTarget,
+    chunk: Vec<Item<'a, '_>>,
+    weights: &[Option<Vec<f64>>],
+    pinv_sm: &[(Vec<f64>, Vec<usize>)],
+    scratch: &mut ChunkScratch,
+) -> Vec<(usize, Job<'a>)> {
+    let mut rest = Vec::new();
+    let Some(fi) = chunk.first().map(|it| it.0 .0 .0) else {
+        return rest;
+    };
+    let Some((a, starts)) = pinv_sm.get(fi) else {
+        rest.extend(chunk.into_iter().map(|((job, _), _)| job));
+        return rest;
+    };
+    let n = starts.last().copied().unwrap_or(0);
+    let kk = a.len().checked_div(n).unwrap_or(0);
+    let ChunkScratch { d, x, positions } = scratch;
+    d.clear();
+    d.resize(n * 3 * chunk.len(), 0.0);
+    let mut done: Vec<(usize, Job<'a>)> = Vec::with_capacity(chunk.len());
+    for ((job, secs), slot) in chunk {
+        let col = done.len();
+        let ok = kk > 0
+            && match (secs, slot) {
+                (Some(secs), Some(slot)) if job.1 .2.len() == kk => samples_into(
+                    lin,
+                    secs,
+                    slot,
+                    weights,
+                    starts,
+                    positions,
+                    &mut d[n * 3 * col..n * 3 * (col + 1)],
+                ),
+                _ => false,
             };
-            places.push(at as u32);
+        if ok {
+            done.push(job);
+        } else {
+            rest.push(job);
         }
     }
-}
-
-/// Σ_i M_i summed into `scratch.merged` over the union laid out in `scratch.places`; `None`
-/// when a matrix is missing.
-fn merge(
-    secs: &Sectors,
-    slot: &[usize],
-    mats: &[Option<Vec<f64>>],
-    kk: usize,
-    scratch: &mut Scratch,
-) -> Option<()> {
-    let Scratch {
-        union,
-        places,
-        merged,
-        ..
-    } = scratch;
-    merged.clear();
-    merged.resize(union.len() * kk, 0.0);
-    let mut at = places.iter();
-    for (s, &r) in secs.list.iter().zip(slot) {
-        let m = mats.get(r)?.as_ref()?;
-        for col in m.chunks_exact(kk).take(s.verts.len()) {
-            let p = *at.next()? as usize;
-            for (g, w) in merged[p * kk..(p + 1) * kk].iter_mut().zip(col) {
-                *g += w;
-            }
+    if done.is_empty() {
+        return rest;
+    }
+    let cols = 3 * done.len();
+    x.clear();
+    x.resize(kk * cols, 0.0);
+    faer::linalg::matmul::matmul(
+        faer::mat::from_column_major_slice_mut::<f64>(x, kk, cols),
+        faer::mat::from_column_major_slice::<f64>(a, kk, n),
+        faer::mat::from_column_major_slice::<f64>(&d[..n * cols], n, cols),
+        None,
+        1.0,
+        faer::Parallelism::None,
+    );
+    for (j, (_, (_, _, out))) in done.iter_mut().enumerate() {
+        for (c, o) in out.iter_mut().enumerate() {
+            let at = |col: usize| x[col * kk + c];
+            *o = [at(3 * j), at(3 * j + 1), at(3 * j + 2)];
         }
     }
-    Some(())
+    rest
 }
 
-/// out = Σ_i M_i P_i, the M_i first summed into one matrix over the union of the sectors'
-/// stencils (neighbouring sectors share most vertices, so this halves the products), or taken
-/// from `shared` when its layout is this vertex's; false (out untouched) when a matrix or a
-/// position is missing.
-#[allow(clippy::too_many_arguments)]
-fn apply(
+/// The samples of S′ at one vertex, W_i P_i for every sector i, written into `d` (three
+/// columns of length n, one per coordinate, sector i in rows starts[i]..starts[i + 1]); false
+/// when a weight matrix or a position is missing.
+fn samples_into(
     lin: &dyn LinearTarget,
     secs: &Sectors,
     slot: &[usize],
-    mats: &[Option<Vec<f64>>],
-    shared: Option<&Shared>,
-    kk: usize,
-    out: &mut [[f64; 3]],
-    scratch: &mut Scratch,
+    weights: &[Option<Vec<f64>>],
+    starts: &[usize],
+    positions: &mut Vec<[f64; 3]>,
+    d: &mut [f64],
 ) -> bool {
-    if out.len() != kk {
+    let n = d.len() / 3;
+    if slot.len() != secs.list.len() || starts.len() != slot.len() + 1 {
         return false;
     }
-    union_layout(secs, &mut scratch.union, &mut scratch.places);
-    let merged: &[f64] = match shared {
-        Some(sh) if sh.places == scratch.places && sh.merged.len() == scratch.union.len() * kk => {
-            &sh.merged
-        }
-        _ => {
-            if merge(secs, slot, mats, kk, scratch).is_none() {
-                return false;
-            }
-            &scratch.merged
-        }
-    };
-    let Scratch { union, acc, .. } = scratch;
-    // x, y, z of X_v side by side (one pass of each column per coordinate).
-    acc.clear();
-    acc.resize(3 * kk, 0.0);
-    let (ax, rest) = acc.split_at_mut(kk);
-    let (ay, az) = rest.split_at_mut(kk);
-    let (ax, ay, az) = (&mut ax[..kk], &mut ay[..kk], &mut az[..kk]);
-    for (&u, col) in union.iter().zip(merged.chunks_exact(kk)) {
-        let Some(p) = lin.position(u) else {
+    let (dx, rest) = d.split_at_mut(n);
+    let (dy, dz) = rest.split_at_mut(n);
+    for (i, (s, &r)) in secs.list.iter().zip(slot).enumerate() {
+        let Some(Some(w)) = weights.get(r) else {
             return false;
         };
-        // Indexed over slices of one known length, so the loop is vectorised.
-        let col = &col[..kk];
-        for c in 0..kk {
-            ax[c] += col[c] * p[0];
-            ay[c] += col[c] * p[1];
-            az[c] += col[c] * p[2];
+        positions.clear();
+        for &u in secs.verts(s) {
+            let Some(p) = lin.position(u) else {
+                return false;
+            };
+            positions.push(p);
         }
-    }
-    for (c, o) in out.iter_mut().enumerate() {
-        *o = [ax[c], ay[c], az[c]];
+        let (lo, hi) = (starts[i], starts[i + 1]);
+        let (len, n_i) = (positions.len(), hi - lo);
+        if len == 0 || w.len() != n_i * len || hi > n {
+            return false;
+        }
+        let (yx, yy, yz) = (&mut dx[lo..hi], &mut dy[lo..hi], &mut dz[lo..hi]);
+        yx.fill(0.0);
+        yy.fill(0.0);
+        yz.fill(0.0);
+        // Column by column of W_iᵀ, so the loop runs along the samples (vectorised).
+        for (wc, p) in w.chunks_exact(n_i).zip(positions.iter()) {
+            let ys = yx.iter_mut().zip(yy.iter_mut()).zip(yz.iter_mut());
+            for (((x, y), z), c) in ys.zip(wc) {
+                *x += c * p[0];
+                *y += c * p[1];
+                *z += c * p[2];
+            }
+        }
     }
     true
 }

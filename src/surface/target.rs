@@ -121,6 +121,9 @@ pub trait LinearTarget: Sync {
     ) -> Option<Vec<f64>>;
     /// The position of a vertex of K.
     fn position(&self, v: VertexId) -> Option<[f64; 3]>;
+    /// Builds what [`Self::weights`] needs on first use, so the fit can do it beside other
+    /// work (default: nothing).
+    fn prepare(&self) {}
 }
 
 /// PN triangles (Vlachos et al. 2001) from vertex normals.

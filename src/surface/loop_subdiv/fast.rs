@@ -49,16 +49,22 @@ impl SubNetTable {
         let zero_out = [[0.0; 3]; 5];
         for m in 0..TABULATED_LEVELS {
             for sub in 0..3 {
-                for col in 0..k {
+                // Three unit vectors per call, one in each coordinate (the map acts on the
+                // coordinates separately): a third of the calls.
+                for first in (0..k).step_by(3) {
                     let (mut cin, mut cout) = (zero.clone(), zero_out);
-                    if col < n_in {
-                        cin[col][0] = 1.0;
-                    } else {
-                        cout[col - n_in][0] = 1.0;
+                    for (d, col) in (first..k.min(first + 3)).enumerate() {
+                        if col < n_in {
+                            cin[col][d] = 1.0;
+                        } else {
+                            cout[col - n_in][d] = 1.0;
+                        }
                     }
                     let q = es.sub_net_as(sub, m as u64, &cin, &cout, authors_jordan);
                     for (row, qr) in q.iter().enumerate() {
-                        entries[((m * 3 + sub) * 12 + row) * k + col] = qr[0];
+                        for (d, col) in (first..k.min(first + 3)).enumerate() {
+                            entries[((m * 3 + sub) * 12 + row) * k + col] = qr[d];
+                        }
                     }
                 }
             }
@@ -66,21 +72,13 @@ impl SubNetTable {
         SubNetTable { k, entries }
     }
 
-    /// φᵀ · B_k Aᵐ (1 × K): the weights over the eigen-coordinates of the regular-patch
-    /// combination φ of the sub-net's 12 points, if m is tabulated.
-    pub(super) fn combine_rows(&self, sub: usize, m: usize, phi: &[f64; 12]) -> Option<Vec<f64>> {
-        if m >= TABULATED_LEVELS {
+    /// B_k Aᵐ (12 × K, row-major) for sub-triangle `sub` at level m, if m is tabulated.
+    pub(super) fn block(&self, sub: usize, m: usize) -> Option<&[f64]> {
+        if m >= TABULATED_LEVELS || sub >= 3 {
             return None;
         }
         let base = (m * 3 + sub) * 12 * self.k;
-        let rows = self.entries.get(base..base + 12 * self.k)?;
-        let mut w = vec![0.0; self.k];
-        for (row, f) in phi.iter().enumerate() {
-            for (wc, t) in w.iter_mut().zip(&rows[row * self.k..(row + 1) * self.k]) {
-                *wc += f * t;
-            }
-        }
-        Some(w)
+        self.entries.get(base..base + 12 * self.k)
     }
 
     /// B_k Aᵐ applied to the eigen-coordinates (cin, cout), if m is tabulated.

@@ -16,20 +16,22 @@ use super::surface::{plan_of, split_patch_point, LoopSurface, Patch, Plan, Point
 use super::topology::{link_from, BaseTopology, Topology};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::surface::target::{FaceStencil, LinearTarget};
-use std::sync::Arc;
 
-/// Per valence N ≠ 6: Stam's tabulated sub-nets and the eigen-projection as a K × K matrix
-/// (row-major; coordinates (C_in, C_out) = P · net), K = N + 6.
+/// Per valence N ≠ 6: Stam's tabulated sub-nets composed with the eigen-projection P (the
+/// K × K matrix with (C_in, C_out) = P · net, K = N + 6), so a point's weights over the patch
+/// net cost one 12 × K product (φᵀ · B_k Aᵐ P) instead of that plus a K × K one.
 pub(super) struct LinearValence {
-    table: Arc<SubNetTable>,
-    proj: Vec<f64>,
+    /// Per (level m, sub-triangle k): B_k Aᵐ P, 12 × K row-major; m below the tabulated levels.
+    sub_nets: Vec<f64>,
+    /// Row 0 of P: the weights of the vertex limit (coordinate 0 of C_in).
+    limit: Vec<f64>,
     k: usize,
 }
 
 impl LinearValence {
     pub(super) fn new(
         es: &super::eigen::EigenStructure<f64>,
-        table: Arc<SubNetTable>,
+        table: &SubNetTable,
     ) -> LinearValence {
         let k = es.n + 6;
         let mut proj = vec![0.0; k * k];
@@ -42,34 +44,55 @@ impl LinearValence {
                 proj[i * k + j] = c[0];
             }
         }
-        LinearValence { table, proj, k }
-    }
-
-    /// Weights over the patch net of the point (x, y); `None` past the tabulated levels.
-    fn weights(&self, basis: &[[f64; 15]; 12], x: f64, y: f64) -> Option<Vec<f64>> {
-        let coords = match stam_tile(&x, &y, depth_cap(53), 53) {
-            // The vertex limit: coordinate 0 of C_in.
-            None => {
-                let mut c = vec![0.0; self.k];
-                c[0] = 1.0;
-                c
-            }
-            Some((n, sub, s, _)) => {
-                let phi = regular_weights_f64(basis, s.0, s.1);
-                self.table.combine_rows(sub, (n - 1) as usize, &phi)?
-            }
-        };
-        let mut w = vec![0.0; self.k];
-        for (ci, c) in coords.iter().enumerate() {
-            if *c == 0.0 {
-                continue;
-            }
-            let row = &self.proj[ci * self.k..(ci + 1) * self.k];
-            for (wj, pj) in w.iter_mut().zip(row) {
-                *wj += c * pj;
+        let mut sub_nets = Vec::new();
+        for m in 0.. {
+            let Some(blocks) = (0..3)
+                .map(|sub| table.block(sub, m))
+                .collect::<Option<Vec<_>>>()
+            else {
+                break;
+            };
+            for e in blocks {
+                for row in e.chunks_exact(k) {
+                    let start = sub_nets.len();
+                    sub_nets.resize(start + k, 0.0);
+                    let out = &mut sub_nets[start..];
+                    for (c, p) in row.iter().zip(proj.chunks_exact(k)) {
+                        for (o, pj) in out.iter_mut().zip(p) {
+                            *o += c * pj;
+                        }
+                    }
+                }
             }
         }
-        Some(w)
+        LinearValence {
+            sub_nets,
+            limit: proj[..k].to_vec(),
+            k,
+        }
+    }
+
+    /// Weights over the patch net of the point (x, y), written into `w` (length K); `None`
+    /// past the tabulated levels.
+    fn weights_into(&self, basis: &[[f64; 15]; 12], x: f64, y: f64, w: &mut [f64]) -> Option<()> {
+        let (n, sub, s) = match stam_tile(&x, &y, depth_cap(53), 53) {
+            None => {
+                w.copy_from_slice(&self.limit);
+                return Some(());
+            }
+            Some((n, sub, s, _)) => (n, sub, s),
+        };
+        let phi = regular_weights_f64(basis, s.0, s.1);
+        let k = self.k;
+        let base = ((n as usize - 1) * 3 + sub) * 12 * k;
+        let rows = self.sub_nets.get(base..base + 12 * k)?;
+        w.fill(0.0);
+        for (f, row) in phi.iter().zip(rows.chunks_exact(k)) {
+            for (wj, r) in w.iter_mut().zip(row) {
+                *wj += f * r;
+            }
+        }
+        Some(())
     }
 }
 
@@ -89,13 +112,17 @@ fn expansion(table: &PointTable, i: u32) -> Option<Vec<(VertexId, f64)>> {
 }
 
 impl LoopSurface {
-    /// Weights over the patch net at patch coordinates (x, y).
-    fn patch_weights(&self, patch: &Patch, x: f64, y: f64) -> Option<Vec<f64>> {
+    /// Weights over the patch net at patch coordinates (x, y), written into `w` (resized to
+    /// the net's length).
+    fn patch_weights(&self, patch: &Patch, x: f64, y: f64, w: &mut Vec<f64>) -> Option<()> {
         if patch.valence == 6 {
-            return Some(regular_weights_f64(&self.basis_f64, x, y).to_vec());
+            w.clear();
+            w.extend_from_slice(&regular_weights_f64(&self.basis_f64, x, y));
+            return Some(());
         }
         let lin = self.linear_tables()?.get(&patch.valence)?;
-        lin.weights(&self.basis_f64, x, y)
+        w.resize(lin.k, 0.0);
+        lin.weights_into(&self.basis_f64, x, y, w)
     }
 }
 
@@ -180,6 +207,7 @@ impl LinearTarget for LoopSurface {
         }
         let len = verts.len();
         let mut out = vec![0.0; barys.len() * len];
+        let mut w = Vec::new();
         for (bary, row) in barys.iter().zip(out.chunks_mut(len)) {
             let sb = [bary[perm[0]], bary[perm[1]], bary[perm[2]]];
             let (j, x, y) = match &plan {
@@ -189,7 +217,7 @@ impl LinearTarget for LoopSurface {
                 }
                 Plan::Split(_) => split_patch_point(&sb),
             };
-            let w = self.patch_weights(patches.get(j)?, x, y)?;
+            self.patch_weights(patches.get(j)?, x, y, &mut w)?;
             for (wi, e) in w.iter().zip(nets.get(j)?) {
                 for &(l, c) in e {
                     row[l] += wi * c;
@@ -201,5 +229,10 @@ impl LinearTarget for LoopSurface {
 
     fn position(&self, v: VertexId) -> Option<[f64; 3]> {
         self.base.get(v.idx()).copied()
+    }
+
+    /// The per-valence weight tables (Stam's sub-nets composed with the eigen-projection).
+    fn prepare(&self) {
+        let _ = self.linear_tables();
     }
 }

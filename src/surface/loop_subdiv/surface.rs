@@ -710,7 +710,7 @@ impl LoopSurface {
                 Some(
                     self.valence_tables()?
                         .iter()
-                        .map(|(&n, (es, t))| (n, LinearValence::new(es, t.clone())))
+                        .map(|(&n, (es, t))| (n, LinearValence::new(es, t)))
                         .collect(),
                 )
             })
