@@ -824,4 +824,16 @@ mod tests {
         assert!(keys.iter().any(|&x| x > 0));
         assert_eq!(pps.locality_key(FaceId(k.num_faces() as u32)), u32::MAX);
     }
+
+    /// Def. 4.1.1: one p-domain Ω_v per vertex v of K; `contains` is true exactly on them
+    /// (every vertex of the icosahedron, no slot past the last).
+    #[test]
+    fn d4_1_1_pps_contains_exactly_the_vertices_of_k() {
+        let k = validate(&icosahedron()).surface.expect("valid");
+        let pps = Pps::build(&k, &PnTriangles::new(&k), PpsOptions::default());
+        for v in k.vertices() {
+            assert!(pps.contains(v), "vertex {v:?}");
+        }
+        assert!(!pps.contains(VertexId(k.vertex_slots() as u32)));
+    }
 }
