@@ -125,6 +125,20 @@ fn sample_grid(m: u32, profile: Profile) -> Vec<(Sample, [usize; 2])> {
     out
 }
 
+/// The reflection g (bit 0: y ↦ −y, bit 1: x ↦ −x) on the Bézier index c = j·(l+1) + k of
+/// the bi-degree-l tensor basis: y ↦ −y maps B_k to B_{l−k}, x ↦ −x maps B_j to B_{l−j}.
+fn column_action(l: usize, c: usize, g: u8) -> usize {
+    let l1 = l + 1;
+    let (mut j, mut kk) = (c / l1, c % l1);
+    if g & 1 != 0 {
+        kk = l - kk;
+    }
+    if g & 2 != 0 {
+        j = l - j;
+    }
+    j * l1 + kk
+}
+
 /// Orbits of a set (grid samples, or Bézier indices (j, k)) under a group of reflections of
 /// □_v. Group elements are bit masks: bit 0 = y ↦ −y, bit 1 = x ↦ −x.
 struct Orbits {
@@ -237,16 +251,7 @@ fn factor_degree_with(m: u32, profile: Profile, symmetric: bool) -> DegreeFit {
         let s = at[a * side + b];
         (s != usize::MAX).then_some(s)
     };
-    let col_act = |c: usize, g: u8| -> Option<usize> {
-        let (mut j, mut kk) = (c / l1, c % l1);
-        if g & 1 != 0 {
-            kk = l - kk;
-        }
-        if g & 2 != 0 {
-            j = l - j;
-        }
-        Some(j * l1 + kk)
-    };
+    let col_act = |c: usize, g: u8| Some(column_action(l, c, g));
     let candidates: &[&[u8]] = match (symmetric, m % 2 == 0) {
         (false, _) => &[],
         (true, true) => &[&[0, 1, 2, 3], &[0, 1]],
@@ -423,6 +428,28 @@ fn trivial_group(n: usize, k: usize) -> (&'static [u8], Orbits, Orbits) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Sec. 5.2 (the fit's symmetry reduction): the reflections act on the Bézier indices as
+    /// the group Z₂ × Z₂ (identity fixes every index, g∘h = g xor h) and the orbits accept it,
+    /// so the factorisation uses the blocks instead of falling back to one plain SVD (which
+    /// gives the same A⁺, so only this test sees a wrong action).
+    #[test]
+    fn d5_2_1_reflections_act_on_the_bezier_indices_as_a_group() {
+        for l in 1..=13usize {
+            let count = (l + 1) * (l + 1);
+            for c in 0..count {
+                assert_eq!(column_action(l, c, 0), c, "identity, l={l}, c={c}");
+                for g in 0..4u8 {
+                    for h in 0..4u8 {
+                        let gh = column_action(l, column_action(l, c, h), g);
+                        assert_eq!(gh, column_action(l, c, g ^ h), "l={l}, c={c}, g={g}, h={h}");
+                    }
+                }
+            }
+            let act = |c: usize, g: u8| Some(column_action(l, c, g));
+            assert!(Orbits::new(count, &[0, 1, 2, 3], act).is_some(), "l={l}");
+        }
+    }
 
     /// The symmetry-reduced factorization agrees with one thin SVD of A (rank, κ, A⁺).
     #[test]
