@@ -830,16 +830,35 @@ fn loop_linear_fit_weights_reproduce_s_prime_and_depend_on_the_key_only() {
 
 /// `LOOP-linear-fit`: the PPS built through the tabulated fit (`surface::fit_linear`) has the
 /// control points of the PPS built by sampling S′ (`fit_vertex`), within
-/// 256·ε·‖A⁺‖_∞·Λ·R (Λ = 2, above the largest Σ|wⱼ| the weights test meets).
+/// 256·ε·‖A⁺‖_∞·Λ·R (Λ = 2, above the largest Σ|wⱼ| the weights test meets). Checked with
+/// the paper's labels and with the authors' v′_0 alone (`AuthorsStages::labels`: label i is
+/// K's label i + offset_v), so both paths turn the sectors by the same offset.
 #[test]
 fn loop_linear_fit_equals_sampling_s_prime() {
     use pseudomanifold::surface::fit::factor_degree;
-    use pseudomanifold::surface::{Pps, PpsOptions};
-    for (name, k) in linear_fixtures() {
+    use pseudomanifold::surface::profile::label_offset;
+    use pseudomanifold::surface::{AuthorsStages, Pps, PpsOptions};
+    let labels_only = AuthorsStages {
+        labels: true,
+        ..AuthorsStages::default()
+    };
+    for ((name, k), stages) in linear_fixtures()
+        .into_iter()
+        .flat_map(|f| [(f.clone(), AuthorsStages::default()), (f, labels_only)])
+    {
         let s = LoopSurface::new(&k).expect("Loop surface");
         let opts = PpsOptions::default();
-        let a = Pps::build(&k, &s, opts);
-        let b = Pps::build(&k, &SampledOnly(&s), opts);
+        let turned = k
+            .vertices()
+            .filter(|&v| label_offset(&k, v, stages) != 0)
+            .count();
+        assert_eq!(
+            turned > 0,
+            stages.labels,
+            "{name}: the authors' labels turn no sector"
+        );
+        let a = Pps::build_staged(&k, &s, opts, stages);
+        let b = Pps::build_staged(&k, &SampledOnly(&s), opts, stages);
         let r = radius(&k).max(1.0);
         let (mut worst, mut n) = (0.0f64, 0usize);
         for v in k.vertices() {
@@ -867,7 +886,10 @@ fn loop_linear_fit_equals_sampling_s_prime() {
                 n += 1;
             }
         }
-        println!("{name}: {n} control points, worst |linear − sampled| / bound {worst:.1e}");
+        println!(
+            "{name} ({}): {n} control points ({turned} vertices' labels turned), worst |linear − sampled| / bound {worst:.1e}",
+            if stages.labels { "authors' labels" } else { "paper's labels" }
+        );
         assert!(n > 0, "{name}: nothing compared");
     }
 }
