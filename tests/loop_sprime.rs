@@ -690,7 +690,7 @@ fn weights_deviation(
     for (b, row) in pts.iter().zip(w.chunks(len)) {
         let mut p = [0.0; 3];
         for (wj, &v) in row.iter().zip(&stencil.verts) {
-            let q = s.position(v)?;
+            let q = *s.positions().get(v.idx())?;
             for d in 0..3 {
                 p[d] += wj * q[d];
             }

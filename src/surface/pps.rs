@@ -18,7 +18,8 @@
 
 use super::authors_fit::{fit_vertex_authors, AuthorsDegreeFit};
 use super::consts::{Consts, DegreeConsts};
-use super::fit::{factor_degree, DegreeFit, DegreeFitInfo};
+use super::fit::{factor_degree, sample_set, DegreeFit, DegreeFitInfo, Sample};
+use super::fit_linear::{LinearPlan, SectorMajor};
 use super::profile::{label_offset, AuthorsStages};
 use super::scalar_ext::SurfaceScalar;
 use super::target::TargetSurface;
@@ -115,15 +116,6 @@ impl Pps {
         let mut degs: Vec<u32> = k.vertices().map(|v| k.degree(v)).collect();
         degs.sort_unstable();
         degs.dedup();
-        let factored: Vec<DegreeFit> = degs
-            .par_iter()
-            .map(|&m| factor_degree(m, options.profile))
-            .collect();
-        let maxd = degs.last().copied().unwrap_or(3) as usize;
-        let mut half_by_degree = vec![0.0; maxd + 1];
-        for f in &factored {
-            half_by_degree[f.info.m as usize] = f.info.half_side;
-        }
         // Storage order of the patches: breadth-first over the edges of K, so that the patches
         // of neighbouring vertices (the ψ_u one θ_v needs) are close in memory whatever the
         // vertex numbering of the input (`rank` also orders batch evaluation).
@@ -166,6 +158,53 @@ impl Pps {
                 slot[v.idx()] = Some(a);
                 rest = b;
             }
+        }
+        // Targets linear in the positions (the Loop S′; not with the authors' fit): the part of
+        // their fit that needs no A⁺ (stencils and weights, `fit_linear`) runs beside the
+        // factorisations, where the largest degree's otherwise keeps one thread alone.
+        let lin = target.linear().filter(|_| !stages.normal_equations);
+        let planned: Vec<(usize, VertexId, u32)> = match lin {
+            Some(_) => degs
+                .iter()
+                .enumerate()
+                .flat_map(|(fi, &m)| {
+                    let (degree, offset) = (&degree, &offset);
+                    let (patch_off, patch_end) = (&patch_off, &patch_end);
+                    order
+                        .iter()
+                        .filter(move |v| {
+                            degree[v.idx()] == m && patch_end[v.idx()] > patch_off[v.idx()]
+                        })
+                        .map(move |&v| (fi, v, offset[v.idx()]))
+                })
+                .collect(),
+            None => Vec::new(),
+        };
+        let ((factored, major), plan): ((Vec<DegreeFit>, Vec<Option<SectorMajor>>), _) =
+            rayon::join(
+                || {
+                    degs.par_iter()
+                        .map(|&m| {
+                            let f = factor_degree(m, options.profile);
+                            let major = lin.is_some().then(|| SectorMajor::new(&f));
+                            (f, major)
+                        })
+                        .unzip()
+                },
+                || {
+                    lin.map(|lin| {
+                        let samples: Vec<(u32, Vec<Sample>)> = degs
+                            .iter()
+                            .map(|&m| (m, sample_set(m, options.profile)))
+                            .collect();
+                        LinearPlan::new(k, lin, &samples, &planned)
+                    })
+                },
+            );
+        let maxd = degs.last().copied().unwrap_or(3) as usize;
+        let mut half_by_degree = vec![0.0; maxd + 1];
+        for f in &factored {
+            half_by_degree[f.info.m as usize] = f.info.half_side;
         }
         type Batch<'a> = Vec<(VertexId, &'a mut [[f64; 3]])>;
         let mut tasks: Vec<(&DegreeFit, Batch)> = Vec::new();
@@ -211,9 +250,9 @@ impl Pps {
                     }
                 }
             });
-        } else if let Some(lin) = target.linear() {
-            // Targets linear in the positions (the Loop S′): one matrix per local
-            // combinatorics (`fit_linear`); what it cannot serve samples S′.
+        } else if let (Some(lin), Some(plan)) = (lin, &plan) {
+            // Targets linear in the positions (the Loop S′): one weight matrix per local
+            // combinatorics (`fit_linear`, planned above); what it cannot serve samples S′.
             let offset = &offset;
             let jobs: Vec<(usize, super::fit_linear::Job)> = tasks
                 .into_iter()
@@ -227,7 +266,7 @@ impl Pps {
                         .map(move |(v, out)| (fi, (v, offset[v.idx()], out)))
                 })
                 .collect();
-            let rest = super::fit_linear::fit_linear(k, lin, &factored, jobs);
+            let rest = plan.apply(lin, &factored, &major, jobs);
             rest.into_par_iter().for_each(|(fi, (v, off, out))| {
                 fit_vertex(k, target, v, off, &factored[fi], out);
             });

@@ -119,8 +119,8 @@ pub trait LinearTarget: Sync {
         verts: &[VertexId],
         barys: &[[f64; 3]],
     ) -> Option<Vec<f64>>;
-    /// The position of a vertex of K.
-    fn position(&self, v: VertexId) -> Option<[f64; 3]>;
+    /// The positions of K's vertices, indexed by [`VertexId`].
+    fn positions(&self) -> &[[f64; 3]];
     /// Builds what [`Self::weights`] needs on first use, so the fit can do it beside other
     /// work (default: nothing).
     fn prepare(&self) {}

@@ -13,7 +13,7 @@
 use super::fast::SubNetTable;
 use super::stam::{depth_cap, regular_weights_f64, stam_tile};
 use super::surface::{plan_of, split_patch_point, LoopSurface, Patch, Plan, PointTable, Stencil};
-use super::topology::{link_from, BaseTopology, Topology};
+use super::topology::link_from;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::surface::target::{FaceStencil, LinearTarget};
 
@@ -143,7 +143,10 @@ impl LinearTarget for LoopSurface {
             return None;
         }
         let [v, a, b] = corners;
-        let ccw = BaseTopology(k).third(v, a) == Some(b);
+        // third(v, a) is the entry after a in v's link (`SimplicialSurface::link`).
+        let link = k.link(v);
+        let ia = link.iter().position(|&x| x == a)?;
+        let ccw = link[(ia + 1) % link.len()] == b;
         let order = if ccw { [v, a, b] } else { [v, b, a] };
         let FaceStencil { key, verts } = out;
         verts.clear();
@@ -153,8 +156,11 @@ impl LinearTarget for LoopSurface {
         for j in 0..3 {
             // The ring of order[j] from order[j + 1].
             key.push(k.degree(order[j]));
+            // A ring has no repeated entry (K is simplicial), so its entries can only meet
+            // the corners and the earlier rings.
+            let seen = verts.len();
             for x in link_from(k, order[j], order[(j + 1) % 3])? {
-                let at = match verts.iter().position(|&y| y == x) {
+                let at = match verts[..seen].iter().position(|&y| y == x) {
                     Some(p) => p,
                     None => {
                         verts.push(x);
@@ -227,8 +233,8 @@ impl LinearTarget for LoopSurface {
         out.iter().all(|x| x.is_finite()).then_some(out)
     }
 
-    fn position(&self, v: VertexId) -> Option<[f64; 3]> {
-        self.base.get(v.idx()).copied()
+    fn positions(&self) -> &[[f64; 3]] {
+        &self.base
     }
 
     /// The per-valence weight tables (Stam's sub-nets composed with the eigen-projection).
