@@ -161,7 +161,7 @@ impl Pps {
         }
         // Targets linear in the positions (the Loop S′; not with the authors' fit): the part of
         // their fit that needs no A⁺ (stencils and weights, `fit_linear`) runs beside the
-        // factorisations, where the largest degree's otherwise keeps one thread alone.
+        // factorisations, whose largest degree otherwise keeps one thread busy alone.
         let lin = target.linear().filter(|_| !stages.normal_equations);
         let planned: Vec<(usize, VertexId, u32)> = match lin {
             Some(_) => degs
