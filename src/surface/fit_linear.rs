@@ -558,3 +558,48 @@ fn rows_into<'y, const B: usize>(
     }
     (r0, [yx, yy, yz])
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sector(key: std::ops::Range<usize>, hash: u64) -> Sector {
+        Sector {
+            face: FaceId(0),
+            corners: [VertexId(0); 3],
+            key,
+            verts: 0..0,
+            hash,
+        }
+    }
+
+    /// `LOOP-linear-fit`: a weight matrix is shared by equal keys only. The table looks a key
+    /// up by its hash, computed once per sector, and then compares the keys themselves, so a
+    /// 64-bit hash collision between different keys cannot merge them: planted, three sectors
+    /// with one hash and two distinct keys get two matrices.
+    #[test]
+    fn loop_linear_fit_keys_colliding_in_the_hash_keep_their_own_matrices() {
+        let secs = Sectors {
+            list: vec![sector(0..3, 7), sector(3..6, 7), sector(6..9, 7)],
+            keys: vec![1, 6, 0, 1, 5, 0, 1, 6, 0],
+            verts: Vec::new(),
+        };
+        assert_eq!(secs.key(&secs.list[1]), &[1, 5, 0]);
+        let mut table: HashMap<MatrixKey, usize, BuildHasherDefault<WordHash>> = HashMap::default();
+        let ids: Vec<usize> = secs
+            .list
+            .iter()
+            .map(|s| {
+                let next = table.len();
+                let key = MatrixKey {
+                    fit: 0,
+                    sector: 0,
+                    key: secs.key(s),
+                    hash: s.hash,
+                };
+                *table.entry(key).or_insert(next)
+            })
+            .collect();
+        assert_eq!(ids, [0, 1, 0], "keys merged or split wrongly");
+    }
+}
