@@ -707,22 +707,36 @@ fn c3_5_1_measured_threshold_is_the_printed_five_percent_of_the_ring_spacing() {
     }
 }
 
-/// C5.4-regular (measured): each user seed draws its own sample; the per-check seed is
-/// derived injectively (the report prints it), so two seeds differing in the bits the
-/// derivation mixes in do not draw the same points.
+/// Every sampled check of `ppm check --spec` (Ch. 5) draws its own sample for each user seed:
+/// the per-check seeds (the report prints them) are derived injectively, so two user seeds
+/// that differ only in the bits a derivation mixes in (0 and each constant, here) never give
+/// one check the same points.
 #[test]
-fn c5_4_regular_distinct_seeds_draw_distinct_samples() {
+fn x_harness_surface_checks_distinct_seeds_draw_distinct_samples() {
+    use std::collections::BTreeMap;
     let k = surface(&octahedron());
-    let pps = build(&k, Profile::Paper);
-    let seeds: Vec<Option<u64>> = [0u64, 0x1234, 0xffff, 0xedcb]
-        .iter()
-        .map(|&seed| check_regular(&pps, &SurfaceCheckOptions { seed, ..opts() }).seed)
-        .collect();
-    for (i, a) in seeds.iter().enumerate() {
-        assert!(a.is_some(), "no seed reported");
-        for b in &seeds[i + 1..] {
-            assert_ne!(a, b, "two user seeds drew the same sample: {seeds:?}");
+    let user = [0u64, 0x51, 0xc0, 0x1234, 0x6141, 0xffff, 0xedcb];
+    let mut per_check: BTreeMap<String, Vec<u64>> = BTreeMap::new();
+    for seed in user {
+        for r in run_surface_checks(&k, &SurfaceCheckOptions { seed, ..opts() }) {
+            if let Some(s) = r.seed {
+                per_check.entry(r.id).or_default().push(s);
+            }
         }
+    }
+    for id in ["C5.4-regular", "C6.1.4-cover"] {
+        assert!(per_check.contains_key(id), "{id} reported no seed");
+    }
+    for (id, seeds) in &per_check {
+        assert_eq!(seeds.len(), user.len(), "{id}: {seeds:?}");
+        let mut distinct = seeds.clone();
+        distinct.sort_unstable();
+        distinct.dedup();
+        assert_eq!(
+            distinct.len(),
+            seeds.len(),
+            "{id}: two user seeds drew the same sample: {seeds:?}"
+        );
     }
 }
 
