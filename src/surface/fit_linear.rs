@@ -208,8 +208,6 @@ impl LinearPlan {
                 Some(wt)
             })
             .collect();
-        drop(keys);
-        drop(reps);
         LinearPlan {
             verts: verts.iter().map(|&(fi, v, _)| (fi, v)).collect(),
             sectors,

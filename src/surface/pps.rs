@@ -159,24 +159,37 @@ impl Pps {
                 rest = b;
             }
         }
+        // The vertices of each degree (index into `degs`, and so into the fits), in storage
+        // order, in batches.
+        type Batch<'a> = Vec<(VertexId, &'a mut [[f64; 3]])>;
+        let mut tasks: Vec<(usize, Batch)> = Vec::new();
+        for (fi, &m) in degs.iter().enumerate() {
+            let mut cur: Batch = Vec::with_capacity(BATCH);
+            for &v in &order {
+                if degree[v.idx()] != m {
+                    continue;
+                }
+                if let Some(out) = slot[v.idx()].take() {
+                    if !out.is_empty() {
+                        cur.push((v, out));
+                    }
+                }
+                if cur.len() == BATCH {
+                    tasks.push((fi, std::mem::take(&mut cur)));
+                }
+            }
+            if !cur.is_empty() {
+                tasks.push((fi, cur));
+            }
+        }
         // Targets linear in the positions (the Loop S′; not with the authors' fit): the part of
         // their fit that needs no A⁺ (stencils and weights, `fit_linear`) runs beside the
         // factorisations, whose largest degree otherwise keeps one thread busy alone.
         let lin = target.linear().filter(|_| !stages.normal_equations);
         let planned: Vec<(usize, VertexId, u32)> = match lin {
-            Some(_) => degs
+            Some(_) => tasks
                 .iter()
-                .enumerate()
-                .flat_map(|(fi, &m)| {
-                    let (degree, offset) = (&degree, &offset);
-                    let (patch_off, patch_end) = (&patch_off, &patch_end);
-                    order
-                        .iter()
-                        .filter(move |v| {
-                            degree[v.idx()] == m && patch_end[v.idx()] > patch_off[v.idx()]
-                        })
-                        .map(move |&v| (fi, v, offset[v.idx()]))
-                })
+                .flat_map(|(fi, vs)| vs.iter().map(|(v, _)| (*fi, *v, offset[v.idx()])))
                 .collect(),
             None => Vec::new(),
         };
@@ -206,27 +219,6 @@ impl Pps {
         for f in &factored {
             half_by_degree[f.info.m as usize] = f.info.half_side;
         }
-        type Batch<'a> = Vec<(VertexId, &'a mut [[f64; 3]])>;
-        let mut tasks: Vec<(&DegreeFit, Batch)> = Vec::new();
-        for f in &factored {
-            let mut cur: Batch = Vec::with_capacity(BATCH);
-            for &v in &order {
-                if degree[v.idx()] != f.info.m {
-                    continue;
-                }
-                if let Some(out) = slot[v.idx()].take() {
-                    if !out.is_empty() {
-                        cur.push((v, out));
-                    }
-                }
-                if cur.len() == BATCH {
-                    tasks.push((f, std::mem::take(&mut cur)));
-                }
-            }
-            if !cur.is_empty() {
-                tasks.push((f, cur));
-            }
-        }
         if stages.normal_equations {
             // Their fit (normal equations, their samples), vertex by vertex.
             let afits: Vec<(u32, AuthorsDegreeFit)> = degs
@@ -238,8 +230,8 @@ impl Pps {
                     )
                 })
                 .collect();
-            tasks.into_par_iter().for_each(|(fit, mut vs)| {
-                let Some((_, af)) = afits.iter().find(|(m, _)| *m == fit.info.m) else {
+            tasks.into_par_iter().for_each(|(fi, mut vs)| {
+                let Some((_, af)) = afits.iter().find(|(m, _)| Some(m) == degs.get(fi)) else {
                     return;
                 };
                 for (v, out) in vs.iter_mut() {
@@ -256,12 +248,7 @@ impl Pps {
             let offset = &offset;
             let jobs: Vec<(usize, super::fit_linear::Job)> = tasks
                 .into_iter()
-                .flat_map(|(fit, vs)| {
-                    // The index of the task's fit in `factored` (the same degree).
-                    let fi = factored
-                        .iter()
-                        .position(|f| f.info.m == fit.info.m)
-                        .unwrap_or(0);
+                .flat_map(|(fi, vs)| {
                     vs.into_iter()
                         .map(move |(v, out)| (fi, (v, offset[v.idx()], out)))
                 })
@@ -273,7 +260,7 @@ impl Pps {
         } else {
             tasks
                 .into_par_iter()
-                .for_each(|(fit, mut vs)| fit_batch(k, target, fit, &offset, &mut vs));
+                .for_each(|(fi, mut vs)| fit_batch(k, target, &factored[fi], &offset, &mut vs));
         }
         Pps {
             options,
