@@ -634,23 +634,35 @@ fn c3_5_1_c_prime_and_c_second_measured() {
     }
 }
 
+/// C3.5.1's measured checks on the octahedron with ψ_0 replaced by ψ_w (w of the same degree,
+/// chosen by `pick`), over every vertex: θ_0(0) = ψ_w(0) = θ_w(0), two chart centres meeting.
+fn intersections_with_psi_0_of(pick: impl Fn(&Pps) -> VertexId) -> Vec<CheckResult> {
+    let k = surface(&octahedron());
+    let mut pps = build(&k, Profile::Paper);
+    let w = pick(&pps);
+    assert_eq!(pps.degree(w), pps.degree(VertexId(0)));
+    let src: Vec<[f64; 3]> = pps.patch(w).0.to_vec();
+    pps.patch_mut(VertexId(0)).copy_from_slice(&src);
+    check_intersections(&pps, &all_vertices())
+}
+
+/// [`opts`] over every vertex.
+fn all_vertices() -> SurfaceCheckOptions {
+    SurfaceCheckOptions {
+        max_vertices: None,
+        ..opts()
+    }
+}
+
 #[test]
 fn c3_5_1_c_second_planted_fault_caught() {
     // Give vertex 0 the shape function of the opposite vertex (same degree on the
     // octahedron): θ_0(0) = ψ_opp(0) = θ_opp(0) for non-adjacent 0 and opp.
-    let k = surface(&octahedron());
-    let mut pps = build(&k, Profile::Paper);
-    let opposite = pps
-        .vertices()
-        .find(|&w| w != VertexId(0) && pps.label(VertexId(0), w).is_none())
-        .unwrap();
-    let src: Vec<[f64; 3]> = pps.patch(opposite).0.to_vec();
-    pps.patch_mut(VertexId(0)).copy_from_slice(&src);
-    let o = SurfaceCheckOptions {
-        max_vertices: None,
-        ..opts()
-    };
-    let rs = check_intersections(&pps, &o);
+    let rs = intersections_with_psi_0_of(|pps| {
+        pps.vertices()
+            .find(|&w| w != VertexId(0) && pps.label(VertexId(0), w).is_none())
+            .unwrap()
+    });
     assert!(rs.iter().any(|r| r.offenders > 0), "{rs:?}");
 }
 
@@ -659,17 +671,7 @@ fn c3_5_1_c_second_planted_fault_caught() {
 /// domain contains: the check reports a close pair of adjacent charts that is not glued.
 #[test]
 fn c3_5_1_c_prime_planted_fault_caught() {
-    let k = surface(&octahedron());
-    let mut pps = build(&k, Profile::Paper);
-    let w = pps.link(VertexId(0), 0);
-    assert_eq!(pps.degree(w), pps.degree(VertexId(0)));
-    let src: Vec<[f64; 3]> = pps.patch(w).0.to_vec();
-    pps.patch_mut(VertexId(0)).copy_from_slice(&src);
-    let o = SurfaceCheckOptions {
-        max_vertices: None,
-        ..opts()
-    };
-    let rs = check_intersections(&pps, &o);
+    let rs = intersections_with_psi_0_of(|pps| pps.link(VertexId(0), 0));
     let c = rs.iter().find(|r| r.id == "C3.5.1-C'").expect("C'");
     assert!(c.offenders > 0, "{c:?}");
     assert!(
@@ -685,12 +687,8 @@ fn c3_5_1_c_prime_planted_fault_caught() {
 fn c3_5_1_measured_threshold_is_the_printed_five_percent_of_the_ring_spacing() {
     let k = surface(&octahedron());
     let pps = build(&k, Profile::Paper);
-    let o = SurfaceCheckOptions {
-        max_vertices: None,
-        ..opts()
-    };
     let want = 0.05 * 0.9 * 2f64.sqrt() / 4.0;
-    for r in check_intersections(&pps, &o) {
+    for r in check_intersections(&pps, &all_vertices()) {
         let printed = r
             .note
             .split("δ = ")
