@@ -4,7 +4,7 @@
 //! Set-based semantics as in IEEE 1788: an operation returns an interval containing the exact
 //! result for every point of the operands (the empty set stays empty). Pure Rust, no target
 //! feature: the reference `inari` needs AVX/FMA on x86-64 and MPFR for sin, cos, atan2, so it
-//! is only the test reference here (feature `inari`, tests/interval_vs_inari.rs).
+//! is only the test reference here (feature `inari`, tests/chapter4/interval_vs_inari.rs).
 //!
 //! Soundness of each endpoint:
 //! * +, −, ×, ÷, √ are rounded to nearest and then moved one ulp outward unless an error-free

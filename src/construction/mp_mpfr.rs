@@ -1,6 +1,6 @@
 //! The second multi-precision backend [`MpMpfr`]: MPFR through `rug` (feature `mpfr`), kept as
 //! an independent implementation that the default pure-Rust [`super::Mp`] is checked against
-//! (tests/mp_backends.rs). Every operation is correctly rounded (MPFR's guarantee).
+//! (tests/chapter4/mp_backends.rs). Every operation is correctly rounded (MPFR's guarantee).
 
 use super::scalar::Scalar;
 use std::cmp::Ordering;

@@ -1,4 +1,4 @@
-//! Fixtures of the seed-004 tests (`tests/sdiff_spec.rs`, `tests/sdiff_sec6.rs`).
+//! Fixtures of the seed-004 tests (`tests/seeds/sdiff_spec.rs`, `tests/seeds/sdiff_sec6.rs`).
 
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::sdiff::complex::{validate, PlanarComplex};

@@ -4,7 +4,7 @@
 //! the same arithmetic as [`super::stam::extraordinary_jet_as`] and
 //! [`super::stam::regular_point_f64`], without the generic scalar's allocations. Checked
 //! against the generic path (`loop_fast_path_equals_the_generic_evaluation` in
-//! `tests/loop_sprime.rs`).
+//! `tests/surface/loop_sprime.rs`).
 
 use super::eigen::EigenStructure;
 use super::stam::{depth_cap, regular_point_f64, stam_tile};

@@ -8,7 +8,7 @@
 //! (`surface::pps`, the linear path). This module gives that combinatorial key and the
 //! weights; the weights come from the same tables as the f64 hot path (`super::fast`) and are
 //! checked against point evaluation (`loop_linear_weights_reproduce_the_limit_points` in
-//! `tests/loop_sprime.rs`).
+//! `tests/surface/loop_sprime.rs`).
 
 use super::fast::SubNetTable;
 use super::stam::{depth_cap, regular_weights_f64, stam_tile};

@@ -19,7 +19,7 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
 
-mod common;
+use crate::common;
 use common::sdiff::{handles, square};
 
 fn kind(d: &Decision) -> &'static str {

@@ -4,7 +4,7 @@
 //! one rotation of the surface model, a perturbed vertex, a shuffled vertex order) caught or
 //! handled as the report says.
 
-mod common;
+use crate::common;
 
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;

@@ -2,7 +2,7 @@
 //! check of `surface::loop_subdiv::checks` holds), planted faults caught, f64 against MPFR,
 //! valence limits; on the corpus and the authors' Loop tables when `../shared` is present.
 
-mod common;
+use crate::common;
 
 use pseudomanifold::construction::Mp;
 use pseudomanifold::mesh::generate;

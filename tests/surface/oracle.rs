@@ -2,7 +2,7 @@
 //! this crate's f64 path treated as "a faster implementation" and diffed against the MPFR
 //! reference, with a planted sign flip in one rotation that the diff must catch.
 
-mod common;
+use crate::common;
 
 use pseudomanifold::construction::maps::rotate_frac;
 use pseudomanifold::construction::{EdgeConfig, Paper, Ppm, PpmGluing, Scalar, P2};

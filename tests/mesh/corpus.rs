@@ -3,7 +3,7 @@
 //! simplicial isomorphism st(v,K) → T_v; bad ones must be rejected with (at least) the
 //! manifest's error classes.
 
-mod common;
+use crate::common;
 
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::star::check_star_isomorphism;

@@ -1,6 +1,6 @@
 //! Chapter 5 and Sec. 6.1.4: one test per SPEC row (fn names carry the IDs), each check with a
 //! planted fault. Corpus-wide runs use a subset of vertices (`max_vertices`) and few samples.
-mod common;
+use crate::common;
 
 use pseudomanifold::construction::{Mp, PpmGluing, Scalar, P2};
 use pseudomanifold::mesh::generate::{self, icosahedron, octahedron, torus};

@@ -2,7 +2,7 @@
 //! checkers run unchanged on it (Thm. 4.2.1), and the mesh-wide runner on generated, bundled
 //! and corpus meshes.
 
-mod common;
+use crate::common;
 
 use pseudomanifold::conditions::chapter4::{run_chapter4, Ch4Options, Precision};
 use pseudomanifold::construction::abstract_view::AbstractPpm;

@@ -3,7 +3,7 @@
 //! docs/oracle.md "Checked against the authors' implementation"), and exact facts their
 //! tables must satisfy whoever computed them.
 
-mod common;
+use crate::common;
 
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;

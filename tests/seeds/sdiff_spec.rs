@@ -12,7 +12,7 @@ use pseudomanifold::sdiff::positivity::{decide, Budget, Decision, Strictness};
 use pseudomanifold::sdiff::{interval, iso};
 use std::path::Path;
 
-mod common;
+use crate::common;
 use common::sdiff::{data, handles, square};
 
 fn load(name: &str) -> (PlanarComplex, params::MapSpec, ComplexMap) {

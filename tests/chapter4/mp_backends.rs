@@ -15,7 +15,7 @@
 
 #![cfg(feature = "mpfr")]
 
-mod common;
+use crate::common;
 
 use pseudomanifold::construction::maps::{g_v, g_v_inv};
 use pseudomanifold::construction::{Mp, MpMpfr, PpmGluing, Scalar, Trit, P2};

@@ -1,7 +1,7 @@
 //! The tutorial's (σ, v)-indexed construction (seed 002, Parts IV–V): SPEC rows `SV-…`, each
 //! with its planted faults. Fast fixtures by default; the good corpus when ../shared exists.
 
-mod common;
+use crate::common;
 
 use pseudomanifold::construction::maps::{in_omega_uw, EdgeConfig, P2};
 use pseudomanifold::construction::sigma_v::checks::*;
@@ -441,7 +441,7 @@ fn sv_h_consequence_condition_c_fails_where_declared_empty_pairs_meet() {
 }
 
 /// Timing probe for SPEC `SV-bench` (the bench proper is `benches/sigma_v.rs`): run with
-/// `PPM_SV_BENCH_MESH=../shared/meshes/good/koala.obj cargo test --test sigma_v -- --ignored`.
+/// `PPM_SV_BENCH_MESH=../shared/meshes/good/koala.obj cargo test --test surface sigma_v:: -- --ignored`.
 #[test]
 #[ignore]
 fn sv_bench_timing_probe() {

@@ -1,0 +1,12 @@
+//! Integration tests, one binary per theme (each test binary links the whole crate, so
+//! fewer binaries build faster): Chapter 4: the maps, the mesh-wide runs, the certificate provers, the multi-precision backends.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod certify_provers;
+mod construction_explore;
+mod construction_maps;
+mod construction_mesh;
+mod interval_vs_inari;
+mod mp_backends;

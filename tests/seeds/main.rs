@@ -1,0 +1,10 @@
+//! Integration tests, one binary per theme (each test binary links the whole crate, so
+//! fewer binaries build faster): Seeds 003 (manifold splines) and 004 (simplicial diffeomorphisms).
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod msplines;
+mod sdiff_3d;
+mod sdiff_sec6;
+mod sdiff_spec;

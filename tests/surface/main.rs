@@ -1,0 +1,14 @@
+//! Integration tests, one binary per theme (each test binary links the whole crate, so
+//! fewer binaries build faster): Chapters 5–6, Loop S′, the (σ, v) construction, rendering, the oracle, the authors' tables, SPEC sync.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod authors_code;
+mod loop_sprime;
+mod oracle;
+mod oracle_surface;
+mod render;
+mod sigma_v;
+mod spec_sync;
+mod surface_spec;
