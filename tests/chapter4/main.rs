@@ -8,5 +8,6 @@ mod certify_provers;
 mod construction_explore;
 mod construction_maps;
 mod construction_mesh;
+mod errata_domain;
 mod interval_vs_inari;
 mod mp_backends;
