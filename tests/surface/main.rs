@@ -5,6 +5,7 @@
 mod common;
 
 mod authors_code;
+mod docs_pictures;
 mod loop_sprime;
 mod oracle;
 mod oracle_surface;
