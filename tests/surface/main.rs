@@ -10,6 +10,7 @@ mod loop_sprime;
 mod oracle;
 mod oracle_surface;
 mod render;
+mod sample_curvature;
 mod sigma_v;
 mod spec_sync;
 mod surface_spec;
