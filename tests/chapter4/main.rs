@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod cert_docs;
 mod certify_provers;
 mod construction_explore;
 mod construction_maps;
