@@ -110,6 +110,7 @@ pub mod exact;
 pub mod gluing;
 pub mod mesh;
 pub mod msplines;
+pub mod numeric;
 pub mod oracle;
 pub mod render;
 pub mod report;

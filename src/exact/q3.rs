@@ -12,8 +12,7 @@ use std::cmp::Ordering;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
 
-/// A rational number (shorthand).
-pub type Q = BigRational;
+pub use crate::numeric::Q;
 
 /// `n/d` as a [`Q`]; `d` must be non-zero (callers pass literals).
 pub fn q(n: i64, d: i64) -> Q {

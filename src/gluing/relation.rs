@@ -156,25 +156,17 @@ pub fn check_equivalence(g: &Exact1d, s: &GridSample) -> CheckResult {
 pub fn classes(g: &Exact1d, s: &GridSample) -> Vec<Vec<Tagged>> {
     let index: BTreeMap<&Tagged, usize> =
         s.points.iter().enumerate().map(|(n, p)| (p, n)).collect();
-    let mut parent: Vec<usize> = (0..s.points.len()).collect();
-    fn find(parent: &mut [usize], mut a: usize) -> usize {
-        while parent[a] != a {
-            parent[a] = parent[parent[a]];
-            a = parent[a];
-        }
-        a
-    }
+    let mut sets = crate::numeric::UnionFind::new(s.points.len());
     for (n, p) in s.points.iter().enumerate() {
         for q in successors(g, p) {
             if let Some(&m) = index.get(&q) {
-                let (a, b) = (find(&mut parent, n), find(&mut parent, m));
-                parent[a] = b;
+                sets.union(n, m);
             }
         }
     }
     let mut groups: BTreeMap<usize, Vec<Tagged>> = BTreeMap::new();
     for (n, p) in s.points.iter().enumerate() {
-        let root = find(&mut parent, n);
+        let root = sets.find(n);
         groups.entry(root).or_default().push(p.clone());
     }
     groups.into_values().collect()

@@ -14,7 +14,6 @@ pub mod load;
 pub mod raw;
 pub mod star;
 pub mod validate;
-pub mod vec3;
 
 pub use error::{Location, MeshError};
 pub use halfedge::SimplicialSurface;

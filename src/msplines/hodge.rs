@@ -12,19 +12,7 @@ use nalgebra::DMatrix;
 
 type V3 = [f64; 3];
 
-fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
+use crate::numeric::vec3::{cross, dot, sub};
 
 /// Geometry of one face: edge vectors e1 = x1 − x0, e2 = x2 − x0, unit normal, area.
 #[derive(Debug, Clone, Copy)]

@@ -9,8 +9,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-/// An exact rational.
-pub type Q = BigRational;
+pub use crate::numeric::Q;
 /// A point of ℚ².
 pub type Q2 = [Q; 2];
 

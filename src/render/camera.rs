@@ -5,7 +5,7 @@
 //! World "up" is +y (the convention of OBJ files); azimuth 0, elevation 0 looks along −z.
 
 use super::error::RenderError;
-use crate::mesh::vec3::{cross, dot, sub};
+use crate::numeric::vec3::{cross, dot, sub};
 
 /// Viewing direction in degrees.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]

@@ -5,7 +5,7 @@
 //! lit side dark; this check reports it with a witness.
 
 use super::scene::Scene;
-use crate::mesh::vec3::{cross, dot, norm, sub};
+use crate::numeric::vec3::{cross, dot, norm, sub};
 use serde::Serialize;
 
 /// The corner where the normal and the triangle disagree most.

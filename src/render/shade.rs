@@ -2,7 +2,7 @@
 //! lights the base colour with a Lambert term for a light above and to the left of the viewer;
 //! a face turned away from the light (or a normal of the wrong sign) is dark.
 
-use crate::mesh::vec3::{dot, norm};
+use crate::numeric::vec3::{dot, norm};
 
 /// Fraction of light that reaches every point.
 pub const AMBIENT: f64 = 0.25;

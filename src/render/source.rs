@@ -7,8 +7,8 @@
 use super::error::RenderError;
 use super::scene::Scene;
 use crate::mesh::raw::RawMesh;
-use crate::mesh::vec3::{cross, sub};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::vec3::{cross, sub};
 use crate::surface::geometry::{from_derivatives, from_jet, SurfacePoint};
 use crate::surface::jet::Jet2;
 use crate::surface::loop_subdiv::stam::PatchJet;

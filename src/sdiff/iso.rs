@@ -40,20 +40,19 @@ impl Polylines {
     /// (components, closed loops) of the segment graph.
     pub fn topology(&self) -> (usize, usize) {
         let n = self.points.len();
-        let mut parent: Vec<usize> = (0..n).collect();
+        let mut sets = crate::numeric::UnionFind::new(n);
         let mut deg = vec![0usize; n];
         for e in &self.segments {
             deg[e[0]] += 1;
             deg[e[1]] += 1;
-            let (a, b) = (find(&mut parent, e[0]), find(&mut parent, e[1]));
-            parent[a] = b;
+            sets.union(e[0], e[1]);
         }
         let mut comps: HashMap<usize, bool> = HashMap::new();
         for (v, &dv) in deg.iter().enumerate().take(n) {
             if dv == 0 {
                 continue;
             }
-            let r = find(&mut parent, v);
+            let r = sets.find(v);
             let closed = comps.entry(r).or_insert(true);
             if deg[v] != 2 {
                 *closed = false;
@@ -299,20 +298,4 @@ fn crossing_segments(p: &Polylines) -> Vec<(usize, usize)> {
         }
     }
     out
-}
-
-/// Union–find root of x with path compression (the topology of the isocurves and of the
-/// 3-D isosurfaces, `tet_iso`).
-pub(super) fn find(p: &mut [usize], x: usize) -> usize {
-    let mut r = x;
-    while p[r] != r {
-        r = p[r];
-    }
-    let mut y = x;
-    while p[y] != r {
-        let nx = p[y];
-        p[y] = r;
-        y = nx;
-    }
-    r
 }

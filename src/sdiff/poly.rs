@@ -8,11 +8,9 @@
 //! derivatives, composition with an affine map, Bernstein coefficients) are a few dozen lines.
 
 use num_bigint::BigInt;
-use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
-/// A rational number.
-pub type Q = BigRational;
+pub use crate::numeric::Q;
 
 /// `n` as a rational.
 pub fn q(n: i64) -> Q {

@@ -14,7 +14,6 @@
 //! construction with X = id, where it is exact up to the crossing points' rounding (f̂ is linear
 //! on every small tetrahedron).
 
-use super::iso::find;
 use super::poly::{q, to_f64, Q};
 use super::tet::Poly3;
 use super::tet_complex::TetComplex;
@@ -82,7 +81,7 @@ impl TriMesh {
     /// Euler characteristic, components, boundary loops.
     pub fn topology(&self) -> Topology {
         let n = self.points.len();
-        let mut parent: Vec<usize> = (0..n).collect();
+        let mut sets = crate::numeric::UnionFind::new(n);
         let mut used = vec![false; n];
         let mut edges: HashMap<(usize, usize), usize> = HashMap::new();
         for t in &self.triangles {
@@ -90,31 +89,26 @@ impl TriMesh {
                 let (a, b) = (t[k], t[(k + 1) % 3]);
                 used[a] = true;
                 *edges.entry((a.min(b), a.max(b))).or_default() += 1;
-                let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-                parent[ra] = rb;
+                sets.union(a, b);
             }
         }
         let vertices = used.iter().filter(|u| **u).count();
-        let mut roots: Vec<usize> = (0..n)
-            .filter(|&v| used[v])
-            .map(|v| find(&mut parent, v))
-            .collect();
+        let mut roots: Vec<usize> = (0..n).filter(|&v| used[v]).map(|v| sets.find(v)).collect();
         roots.sort_unstable();
         roots.dedup();
         // Boundary loops: components of the graph of boundary edges.
-        let mut bparent: Vec<usize> = (0..n).collect();
+        let mut bsets = crate::numeric::UnionFind::new(n);
         let mut on_boundary = vec![false; n];
         for (&(a, b), &m) in &edges {
             if m == 1 {
                 on_boundary[a] = true;
                 on_boundary[b] = true;
-                let (ra, rb) = (find(&mut bparent, a), find(&mut bparent, b));
-                bparent[ra] = rb;
+                bsets.union(a, b);
             }
         }
         let mut broots: Vec<usize> = (0..n)
             .filter(|&v| on_boundary[v])
-            .map(|v| find(&mut bparent, v))
+            .map(|v| bsets.find(v))
             .collect();
         broots.sort_unstable();
         broots.dedup();

@@ -8,8 +8,8 @@ use super::eval::Chart;
 use super::jet::Jet;
 use super::pps::{Pps, SurfaceError};
 use crate::construction::P2;
-use crate::mesh::vec3::{cross, dot};
 use crate::mesh::{FaceId, VertexId};
+use crate::numeric::vec3::{cross, dot};
 
 /// Point, derivatives and curvature of θ_v at a point of its chart.
 #[derive(Debug, Clone, Copy, PartialEq)]

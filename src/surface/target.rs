@@ -11,8 +11,8 @@
 
 use super::profile::{NormalRule, Profile};
 use crate::construction::Scalar;
-use crate::mesh::vec3::{cross, dot, norm, sub};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::vec3::{cross, dot, norm, sub};
 
 /// Order of the 10 control points of a cubic Bézier triangle: exponents (i, j, k), i + j + k
 /// = 3, of the Bernstein polynomial 3!/(i!j!k!) λ^i ν^j η^k for corners (c₀, c₁, c₂).

@@ -60,7 +60,10 @@ fn curvature_jump(m: &SampledMesh) -> f64 {
     for f in &m.faces {
         for t in 0..3 {
             let (a, b) = (f[t] as usize, f[(t + 1) % 3] as usize);
-            let d = crate::mesh::vec3::norm(crate::mesh::vec3::sub(m.positions[a], m.positions[b]));
+            let d = crate::numeric::vec3::norm(crate::numeric::vec3::sub(
+                m.positions[a],
+                m.positions[b],
+            ));
             let dh = (m.mean[a] - m.mean[b]).abs();
             if dh.is_finite() {
                 s += dh * d;
@@ -93,14 +96,15 @@ pub fn compare(
             hi[d] = hi[d].max(p[d]);
         }
     }
-    let diag = crate::mesh::vec3::norm(crate::mesh::vec3::sub(hi, lo)).max(f64::MIN_POSITIVE);
+    let diag = crate::numeric::vec3::norm(crate::numeric::vec3::sub(hi, lo)).max(f64::MIN_POSITIVE);
     let (mut between, mut vt, mut st) = (Vec::new(), Vec::new(), Vec::new());
     for s in &pat.points {
         let a = pps.eval_f64(s.face, s.bary).map_err(|e| e.to_string())?;
         let b = sv.eval_f64(s.face, s.bary).map_err(|e| e.to_string())?;
         let t = target.eval(s.face, k.face(s.face), s.bary);
-        let d =
-            |x: [f64; 3], y: [f64; 3]| crate::mesh::vec3::norm(crate::mesh::vec3::sub(x, y)) / diag;
+        let d = |x: [f64; 3], y: [f64; 3]| {
+            crate::numeric::vec3::norm(crate::numeric::vec3::sub(x, y)) / diag
+        };
         between.push(d(a, b));
         vt.push(d(a, t));
         st.push(d(b, t));

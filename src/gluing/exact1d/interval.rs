@@ -2,12 +2,10 @@
 //! of the exact 1-D backend. Openness (Def. 3.2.1's "usual" topology) holds by construction:
 //! only open intervals can be represented, so every operation below returns an open set.
 
-use num_rational::BigRational;
 use num_traits::{One, Zero};
 use std::fmt;
 
-/// Exact rational number.
-pub type Q = BigRational;
+pub use crate::numeric::Q;
 
 /// Parse "p", "p/q", "-p/q" or a finite decimal "1.25" into an exact rational.
 pub(crate) fn parse_q(s: &str) -> Option<Q> {

@@ -3,7 +3,7 @@
 
 use super::Ctx;
 use crate::mesh::error::{Location, MeshError};
-use crate::mesh::vec3::{cross, dot, norm, sub};
+use crate::numeric::vec3::{cross, dot, norm, sub};
 
 /// Corners must lie within this fraction of the polygon's bounding-box diagonal from the
 /// plane through their centroid with the Newell normal.

@@ -75,23 +75,15 @@ pub fn link_shape(v: u32, link_edges: &[(u32, u32)]) -> LinkShape {
         return LinkShape::Other;
     }
     // Union-find over link vertices for connectivity.
-    let mut parent: Vec<usize> = (0..verts.len()).collect();
-    fn find(p: &mut [usize], mut x: usize) -> usize {
-        while p[x] != x {
-            p[x] = p[p[x]];
-            x = p[x];
-        }
-        x
-    }
+    let mut sets = crate::numeric::UnionFind::new(verts.len());
     for &(a, b) in &uniq {
         let (ia, ib) = (idx(a), idx(b));
         deg[ia] += 1;
         deg[ib] += 1;
-        let (ra, rb) = (find(&mut parent, ia), find(&mut parent, ib));
-        parent[ra] = rb;
+        sets.union(ia, ib);
     }
-    let root = find(&mut parent, 0);
-    let connected = (0..verts.len()).all(|i| find(&mut parent, i) == root);
+    let root = sets.find(0);
+    let connected = (0..verts.len()).all(|i| sets.find(i) == root);
     if !connected {
         return LinkShape::Other;
     }

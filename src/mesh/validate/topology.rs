@@ -35,27 +35,6 @@ pub struct Orientation {
     pub orientable: bool,
 }
 
-struct Dsu(Vec<u32>);
-impl Dsu {
-    fn new(n: usize) -> Self {
-        Dsu((0..n as u32).collect())
-    }
-    fn find(&mut self, mut x: u32) -> u32 {
-        while self.0[x as usize] != x {
-            let g = self.0[self.0[x as usize] as usize];
-            self.0[x as usize] = g;
-            x = g;
-        }
-        x
-    }
-    fn union(&mut self, a: u32, b: u32) {
-        let (ra, rb) = (self.find(a), self.find(b));
-        if ra != rb {
-            self.0[ra as usize] = rb;
-        }
-    }
-}
-
 /// Orient the active faces consistently by breadth-first search across manifold edges (edges
 /// in exactly two faces). Non-orientable when some edge is forced both ways.
 pub fn orient(raw: &RawMesh, inc: &Incidence) -> (Orientation, CheckResult) {
@@ -133,14 +112,14 @@ pub fn components(
     closed: bool,
 ) -> Vec<Component> {
     let nv = raw.positions.len();
-    let mut dsu = Dsu::new(nv);
+    let mut dsu = crate::numeric::UnionFind::new(nv);
     for (f, t) in raw.faces.iter().enumerate() {
         if inc.active[f] {
-            dsu.union(t[0], t[1]);
-            dsu.union(t[1], t[2]);
+            dsu.union(t[0] as usize, t[1] as usize);
+            dsu.union(t[1] as usize, t[2] as usize);
         }
     }
-    let mut comp: BTreeMap<u32, Component> = BTreeMap::new();
+    let mut comp: BTreeMap<usize, Component> = BTreeMap::new();
     let blank = Component {
         vertices: 0,
         edges: 0,
@@ -151,17 +130,17 @@ pub fn components(
     };
     for v in 0..nv {
         if !inc.faces_of_vertex(v).is_empty() {
-            let root = dsu.find(v as u32);
+            let root = dsu.find(v);
             comp.entry(root).or_insert_with(|| blank.clone()).vertices += 1;
         }
     }
     for &(a, _) in &inc.edges {
-        let root = dsu.find(a);
+        let root = dsu.find(a as usize);
         comp.entry(root).or_insert_with(|| blank.clone()).edges += 1;
     }
     for (f, t) in raw.faces.iter().enumerate() {
         if inc.active[f] {
-            let root = dsu.find(t[0]);
+            let root = dsu.find(t[0] as usize);
             comp.entry(root).or_insert_with(|| blank.clone()).faces += 1;
         }
     }

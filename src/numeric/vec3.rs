@@ -1,5 +1,6 @@
-//! Small f64 vector helpers in R³ (polygon convexity in the readers, PN triangles and surface
-//! normals/curvatures of Ch. 5). Exact predicates live in `validate::predicates`.
+//! Small f64 vector helpers in R³ (polygon convexity in the readers, PN triangles, surface
+//! normals and curvatures of Ch. 5, the renderer). Exact predicates live in
+//! `mesh::validate::predicates`.
 
 /// a − b.
 pub fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
