@@ -1,12 +1,33 @@
 //! Shared vocabulary for the exact replays (proofs/appendix_a1.rs, proofs/eval_c6_1_4.rs):
 //! the maps of Defs. 4.1.6–4.1.8 as polar chains and affine maps, the angular extents of the
-//! disks C, D, F, G, and the triangle configuration with its labels.
+//! disks C, D, F, G, and the triangle configuration with its labels; and, for every proof
+//! target, what a passing check result is ([`assert_holds_for`]).
 #![allow(dead_code)]
+
+use pseudomanifold::report::CheckResult;
 
 use pseudomanifold::exact::plane::{disks, Affine, Disk};
 use pseudomanifold::exact::polar::{Chain, Interval, PMap, Region};
 use pseudomanifold::exact::q3::{q, Q};
 use pseudomanifold::exact::replay::{Expect, Step, StepCheck};
+
+/// [`assert_holds_for`] without a case name.
+#[track_caller]
+pub fn assert_holds(r: &CheckResult) {
+    assert_holds_for("check", r);
+}
+
+/// Panics with the rendered report unless `r` holds on something examined
+/// (`CheckResult::holds_with_evidence`): a skipped check is not a pass. `what` names the case.
+#[track_caller]
+pub fn assert_holds_for(what: &str, r: &CheckResult) {
+    assert!(
+        r.holds_with_evidence(),
+        "{what}: {} should hold on something examined:\n{}",
+        r.id,
+        pseudomanifold::report::render_text(std::slice::from_ref(r))
+    );
+}
 
 /// A triangle [u, w, x] of K, oriented counterclockwise (the orientation of Lemma 4.2.2's
 /// "without loss of generality" and of Sec. 6.1.4's triangle t = (a, b, c)):

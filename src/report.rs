@@ -156,6 +156,17 @@ impl CheckResult {
     pub fn failed(&self) -> bool {
         self.verdict.is_failure()
     }
+
+    /// The meaning of a passing verdict in SPEC.md, "checked and never violated", on
+    /// something: `Holds` or `HoldsRestricted` with at least one element examined. A skipped
+    /// check, a warning, or a `Holds` that examined nothing is not a pass (`!failed()` accepts
+    /// all three).
+    pub fn holds_with_evidence(&self) -> bool {
+        matches!(
+            self.verdict,
+            Verdict::Holds | Verdict::HoldsRestricted { .. }
+        ) && self.examined > 0
+    }
 }
 
 fn is_zero(n: &u64) -> bool {
@@ -209,4 +220,33 @@ pub fn render_text(results: &[CheckResult]) -> String {
         }
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn holds_with_evidence_needs_a_passing_verdict_and_something_examined() {
+        let mut skipped = CheckResult::new("X", "x");
+        skipped.verdict = Verdict::Skipped {
+            reason: "no input".into(),
+        };
+        assert!(!skipped.failed() && !skipped.holds_with_evidence());
+        let empty = CheckResult::new("X", "x");
+        assert_eq!(empty.verdict, Verdict::Holds);
+        assert!(!empty.holds_with_evidence());
+        let mut held = CheckResult::new("X", "x");
+        held.examined = 3;
+        assert!(held.holds_with_evidence());
+        let mut restricted = held.clone();
+        restricted.verdict = Verdict::HoldsRestricted { domain: "d".into() };
+        assert!(restricted.holds_with_evidence());
+        let mut warned = held.clone();
+        warned.verdict = Verdict::Warning;
+        assert!(!warned.holds_with_evidence());
+        let mut failed = held.clone();
+        failed.offend(|| Witness::new("w", serde_json::Value::Null));
+        assert!(failed.failed() && !failed.holds_with_evidence());
+    }
 }

@@ -60,14 +60,7 @@ fn t4_2_1_abstract_checkers_hold_on_the_ppm_of_small_meshes() {
         let k = surface(&m);
         let view = AbstractPpm::new(PpmGluing::new(&k), k.vertices().collect());
         for r in check_all(&view, &cfg) {
-            assert!(
-                !r.failed(),
-                "{name}: {} {}: {:?}",
-                r.id,
-                r.name,
-                r.witnesses.first()
-            );
-            assert!(r.examined > 0, "{name}: {} examined nothing", r.id);
+            common::assert_holds_for(name, &r);
         }
     }
 }
@@ -79,7 +72,7 @@ fn t4_2_1_abstract_checkers_on_a_degree_12_star() {
     let k = surface(&bipyramid(12));
     let view = AbstractPpm::star_of(PpmGluing::new(&k), VertexId(0));
     for r in check_all(&view, &SampleConfig { seed: 11, n: 16 }) {
-        assert!(!r.failed(), "{} {:?}", r.id, r.witnesses.first());
+        common::assert_holds(&r);
     }
 }
 
@@ -207,7 +200,10 @@ fn c5_4_at_most_two_holds_on_bundled_meshes_in_f64_and_mp() {
 
 #[test]
 fn l4_2_2_chapter4_on_every_good_corpus_mesh() {
-    for m in common::corpus().iter().filter(|m| m.good) {
+    for m in common::corpus("l4_2_2_chapter4_on_every_good_corpus_mesh")
+        .iter()
+        .filter(|m| m.good)
+    {
         let raw = read_mesh(&m.path, &ReadOptions::default()).expect("readable");
         let k = surface(&raw);
         let r = run_chapter4(&k, &quick());

@@ -361,14 +361,17 @@ fn compare<A: Exact>(name: &str, k: &SimplicialSurface) -> Outcome {
     o
 }
 
-fn meshes() -> Vec<(String, SimplicialSurface)> {
+fn meshes(test: &str) -> Vec<(String, SimplicialSurface)> {
     let load = |p: &Path| validate(&read_mesh(p, &ReadOptions::default()).ok()?).surface;
     let mut v: Vec<(String, SimplicialSurface)> = common::bundled_good()
         .iter()
         .filter_map(|p| Some((p.file_name()?.to_string_lossy().into_owned(), load(p)?)))
         .collect();
     // The three smallest good corpus meshes (deterministic).
-    let mut corpus: Vec<_> = common::corpus().into_iter().filter(|m| m.good).collect();
+    let mut corpus: Vec<_> = common::corpus(test)
+        .into_iter()
+        .filter(|m| m.good)
+        .collect();
     corpus.sort_by_key(|m| (m.faces, m.file.clone()));
     for m in corpus.into_iter().take(3) {
         if let Some(k) = load(&m.path) {
@@ -386,7 +389,7 @@ fn bk_mp_agree_every_oracle_quantity_at_256_bits() {
     );
     let mut total = 0;
     let mut worst = (0.0, String::new());
-    for (name, k) in meshes() {
+    for (name, k) in meshes("bk_mp_agree_every_oracle_quantity_at_256_bits") {
         let o = compare::<Mp>(&name, &k);
         assert!(o.offences.is_empty(), "{}", o.offences.join("\n"));
         total += o.compared;

@@ -1,12 +1,144 @@
-//! Shared test fixtures: the public mesh corpus in `../shared/meshes/` (present in CI, absent
-//! on a fresh clone, in which case corpus tests print a note and pass vacuously on it — they
-//! also run on the bundled fixtures under `tests/data/`).
+//! Shared test fixtures: the public mesh corpus in `../shared/meshes/` and the authors'
+//! reference tables in `../shared/reference/`, located by [`shared_dir`] (the one rule for
+//! missing data: present in CI, where its absence is an error; absent on a fresh clone, where
+//! the tests that need it skip their corpus part and the binary says how many at exit), and
+//! the bundled fixtures under `tests/data/`, always present.
 
 #![allow(dead_code)]
 
 pub mod sdiff;
 
+use pseudomanifold::report::{CheckResult, Verdict};
+use std::collections::BTreeSet;
+use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, Once};
+
+/// Names of the tests of this binary that skipped their `../shared` part.
+static SKIPPED: Mutex<BTreeSet<String>> = Mutex::new(BTreeSet::new());
+static AT_EXIT: Once = Once::new();
+
+extern "C" {
+    fn atexit(cb: extern "C" fn()) -> i32;
+}
+
+/// Prints the skip count once, at process exit: libtest captures `eprintln!` of passing tests
+/// and prints nothing after its summary, so this is the only line a reader of a fresh clone's
+/// `cargo test` sees about the missing data. Written to fd 2 directly (not captured).
+extern "C" fn print_skips() {
+    let n = SKIPPED
+        .lock()
+        .map_or_else(|e| e.into_inner().len(), |s| s.len());
+    if n > 0 {
+        let _ = writeln!(
+            std::io::stderr(),
+            "note: ../shared/ not found: {n} test{} of this binary skipped {} corpus part \
+             (set PPM_SHARED or clone beside shared/)",
+            if n == 1 { "" } else { "s" },
+            if n == 1 { "its" } else { "their" },
+        );
+    }
+}
+
+/// Where `../shared` would be: `PPM_SHARED` when set (nothing else is tried, so
+/// `PPM_SHARED=/nonexistent` simulates a fresh clone), else `../shared` beside the checkout or
+/// two levels up (a worktree nested in the main checkout's parent).
+fn shared_candidates() -> Vec<PathBuf> {
+    match std::env::var_os("PPM_SHARED") {
+        Some(p) => vec![PathBuf::from(p)],
+        None => {
+            let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+            vec![root.join("../shared"), root.join("../../shared")]
+        }
+    }
+}
+
+/// The `../shared` directory, or None after recording that `test` skipped its corpus part.
+/// With `CI=true` its absence is an error: CI must run every corpus test.
+pub fn shared_dir(test: &str) -> Option<PathBuf> {
+    let candidates = shared_candidates();
+    if let Some(d) = candidates.iter().find(|d| d.is_dir()) {
+        return Some(d.clone());
+    }
+    if std::env::var("CI").is_ok_and(|v| v == "true") {
+        panic!(
+            "{test}: CI needs ../shared beside the clone (or PPM_SHARED); looked in {:?}",
+            candidates
+        );
+    }
+    AT_EXIT.call_once(|| {
+        // SAFETY: registers a plain function with no arguments, as C's atexit expects.
+        let rc = unsafe { atexit(print_skips) };
+        assert_eq!(rc, 0, "atexit failed");
+    });
+    SKIPPED
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .insert(test.to_string());
+    None
+}
+
+/// `rel` inside `../shared`, or None (skip recorded) when `../shared` is absent. A present
+/// `../shared` without `rel` is an error, not a skip: the data is incomplete.
+pub fn shared_path(test: &str, rel: &str) -> Option<PathBuf> {
+    let p = shared_dir(test)?.join(rel);
+    assert!(
+        p.exists(),
+        "{test}: {} is missing from ../shared",
+        p.display()
+    );
+    Some(p)
+}
+
+/// [`assert_holds`] with the case named in the message (a mesh, a parameter set).
+#[track_caller]
+pub fn assert_holds_for(what: &str, r: &CheckResult) {
+    assert!(
+        r.holds_with_evidence(),
+        "{what}: {} should hold on something examined:\n{}",
+        r.id,
+        pseudomanifold::report::render_text(std::slice::from_ref(r))
+    );
+}
+
+/// Every result holds on something ([`assert_holds`]) except those named in `skipped`, which
+/// must each be present and `Skipped` (a precondition the input legitimately lacks). Lists every
+/// departure at once.
+#[track_caller]
+pub fn assert_hold_except_skipped(what: &str, rs: &[CheckResult], skipped: &[&str]) {
+    let wrong: Vec<&CheckResult> = rs
+        .iter()
+        .filter(|r| {
+            if skipped.contains(&r.id.as_str()) {
+                !matches!(r.verdict, Verdict::Skipped { .. })
+            } else {
+                !r.holds_with_evidence()
+            }
+        })
+        .collect();
+    let missing: Vec<&&str> = skipped
+        .iter()
+        .filter(|id| !rs.iter().any(|r| r.id == **id))
+        .collect();
+    assert!(
+        wrong.is_empty() && missing.is_empty(),
+        "{what}: expected every result to hold on something, skipped exactly {skipped:?}; \
+         missing {missing:?}; departures:\n{}",
+        pseudomanifold::report::render_text(&wrong.into_iter().cloned().collect::<Vec<_>>())
+    );
+}
+
+/// Panics with the rendered report unless `r` holds on something: a skipped check, or one that
+/// examined nothing, is not a pass ([`CheckResult::holds_with_evidence`]).
+#[track_caller]
+pub fn assert_holds(r: &CheckResult) {
+    assert!(
+        r.holds_with_evidence(),
+        "{} should hold on something examined:\n{}",
+        r.id,
+        pseudomanifold::report::render_text(std::slice::from_ref(r))
+    );
+}
 
 /// One row of `../shared/meshes/manifest.tsv`.
 #[derive(Debug, Clone)]
@@ -22,20 +154,18 @@ pub struct CorpusMesh {
     pub error_classes: Vec<String>,
 }
 
-pub fn corpus_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes")
+/// `../shared/meshes`, or None (skip recorded for `test`) when `../shared` is absent.
+pub fn corpus_dir(test: &str) -> Option<PathBuf> {
+    let manifest = shared_path(test, "meshes/manifest.tsv")?;
+    Some(manifest.parent().expect("meshes/").to_path_buf())
 }
 
-/// Every mesh of the corpus, or an empty list (with a note on stderr) when it is absent.
-pub fn corpus() -> Vec<CorpusMesh> {
-    let dir = corpus_dir();
-    let text = match std::fs::read_to_string(dir.join("manifest.tsv")) {
-        Ok(t) => t,
-        Err(_) => {
-            eprintln!("note: {} not present; corpus tests skipped", dir.display());
-            return vec![];
-        }
+/// Every mesh of the corpus, or an empty list (skip recorded for `test`) when it is absent.
+pub fn corpus(test: &str) -> Vec<CorpusMesh> {
+    let Some(dir) = corpus_dir(test) else {
+        return vec![];
     };
+    let text = std::fs::read_to_string(dir.join("manifest.tsv")).expect("manifest.tsv");
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap_or("").split('\t').collect();
     let col = |name: &str| header.iter().position(|h| *h == name).expect(name);

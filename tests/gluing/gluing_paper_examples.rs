@@ -1,6 +1,8 @@
 //! App. A.2's counterexamples and their repairs, read from `examples/gluing/*.toml` and decided
 //! by the exact 1-D backend; plus the `ppm gluing` command on them.
 
+use crate::common;
+
 use pseudomanifold::gluing::exact1d::data::q;
 use pseudomanifold::gluing::exact1d::decide::{self, check_4_with_radii};
 use pseudomanifold::gluing::exact1d::Exact1d;
@@ -43,11 +45,7 @@ fn ca_2_line_counterexample_fails_3c_with_witness_half() {
         "D3.4.1(3b)",
         "D3.4.1(4)",
     ] {
-        assert!(
-            !by_id(&rs, id).failed(),
-            "{id} should hold: {:?}",
-            by_id(&rs, id)
-        );
+        common::assert_holds(by_id(&rs, id));
     }
     let c = by_id(&rs, "D3.4.1(3c)");
     assert!(c.failed());
@@ -86,7 +84,7 @@ fn ca_2_line_relation_half_related_to_nine_halves_related_to_seventeen_halves_no
 fn ca_2_gh_holds_on_line_counterexample_so_it_is_weaker_than_3c() {
     let g = load("line_counterexample");
     let gh = decide::check_grimm_hughes(&g, false);
-    assert!(!gh.failed(), "{gh:?}");
+    common::assert_holds(&gh);
     assert!(gh.examined > 0);
     assert!(decide::check_3c(&g).failed());
 }
@@ -123,7 +121,7 @@ fn ca_2_line_repaired_satisfies_everything() {
     rs.push(check_equivalence(&g, &s));
     rs.push(check_claim(&g, &s));
     for r in &rs {
-        assert!(!r.failed(), "{r:?}");
+        common::assert_holds(&r);
         assert!(r.examined > 0, "{} examined nothing", r.id);
     }
     assert!(related(&g, &(1, q(1, 2)), &(3, q(17, 2))));
@@ -140,22 +138,22 @@ fn ca_2_fork_fails_only_4_with_witness_minus_two_two() {
             assert_eq!((w["i"].as_u64(), w["j"].as_u64()), (Some(1), Some(2)));
             assert_eq!((w["x"].as_str(), w["y"].as_str()), (Some("-2"), Some("2")));
         } else {
-            assert!(!r.failed(), "{r:?}");
+            common::assert_holds(&r);
         }
     }
     let s = GridSample::new(&g, 24);
-    assert!(!check_equivalence(&g, &s).failed());
-    assert!(!check_claim(&g, &s).failed());
+    common::assert_holds(&check_equivalence(&g, &s));
+    common::assert_holds(&check_claim(&g, &s));
 }
 
 #[test]
 fn ca_2_fork_repaired_holds_with_radii_half_half() {
     let g = load("fork_repaired");
     for r in decide::check_all(&g) {
-        assert!(!r.failed(), "{r:?}");
+        common::assert_holds(&r);
     }
     let (r, seps) = check_4_with_radii(&g);
-    assert!(!r.failed());
+    common::assert_holds(&r);
     let s = seps
         .iter()
         .find(|s| s.i == 1 && s.j == 2)
@@ -173,7 +171,7 @@ fn d3_4_1_circles_from_two_and_three_intervals_satisfy_everything() {
         rs.push(check_equivalence(&g, &s));
         rs.push(check_claim(&g, &s));
         for r in &rs {
-            assert!(!r.failed(), "{name}: {r:?}");
+            common::assert_holds_for(name, r);
         }
         assert_eq!(g.k().len(), if name == "circle2" { 4 } else { 9 });
     }

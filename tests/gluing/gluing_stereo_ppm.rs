@@ -1,6 +1,8 @@
 //! Sec. 3.3's stereographic atlas of Sⁿ (n = 1, 2) in the sampled backend, and Def. 3.5.1 /
 //! Prop. 3.5.1 (parametric pseudo-manifolds) on it and on the exact circle.
 
+use crate::common;
+
 use pseudomanifold::gluing::data::Idx;
 use pseudomanifold::gluing::exact1d::Exact1d;
 use pseudomanifold::gluing::file::read_gluing_file;
@@ -36,7 +38,7 @@ fn d3_3_3_stereographic_atlas_is_an_atlas_n1_n2() {
     for n in [1, 2] {
         let mut rng = ChaCha8Rng::seed_from_u64(3);
         let r = check_atlas(n, inversion, 2000, &mut rng, 3);
-        assert!(!r.failed(), "{r:?}");
+        common::assert_holds(&r);
         assert_eq!(r.examined, 2000);
         // Planted: the wrong transition u/‖u‖ is caught.
         let bad = |u: &[f64]| {
@@ -114,16 +116,15 @@ fn c3_4_1_sphere_two_discs_glued_along_annulus_satisfy_def_3_4_1() {
     let cfg = SampleConfig { seed: 1, n: 300 };
     let s1 = StereoSphere::<1>::new(2.0);
     for r in sampled::check_all(&s1, &cfg) {
-        assert!(!r.failed(), "S¹: {r:?}");
-        assert!(r.examined > 0, "S¹ {} examined nothing", r.id);
+        common::assert_holds_for("S¹", &r);
     }
     let s2 = StereoSphere::<2>::new(2.0);
     for r in sampled::check_all(&s2, &cfg) {
-        assert!(!r.failed(), "S²: {r:?}");
-        assert!(r.examined > 0, "S² {} examined nothing", r.id);
+        common::assert_holds_for("S²", &r);
     }
     let (r, seps) = sampled::hausdorff::check_4_with_radii(&s2, &cfg);
-    assert!(!r.failed() && !seps.is_empty());
+    common::assert_holds(&r);
+    assert!(!seps.is_empty());
     // Limits of the inner boundary ‖u‖ = 1/2 land on ‖v‖ = 2 = ∂Ω_2, far from every y on
     // ‖v‖ = 1/2: the radii found are large, not a numerical accident.
     assert!(
@@ -141,7 +142,7 @@ fn d3_4_1_4_sampled_planted_shrunk_annulus_is_not_hausdorff() {
     let mut s2 = StereoSphere::<2>::new(2.0);
     s2.glue_outer = 1.5;
     caught(&sampled::check_4(&s2, &cfg), "not_separated");
-    assert!(!sampled::check_3c(&s2, &cfg).failed());
+    common::assert_holds(&sampled::check_3c(&s2, &cfg));
 }
 
 #[test]
@@ -149,7 +150,7 @@ fn d3_5_1_c_stereographic_ppm_and_planted_wrong_parametrization() {
     let cfg = SampleConfig { seed: 4, n: 300 };
     let s2 = StereoSphere::<2>::new(2.0);
     let r = check_c(&s2, |i, p| s2.theta(i, p), &cfg);
-    assert!(!r.failed(), "{r:?}");
+    common::assert_holds(&r);
     assert!(r.examined > 100 && r.worst_deviation.is_some() && r.tolerance.is_some());
     // Planted: θ_2 = φ_N⁻¹ as well (wrong chart).
     let wrong = |i: Idx, p: &[f64; 2]| phi_north_inv(&s2.local(i, p));
@@ -161,7 +162,7 @@ fn d3_5_1_c_prime_measured_on_stereo_and_planted_partial_gluing() {
     let cfg = SampleConfig { seed: 5, n: 200 };
     let s1 = StereoSphere::<1>::new(2.0);
     let r = check_c_prime(&s1, |i, p| s1.theta(i, p), &cfg);
-    assert!(!r.failed(), "{r:?}");
+    common::assert_holds(&r);
     // The measured gap is positive (θ_1 of the unglued cap stays away from θ_2(Ω_2)).
     assert!(r.worst_deviation.unwrap_or(0.0) > r.tolerance.unwrap_or(1.0));
     // Planted: glue only part of the overlap; θ_1(Ω_1) ∩ θ_2(Ω_2) is larger than θ_1(Ω_12).
@@ -195,7 +196,7 @@ fn d3_5_1_c_second_measured_and_planted_overlapping_unglued_charts() {
         }
     };
     let r = check_c_second(&g, apart, &cfg);
-    assert!(!r.failed() && r.examined > 0, "{r:?}");
+    common::assert_holds(&r);
     assert!(
         (r.worst_deviation.unwrap_or(0.0) - 1.0).abs() < 1e-9,
         "gap is the segments' distance 1: {r:?}"
@@ -221,8 +222,8 @@ fn circle_theta(i: Idx, x: f64) -> Vec<f64> {
 fn d3_5_1_c_and_c_prime_hold_for_the_exact_circle_in_r2() {
     let g = load("circle3");
     let cfg = SampleConfig { seed: 8, n: 200 };
-    assert!(!check_c(&g, |i, p| circle_theta(i, p[0]), &cfg).failed());
-    assert!(!check_c_prime(&g, |i, p| circle_theta(i, p[0]), &cfg).failed());
+    common::assert_holds(&check_c(&g, |i, p| circle_theta(i, p[0]), &cfg));
+    common::assert_holds(&check_c_prime(&g, |i, p| circle_theta(i, p[0]), &cfg));
 }
 
 #[test]
@@ -247,7 +248,8 @@ fn c3_5_1_overlap_c_implies_equal_images_of_gluing_domains() {
 fn p3_5_1_theta_factors_through_m_g_and_planted_inconsistent_theta() {
     let g = load("circle3");
     let r = check_p3_5_1(&g, circle_theta, 24);
-    assert!(!r.failed() && r.examined > 50, "{r:?}");
+    common::assert_holds(&r);
+    assert!(r.examined > 50, "{r:?}");
     // Planted: θ_3 rotated — violates (C), so Θ is not well defined on M_G.
     let bad = |i: Idx, x: f64| {
         if i == 3 {

@@ -361,7 +361,13 @@ fn x_adv_06_too_few_samples_is_not_a_failure_r_few_samples() {
         assert!(r.inconclusive.is_none());
         for id in ["P4.1.3", "P4.2.1"] {
             let c = r.checks.iter().find(|c| c.id == id).expect(id);
-            assert!(!c.failed(), "{id} at --samples {samples}: {:?}", c.verdict);
+            // Too few samples: inconclusive (skipped) or holding on what was sampled, never
+            // a failure (R-few-samples).
+            assert!(
+                c.holds_with_evidence() || matches!(c.verdict, Verdict::Skipped { .. }),
+                "{id} at --samples {samples}: {:?}",
+                c.verdict
+            );
         }
         let c = r.checks.iter().find(|c| c.id == "P4.1.3").expect("P4.1.3");
         if samples == 1 {

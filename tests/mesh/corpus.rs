@@ -12,7 +12,10 @@ use pseudomanifold::report::Verdict;
 
 #[test]
 fn d3_1_6_corpus_good_meshes_are_simplicial_surfaces_and_d4_1_4_labels_hold() {
-    for m in common::corpus().iter().filter(|m| m.good) {
+    for m in common::corpus("d3_1_6_corpus_good_meshes")
+        .iter()
+        .filter(|m| m.good)
+    {
         let raw = read_mesh(&m.path, &ReadOptions::default()).expect("readable");
         assert_eq!(raw.positions.len() as u64, m.vertices, "{}", m.file);
         assert_eq!(raw.faces.len() as u64, m.faces, "{}", m.file);
@@ -52,7 +55,10 @@ fn d3_1_6_corpus_good_meshes_are_simplicial_surfaces_and_d4_1_4_labels_hold() {
 
 #[test]
 fn d3_1_6_corpus_bad_meshes_are_rejected_with_their_classes() {
-    for m in common::corpus().iter().filter(|m| !m.good) {
+    for m in common::corpus("d3_1_6_corpus_bad_meshes")
+        .iter()
+        .filter(|m| !m.good)
+    {
         let raw = read_mesh(&m.path, &ReadOptions::default()).expect("readable");
         let v = validate(&raw);
         assert!(!v.report.is_simplicial_surface, "{}", m.file);
@@ -79,11 +85,11 @@ fn d3_1_6_corpus_bad_meshes_are_rejected_with_their_classes() {
 fn d3_1_3_ii_degtri_sliding_overlap_witness() {
     // A concrete extra finding, checked by hand: faces 0 = (4,-2),(6,0),(4,0) and
     // 6 = (3,0),(5,0),(3,2) lie in z = 0 and their edges overlap on [4,5] × {0}.
-    let path = common::corpus_dir().join("bad/degtri_sliding.off");
-    let Ok(raw) = read_mesh(&path, &ReadOptions::default()) else {
-        eprintln!("note: corpus absent; skipped");
+    let Some(dir) = common::corpus_dir("d3_1_3_ii_degtri_sliding_overlap_witness") else {
         return;
     };
+    let raw = read_mesh(&dir.join("bad/degtri_sliding.off"), &ReadOptions::default())
+        .expect("corpus degtri_sliding.off reads");
     let v = validate(&raw);
     let c = v
         .report

@@ -2,6 +2,8 @@
 //! `tests/data/fuzz-regressions/` (file name = `<target>-<what>.bin`, the raw libFuzzer input),
 //! plus the checker bugs the randomized surfaces found. These always run (no nightly needed).
 
+use crate::common;
+
 use pseudomanifold::construction::checks::{check_l4_2_4, check_p4_1_1_guw_smooth};
 use pseudomanifold::construction::{EdgeConfig, Paper};
 use pseudomanifold::gluing::exact1d::{decide, Exact1d};
@@ -204,7 +206,7 @@ fn p4_1_1_random_surfaces_restricted_holds_for_high_degree() {
     ] {
         let e = EdgeConfig::new(cfg.0, cfg.1, cfg.2, cfg.3).expect("valid");
         let r = check_p4_1_1_guw_smooth::<f64, _>(&Paper, &e, seed, 240, 53);
-        assert!(!r[1].failed(), "{e:?}: {:?}", r[1].witnesses.first());
+        common::assert_holds(&r[1]);
         if cfg.0 % 6 == 0 {
             assert!(
                 matches!(r[0].verdict, Verdict::Holds),

@@ -1,26 +1,18 @@
 //! Reads every mesh of the shared corpus (`../shared/meshes/`, next to the crate) and checks
 //! the vertex and face counts against the `V` and `F` columns of its manifest.tsv. Skipped with
-//! a note when the corpus is absent.
+//! a note at exit when the corpus is absent (`common::shared_dir`).
 
 use std::collections::BTreeSet;
-use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use crate::common;
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
-
-fn corpus() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes");
-    if dir.join("manifest.tsv").is_file() {
-        Some(dir)
-    } else {
-        eprintln!("note: {} not found; corpus test skipped", dir.display());
-        None
-    }
-}
 
 #[test]
 fn corpus_counts_match_manifest() {
-    let Some(dir) = corpus() else { return };
+    let Some(dir) = common::corpus_dir("corpus_counts_match_manifest") else {
+        return;
+    };
     let manifest = std::fs::read_to_string(dir.join("manifest.tsv")).unwrap();
     let mut lines = manifest.lines();
     let head: Vec<&str> = lines.next().unwrap().split('\t').collect();
@@ -56,7 +48,9 @@ fn corpus_counts_match_manifest() {
 /// Timing of the largest corpus mesh; printed, not asserted (run with `--release --nocapture`).
 #[test]
 fn koala_read_time() {
-    let Some(dir) = corpus() else { return };
+    let Some(dir) = common::corpus_dir("koala_read_time") else {
+        return;
+    };
     let path = dir.join("good/koala.obj");
     let mut best = f64::INFINITY;
     let mut faces = 0;

@@ -18,13 +18,9 @@ use std::path::{Path, PathBuf};
 const SPRIME_RECORDED: f64 = 1e-15;
 const PPS_RECORDED: f64 = 1e-11;
 
-/// ../shared/reference/authors-pps beside the checkout (or two levels up, from a worktree).
-fn reference_dir() -> Option<PathBuf> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    ["../shared", "../../shared"]
-        .iter()
-        .map(|s| root.join(s).join("reference/authors-pps"))
-        .find(|d| d.is_dir())
+/// ../shared/reference/authors-pps (`common::shared_path`), or None with a skip recorded.
+fn reference_dir(test: &str) -> Option<PathBuf> {
+    common::shared_path(test, "reference/authors-pps")
 }
 
 fn assert_recorded(label: &str, r: &TsvReport) {
@@ -53,8 +49,7 @@ fn authors_code_fixture_cube_agrees() {
 /// Every public table of ../shared/reference/authors-pps/pn agrees (skipped when absent).
 #[test]
 fn au_tables_authors_code_public_tables_agree() {
-    let Some(dir) = reference_dir() else {
-        eprintln!("skipped: ../shared/reference/authors-pps is absent");
+    let Some(dir) = reference_dir("au_tables_authors_code_public_tables_agree") else {
         return;
     };
     let mut seen = 0;
@@ -129,7 +124,7 @@ fn au_tables_diff_reports_planted_faults() {
 #[test]
 fn au_facts_authors_tables_exact_facts() {
     let mut cases = vec![fixture()];
-    if let Some(dir) = reference_dir() {
+    if let Some(dir) = reference_dir("au_facts_authors_tables_exact_facts") {
         for n in [
             "cube",
             "bob_small",
@@ -255,18 +250,16 @@ fn au_unseen_authors_code_unseen_meshes_agree() {
                 )
             })
             .collect();
-    let shared_meshes = reference_dir().map(|d| d.join("../../meshes/good"));
-    match &shared_meshes {
-        Some(good) if good.is_dir() => {
-            for n in ["bob_tri", "boot", "hammer", "armadillo", "koala"] {
-                cases.push((
-                    n.to_string(),
-                    good.join(format!("{n}.obj")),
-                    unseen.join(format!("corpus/{n}.tsv")),
-                ));
-            }
+    if let Some(good) =
+        common::shared_path("au_unseen_authors_code_unseen_meshes_agree", "meshes/good")
+    {
+        for n in ["bob_tri", "boot", "hammer", "armadillo", "koala"] {
+            cases.push((
+                n.to_string(),
+                good.join(format!("{n}.obj")),
+                unseen.join(format!("corpus/{n}.tsv")),
+            ));
         }
-        _ => eprintln!("corpus part skipped: ../shared/meshes/good is absent"),
     }
     for (name, mesh, table) in &cases {
         let r = diff_tsv_files(mesh, table, Profile::AuthorsCode, 1e-9, 3).expect("diff");
@@ -288,7 +281,8 @@ fn au_d1_their_polar_angle_drops_a_term() {
         unseen.join("tetrahedron.off"),
         unseen.join("tetrahedron.tsv"),
     )];
-    let bunny = reference_dir().map(|d| (d.join("meshes/bunny.off"), d.join("pn/bunny.tsv")));
+    let bunny = reference_dir("au_d1_their_polar_angle_drops_a_term")
+        .map(|d| (d.join("meshes/bunny.off"), d.join("pn/bunny.tsv")));
     if let Some((m, t)) = &bunny {
         cases.push(("bunny".to_string(), m.clone(), t.clone()));
     }

@@ -29,10 +29,9 @@ fn load(p: &Path) -> SimplicialSurface {
     surface(&read_mesh(p, &ReadOptions::default()).expect("readable"))
 }
 
-fn assert_no_failure(rs: &[CheckResult], what: &str) {
+fn assert_all_hold(rs: &[CheckResult], what: &str) {
     for r in rs {
-        assert!(!r.failed(), "{what}: {} failed: {:?}", r.id, r.witnesses);
-        assert!(r.examined > 0, "{what}: {} examined nothing", r.id);
+        common::assert_holds_for(what, r);
     }
 }
 
@@ -48,7 +47,7 @@ fn loop_c0_vertex_loop_limit_mask_loop_normal_mask_loop_c0_edge_loop_c1_edge_loo
     for (name, k) in &meshes {
         let s = LoopSurface::new(k).expect("Loop surface");
         let rs = run_loop_checks(k, &s, &LoopCheckOptions::default());
-        assert_no_failure(&rs, name);
+        assert_all_hold(&rs, name);
     }
 }
 
@@ -62,7 +61,7 @@ fn loop_adjacent_extraordinary_bipyramids_valence_3_to_64_hold() {
         let mut rs = check_vertices(&k, &s, &opts);
         rs.push(check_normals(&k, &s, &opts));
         rs.extend(check_edges(&k, &s, &opts));
-        assert_no_failure(&rs, &format!("bipyramid {n}"));
+        assert_all_hold(&rs, &format!("bipyramid {n}"));
     }
 }
 
@@ -192,7 +191,7 @@ fn loop_normal_mask_planted_faults_caught() {
         let k = surface(&raw);
         let s = LoopSurface::new(&k).expect("Loop surface");
         let opts = LoopCheckOptions::default();
-        assert!(!check_normals(&k, &s, &opts).failed(), "{name}: clean");
+        common::assert_holds_for(name, &check_normals(&k, &s, &opts));
         for kind in 5..=7u8 {
             if name == "torus 4x4" && kind != 5 {
                 continue; // valence 6 is evaluated at the vertex itself, level 0
@@ -219,12 +218,14 @@ fn loop_normal_mask_planted_faults_caught() {
 /// valence-17 vertex 61 first rises, and hammer's valence-3 vertices at the rounding floor).
 #[test]
 fn loop_normal_mask_holds_on_the_good_corpus() {
-    for m in common::corpus().into_iter().filter(|m| m.good) {
+    for m in common::corpus("loop_normal_mask_holds_on_the_good_corpus")
+        .into_iter()
+        .filter(|m| m.good)
+    {
         let k = load(&m.path);
         let s = LoopSurface::new(&k).expect("Loop surface");
         let r = check_normals(&k, &s, &LoopCheckOptions::default());
-        assert!(!r.failed(), "{}: {:?}", m.file, r.witnesses);
-        assert!(r.examined > 0, "{}", m.file);
+        common::assert_holds_for(&m.file, &r);
     }
 }
 
@@ -327,22 +328,20 @@ fn stats(mut d: Vec<(f64, usize)>) -> (f64, f64, usize) {
 #[test]
 fn loop_authors_sprime_and_loop_authors_pps_tables() {
     use pseudomanifold::surface::{Pps, PpsOptions, Profile};
-    // PPM_SHARED overrides ../shared (e.g. from a git worktree).
-    let shared = std::env::var_os("PPM_SHARED")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared"));
-    let dir = shared.join("reference/authors-pps");
+    let Some(dir) = common::shared_path(
+        "loop_authors_sprime_and_loop_authors_pps_tables",
+        "reference/authors-pps",
+    ) else {
+        return;
+    };
     for name in ["torus", "eight_loop1", "spot_loop1", "bunny_loop1"] {
-        let (Some(rows), Ok(raw)) = (
-            read_table(&dir.join(format!("loop/{name}.tsv"))),
-            read_mesh(
-                &dir.join(format!("meshes/{name}.off")),
-                &ReadOptions::default(),
-            ),
-        ) else {
-            eprintln!("note: authors' Loop table {name} not present; skipped");
-            continue;
-        };
+        let rows = read_table(&dir.join(format!("loop/{name}.tsv")))
+            .unwrap_or_else(|| panic!("authors' Loop table {name} in ../shared"));
+        let raw = read_mesh(
+            &dir.join(format!("meshes/{name}.off")),
+            &ReadOptions::default(),
+        )
+        .unwrap_or_else(|e| panic!("authors' mesh {name} in ../shared: {e}"));
         let k = surface(&raw);
         let s = LoopSurface::new(&k).expect("Loop surface");
         let pps = Pps::build(
@@ -471,16 +470,15 @@ fn loop_authors_d2_loop_authors_pps_their_tables_reproduced() {
         data.join("tetrahedron_loop1.off"),
         data.join("tetrahedron_loop1.tsv"),
     )];
-    let shared = std::env::var_os("PPM_SHARED")
-        .map(std::path::PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared"));
-    let dir = shared.join("reference/authors-pps");
-    for name in ["torus", "eight_loop1", "spot_loop1", "bunny_loop1"] {
-        let t = dir.join(format!("loop/{name}.tsv"));
-        if t.is_file() {
+    // The fixture always runs; the public tables when ../shared is present.
+    if let Some(dir) = common::shared_path(
+        "loop_authors_d2_loop_authors_pps_their_tables_reproduced",
+        "reference/authors-pps",
+    ) {
+        for name in ["torus", "eight_loop1", "spot_loop1", "bunny_loop1"] {
+            let t = dir.join(format!("loop/{name}.tsv"));
+            assert!(t.is_file(), "authors' Loop table {name} in ../shared");
             cases.push((name.to_string(), dir.join(format!("meshes/{name}.off")), t));
-        } else {
-            eprintln!("note: authors' Loop table {name} not present; skipped");
         }
     }
     for (name, mesh, table) in cases {

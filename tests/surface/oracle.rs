@@ -138,7 +138,7 @@ const F64_TOL: f64 = 1024.0 * f64::EPSILON;
 fn oracle_self_test_f64_path_agrees_with_mp_and_planted_sign_flip_is_caught() {
     let mut meshes = vec![fixture()];
     meshes.extend(
-        common::corpus()
+        common::corpus("oracle_self_test_f64_path_agrees_with_mp")
             .into_iter()
             .filter(|m| m.good && m.faces <= 500)
             .map(|m| m.path),

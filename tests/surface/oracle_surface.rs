@@ -101,7 +101,7 @@ fn diff_surface_self_test_within_printed_bound() {
     .map(|n| data(n))
     .collect();
     meshes.extend(
-        common::corpus()
+        common::corpus("diff_surface_self_test_within_printed_bound")
             .into_iter()
             .filter(|m| m.good && m.faces <= 200)
             .take(3)

@@ -44,8 +44,7 @@ fn build(k: &SimplicialSurface) -> SigmaVPps {
 }
 
 fn holds(r: &CheckResult) {
-    assert!(!r.failed(), "{} fails: {:?}", r.id, r.witnesses.first());
-    assert!(r.examined > 0, "{}: nothing examined", r.id);
+    common::assert_holds(r);
     eprintln!(
         "{} holds: examined {}, worst {:?}, tol {:?}",
         r.id, r.examined, r.worst_deviation, r.tolerance
@@ -298,7 +297,7 @@ fn sv_e_gu_factor_sv_e_angle_range_sv_e_equilateral_errata() {
     fails(&check_gu_factor_as_written(&degs));
     holds(&check_gu_factor_corrected(&degs));
     // m = 6 alone: the slides' factor is right there.
-    assert!(!check_gu_factor_as_written(&[6]).failed());
+    common::assert_holds(&check_gu_factor_as_written(&[6]));
     fails(&check_angle_range_as_written(&degs));
     holds(&check_angle_range_corrected(&degs));
     let (w, c) = check_equilateral();
@@ -323,7 +322,7 @@ fn sv_d1_sv_d5_sv_d8_run_sigma_v_checks_on_fixtures() {
     };
     let mut paths = common::bundled_good();
     paths.extend(
-        common::corpus()
+        common::corpus("sv_d1_sv_d5_sv_d8_run_sigma_v_checks_on_fixtures")
             .into_iter()
             .filter(|m| m.good && m.faces <= 20_000)
             .map(|m| m.path),

@@ -43,18 +43,8 @@ fn opts() -> SurfaceCheckOptions {
     }
 }
 
-fn holds(r: &CheckResult) -> bool {
-    matches!(r.verdict, Verdict::Holds | Verdict::HoldsRestricted { .. })
-}
 fn assert_holds(r: &CheckResult) {
-    assert!(
-        holds(r),
-        "{} should hold: {:?} {:?}",
-        r.id,
-        r.verdict,
-        r.witnesses.first()
-    );
-    assert!(r.examined > 0, "{} examined nothing", r.id);
+    common::assert_holds(r);
     eprintln!(
         "{}: examined {}, worst {:?}, tolerance {:?} {}",
         r.id, r.examined, r.worst_deviation, r.tolerance, r.note
@@ -76,8 +66,8 @@ fn fixtures() -> Vec<(String, SimplicialSurface)> {
     ]
 }
 
-fn corpus_good() -> Vec<(String, SimplicialSurface)> {
-    common::corpus()
+fn corpus_good(test: &str) -> Vec<(String, SimplicialSurface)> {
+    common::corpus(test)
         .into_iter()
         .filter(|m| m.good)
         .filter_map(|m| {
@@ -277,7 +267,7 @@ fn t5_4_1_condition_c_holds_on_corpus_subset() {
         mp_vertices: 1,
         ..SurfaceCheckOptions::default()
     };
-    for (name, k) in corpus_good() {
+    for (name, k) in corpus_good("t5_4_1_condition_c_holds_on_corpus_subset") {
         let pps = build(&k, Profile::Paper);
         let r = check_condition_c(&pps, &o);
         eprintln!("{name}: {}", r.note);
@@ -546,10 +536,11 @@ fn d6_1_4_eval_lambda_mu_nu_are_real_barycentric() {
 
 #[test]
 fn c3_6_approx_measured_per_mesh() {
-    for (name, k) in fixtures()
-        .into_iter()
-        .chain(corpus_good().into_iter().take(4))
-    {
+    for (name, k) in fixtures().into_iter().chain(
+        corpus_good("c3_6_approx_measured_per_mesh")
+            .into_iter()
+            .take(4),
+    ) {
         let pps = build(&k, Profile::Paper);
         let r = check_approx(&pps);
         eprintln!("{name}: {}", r.note);
@@ -741,7 +732,7 @@ fn x_harness_surface_checks_distinct_seeds_draw_distinct_samples() {
 #[test]
 fn c6_2_sample_watertight_on_fixtures_and_corpus() {
     let mut meshes = fixtures();
-    meshes.extend(corpus_good());
+    meshes.extend(corpus_good("c6_2_sample_watertight_on_fixtures_and_corpus"));
     for (name, k) in meshes {
         // Level 1 below 20k faces, level 0 above (CI time); full runs via `ppm sample`.
         let level = if k.num_faces() < 20_000 { 1 } else { 0 };
@@ -796,12 +787,15 @@ fn run_surface_checks_reports_every_id() {
             .iter()
             .find(|r| r.id == id)
             .unwrap_or_else(|| panic!("{id}"));
-        assert!(
-            !r.failed(),
-            "{id}: {:?} {:?}",
-            r.verdict,
-            r.witnesses.first()
-        );
+        if id == "C3.6-approx" {
+            // A measurement, not a statement: reported as a warning with its value (Sec. 3.6 (2)).
+            assert!(
+                matches!(r.verdict, Verdict::Warning) && r.examined > 0,
+                "{r:?}"
+            );
+        } else {
+            common::assert_holds(r);
+        }
     }
     eprintln!("{}", pseudomanifold::report::render_text(&rs));
 }
