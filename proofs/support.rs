@@ -4,30 +4,17 @@
 //! target, what a passing check result is ([`assert_holds_for`]).
 #![allow(dead_code)]
 
-use pseudomanifold::report::CheckResult;
-
 use pseudomanifold::exact::plane::{disks, Affine, Disk};
 use pseudomanifold::exact::polar::{Chain, Interval, PMap, Region};
 use pseudomanifold::exact::q3::{q, Q};
 use pseudomanifold::exact::replay::{Expect, Step, StepCheck};
 
-/// [`assert_holds_for`] without a case name.
-#[track_caller]
-pub fn assert_holds(r: &CheckResult) {
-    assert_holds_for("check", r);
-}
-
-/// Panics with the rendered report unless `r` holds on something examined
-/// (`CheckResult::holds_with_evidence`): a skipped check is not a pass. `what` names the case.
-#[track_caller]
-pub fn assert_holds_for(what: &str, r: &CheckResult) {
-    assert!(
-        r.holds_with_evidence(),
-        "{what}: {} should hold on something examined:\n{}",
-        r.id,
-        pseudomanifold::report::render_text(std::slice::from_ref(r))
-    );
-}
+#[path = "../tests/common/verdicts.rs"]
+mod verdicts;
+#[allow(unused_imports)]
+pub use verdicts::{
+    assert_caught, assert_fails_as_written, assert_holds, assert_holds_for, record, Seen,
+};
 
 /// A triangle [u, w, x] of K, oriented counterclockwise (the orientation of Lemma 4.2.2's
 /// "without loss of generality" and of Sec. 6.1.4's triangle t = (a, b, c)):

@@ -7,6 +7,10 @@
 #![allow(dead_code)]
 
 pub mod sdiff;
+pub mod verdicts;
+
+#[allow(unused_imports)]
+pub use verdicts::{assert_caught, assert_fails_as_written, assert_holds, assert_holds_for};
 
 use pseudomanifold::report::{CheckResult, Verdict};
 use std::collections::BTreeSet;
@@ -90,17 +94,6 @@ pub fn shared_path(test: &str, rel: &str) -> Option<PathBuf> {
     Some(p)
 }
 
-/// [`assert_holds`] with the case named in the message (a mesh, a parameter set).
-#[track_caller]
-pub fn assert_holds_for(what: &str, r: &CheckResult) {
-    assert!(
-        r.holds_with_evidence(),
-        "{what}: {} should hold on something examined:\n{}",
-        r.id,
-        pseudomanifold::report::render_text(std::slice::from_ref(r))
-    );
-}
-
 /// Every result holds on something ([`assert_holds`]) except those named in `skipped`, which
 /// must each be present and `Skipped` (a precondition the input legitimately lacks). Lists every
 /// departure at once.
@@ -125,18 +118,6 @@ pub fn assert_hold_except_skipped(what: &str, rs: &[CheckResult], skipped: &[&st
         "{what}: expected every result to hold on something, skipped exactly {skipped:?}; \
          missing {missing:?}; departures:\n{}",
         pseudomanifold::report::render_text(&wrong.into_iter().cloned().collect::<Vec<_>>())
-    );
-}
-
-/// Panics with the rendered report unless `r` holds on something: a skipped check, or one that
-/// examined nothing, is not a pass ([`CheckResult::holds_with_evidence`]).
-#[track_caller]
-pub fn assert_holds(r: &CheckResult) {
-    assert!(
-        r.holds_with_evidence(),
-        "{} should hold on something examined:\n{}",
-        r.id,
-        pseudomanifold::report::render_text(std::slice::from_ref(r))
     );
 }
 

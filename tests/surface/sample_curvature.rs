@@ -49,7 +49,7 @@ fn sample_values(path: &PathBuf, kind: SurfaceKind) -> (u64, Option<String>) {
 fn c6_2_sample_finite_curvature_on_every_good_mesh_levels_0_to_2_pn_and_loop() {
     let mut meshes: Vec<PathBuf> = common::bundled_good();
     meshes.extend(
-        common::corpus()
+        common::corpus("c6_2_sample_finite_curvature_on_every_good_mesh_levels_0_to_2_pn_and_loop")
             .into_iter()
             .filter(|m| m.good)
             .map(|m| m.path),
