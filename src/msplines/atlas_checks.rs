@@ -158,9 +158,13 @@ fn injective(at: &Atlas, id: &str, name: &str) -> (CheckResult, Vec<usize>) {
                 }
             }
         }
-        let mag = ch.path_magnitude.values().copied().fold(0.0, f64::max);
+        let mag = ch
+            .path_magnitude
+            .values()
+            .copied()
+            .fold(0.0, crate::report::dev_max);
         let tol = 64.0 * f64::EPSILON * 2.0 * mag;
-        worst = worst.max(ch.develop_defect);
+        worst = crate::report::dev_max(worst, ch.develop_defect);
         if !(ch.develop_defect <= tol) {
             r.offend(|| Witness::new(format!("chart at vertex {}: developing map disagrees by {:.3e} > {tol:.3e} (U_α not simply connected, or ω not closed)", ch.centre, ch.develop_defect), json!({"chart": a, "defect": ch.develop_defect, "kind": "develop"})));
         }
@@ -283,7 +287,7 @@ pub fn check_affine(at: &Atlas) -> CheckResult {
                 ca.path_magnitude.get(f).copied().unwrap_or(0.0)
                     + cb.path_magnitude.get(f).copied().unwrap_or(0.0)
             })
-            .fold(0.0, f64::max);
+            .fold(0.0, crate::report::dev_max);
         let tol = 64.0 * f64::EPSILON * (1.0 + cond) * (scale + mag);
         for f in common {
             let (Some(ta), Some(tb)) = (ca.faces.get(f), cb.faces.get(f)) else {
@@ -296,7 +300,7 @@ pub fn check_affine(at: &Atlas) -> CheckResult {
                     m[1][0] * p[0] + m[1][1] * p[1] + off[1],
                 ];
                 let d = (q[0] - tb[i][0]).hypot(q[1] - tb[i][1]);
-                worst = if d.is_nan() { f64::NAN } else { worst.max(d) };
+                worst = crate::report::dev_max(worst, d);
                 if !(d <= tol) {
                     r.offend(|| Witness::new(format!("charts at vertices {} and {}: face {f} corner {i} misses the affine map by {d:.3e} > {tol:.3e}", ca.centre, cb.centre), json!({"alpha": a, "beta": b, "face": f.0, "dev": d, "tol": tol})));
                 }
@@ -377,7 +381,7 @@ pub fn check_step6(
         r.examined += 1;
         let want = if literal { int } else { [-int[0], -int[1]] };
         let d = (p.t[0] - want[0]).hypot(p.t[1] - want[1]);
-        worst = worst.max(d);
+        worst = crate::report::dev_max(worst, d);
         let tol = p.tolerance.max(64.0 * f64::EPSILON * int[0].hypot(int[1]));
         if !(d <= tol) {
             r.offend(|| Witness::new(format!("charts at vertices {} and {}: φ_β − φ_α = ({:.6}, {:.6}) but ∫_{{p_α}}^{{p_β}} ω = ({:.6}, {:.6})", ca.centre, cb.centre, p.t[0], p.t[1], int[0], int[1]), json!({"alpha": p.pair.0, "beta": p.pair.1, "translation": p.t, "integral": int})));

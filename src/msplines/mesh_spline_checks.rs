@@ -294,7 +294,7 @@ pub fn check_d13_2(
                     .path_magnitude
                     .values()
                     .copied()
-                    .fold(0.0f64, f64::max)
+                    .fold(0.0f64, crate::report::dev_max)
             };
             let delta = 64.0 * eps * (path(*g0) + path(*g1) + e0.radius.max(e1.radius));
             let h = e0.min_height.min(e1.min_height);

@@ -251,7 +251,7 @@ pub fn check_l203(
         };
         r.examined += 1;
         let shift = (p.level_f64 - to_f64(c)).abs();
-        worst_level = worst_level.max(shift);
+        worst_level = crate::report::dev_max(worst_level, shift);
         record(&mut r, &p);
         points.push(p);
     }

@@ -126,7 +126,7 @@ pub fn judge_l231(devs: &[EdgeDeviation], crossed: &[[u32; 2]], c1_holds: bool) 
     for d in devs.iter().filter(|d| crossed.contains(&d.edge)) {
         r.examined += d.samples.len() as u64;
         r.eval_errors += d.undefined as u64;
-        worst = worst.max(d.err);
+        worst = crate::report::dev_max(worst, d.err);
         if d.undefined > 0 {
             let e = d.edge;
             r.offend(|| {

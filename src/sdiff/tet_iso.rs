@@ -273,7 +273,8 @@ fn march(k: &TetComplex, maps: &[TetMap], f: &[Q], c: &Q, n: usize) -> (TriMesh,
                 let w: [f64; 3] = std::array::from_fn(|x| {
                     ((1.0 - lam) * cell[i][x + 1] as f64 + lam * cell[j][x + 1] as f64) / n as f64
                 });
-                worst = worst.max((eval_f64(&gf, &w) / eval_f64(&df, &w)).abs());
+                worst =
+                    crate::report::dev_max(worst, (eval_f64(&gf, &w) / eval_f64(&df, &w)).abs());
                 edge_ids.insert(key, mesh.points.len() - 1);
                 mesh.points.len() - 1
             };

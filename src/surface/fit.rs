@@ -324,7 +324,7 @@ fn factor_degree_with(m: u32, profile: Profile, symmetric: bool) -> DegreeFit {
     let smax = blocks
         .iter()
         .flat_map(|b| b.svd.singular_values.iter().cloned())
-        .fold(0.0, f64::max);
+        .fold(0.0, crate::report::dev_max);
     // κ(A) is finite only if every block has at least as many rows as columns.
     let smin_all = if blocks.iter().all(|b| b.rows.len() >= b.cols.len())
         && blocks.iter().map(|b| b.cols.len()).sum::<usize>() == k

@@ -9,6 +9,7 @@ use pseudomanifold::mesh::generate;
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, RawMesh, SimplicialSurface, VertexId};
+use pseudomanifold::report::dev_max;
 use pseudomanifold::report::CheckResult;
 use pseudomanifold::surface::loop_subdiv::checks::{
     check_edges, check_normals, check_vertices, radius, run_loop_checks, JetSource,
@@ -158,6 +159,18 @@ impl JetSource for Fault<'_> {
                     dd[1][2] = f64::NAN;
                 }
             }
+            // NaN in the first derivatives only (∂v), everywhere on the face.
+            8 if f.0 == 3 => {
+                if let Some(dd) = j.d.as_mut() {
+                    dd[1][0] = f64::NAN;
+                }
+            }
+            // NaN in the second derivatives only (∂uv), everywhere on the face.
+            9 if f.0 == 3 => {
+                if let Some(dd) = j.d.as_mut() {
+                    dd[3][1] = f64::NAN;
+                }
+            }
             _ => {}
         }
         Ok(j)
@@ -279,6 +292,134 @@ fn loop_c0_edge_loop_c2_edge_planted_faults_caught() {
             "{}",
             r.id
         );
+    }
+}
+
+/// Runs every vertex and edge check of the Loop S′ with `src` on the icosahedron (face 3 is
+/// the planted face), next to the clean run: (faulted, clean), in the same order.
+fn loop_runs(kind: u8) -> (Vec<CheckResult>, Vec<CheckResult>) {
+    let k = surface(&generate::icosahedron());
+    let s = LoopSurface::new(&k).expect("Loop surface");
+    let opts = LoopCheckOptions::default();
+    let run = |src: &dyn JetSource| {
+        let mut rs = check_vertices(&k, src, &opts);
+        rs.push(check_normals(&k, src, &opts));
+        rs.extend(check_edges(&k, src, &opts));
+        rs
+    };
+    (run(&Fault { s: &s, kind }), run(&s))
+}
+
+fn by_id<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
+    rs.iter()
+        .find(|r| r.id == id)
+        .unwrap_or_else(|| panic!("{id} missing"))
+}
+
+/// The planted face 3 is named in the first witness (edge checks: one of its two faces).
+fn names_face_3(r: &CheckResult) -> bool {
+    let d = &r.witnesses[0].data;
+    d["face"] == 3
+        || d["faces"]
+            .as_array()
+            .is_some_and(|f| f.iter().any(|x| x == 3))
+}
+
+/// Rule 1 of the harness for first derivatives: NaN in ∂v only (the position is right).
+/// Before the harness the C¹ deviation was a `.max` of norms, which drops the NaN.
+#[test]
+fn loop_c1_edge_nan_first_derivatives_only_is_an_offence_with_witness() {
+    let (rs, clean) = loop_runs(8);
+    let c1 = by_id(&rs, "LOOP-C1-edge");
+    assert!(c1.failed(), "{c1:?}");
+    assert!(names_face_3(c1), "{:?}", c1.witnesses[0]);
+    assert_eq!(c1.worst_deviation, Some(f64::INFINITY));
+    for id in ["LOOP-C0-edge", "LOOP-C1-edge", "LOOP-C2-edge"] {
+        let (a, b) = (by_id(&rs, id), by_id(&clean, id));
+        assert_eq!(a.examined, b.examined, "{id}: every sample examined");
+        assert!(a.examined > 0 && a.eval_errors == 0, "{id}");
+    }
+    // The position and the second derivatives are untouched.
+    for id in ["LOOP-C0-edge", "LOOP-C2-edge", "LOOP-C0-vertex"] {
+        assert!(!by_id(&rs, id).failed(), "{id}");
+    }
+    // The normals near face 3's corners are NaN too.
+    assert!(by_id(&rs, "LOOP-normal-mask").failed());
+}
+
+/// Rule 1 for second derivatives: NaN in ∂uv only. Before the harness the C² deviation was
+/// `fold(0.0, f64::max)`, so this sample held.
+#[test]
+fn loop_c2_edge_nan_second_derivatives_only_is_an_offence_with_witness() {
+    let (rs, clean) = loop_runs(9);
+    let c2 = by_id(&rs, "LOOP-C2-edge");
+    assert!(c2.failed(), "{c2:?}");
+    assert!(names_face_3(c2), "{:?}", c2.witnesses[0]);
+    assert_eq!(c2.worst_deviation, Some(f64::INFINITY));
+    assert_eq!(c2.examined, by_id(&clean, "LOOP-C2-edge").examined);
+    assert_eq!(c2.eval_errors, 0);
+    for id in [
+        "LOOP-C0-edge",
+        "LOOP-C1-edge",
+        "LOOP-C0-vertex",
+        "LOOP-normal-mask",
+    ] {
+        assert!(!by_id(&rs, id).failed(), "{id}");
+    }
+}
+
+/// Rule 2: an evaluation error on face 3 is counted and is an offence of every check that
+/// evaluates there (S′ is defined on all of K), examined like any sample.
+#[test]
+fn loop_c0_edge_loop_c1_edge_loop_c2_edge_loop_c0_vertex_loop_normal_mask_evaluation_error_is_an_offence(
+) {
+    let (rs, clean) = loop_runs(3);
+    for id in [
+        "LOOP-C0-edge",
+        "LOOP-C1-edge",
+        "LOOP-C2-edge",
+        "LOOP-C0-vertex",
+        "LOOP-limit-mask",
+        "LOOP-normal-mask",
+    ] {
+        let (a, b) = (by_id(&rs, id), by_id(&clean, id));
+        assert!(a.failed(), "{id}");
+        assert!(a.eval_errors > 0, "{id}: errors counted");
+        assert!(
+            a.witnesses[0].text.contains("evaluation failed"),
+            "{id}: {:?}",
+            a.witnesses[0]
+        );
+        assert!(names_face_3(a), "{id}: {:?}", a.witnesses[0]);
+        assert_eq!(
+            a.examined, b.examined,
+            "{id}: an offending error is examined"
+        );
+        assert_eq!(b.eval_errors, 0, "{id}: clean run");
+    }
+}
+
+/// Rule 3: an empty sample (max_elements = 0) is skipped, never holds, for every edge and
+/// vertex check.
+#[test]
+fn loop_c0_edge_loop_c1_edge_loop_c2_edge_loop_c0_vertex_empty_sample_is_skipped() {
+    let k = surface(&generate::icosahedron());
+    let s = LoopSurface::new(&k).expect("Loop surface");
+    let none = LoopCheckOptions {
+        max_elements: 0,
+        ..LoopCheckOptions::default()
+    };
+    let mut rs = check_edges(&k, &s, &none);
+    rs.extend(check_vertices(&k, &s, &none));
+    assert_eq!(rs.len(), 5);
+    for r in rs {
+        assert!(
+            matches!(r.verdict, pseudomanifold::report::Verdict::Skipped { .. }),
+            "{}: {:?}",
+            r.id,
+            r.verdict
+        );
+        assert_eq!((r.examined, r.eval_errors), (0, 0), "{}", r.id);
     }
 }
 
@@ -612,11 +753,9 @@ fn loop_mp_fast_path_equals_the_generic_evaluation() {
                 for b in pts {
                     let fast = s.eval_f64(f, c, b).expect("fast");
                     let slow = s.jet::<f64>(f, c, &b, false).expect("generic").p;
-                    let d = (0..3)
-                        .map(|i| (fast[i] - slow[i]).abs())
-                        .fold(0.0, f64::max);
+                    let d = (0..3).map(|i| (fast[i] - slow[i]).abs()).fold(0.0, dev_max);
                     assert!(d.is_finite(), "{name}: NaN at face {f:?} {b:?}");
-                    worst = worst.max(d);
+                    worst = dev_max(worst, d);
                     count += 1;
                 }
             }
@@ -694,7 +833,7 @@ fn weights_deviation(
             }
         }
         let e = pseudomanifold::surface::TargetSurface::eval(s, f, corners, *b);
-        let dev = (0..3).map(|d| (p[d] - e[d]).abs()).fold(0.0, f64::max);
+        let dev = (0..3).map(|d| (p[d] - e[d]).abs()).fold(0.0, dev_max);
         let bound = 64.0 * f64::EPSILON * row.iter().map(|x| x.abs()).sum::<f64>() * r;
         let ratio = if dev.is_nan() {
             f64::INFINITY
@@ -753,7 +892,7 @@ fn loop_linear_fit_weights_reproduce_s_prime_and_depend_on_the_key_only() {
                     dev <= bound, // false for NaN
                     "{name}: face {f:?} from {corners:?}: |Σ wP − S′| = {dev:e} > {bound:e} at {at:?}"
                 );
-                worst = worst.max(dev / bound);
+                worst = dev_max(worst, dev / bound);
                 count += pts.len();
                 // Equal keys, equal weights (to rounding: both sides are sums over the same
                 // sub-net structure).
@@ -764,7 +903,7 @@ fn loop_linear_fit_weights_reproduce_s_prime_and_depend_on_the_key_only() {
                             .iter()
                             .zip(w0)
                             .map(|(a, b)| (a - b).abs())
-                            .fold(0.0, f64::max);
+                            .fold(0.0, dev_max);
                         assert!(
                             d <= 64.0 * f64::EPSILON,
                             "{name}: face {f:?} key {:?}: weights differ by {d:e}",
@@ -869,18 +1008,18 @@ fn loop_linear_fit_equals_sampling_s_prime() {
                         .map(|x| x.abs())
                         .sum::<f64>()
                 })
-                .fold(0.0, f64::max);
+                .fold(0.0, dev_max);
             let tol = 256.0 * f64::EPSILON * pinv_inf * 2.0 * r;
             let (pa, _) = a.patch(v);
             let (pb, _) = b.patch(v);
             assert_eq!(pa.len(), pb.len(), "{name}: vertex {v:?}");
             for (x, y) in pa.iter().zip(pb) {
-                let d = (0..3).map(|t| (x[t] - y[t]).abs()).fold(0.0, f64::max);
+                let d = (0..3).map(|t| (x[t] - y[t]).abs()).fold(0.0, dev_max);
                 assert!(
                     d <= tol,
                     "{name}: vertex {v:?}: control points differ by {d:e} > {tol:e}"
                 );
-                worst = worst.max(d / tol);
+                worst = dev_max(worst, d / tol);
                 n += 1;
             }
         }

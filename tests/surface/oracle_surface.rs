@@ -12,6 +12,7 @@ use pseudomanifold::mesh::{FaceId, SimplicialSurface, VertexId};
 use pseudomanifold::oracle::diff::diff_table;
 use pseudomanifold::oracle::surface_diff::{sample_count, sample_points, F64_BOUND_ULPS};
 use pseudomanifold::oracle::Session;
+use pseudomanifold::report::dev_max;
 use pseudomanifold::surface::output::{sample_surface, write_mesh_with_attributes, SampledMesh};
 use pseudomanifold::surface::{Fault, Membership, PnTriangles, Pps, PpsOptions};
 use serde_json::Value;
@@ -82,7 +83,7 @@ fn sample_points_reproduce_the_order_of_sample_surface() {
         );
         for (sp, q) in pat.points.iter().zip(&s.positions) {
             let e = p.eval_f64(sp.face, sp.bary).expect("eval");
-            let d = (0..3).map(|i| (e[i] - q[i]).abs()).fold(0.0, f64::max);
+            let d = (0..3).map(|i| (e[i] - q[i]).abs()).fold(0.0, dev_max);
             assert!(d < 1e-13, "{name}: {sp:?} {d}");
         }
     }

@@ -13,6 +13,7 @@ use pseudomanifold::render::camera::Camera;
 use pseudomanifold::render::orientation::check_orientation;
 use pseudomanifold::render::source::{mesh_scene, pps_scene, sprime_scene};
 use pseudomanifold::render::{render_scene, ColourBy, RenderOptions, Scene, View};
+use pseudomanifold::report::dev_max;
 use pseudomanifold::surface::geometry::from_jet;
 use pseudomanifold::surface::target::eval_cubic;
 use pseudomanifold::surface::{Jet, PnTriangles, Pps, PpsOptions, SPrime};
@@ -103,7 +104,7 @@ fn r_silhouette_convex_mesh_covers_its_projected_hull_within_1_percent() {
             },
         );
         println!("view ({az}, {el}): |pixels − hull| / hull = {e:.2e}");
-        worst = worst.max(e);
+        worst = dev_max(worst, e);
     }
     println!("R-silhouette: worst relative error {worst:.2e} over 4 views (bound 1e-2)");
     assert!(worst < 0.01, "silhouette off by {worst}");
@@ -143,8 +144,8 @@ fn sphere_deviation(theta: impl Fn(&[Jet<f64>]) -> Vec<Jet<f64>>, scale: f64) ->
         let v = theta(&[x, y]);
         let j: [Jet<f64>; 3] = std::array::from_fn(|d| v[d].scale(&scale));
         let g = from_jet(&j);
-        dk = dk.max((g.gaussian - 1.0).abs());
-        dh = dh.max((g.mean.abs() - 1.0).abs());
+        dk = dev_max(dk, (g.gaussian - 1.0).abs());
+        dh = dev_max(dh, (g.mean.abs() - 1.0).abs());
         sign = g.mean.signum();
         if !(g.gaussian.is_finite() && g.mean.is_finite()) {
             return (f64::NAN, f64::NAN, f64::NAN);
@@ -228,8 +229,8 @@ fn jumps(k: &SimplicialSurface, pn: &PnTriangles, pps: &Pps, eps: f64) -> (f64, 
                 (kp, pn_gaussian(pn, kc, edge_bary(kc, a, b, t, eps)))
             };
             let ((p1, n1), (p2, n2)) = (side(f1), side(f2));
-            jp = jp.max((p1 - p2).abs());
-            jn = jn.max((n1 - n2).abs());
+            jp = dev_max(jp, (p1 - p2).abs());
+            jn = dev_max(jn, (n1 - n2).abs());
             assert!(
                 jp.is_finite() && jn.is_finite(),
                 "NaN curvature at edge {a}-{b}"
@@ -368,12 +369,12 @@ fn r_sampling_attributes_agree_whatever_is_computed() {
     let pos = sample_surface_with(&pps, 2, Attributes::Positions, None).expect("sample");
     assert_eq!(full.faces, pos.faces);
     assert!(pos.normals.is_empty() && pos.gaussian.is_empty() && nrm.gaussian.is_empty());
-    let d = |a: [f64; 3], b: [f64; 3]| (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max);
+    let d = |a: [f64; 3], b: [f64; 3]| (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, dev_max);
     let (mut dp, mut dn) = (0.0f64, 0.0f64);
     for i in 0..full.positions.len() {
-        dp = dp.max(d(full.positions[i], pos.positions[i]));
-        dp = dp.max(d(full.positions[i], nrm.positions[i]));
-        dn = dn.max(d(full.normals[i], nrm.normals[i]));
+        dp = dev_max(dp, d(full.positions[i], pos.positions[i]));
+        dp = dev_max(dp, d(full.positions[i], nrm.positions[i]));
+        dn = dev_max(dn, d(full.normals[i], nrm.normals[i]));
     }
     println!(
         "{} points: max position difference {dp:e}, normal difference {dn:e}",

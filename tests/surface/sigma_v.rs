@@ -254,6 +254,133 @@ fn sv_d12_sv_smooth_sv_gamma_theta_smooth_on_views() {
     holds(&check_smooth(&pps, &view, &CFG));
 }
 
+/// A planted fault in θ's jets for `SV-smooth`: at corner `at` (every corner when `None`)
+/// the jet is altered or an error returned.
+struct ThetaFault<'a> {
+    inner: PpsJets<'a>,
+    at: Option<Corner>,
+    kind: u8,
+}
+
+impl ThetaJets for ThetaFault<'_> {
+    fn theta_jet(
+        &self,
+        i: Corner,
+        q: &P2<pseudomanifold::surface::jet::Jet<f64>>,
+    ) -> Result<[pseudomanifold::surface::jet::Jet<f64>; 3], SigmaVError> {
+        use pseudomanifold::surface::jet::idx;
+        let mut t = self.inner.theta_jet(i, q)?;
+        if self.at.is_some_and(|c| c != i) {
+            return Ok(t);
+        }
+        match self.kind {
+            // NaN in the map itself (one coordinate's value).
+            0 => t[1].c[0] = f64::NAN,
+            // NaN in a first derivative only.
+            1 => t[0].c[idx(1, 0)] = f64::NAN,
+            // NaN in a second derivative only.
+            2 => t[2].c[idx(0, 2)] = f64::NAN,
+            // An error where θ must be defined (Σγ not positive): an offence.
+            3 => return Err(SigmaVError::ZeroWeight(0)),
+            // "Outside Ω_i": a skipped sample.
+            _ => {
+                return Err(SigmaVError::NotInOmega {
+                    corner: 0,
+                    x: 0.0,
+                    y: 0.0,
+                })
+            }
+        }
+        Ok(t)
+    }
+}
+
+/// `SV-smooth` under the harness: NaN in θ's value, first or second derivative at one corner
+/// is an offence with a witness naming the corner; a ZeroWeight error is a counted offence;
+/// "not in Ω" everywhere leaves nothing examined: skipped, never holds; so does an empty view.
+#[test]
+fn sv_smooth_planted_nan_error_and_empty_sample() {
+    let k = surface(&icosahedron());
+    let pps = build(&k);
+    let f = k.face(FaceId(3));
+    let view = SigmaVView::at_vertices(&pps.gluing, &f, Version::Fixed);
+    let clean = check_smooth(&pps, &view, &CFG);
+    holds(&clean);
+    let at = pps
+        .gluing
+        .corners_at(f[0])
+        .next()
+        .expect("a corner at f[0]");
+    let id = pps.gluing.id(at).0;
+    for kind in 0..=3u8 {
+        let src = ThetaFault {
+            inner: PpsJets::new(&pps),
+            at: Some(at),
+            kind,
+        };
+        let r = check_smooth_with(&src, &view, &CFG);
+        fails(&r);
+        let w = &r.witnesses[0];
+        assert_eq!(
+            w.data["i"], id,
+            "kind {kind}: witness names the corner: {}",
+            w.text
+        );
+        if kind < 3 {
+            // Every sample is examined as before (the stencil evaluates as before).
+            assert_eq!(r.examined, clean.examined, "kind {kind}");
+            assert_eq!(r.eval_errors, 0, "kind {kind}");
+            assert_eq!(r.worst_deviation, Some(f64::INFINITY), "kind {kind}");
+        } else {
+            assert!(r.eval_errors > 0 && r.examined >= clean.examined);
+        }
+    }
+    let outside = ThetaFault {
+        inner: PpsJets::new(&pps),
+        at: None,
+        kind: 4,
+    };
+    let r = check_smooth_with(&outside, &view, &CFG);
+    assert!(
+        matches!(r.verdict, pseudomanifold::report::Verdict::Skipped { .. }),
+        "{:?}",
+        r.verdict
+    );
+    assert_eq!(r.examined, 0);
+    assert!(
+        r.eval_errors > 0 && r.note.contains("skipped"),
+        "{}",
+        r.note
+    );
+    let empty = SigmaVView::new(&pps.gluing, vec![], Version::Fixed);
+    let r = check_smooth(&pps, &empty, &CFG);
+    assert!(matches!(
+        r.verdict,
+        pseudomanifold::report::Verdict::Skipped { .. }
+    ));
+    assert_eq!((r.examined, r.eval_errors), (0, 0));
+}
+
+/// `SV-D13` and `SV-H` under the harness: no sample examined is skipped, never holds.
+#[test]
+fn sv_d13_sv_h_empty_sample_is_skipped() {
+    let k = surface(&icosahedron());
+    let pps = build(&k);
+    let r = check_eval(&pps, 0, 7);
+    assert!(matches!(
+        r.verdict,
+        pseudomanifold::report::Verdict::Skipped { .. }
+    ));
+    assert_eq!(r.examined, 0);
+    let t = WedgeTable::<f64>::new(pps.gluing.degrees().iter().copied(), pps.gluing.kappa, 53);
+    let r = check_declared_empty(&k, &pps.gluing, &t, 0);
+    assert!(matches!(
+        r.verdict,
+        pseudomanifold::report::Verdict::Skipped { .. }
+    ));
+    assert_eq!(r.examined, 0);
+}
+
 #[test]
 fn sv_d13_sv_count_sv_bench_eval_and_sample_watertight() {
     use pseudomanifold::surface::output::edge_use_counts;

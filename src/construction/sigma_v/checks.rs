@@ -3,7 +3,7 @@
 //! that are its own (count, first attempt, emptiness of the declared-empty pairs, eval,
 //! smoothness, fit).
 
-use super::gluing::{g_uw_on_domain, Corner, PairCase, SigmaV};
+use super::gluing::{g_uw_on_domain, Corner, PairCase, SigmaV, SigmaVError};
 use super::surface::{SigmaVPps, SvConsts};
 use super::view::{SigmaVView, Version};
 use super::wedge::WedgeTable;
@@ -11,7 +11,7 @@ use crate::construction::maps::{g_v_inv, rotate_frac, EdgeConfig, P2};
 use crate::gluing::data::{GluingData, Idx, Point};
 use crate::gluing::sampled::{check_all, SampleConfig};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{dev_max, Check, CheckResult, OnError, Verdict, Witness};
 use crate::surface::jet::Jet;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -73,26 +73,35 @@ impl Default for SvCheckOptions {
     }
 }
 
-/// Merge `b` into `a` (same check on another view).
+/// Merge `b` into `a` (same check on another view): counts (examined, offenders, evaluation
+/// errors) add, the worst deviation is the NaN-propagating maximum, a failure anywhere fails
+/// the merge, and a view that examined something replaces a skipped verdict.
 fn merge(a: &mut CheckResult, b: CheckResult) {
     a.examined += b.examined;
+    a.offenders += b.offenders;
+    a.eval_errors += b.eval_errors;
     for w in b.witnesses {
-        a.offend(|| w);
-    }
-    a.offenders = a.offenders.max(a.witnesses.len() as u64);
-    if b.offenders > 0 {
-        a.verdict = Verdict::Fails;
+        if a.witnesses.len() < crate::report::MAX_WITNESSES {
+            a.witnesses.push(w);
+        }
     }
     a.worst_deviation = match (a.worst_deviation, b.worst_deviation) {
-        (Some(x), Some(y)) => Some(x.max(y)),
+        (Some(x), Some(y)) => Some(dev_max(x, y)),
         (x, y) => x.or(y),
     };
     a.tolerance = match (a.tolerance, b.tolerance) {
-        (Some(x), Some(y)) => Some(x.max(y)),
+        (Some(x), Some(y)) => Some(dev_max(x, y)),
         (x, y) => x.or(y),
     };
-    if matches!(b.verdict, Verdict::Skipped { .. }) && a.examined == 0 {
+    if b.verdict.is_failure() {
+        a.verdict = Verdict::Fails;
+    } else if matches!(a.verdict, Verdict::Skipped { .. })
+        && !matches!(b.verdict, Verdict::Skipped { .. })
+    {
         a.verdict = b.verdict;
+    }
+    if a.note.is_empty() {
+        a.note = b.note;
     }
 }
 
@@ -118,13 +127,12 @@ pub fn view_faces(k: &SimplicialSurface, n: usize, seed: u64) -> Vec<FaceId> {
 
 /// SPEC `SV-count` (T 3240): |I| = 3·n_t = Σ_v m_v.
 pub fn check_count(g: &SigmaV) -> CheckResult {
-    let mut r = CheckResult::new("SV-count", "|I| = 3·n_t p-domains and patches (T 3240)");
-    r.examined = 1;
-    if g.len() != 3 * g.num_faces() {
-        let (a, b) = (g.len(), g.num_faces());
-        r.offend(|| Witness::new(format!("|I| = {a} ≠ 3·{b}"), json!({"I": a, "n_t": b})));
-    }
-    r
+    let mut r = Check::new("SV-count", "|I| = 3·n_t p-domains and patches (T 3240)");
+    let (a, b) = (g.len(), g.num_faces());
+    r.holds(a == 3 * b, || {
+        Witness::new(format!("|I| = {a} ≠ 3·{b}"), json!({"I": a, "n_t": b}))
+    });
+    r.finish("")
 }
 
 /// SPEC `SV-first` (T 2037–2100): the first attempt (all wedges in one plane) violates
@@ -178,7 +186,7 @@ pub fn check_declared_empty(
     t: &WedgeTable<f64>,
     side: usize,
 ) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         "SV-H",
         "case-(3) pairs with [u,w] an edge are empty: W_i ∩ g_(w,u)(W_j−{0}) = ∅",
     )
@@ -193,11 +201,21 @@ pub fn check_declared_empty(
             if !seen.insert(key) {
                 continue;
             }
-            let Some(l) = g.label(a, b) else { continue };
+            // Every edge of K has a label at both ends; a missing one is an offence (the
+            // statement is about every edge).
+            let Some(l) = g.label(a, b) else {
+                r.holds(false, || {
+                    Witness::new(
+                        format!("edge [{a},{b}] of K has no label at {a}"),
+                        json!({"u": a, "w": b}),
+                    )
+                });
+                continue;
+            };
             let e = g.edge_config(a, l);
             let pairs = declared_empty_pairs(g, a, b);
             for q in omega_uw_grid(&e, side) {
-                r.examined += 1;
+                r.examined(1);
                 for &(i, j) in &pairs {
                     if let Some(y) = g.case3_formula(t, j, i, &q) {
                         r.offend(|| {
@@ -214,7 +232,8 @@ pub fn check_declared_empty(
             }
         }
     }
-    r
+    // Rule 3: no grid point examined is skipped, not holds.
+    r.finish("")
 }
 
 /// The smallest κ on the grid `kappas` at which SV-H fails for degrees (m_u, m_w) (labels 0),
@@ -272,10 +291,11 @@ fn theta_fn<'a>(
 /// SPEC `SV-D13`: eval's point lies in W_(σ,c*) and θ is defined there; samples of every
 /// face (up to `max_faces`).
 pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         "SV-D13",
         "eval(σ,λ,μ,ν): q ∈ W_(σ,c*) and θ defined (T 2649–2747)",
-    );
+    )
+    .with_seed(seed ^ 0xe7a1);
     let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0xe7a1);
     let nf = pps.gluing.num_faces();
     let c = pps.consts_f64();
@@ -292,16 +312,15 @@ pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
             pts.push(crate::report::uniform_in_triangle(&mut rng));
         }
         for b in pts {
-            r.examined += 1;
             match pps.eval(f, &b, c) {
-                Ok((_, _, x)) if x.iter().all(|v| v.is_finite()) => {}
-                Ok((corner, q, x)) => r.offend(|| {
+                Ok((corner, q, x)) => r.holds(x.iter().all(|v| v.is_finite()), || {
                     Witness::new(
                         format!("face {fi} bary {b:?}: θ = {x:?} at corner {corner:?}, q = {q:?}"),
                         json!({"face": fi, "bary": b}),
                     )
                 }),
-                Err(e) => r.offend(|| {
+                // The statement: eval is defined at every point of every face.
+                Err(e) => r.error(OnError::Offence, &e, || {
                     Witness::new(
                         format!("face {fi} bary {b:?}: {e}"),
                         json!({"face": fi, "bary": b, "error": e.to_string()}),
@@ -310,8 +329,46 @@ pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
             }
         }
     }
-    r.seed = Some(seed ^ 0xe7a1);
-    r
+    r.finish("")
+}
+
+/// What `SV-smooth` differentiates: θ_i as a jet at a plane point q of P_v (the construction,
+/// or a planted fault in tests).
+pub trait ThetaJets {
+    /// θ_i at q = f_i(p), with its derivatives to order 3 (as [`SigmaVPps::theta_plane`]).
+    fn theta_jet(&self, i: Corner, q: &P2<Jet<f64>>) -> Result<[Jet<f64>; 3], SigmaVError>;
+}
+
+/// The construction's θ with its jet constants (built once).
+pub struct PpsJets<'a> {
+    pps: &'a SigmaVPps,
+    cj: SvConsts<Jet<f64>>,
+}
+
+impl<'a> PpsJets<'a> {
+    /// The jets of `pps`'s θ.
+    pub fn new(pps: &'a SigmaVPps) -> Self {
+        PpsJets {
+            pps,
+            cj: pps.consts(53),
+        }
+    }
+}
+
+impl ThetaJets for PpsJets<'_> {
+    fn theta_jet(&self, i: Corner, q: &P2<Jet<f64>>) -> Result<[Jet<f64>; 3], SigmaVError> {
+        self.pps.theta_plane(i, q, &self.cj)
+    }
+}
+
+/// Rule 2 for θ: `NotInOmega` says the point (a sample, or p ± h of its stencil) lies outside
+/// Ω_i, outside the statement's domain: skipped. Any other error (Σγ not positive, …) at a
+/// point of Ω_i contradicts "θ_i is defined and C^∞ on Ω_i": an offence.
+fn theta_on_error(e: &SigmaVError) -> OnError {
+    match e {
+        SigmaVError::NotInOmega { .. } => OnError::Skip,
+        _ => OnError::Offence,
+    }
 }
 
 /// SPEC `SV-smooth` (T 3230): θ_i is C^∞ — measured as agreement of the analytic jet with
@@ -319,17 +376,34 @@ pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
 /// point from the jets: second differences err by ≤ h·max|θ'''|/3 over [p−h, p+h] plus
 /// rounding 4ε·|θ|/h².
 pub fn check_smooth(pps: &SigmaVPps, view: &SigmaVView, cfg: &SampleConfig) -> CheckResult {
-    let mut r = CheckResult::new(
+    check_smooth_with(&PpsJets::new(pps), view, cfg)
+}
+
+/// [`check_smooth`] on any source of θ's jets. Every sample goes through [`Check`]: a
+/// non-finite jet coefficient (value or any derivative to order 3) at one of the five stencil
+/// points is a NaN deviation, an offence (C^∞ claims every derivative exists).
+pub fn check_smooth_with(
+    src: &dyn ThetaJets,
+    view: &SigmaVView,
+    cfg: &SampleConfig,
+) -> CheckResult {
+    let mut r = Check::sampled(
         "SV-smooth",
         "θ_(σ,v) is C^∞ (jet vs central differences, order ≤ 2)",
+        cfg.seed,
+        1.0,
     );
-    r.seed = Some(cfg.seed);
-    let cj: SvConsts<Jet<f64>> = pps.consts(53);
     let mut rng = cfg.rng(77);
     let h = 1e-3;
     let ids = view.indices();
     for &i in &ids {
-        let Some(c) = view.corner(i) else { continue };
+        // Every index of the view has a corner (SigmaVView::new keeps only those of I).
+        let Some(c) = view.corner(i) else {
+            r.error(OnError::Offence, "index without a corner", || {
+                Witness::new(format!("corner {i}: not a corner of I"), json!({"i": i}))
+            });
+            continue;
+        };
         let mut pts: Vec<Point<f64, 2>> = view.sample_p_domain(i, &mut rng, cfg.n / 4 + 1);
         for &j in &ids {
             if j != i {
@@ -337,24 +411,51 @@ pub fn check_smooth(pps: &SigmaVPps, view: &SigmaVView, cfg: &SampleConfig) -> C
             }
         }
         for x in pts {
+            // f_i is defined on i's whole copy (the wedge table has every degree of K).
             let Some(q) = view.to_plane(i, &x) else {
+                r.error(OnError::Offence, "f_i undefined", || {
+                    Witness::new(
+                        format!(
+                            "corner {i} at x = ({:.6}, {:.6}): f_i undefined",
+                            x[0], x[1]
+                        ),
+                        json!({"i": i, "x": x}),
+                    )
+                });
                 continue;
             };
             let jet_at = |dx: f64, dy: f64| {
                 let (a, b) = Jet::variables(q.x + dx, q.y + dy);
-                pps.theta_plane(c, &P2::new(a, b), &cj).ok()
+                src.theta_jet(c, &P2::new(a, b))
             };
-            let pts3 = [
-                jet_at(0.0, 0.0),
-                jet_at(h, 0.0),
-                jet_at(-h, 0.0),
-                jet_at(0.0, h),
-                jet_at(0.0, -h),
-            ];
-            let [Some(t0), Some(px), Some(mx), Some(py), Some(my)] = pts3 else {
-                continue; // p ± h left Ω_i
-            };
-            r.examined += 1;
+            let stencil = [(0.0, 0.0), (h, 0.0), (-h, 0.0), (0.0, h), (0.0, -h)];
+            let mut jets: Vec<[Jet<f64>; 3]> = Vec::with_capacity(5);
+            let mut failed = None;
+            for (dx, dy) in stencil {
+                match jet_at(dx, dy) {
+                    Ok(t) => jets.push(t),
+                    Err(e) => {
+                        failed = Some((dx, dy, e));
+                        break;
+                    }
+                }
+            }
+            if let Some((dx, dy, e)) = failed {
+                r.error(theta_on_error(&e), &e, || {
+                    Witness::new(
+                        format!(
+                            "corner {i} at q = ({:.6}, {:.6}) + ({dx}, {dy}): {e}",
+                            q.x, q.y
+                        ),
+                        json!({"i": i, "q": [q.x, q.y], "offset": [dx, dy], "error": e.to_string()}),
+                    )
+                });
+                continue;
+            }
+            let [t0, px, mx, py, my] = [0, 1, 2, 3, 4].map(|k| &jets[k]);
+            let finite = jets
+                .iter()
+                .all(|t| t.iter().all(|d| d.c.iter().all(|x| x.is_finite())));
             let third = |t: &[Jet<f64>; 3]| -> f64 {
                 t.iter()
                     .flat_map(|d| {
@@ -365,29 +466,35 @@ pub fn check_smooth(pps: &SigmaVPps, view: &SigmaVView, cfg: &SampleConfig) -> C
                             d.derivative(0, 3),
                         ]
                     })
-                    .fold(0.0f64, |a, b| a.max(b.abs()))
+                    .fold(0.0f64, |a, b| dev_max(a, b.abs()))
             };
-            let t3 = [&t0, &px, &mx, &py, &my]
-                .iter()
-                .map(|t| third(t))
-                .fold(0.0f64, f64::max);
-            let mag = t0.iter().map(|d| d.value().abs()).fold(1.0f64, f64::max);
+            let t3 = jets.iter().map(third).fold(0.0f64, dev_max);
+            let mag = t0.iter().map(|d| d.value().abs()).fold(1.0f64, dev_max);
             let tol = 2.0 * h * t3 / 3.0 + 4.0 * f64::EPSILON * mag / (h * h);
-            let mut dev = 0.0f64;
+            let mut dev = if finite { 0.0f64 } else { f64::NAN };
             for d in 0..3 {
                 let fxx = (px[d].value() - 2.0 * t0[d].value() + mx[d].value()) / (h * h);
                 let fyy = (py[d].value() - 2.0 * t0[d].value() + my[d].value()) / (h * h);
-                dev = dev.max((fxx - t0[d].derivative(2, 0)).abs() / tol);
-                dev = dev.max((fyy - t0[d].derivative(0, 2)).abs() / tol);
+                dev = dev_max(dev, (fxx - t0[d].derivative(2, 0)).abs() / tol);
+                dev = dev_max(dev, (fyy - t0[d].derivative(0, 2)).abs() / tol);
             }
-            r.worst_deviation = Some(r.worst_deviation.unwrap_or(0.0).max(dev));
-            if !(dev <= 1.0) {
-                r.offend(|| Witness::new(format!("corner {i} at q = ({:.6}, {:.6}): second difference off the jet by {dev:.3e}× the tolerance", q.x, q.y), json!({"i": i, "q": [q.x, q.y], "ratio": dev})));
-            }
+            let what = if finite {
+                "second difference off the jet by"
+            } else {
+                "non-finite jet coefficient; deviation"
+            };
+            r.deviation(dev, || {
+                Witness::new(
+                    format!(
+                        "corner {i} at q = ({:.6}, {:.6}): {what} {dev:.3e}× the tolerance",
+                        q.x, q.y
+                    ),
+                    json!({"i": i, "q": [q.x, q.y], "ratio": dev, "finite": finite}),
+                )
+            });
         }
     }
-    r.tolerance = Some(1.0);
-    r.with_note(format!(
+    r.finish(format!(
         "h = {h}; deviation relative to the per-point tolerance"
     ))
 }
@@ -429,28 +536,26 @@ pub fn run_sigma_v_checks(
             return out;
         }
     };
-    let mut fit = CheckResult::new(
+    let mut fit = Check::new(
         "SV-psi",
         "ψ by least squares: full rank per (m, d) (T 2916)",
     );
     for f in pps.fit_info() {
-        fit.examined += 1;
-        if f.rank != f.unknowns {
+        fit.holds(f.rank == f.unknowns, || {
             let f = f.clone();
-            fit.offend(|| {
-                Witness::new(
-                    format!("degree {}: rank {} < {} unknowns", f.m, f.rank, f.unknowns),
-                    json!(f),
-                )
-            });
-        }
+            Witness::new(
+                format!("degree {}: rank {} < {} unknowns", f.m, f.rank, f.unknowns),
+                json!(f),
+            )
+        });
     }
+    // Reported, not judged; NaN-propagating so a NaN condition number shows.
     let worst_cond = pps
         .fit_info()
         .iter()
         .map(|f| f.condition)
-        .fold(0.0, f64::max);
-    out.push(fit.with_note(format!("largest κ(A) = {worst_cond:.3e}")));
+        .fold(0.0, dev_max);
+    out.push(fit.finish(format!("largest κ(A) = {worst_cond:.3e}")));
     let mut merged: Vec<CheckResult> = Vec::new();
     for &f in &faces {
         let view = SigmaVView::at_vertices(&g, &k.face(f), Version::Fixed);

@@ -49,7 +49,7 @@ pub fn check_gu_factor_corrected(degrees: &[u32]) -> CheckResult {
             Ok(p) => {
                 let want = PI / 3.0 * 0.999_999;
                 let dev = (p.theta - want).abs();
-                worst = worst.max(dev);
+                worst = crate::report::dev_max(worst, dev);
                 let tol = 64.0 * f64::EPSILON * (m as f64 / 6.0).max(1.0) * PI;
                 if !(dev <= tol) {
                     r.offend(|| {

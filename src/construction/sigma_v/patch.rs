@@ -227,7 +227,7 @@ pub fn factor(w: &WedgeConsts<f64>, d: usize) -> TriFit {
     }
     let svd = a.svd(true, true);
     let sv = &svd.singular_values;
-    let smax = sv.iter().cloned().fold(0.0f64, f64::max);
+    let smax = sv.iter().cloned().fold(0.0f64, crate::report::dev_max);
     let smin = sv.iter().cloned().fold(f64::INFINITY, f64::min);
     let cut = smax * RCOND.max(rows.max(nc) as f64 * f64::EPSILON);
     let rank = sv.iter().filter(|&&s| s > cut).count();

@@ -22,7 +22,7 @@ use super::stam::{depth_cap, PatchJet};
 use super::surface::{LoopError, LoopSurface, MAX_VALENCE};
 use crate::construction::Mp;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{dev_max, Check, CheckResult, OnError, Verdict, Witness};
 use rand::seq::SliceRandom;
 use rand::SeedableRng;
 use serde_json::json;
@@ -123,83 +123,117 @@ fn sample<T: Clone>(mut v: Vec<T>, max: usize, seed: u64) -> Vec<T> {
     v
 }
 
-/// Offend with a witness; NaN deviations always offend.
-fn record(
-    r: &mut CheckResult,
-    dev: f64,
-    tol: f64,
-    text: impl FnOnce() -> String,
-    data: serde_json::Value,
-    worst: &mut (f64, f64),
-) {
-    r.examined += 1;
-    if dev.is_nan() || dev > tol {
-        r.offend(|| {
+/// A Loop check: every sample goes through [`Check`] (harness rules 1–3); the tolerances differ
+/// per sample, so the reported worst is the (deviation, tolerance) pair of largest ratio, a
+/// non-finite deviation shown as +∞.
+struct Ratio {
+    c: Check,
+    worst: (f64, f64),
+}
+
+/// d/tol for ranking samples, never NaN: a non-finite deviation or tolerance ranks +∞.
+fn rank(d: f64, tol: f64) -> f64 {
+    if !(d.is_finite() && tol.is_finite()) {
+        f64::INFINITY
+    } else if d == 0.0 {
+        0.0
+    } else if tol > 0.0 {
+        d / tol
+    } else {
+        f64::INFINITY
+    }
+}
+
+impl Ratio {
+    fn new(c: Check, tol0: f64) -> Self {
+        Ratio {
+            c,
+            worst: (0.0, tol0),
+        }
+    }
+
+    /// One measured deviation against its tolerance (rule 1: NaN or ±∞ offends).
+    fn deviation(
+        &mut self,
+        dev: f64,
+        tol: f64,
+        text: impl FnOnce() -> String,
+        data: serde_json::Value,
+    ) {
+        self.c.deviation_within(dev, tol, || {
             Witness::new(
                 format!("{} (deviation {dev:.3e} > tolerance {tol:.3e})", text()),
                 data,
             )
         });
+        if rank(dev, tol) > rank(self.worst.0, self.worst.1) {
+            let shown = if dev.is_finite() { dev } else { f64::INFINITY };
+            self.worst = (shown, tol);
+        }
     }
-    if dev.is_nan() || dev / tol > worst.0 / worst.1 || worst.1 == 0.0 {
-        *worst = (dev, tol);
-    }
-}
 
-fn finish(mut r: CheckResult, worst: (f64, f64), seed: Option<u64>, note: &str) -> CheckResult {
-    if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "no samples".into(),
-        };
+    /// An evaluation that failed where the statement claims S′ is defined (rule 2, offence).
+    fn error(
+        &mut self,
+        err: &dyn std::fmt::Display,
+        text: impl FnOnce() -> String,
+        data: serde_json::Value,
+    ) {
+        self.c.error(OnError::Offence, err, || {
+            Witness::new(format!("{}: evaluation failed: {err}", text()), data)
+        });
     }
-    r.seed = seed;
-    r.worst_deviation = Some(worst.0);
-    r.tolerance = Some(worst.1);
-    r.with_note(note)
+
+    /// Rule 3 (nothing examined is skipped) by [`Check::finish`]; the worst pair as reported
+    /// before the harness.
+    fn finish(self, note: &str) -> CheckResult {
+        let mut r = self.c.finish(note);
+        r.worst_deviation = Some(self.worst.0);
+        r.tolerance = Some(self.worst.1);
+        r
+    }
 }
 
 /// `LOOP-eigen`: residuals of the eigen-structure for the valences ≠ 6 of K (and 3..=12), in
 /// f64 (bound 64·K·ε) and at `mp_prec` bits for the valences of K (bound 64·K·2^-prec).
 pub fn check_eigen(valences: &[u32], mp_prec: u32) -> CheckResult {
-    let mut r = CheckResult::new(
-        "LOOP-eigen",
-        "Aᵐ = block eigen-decomposition (Stam 1998, Sec. 4), f64 and MP",
+    let mut r = Ratio::new(
+        Check::new(
+            "LOOP-eigen",
+            "Aᵐ = block eigen-decomposition (Stam 1998, Sec. 4), f64 and MP",
+        ),
+        1.0,
     );
-    let mut worst = (0.0, 1.0);
     let mut list: Vec<u32> = (3..=12)
         .chain(valences.iter().copied())
         .filter(|&n| n != 6)
         .collect();
     list.sort_unstable();
     list.dedup();
+    // A valence without an eigen-structure is an offence: the statement claims one for every
+    // valence 3..=MAX_VALENCE.
+    let missing = |n: u32| format!("no eigen-structure for valence {n}");
     for &n in &list {
         let kk = (n + 6) as f64;
         let tol = 64.0 * kk * f64::EPSILON;
-        let res = EigenStructure::<f64>::new(n as usize, 53).map_or(f64::NAN, |e| e.residuals(6));
-        record(
-            &mut r,
-            res,
-            tol,
-            || format!("valence {n}, f64"),
-            json!({"valence": n, "precision": 53}),
-            &mut worst,
-        );
+        let text = || format!("valence {n}, f64");
+        let data = json!({"valence": n, "precision": 53});
+        match EigenStructure::<f64>::new(n as usize, 53) {
+            Some(e) => r.deviation(e.residuals(6), tol, text, data),
+            None => r.error(&missing(n), text, data),
+        }
     }
     for &n in valences.iter().filter(|&&n| n != 6).take(6) {
         let kk = (n + 6) as f64;
         let tol = 64.0 * kk * 2f64.powi(-(mp_prec as i32));
-        let res =
-            EigenStructure::<Mp>::new(n as usize, mp_prec).map_or(f64::NAN, |e| e.residuals(3));
-        record(
-            &mut r,
-            res,
-            tol,
-            || format!("valence {n}, {mp_prec} bits"),
-            json!({"valence": n, "precision": mp_prec}),
-            &mut worst,
-        );
+        let text = || format!("valence {n}, {mp_prec} bits");
+        let data = json!({"valence": n, "precision": mp_prec});
+        match EigenStructure::<Mp>::new(n as usize, mp_prec) {
+            Some(e) => r.deviation(e.residuals(3), tol, text, data),
+            None => r.error(&missing(n), text, data),
+        }
     }
-    finish(r, worst, None, "max |entry| of S₁₁U − UΛ₁, UU⁻¹ − I, S₂₂W − WΛ₂, WW⁻¹ − I, B_kAᵐ − formula (m ≤ 6 f64, ≤ 3 MP)")
+    r.finish("max |entry| of S₁₁U − UΛ₁, UU⁻¹ − I, S₂₂W − WΛ₂, WW⁻¹ − I, B_kAᵐ − formula (m ≤ 6 f64, ≤ 3 MP)")
 }
 
 /// The closed-form masks at v: (limit position, t₁ × t₂).
@@ -243,7 +277,7 @@ fn normal_floor(k: &SimplicialSurface, v: VertexId, (t1, t2): ([f64; 3], [f64; 3
     let a = std::iter::once(v)
         .chain((0..k.degree(v)).filter_map(|i| k.link_vertex(v, i)))
         .flat_map(|x| k.position(x))
-        .fold(0.0f64, |acc, x| acc.max(x.abs()));
+        .fold(0.0f64, |acc, x| dev_max(acc, x.abs()));
     let rel = m * a / norm(t1).min(norm(t2)).max(f64::MIN_POSITIVE);
     let sin = norm(cross(t1, t2)) / (norm(t1) * norm(t2)).max(f64::MIN_POSITIVE);
     COND * f64::EPSILON * rel / sin.max(f64::MIN_POSITIVE)
@@ -269,15 +303,22 @@ pub fn check_vertices(
 ) -> Vec<CheckResult> {
     let rad = radius(k);
     let tol = COND * f64::EPSILON * rad;
-    let mut c0 = CheckResult::new(
-        "LOOP-C0-vertex",
-        "every face around v gives the same point at v",
+    let mut c0 = Ratio::new(
+        Check::new(
+            "LOOP-C0-vertex",
+            "every face around v gives the same point at v",
+        )
+        .with_seed(opts.seed),
+        tol,
     );
-    let mut mask = CheckResult::new(
-        "LOOP-limit-mask",
-        "S′(v) = closed-form limit mask (3v + 8βΣrᵢ)/(3 + 8nβ)",
+    let mut mask = Ratio::new(
+        Check::new(
+            "LOOP-limit-mask",
+            "S′(v) = closed-form limit mask (3v + 8βΣrᵢ)/(3 + 8nβ)",
+        )
+        .with_seed(opts.seed),
+        tol,
     );
-    let (mut w0, mut w1) = ((0.0, tol), (0.0, tol));
     let vs = sample(
         k.vertices().collect::<Vec<_>>(),
         opts.max_elements,
@@ -287,37 +328,33 @@ pub fn check_vertices(
         let (lim, _) = masks(k, v);
         let mut first: Option<[f64; 3]> = None;
         for (f, c) in fans(k, v) {
-            let p = src
-                .jet(f, c, [1.0, 0.0, 0.0], false)
-                .map_or([f64::NAN; 3], |j| j.p);
+            let text = || format!("vertex {} from face {}", v.0, f.0);
+            let data = json!({"vertex": v.0, "face": f.0});
+            let p = match src.jet(f, c, [1.0, 0.0, 0.0], false) {
+                Ok(j) => j.p,
+                Err(e) => {
+                    // S′ is defined at every vertex of K: an error is an offence of both.
+                    c0.error(&e, text, data.clone());
+                    mask.error(&e, text, data);
+                    continue;
+                }
+            };
             let d0 = first.map_or(0.0, |q| norm(sub(p, q)));
             if first.is_none() {
                 first = Some(p);
             }
-            record(
-                &mut c0,
-                d0,
-                tol,
-                || format!("vertex {} from face {}", v.0, f.0),
-                json!({"vertex": v.0, "face": f.0}),
-                &mut w0,
-            );
+            c0.deviation(d0, tol, text, data);
             let d1 = norm(sub(p, lim));
-            record(
-                &mut mask,
+            mask.deviation(
                 d1,
                 tol,
                 || format!("vertex {} (valence {}) from face {}", v.0, k.degree(v), f.0),
                 json!({"vertex": v.0, "face": f.0, "eval": p, "mask": lim}),
-                &mut w1,
             );
         }
     }
     let note = format!("tolerance {COND}·ε·R, R = {rad:.4e}");
-    vec![
-        finish(c0, w0, Some(opts.seed), &note),
-        finish(mask, w1, Some(opts.seed), &note),
-    ]
+    vec![c0.finish(&note), mask.finish(&note)]
 }
 
 /// Ratio ρ/λ₁ of the largest eigenvalue below λ₁ to λ₁ (rate at which the normal near an
@@ -328,13 +365,14 @@ pub fn normal_rate(n: u32) -> f64 {
         None => return f64::NAN,
     };
     let l1 = e.lambda[2];
-    let rho = e
-        .lambda
-        .iter()
-        .chain(e.mu.iter())
-        .map(|x| x.abs())
+    let all = || e.lambda.iter().chain(e.mu.iter()).map(|x| x.abs());
+    // A NaN eigenvalue would fail the filter below and vanish: the rate is NaN then.
+    if all().any(|x| x.is_nan()) {
+        return f64::NAN;
+    }
+    let rho = all()
         .filter(|&x| x < l1 * (1.0 - 1e-12))
-        .fold(0.0f64, f64::max);
+        .fold(0.0f64, dev_max);
     rho / l1
 }
 
@@ -386,11 +424,14 @@ pub fn check_normals(
     src: &dyn JetSource,
     opts: &LoopCheckOptions,
 ) -> CheckResult {
-    let mut r = CheckResult::new(
-        "LOOP-normal-mask",
-        "normal at v = t₁ × t₂ of the tangent masks; C¹ at extraordinary v (measured rate)",
+    let mut r = Ratio::new(
+        Check::new(
+            "LOOP-normal-mask",
+            "normal at v = t₁ × t₂ of the tangent masks; C¹ at extraordinary v (measured rate)",
+        )
+        .with_seed(opts.seed ^ 1),
+        1.0,
     );
-    let mut worst = (0.0, 1.0);
     let ks = normal_levels();
     let kk = ks.last().copied().unwrap_or(0);
     let mut unresolved: Vec<u32> = vec![];
@@ -400,6 +441,16 @@ pub fn check_normals(
         opts.max_elements,
         opts.seed ^ 1,
     );
+    // The derivatives of S′ near v, or why there are none. S′ is defined (with derivatives
+    // off the extraordinary vertex itself) on every face of K, so an error is an offence,
+    // whatever the resolvability of the decay.
+    let derivs = |f, c, b| -> Result<[[f64; 3]; 2], String> {
+        match src.jet(f, c, b, true) {
+            Ok(PatchJet { d: Some(d), .. }) => Ok([d[0], d[1]]),
+            Ok(_) => Err("no derivatives returned although requested".into()),
+            Err(e) => Err(e.to_string()),
+        }
+    };
     for v in vs {
         let t = tangent_masks(k, v);
         let nm = cross(t.0, t.1);
@@ -408,39 +459,42 @@ pub fn check_normals(
         let floor = normal_floor(k, v, t);
         for (f, c) in fans(k, v) {
             if n == 6 {
-                let (dev, tol) = match src.jet(f, c, [1.0, 0.0, 0.0], true) {
-                    Ok(PatchJet { d: Some(d), .. }) => {
+                let text = || format!("vertex {} (valence 6), face {}", v.0, f.0);
+                let data = json!({"vertex": v.0, "face": f.0});
+                match derivs(f, c, [1.0, 0.0, 0.0]) {
+                    Ok(d) => {
                         let nn = cross(d[0], d[1]);
-                        let tol = COND * f64::EPSILON * norm(d[0]).max(norm(d[1])).powi(2)
+                        let tol = COND * f64::EPSILON * dev_max(norm(d[0]), norm(d[1])).powi(2)
                             / norm(nn).max(f64::MIN_POSITIVE);
-                        (angle(nn, nm), tol)
+                        r.deviation(angle(nn, nm), tol, text, data);
                     }
-                    _ => (f64::NAN, 0.0),
-                };
-                record(
-                    &mut r,
-                    dev,
-                    tol,
-                    || format!("vertex {} (valence 6), face {}", v.0, f.0),
-                    json!({"vertex": v.0, "face": f.0}),
-                    &mut worst,
+                    Err(e) => r.error(&e, text, data),
+                }
+                continue;
+            }
+            let mut a: Vec<f64> = Vec::with_capacity(ks.len());
+            let mut err: Option<(i32, String)> = None;
+            for &kl in &ks {
+                let d = 2f64.powi(-kl);
+                match derivs(f, c, [1.0 - 2.0 * d, d, d]) {
+                    Ok(j) => a.push(angle(cross(j[0], j[1]), nm)),
+                    Err(e) => {
+                        err.get_or_insert((kl, e));
+                        a.push(f64::NAN);
+                    }
+                }
+            }
+            if let Some((kl, e)) = err {
+                r.error(
+                    &e,
+                    || format!("vertex {} (valence {n}), face {} at 2^-{kl}", v.0, f.0),
+                    json!({"vertex": v.0, "face": f.0, "level": kl}),
                 );
                 continue;
             }
-            let a: Vec<f64> = ks
-                .iter()
-                .map(|&kl| {
-                    let d = 2f64.powi(-kl);
-                    match src.jet(f, c, [1.0 - 2.0 * d, d, d], true) {
-                        Ok(PatchJet { d: Some(j), .. }) => angle(cross(j[0], j[1]), nm),
-                        _ => f64::NAN,
-                    }
-                })
-                .collect();
             let Some((last, tol, k0, a0)) = normal_decay(&ks, &a, rate, floor) else {
                 if rate.is_nan() || a.iter().any(|x| x.is_nan()) {
-                    record(
-                        &mut r,
+                    r.deviation(
                         f64::NAN,
                         0.0,
                         || {
@@ -450,22 +504,21 @@ pub fn check_normals(
                             )
                         },
                         json!({"vertex": v.0, "face": f.0, "angles": a}),
-                        &mut worst,
                     );
                 } else if unresolved.last() != Some(&v.0) {
+                    // Skipped on purpose: the decay is not resolvable at this depth (counted
+                    // in the note).
                     unresolved.push(v.0);
                 }
                 continue;
             };
-            record(
-                &mut r,
+            r.deviation(
                 last,
                 tol,
                 || {
                     format!("vertex {} (valence {n}), face {}: largest angle {a0:.3e} at 2^-{k0} (levels ≤ {}), {last:.3e} at 2^-{kk}, rate ρ/λ₁ = {rate:.4}", v.0, f.0, kk / 2)
                 },
                 json!({"vertex": v.0, "face": f.0, "levels": ks, "angles": a, "rate": rate}),
-                &mut worst,
             );
         }
     }
@@ -491,7 +544,7 @@ pub fn check_normals(
             }
         );
     }
-    finish(r, worst, Some(opts.seed ^ 1), &note)
+    r.finish(&note)
 }
 
 /// `LOOP-C0-edge`, `LOOP-C1-edge`, `LOOP-C2-edge`: across edges [a, b] with faces (a, b, c)
@@ -503,28 +556,28 @@ pub fn check_edges(
     opts: &LoopCheckOptions,
 ) -> Vec<CheckResult> {
     let rad = radius(k);
+    let seed = opts.seed ^ 2;
     let mut rs = [
-        CheckResult::new(
+        (
             "LOOP-C0-edge",
             "S′ continuous across edges (same point from both faces)",
         ),
-        CheckResult::new(
+        (
             "LOOP-C1-edge",
             "first derivatives agree across edges (lattice unfolding)",
         ),
-        CheckResult::new(
+        (
             "LOOP-C2-edge",
             "second derivatives agree across edges (lattice unfolding)",
         ),
-    ];
-    let mut worst = [(0.0, 1.0); 3];
-    let edges = sample(
-        k.edges().collect::<Vec<_>>(),
-        opts.max_elements,
-        opts.seed ^ 2,
-    );
+    ]
+    .map(|(id, name)| Ratio::new(Check::new(id, name).with_seed(seed), 1.0));
+    let edges = sample(k.edges().collect::<Vec<_>>(), opts.max_elements, seed);
+    // Edges with one face have nothing across them: outside the statement, counted.
+    let mut boundary = 0usize;
     for (a, b) in edges {
         let (Some(h1), Some(h2)) = (k.halfedge(a, b), k.halfedge(b, a)) else {
+            boundary += 1;
             continue;
         };
         let c = k.dest(k.next(h1));
@@ -547,43 +600,44 @@ pub fn check_edges(
                 )
             };
             let data = json!({"edge": [a.0, b.0], "t": t, "faces": [f1.0, f2.0]});
+            // S′ is defined on both faces of every edge of K: an error offends all three.
             let (j1, j2) = match (j1, j2) {
                 (Ok(x), Ok(y)) => (x, y),
-                _ => {
-                    for (r, w) in rs.iter_mut().zip(worst.iter_mut()) {
-                        record(r, f64::NAN, 0.0, wit, data.clone(), w);
+                (Err(e), _) | (_, Err(e)) => {
+                    for r in rs.iter_mut() {
+                        r.error(&e, wit, data.clone());
                     }
                     continue;
                 }
             };
             let level = j1.level.max(j2.level) as i32;
+            // NaN-propagating: a NaN component makes the tolerance NaN, itself an offence.
             let tol = |q: i32, x: &[[f64; 3]], y: &[[f64; 3]]| {
-                let m: f64 = x.iter().chain(y).map(|v| norm(*v)).fold(0.0, f64::max);
+                let m: f64 = x.iter().chain(y).map(|v| norm(*v)).fold(0.0, dev_max);
                 COND * f64::EPSILON * (2.0 * m + rad * 2f64.powi(q * level))
             };
             let d0 = norm(sub(j1.p, j2.p));
             let t0 = tol(0, &[j1.p], &[j2.p]);
-            record(&mut rs[0], d0, t0, wit, data.clone(), &mut worst[0]);
+            rs[0].deviation(d0, t0, wit, data.clone());
             let (Some(e1), Some(e2)) = (j1.d, j2.d) else {
-                record(&mut rs[1], f64::NAN, 0.0, wit, data.clone(), &mut worst[1]);
-                record(&mut rs[2], f64::NAN, 0.0, wit, data, &mut worst[2]);
+                let e = "no derivatives returned although requested";
+                rs[1].error(&e, wit, data.clone());
+                rs[2].error(&e, wit, data);
                 continue;
             };
-            let d1 = norm(add(e1[0], e2[0])).max(norm(add(e1[1], e2[1])));
+            let d1 = dev_max(norm(add(e1[0], e2[0])), norm(add(e1[1], e2[1])));
             let t1 = tol(1, &e1[..2], &e2[..2]);
-            record(&mut rs[1], d1, t1, wit, data.clone(), &mut worst[1]);
-            let d2 = (2..5).map(|i| norm(sub(e1[i], e2[i]))).fold(0.0, f64::max);
+            rs[1].deviation(d1, t1, wit, data.clone());
+            let d2 = (2..5).map(|i| norm(sub(e1[i], e2[i]))).fold(0.0, dev_max);
             let t2 = tol(2, &e1[2..], &e2[2..]);
-            record(&mut rs[2], d2, t2, wit, data, &mut worst[2]);
+            rs[2].deviation(d2, t2, wit, data);
         }
     }
-    let note = format!("t ∈ {{1/4, 1/2, 3/4}} and 2^-4, 2^-10 from an extraordinary end; tolerance {COND}·ε·(2 max|X| + R·2^(q·level)), R = {rad:.4e}");
-    let [a, b, c] = rs;
-    vec![
-        finish(a, worst[0], Some(opts.seed ^ 2), &note),
-        finish(b, worst[1], Some(opts.seed ^ 2), &note),
-        finish(c, worst[2], Some(opts.seed ^ 2), &note),
-    ]
+    let mut note = format!("t ∈ {{1/4, 1/2, 3/4}} and 2^-4, 2^-10 from an extraordinary end; tolerance {COND}·ε·(2 max|X| + R·2^(q·level)), R = {rad:.4e}");
+    if boundary > 0 {
+        note += &format!("; {boundary} sampled boundary edge(s) not examined (one face)");
+    }
+    rs.map(|r| r.finish(&note)).into()
 }
 
 /// Every Loop S′ check on K.
@@ -610,14 +664,14 @@ pub fn check_pps_distance(
     target: &dyn crate::surface::TargetSurface,
     seed: u64,
 ) -> CheckResult {
-    let mut r = CheckResult::new(
+    let mut r = Check::new(
         "C6.2-mimics",
         "PPS ↔ S′ distance at eval samples (max / p99) [measured]",
-    );
+    )
+    .with_seed(seed ^ 3);
     let faces = sample(k.faces().collect::<Vec<_>>(), 2000, seed ^ 3);
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed ^ 3);
     let mut d: Vec<(f64, u32, [f64; 3])> = vec![];
-    let mut nan = 0u64;
     for f in faces {
         let mut bs = vec![
             [1.0, 0.0, 0.0],
@@ -632,50 +686,54 @@ pub fn check_pps_distance(
             bs.push(crate::report::uniform_in_triangle(&mut rng));
         }
         for b in bs {
-            r.examined += 1;
-            let p = pps.eval_f64(f, b).unwrap_or([f64::NAN; 3]);
+            let data = || json!({"face": f.0, "bary": b});
+            let p = match pps.eval_f64(f, b) {
+                Ok(p) => p,
+                Err(e) => {
+                    // eval is defined on every point of every face (Sec. 6.1.4).
+                    r.error(OnError::Offence, &e, || {
+                        Witness::new(format!("face {} at {b:?}: {e}", f.0), data())
+                    });
+                    continue;
+                }
+            };
             let q = target.eval(f, k.face(f), b);
             let dist = norm(sub(p, q));
-            if dist.is_nan() {
-                nan += 1;
-                r.offend(|| {
-                    Witness::new(
-                        format!("face {} at {b:?}: NaN", f.0),
-                        json!({"face": f.0, "bary": b}),
-                    )
-                });
-            } else {
+            // Measured, no bound; only a non-finite distance is an offence.
+            r.holds(dist.is_finite(), || {
+                Witness::new(format!("face {} at {b:?}: distance {dist}", f.0), data())
+            });
+            if dist.is_finite() {
                 d.push((dist, f.0, b));
             }
         }
     }
     d.sort_by(|a, b| a.0.total_cmp(&b.0));
     let rad = radius(k);
-    if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "no samples".into(),
-        };
-        return r;
-    }
-    if nan == 0 {
-        r.verdict = Verdict::Warning;
-    }
     let (max, p99) = d
         .last()
         .map(|x| (x.0, d[(d.len() * 99 / 100).min(d.len() - 1)].0))
         .unwrap_or((f64::NAN, f64::NAN));
-    r.seed = Some(seed ^ 3);
-    r.worst_deviation = Some(max);
     let at = d
         .last()
         .map(|x| format!("face {} at {:?}", x.1, x.2))
         .unwrap_or_default();
-    r.with_note(format!(
+    let note = format!(
         "S′ = {}: max {max:.4e} ({:.3e} R), p99 {p99:.4e} ({:.3e} R), R = {rad:.4e}; worst {at}; the paper gives no bound",
         target.name(),
         max / rad,
         p99 / rad
-    ))
+    );
+    let mut r = r.finish(note);
+    if !d.is_empty() {
+        r.worst_deviation = Some(max);
+    }
+    // A measurement, not a claim: shown as a warning unless a sample offended (rule 1/2) or
+    // nothing was examined (rule 3).
+    if r.verdict == Verdict::Holds {
+        r.verdict = Verdict::Warning;
+    }
+    r
 }
 
 #[cfg(test)]

@@ -325,7 +325,8 @@ impl<S: Scalar> EigenStructure<S> {
         let mut worst = 0.0f64;
         let mut note = |x: &S| {
             let v = x.to_f64().abs();
-            worst = if v.is_nan() { f64::NAN } else { worst.max(v) };
+            // NaN-propagating: `NaN.max(v)` is v, which would drop an earlier NaN.
+            worst = crate::report::dev_max(worst, v);
         };
         let s11: Mat<S> = a[..=n].iter().map(|r| r[..=n].to_vec()).collect();
         let su = matmul(&s11, &self.u, prec);
