@@ -24,6 +24,10 @@ pub enum Seen {
     Fails,
     /// Proven (interval or exact certificate).
     Certified,
+    /// A planted fault was caught (the row is about a checker).
+    Caught,
+    /// A quantity was measured and reported (the row states a measurement, not a claim).
+    Measured,
 }
 
 impl Seen {
@@ -34,6 +38,8 @@ impl Seen {
             Seen::Restricted => "restricted",
             Seen::Fails => "fails",
             Seen::Certified => "certified",
+            Seen::Caught => "caught",
+            Seen::Measured => "measured",
         }
     }
 }
@@ -115,8 +121,8 @@ pub fn assert_fails_as_written(r: &CheckResult) {
     record(&r.id, Seen::Fails, r.examined);
 }
 
-/// A planted fault is caught: the check fails with a witness. Nothing is recorded (a planted
-/// fault says nothing of the paper's statement).
+/// A planted fault is caught: the check fails with a witness. Recorded as `caught` (it says
+/// nothing of the paper's statement; a row about a checker states it).
 #[track_caller]
 pub fn assert_caught(r: &CheckResult) {
     assert!(
@@ -125,4 +131,5 @@ pub fn assert_caught(r: &CheckResult) {
         r.id,
         pseudomanifold::report::render_text(std::slice::from_ref(r))
     );
+    record(&r.id, Seen::Caught, r.examined.max(1));
 }
