@@ -144,19 +144,20 @@ pub const ERRATA: &[(&str, &str)] = &[
 
 impl MsReport {
     /// A check failed that is not a documented erratum whose corrected row is in the report
-    /// and does not fail.
+    /// and holds on something examined.
     pub fn failed(&self) -> bool {
         self.checks.iter().any(|c| c.failed() && !self.excused(c))
     }
 
-    /// `c` fails as written and its corrected row was checked here and did not fail.
+    /// `c` fails as written and its corrected row was checked here and holds on something
+    /// examined (a skipped corrected row excuses nothing).
     fn excused(&self, c: &CheckResult) -> bool {
         ERRATA.iter().any(|(written, corrected)| {
             c.id == *written
                 && self
                     .checks
                     .iter()
-                    .any(|d| d.id == *corrected && !d.failed())
+                    .any(|d| d.id == *corrected && d.holds_with_evidence())
         })
     }
 
@@ -357,4 +358,44 @@ pub fn spline_checks(
     let mut out = check_d13_1(k, at, sp);
     out.extend(check_d13_2(k, at, sp, seed, faces));
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::{Check, Witness};
+
+    fn report(checks: Vec<CheckResult>) -> MsReport {
+        MsReport {
+            file: String::new(),
+            counts: [0; 3],
+            genus: 1,
+            intersection: vec![],
+            hodge_lambda: vec![],
+            zeros: vec![],
+            charts: 0,
+            pairs: 0,
+            checks,
+            seconds: [0.0; 3],
+        }
+    }
+
+    fn failing(id: &str) -> CheckResult {
+        let mut c = Check::new(id, "as written");
+        c.holds(false, || Witness::new("w", serde_json::json!({})));
+        c.finish("")
+    }
+
+    /// An erratum is excused only by a corrected row that holds on something examined.
+    #[test]
+    fn ms_d4_erratum_excused_only_by_a_corrected_row_that_holds_on_something() {
+        let skipped = Check::new("MS-D4-corrected", "corrected").finish("");
+        assert!(report(vec![failing("MS-D4"), skipped]).failed());
+        let mut held = Check::new("MS-D4-corrected", "corrected");
+        held.holds(true, || Witness::new("w", serde_json::json!({})));
+        let r = report(vec![failing("MS-D4"), held.finish("")]);
+        assert!(!r.failed());
+        assert_eq!(r.errata_failing(), vec!["MS-D4".to_string()]);
+        assert!(report(vec![failing("MS-D4")]).failed(), "no corrected row");
+    }
 }
