@@ -6,6 +6,19 @@ pub mod vec3;
 
 pub use union_find::UnionFind;
 
+/// Euclidean norm without overflow or underflow of the squares (scaled by the largest
+/// component): a deviation of 1e300 is reported as 1e300, not ∞.
+pub fn robust_norm(d: &[f64]) -> f64 {
+    if d.iter().any(|x| x.is_nan()) {
+        return f64::NAN;
+    }
+    let big = d.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    if big == 0.0 || big.is_infinite() {
+        return big;
+    }
+    d.iter().map(|x| (x / big) * (x / big)).sum::<f64>().sqrt() * big
+}
+
 /// An exact rational number (the exact backends: 1-D gluing data, Appendix A.1 replays, seeds
 /// 003 and 004).
 pub type Q = num_rational::BigRational;

@@ -93,18 +93,7 @@ pub const SESSION_OPS: [&str; 5] = [
     "set_construction",
 ];
 
-/// Euclidean norm without overflow or underflow of the squares (scaled by the largest
-/// component): a deviation of 1e300 is reported as 1e300, not ∞.
-pub fn robust_norm(d: &[f64]) -> f64 {
-    if d.iter().any(|x| x.is_nan()) {
-        return f64::NAN;
-    }
-    let big = d.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-    if big == 0.0 || big.is_infinite() {
-        return big;
-    }
-    d.iter().map(|x| (x / big) * (x / big)).sum::<f64>().sqrt() * big
-}
+pub use crate::numeric::robust_norm;
 
 /// Compare a JSON-lines table against the reference.
 pub fn diff_table(

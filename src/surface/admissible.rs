@@ -90,7 +90,7 @@ pub fn check_scale(k: &SimplicialSurface) -> Result<(), SurfaceError> {
         }
     }
     let ext: Vec<f64> = (0..3).map(|d| (hi[d] - lo[d]).max(0.0)).collect();
-    let diagonal = crate::oracle::diff::robust_norm(&ext);
+    let diagonal = crate::numeric::robust_norm(&ext);
     if diagonal < MIN_EXTENT {
         return Err(SurfaceError::ExtentTooSmall { diagonal });
     }

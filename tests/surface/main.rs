@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod architecture;
 mod authors_code;
 mod docs_pictures;
 mod loop_sprime;
