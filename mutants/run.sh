@@ -24,15 +24,21 @@ results="$here/mutants/results.tsv"
 #      | test names to skip (optional: the corpus-wide tests, minutes per mutant)
 modules() {
     cat <<'EOF'
-mesh-validate|src/mesh/validate/*.rs|mesh_validate harness_planted fuzz_regressions
-gluing-exact1d|src/gluing/exact1d/*.rs|lib gluing_paper_examples gluing_planted gluing_crossval gluing_topology harness_planted
-gluing-sampled|src/gluing/sampled/*.rs|lib gluing_planted gluing_crossval gluing_stereo_ppm harness_planted gluing_generic_scalar
-construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|lib construction_maps construction_mesh harness_planted construction_explore
-surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/admissible.rs|lib surface_spec harness_planted loop_sprime|corpus
-certify|src/certify/*.rs|lib certify_provers
+mesh-validate|src/mesh/validate/*.rs|mesh gluing
+gluing-exact1d|src/gluing/exact1d/*.rs|lib gluing
+gluing-sampled|src/gluing/sampled/*.rs|lib gluing
+construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|lib chapter4 gluing
+surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/admissible.rs|lib surface gluing|corpus
+certify|src/certify/*.rs|lib chapter4
 exact|src/exact/*.rs|lib proofs_appendix_a1 proofs_eval_c6_1_4 proofs_combinatorial
-oracle|src/oracle/*.rs|oracle oracle_surface
-report-harness|src/report/harness.rs|lib harness_planted
+oracle|src/oracle/*.rs|surface
+report-harness|src/report/harness.rs src/report.rs|lib gluing
+conditions|src/conditions/*.rs|lib chapter4 mesh
+loop-subdiv|src/surface/loop_subdiv/*.rs|lib surface|corpus
+sigma-v|src/construction/sigma_v/*.rs|lib surface|corpus
+msplines|src/msplines/*.rs|lib seeds
+sdiff|src/sdiff/*.rs|lib seeds
+render|src/render/*.rs|lib surface
 EOF
 }
 
