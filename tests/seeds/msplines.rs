@@ -320,11 +320,11 @@ fn ms_f7_ms_d13_1_ms_d13_2_ms_f7_c2_ms_d5_circle_example_decided_exactly() {
     let paper = CircleSplines::example(9, 2);
     let rs = circle::check_all(&paper);
     for r in rs.iter().filter(|r| r.id.starts_with("MS-F7:")) {
-        common::assert_holds(&r);
+        common::assert_holds(r);
     }
     let d13 = rs.iter().find(|r| r.id == "MS-D13(1)").expect("D13");
     assert!(d13.failed() && !d13.witnesses.is_empty());
-    common::assert_holds(&rs.iter().find(|r| r.id == "MS-F7-C2").expect("C2"));
+    common::assert_holds(rs.iter().find(|r| r.id == "MS-F7-C2").expect("C2"));
     assert!(rs.iter().find(|r| r.id == "MS-D5").expect("D5").failed());
     assert!(matches!(
         rs.iter()
