@@ -68,7 +68,7 @@ fn proof_c6_1_2_labelling_halfedge_invariants_and_d4_1_4_iso_for_fans_3_to_12() 
                 assert_eq!(k.label(k.twin(k.prev(h))), (k.label(h) + 1) % mv);
             }
             let iso = check_star_isomorphism(&k, |a, b| k.s(a, b));
-            assert_eq!(iso.verdict, Verdict::Holds, "m={m} flips={flips:#x}");
+            assert_eq!(iso.verdict(), Verdict::Holds, "m={m} flips={flips:#x}");
             cases += 1;
         }
     }

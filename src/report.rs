@@ -84,14 +84,22 @@ impl Witness {
 }
 
 /// The result of one named check.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+///
+/// Its verdict is earned by construction: the stored verdict is private, read through
+/// [`CheckResult::verdict`], which never answers `Holds` (or `HoldsRestricted`) for a result
+/// that examined nothing (`Skipped`), recorded an offender or a NaN worst deviation (`Fails`).
+/// No public method turns another verdict into `Holds`: [`CheckResult::offend`] fails it,
+/// [`CheckResult::skip`] skips it, [`CheckResult::mark_warning`] makes it a measurement and
+/// [`CheckResult::restrict`] narrows a `Holds` to its domain.
+#[derive(Debug, Clone, PartialEq)]
 pub struct CheckResult {
     /// SPEC.md ID of the statement, e.g. `D3.1.1` or `D3.1.6(edges)`.
     pub id: String,
     /// Short name of the check.
     pub name: String,
-    /// The verdict; `Holds` until [`CheckResult::offend`] records an offender.
-    pub verdict: Verdict,
+    /// The stored verdict; `Holds` until [`CheckResult::offend`] records an offender. Read it
+    /// through [`CheckResult::verdict`].
+    verdict: Verdict,
     /// Number of offending elements found (all of them, not only the listed ones).
     pub offenders: u64,
     /// The first [`MAX_WITNESSES`] offending elements.
@@ -100,19 +108,14 @@ pub struct CheckResult {
     pub examined: u64,
     /// Evaluation errors met (see [`harness::OnError`]): offences or skipped samples, counted
     /// either way.
-    #[serde(skip_serializing_if = "is_zero")]
     pub eval_errors: u64,
     /// Seed of the sampler, when the check samples.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
     /// Worst deviation found, when the check measures one.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub worst_deviation: Option<f64>,
     /// Tolerance used, derived from the precision in use, when the check is numerical.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
     /// Free-form remark (method, precision, restriction).
-    #[serde(skip_serializing_if = "String::is_empty")]
     pub note: String,
 }
 
@@ -152,9 +155,28 @@ impl CheckResult {
         self
     }
 
+    /// The verdict, as earned: a stored `Holds` or `HoldsRestricted` reads as `Fails` when an
+    /// offender or a NaN worst deviation was recorded, and as `Skipped` when nothing was
+    /// examined.
+    pub fn verdict(&self) -> Verdict {
+        match &self.verdict {
+            Verdict::Holds | Verdict::HoldsRestricted { .. }
+                if self.offenders > 0 || self.worst_deviation.is_some_and(f64::is_nan) =>
+            {
+                Verdict::Fails
+            }
+            Verdict::Holds | Verdict::HoldsRestricted { .. } if self.examined == 0 => {
+                Verdict::Skipped {
+                    reason: "nothing was examined".into(),
+                }
+            }
+            v => v.clone(),
+        }
+    }
+
     /// The verdict is `Fails`.
     pub fn failed(&self) -> bool {
-        self.verdict.is_failure()
+        self.verdict().is_failure()
     }
 
     /// The meaning of a passing verdict in SPEC.md, "checked and never violated", on
@@ -163,9 +185,87 @@ impl CheckResult {
     /// all three).
     pub fn holds_with_evidence(&self) -> bool {
         matches!(
-            self.verdict,
+            self.verdict(),
             Verdict::Holds | Verdict::HoldsRestricted { .. }
         ) && self.examined > 0
+    }
+
+    /// The check could not run (a precondition failed, named by `reason`): `Skipped`, unless
+    /// it already failed.
+    pub fn skip(&mut self, reason: impl Into<String>) {
+        if !self.verdict.is_failure() {
+            self.verdict = Verdict::Skipped {
+                reason: reason.into(),
+            };
+        }
+    }
+
+    /// A measurement, not a claim of the paper: a failure or a pass is reported as a
+    /// `Warning` with its witnesses; a skipped check stays skipped.
+    pub fn mark_warning(&mut self) {
+        if !matches!(self.verdict, Verdict::Skipped { .. }) {
+            self.verdict = Verdict::Warning;
+        }
+    }
+
+    /// A `Holds` that holds on a stated restricted domain only. Any other verdict is kept.
+    pub fn restrict(&mut self, domain: impl Into<String>) {
+        if self.verdict == Verdict::Holds {
+            self.verdict = Verdict::HoldsRestricted {
+                domain: domain.into(),
+            };
+        }
+    }
+
+    /// Adopts a stored verdict when merging results of one statement (crate-internal;
+    /// [`Self::verdict`] still normalises what is read, so this cannot make an unearned pass).
+    pub(crate) fn adopt_verdict(&mut self, v: Verdict) {
+        self.verdict = v;
+    }
+
+    /// The stored verdict, for merging (crate-internal; read [`Self::verdict`]).
+    pub(crate) fn stored_verdict(&self) -> &Verdict {
+        &self.verdict
+    }
+}
+
+/// The serialised form: the verdict as earned ([`CheckResult::verdict`]).
+#[derive(Serialize)]
+struct CheckResultView<'a> {
+    id: &'a str,
+    name: &'a str,
+    verdict: Verdict,
+    offenders: u64,
+    witnesses: &'a [Witness],
+    examined: u64,
+    #[serde(skip_serializing_if = "is_zero")]
+    eval_errors: u64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    seed: Option<u64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    worst_deviation: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tolerance: Option<f64>,
+    #[serde(skip_serializing_if = "str::is_empty")]
+    note: &'a str,
+}
+
+impl Serialize for CheckResult {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        CheckResultView {
+            id: &self.id,
+            name: &self.name,
+            verdict: self.verdict(),
+            offenders: self.offenders,
+            witnesses: &self.witnesses,
+            examined: self.examined,
+            eval_errors: self.eval_errors,
+            seed: self.seed,
+            worst_deviation: self.worst_deviation,
+            tolerance: self.tolerance,
+            note: &self.note,
+        }
+        .serialize(s)
     }
 }
 
@@ -178,7 +278,8 @@ pub fn render_text(results: &[CheckResult]) -> String {
     use std::fmt::Write;
     let mut s = String::new();
     for r in results {
-        let _ = write!(s, "{:<8} {:<18} {:<48}", r.verdict.label(), r.id, r.name);
+        let verdict = r.verdict();
+        let _ = write!(s, "{:<8} {:<18} {:<48}", verdict.label(), r.id, r.name);
         let _ = write!(s, " examined {}", r.examined);
         if r.offenders > 0 {
             let _ = write!(s, ", offending {}", r.offenders);
@@ -196,7 +297,7 @@ pub fn render_text(results: &[CheckResult]) -> String {
             let _ = write!(s, ", tolerance {t:.3e}");
         }
         s.push('\n');
-        match &r.verdict {
+        match &verdict {
             Verdict::HoldsRestricted { domain } => {
                 let _ = writeln!(s, "           restricted to: {domain}");
             }
@@ -229,24 +330,58 @@ mod tests {
     #[test]
     fn holds_with_evidence_needs_a_passing_verdict_and_something_examined() {
         let mut skipped = CheckResult::new("X", "x");
-        skipped.verdict = Verdict::Skipped {
-            reason: "no input".into(),
-        };
+        skipped.skip("no input");
         assert!(!skipped.failed() && !skipped.holds_with_evidence());
         let empty = CheckResult::new("X", "x");
-        assert_eq!(empty.verdict, Verdict::Holds);
+        assert!(matches!(empty.verdict(), Verdict::Skipped { .. }));
         assert!(!empty.holds_with_evidence());
         let mut held = CheckResult::new("X", "x");
         held.examined = 3;
         assert!(held.holds_with_evidence());
         let mut restricted = held.clone();
-        restricted.verdict = Verdict::HoldsRestricted { domain: "d".into() };
+        restricted.restrict("d");
+        assert_eq!(
+            restricted.verdict(),
+            Verdict::HoldsRestricted { domain: "d".into() }
+        );
         assert!(restricted.holds_with_evidence());
         let mut warned = held.clone();
-        warned.verdict = Verdict::Warning;
+        warned.mark_warning();
         assert!(!warned.holds_with_evidence());
         let mut failed = held.clone();
         failed.offend(|| Witness::new("w", serde_json::Value::Null));
         assert!(failed.failed() && !failed.holds_with_evidence());
+    }
+
+    /// SPEC X-harness (verdicts by construction): a stored pass is read as what was earned.
+    #[test]
+    fn x_harness_verdict_is_earned_holds_needs_examined_no_offender_no_nan() {
+        let mut r = CheckResult::new("X", "x");
+        assert!(
+            matches!(r.verdict(), Verdict::Skipped { .. }),
+            "nothing examined"
+        );
+        r.examined = 2;
+        assert_eq!(r.verdict(), Verdict::Holds);
+        r.worst_deviation = Some(f64::NAN);
+        assert_eq!(
+            r.verdict(),
+            Verdict::Fails,
+            "a NaN worst deviation never holds"
+        );
+        r.worst_deviation = Some(0.5);
+        r.offenders = 1;
+        assert_eq!(r.verdict(), Verdict::Fails, "an offender never holds");
+        // Restricting or skipping never turns a failure into a pass.
+        let mut f = CheckResult::new("X", "x");
+        f.examined = 1;
+        f.offend(|| Witness::new("w", serde_json::Value::Null));
+        f.restrict("d");
+        f.skip("late");
+        assert_eq!(f.verdict(), Verdict::Fails);
+        // What is serialised is the earned verdict.
+        let empty = CheckResult::new("X", "x");
+        let json = serde_json::to_value(&empty).expect("serialise");
+        assert_eq!(json["verdict"]["skipped"]["reason"], "nothing was examined");
     }
 }

@@ -90,19 +90,17 @@ impl PropertyResult {
             })
             .collect::<Vec<_>>();
         // Through the harness: a certificate that examined no box is skipped, never "holds".
-        let r = CheckResult {
-            id: self.property.clone(),
-            name: format!("{} [{}]", self.statement, self.key),
-            verdict,
-            offenders: witnesses.len() as u64,
-            witnesses,
-            examined: self.boxes,
-            eval_errors: 0,
-            seed: None,
-            worst_deviation: self.bound,
-            tolerance: self.delta,
-            note: self.statement.clone(),
-        };
+        let mut r = CheckResult::new(
+            self.property.clone(),
+            format!("{} [{}]", self.statement, self.key),
+        );
+        r.adopt_verdict(verdict);
+        r.offenders = witnesses.len() as u64;
+        r.witnesses = witnesses;
+        r.examined = self.boxes;
+        r.worst_deviation = self.bound;
+        r.tolerance = self.delta;
+        r.note = self.statement.clone();
         crate::report::Check::from_result(r).finish("")
     }
 }

@@ -166,7 +166,7 @@ pub fn run(c: Sd3Command) -> ExitCode {
                 seed,
             );
             if r.failed() {
-                r.verdict = crate::report::Verdict::Warning;
+                r.mark_warning();
             }
             out.push(r);
             emit(&out, json)

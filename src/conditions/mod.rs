@@ -13,11 +13,12 @@ use crate::report::{CheckResult, Verdict, MAX_WITNESSES};
 pub fn aggregate(parts: impl IntoIterator<Item = (String, CheckResult)>) -> Vec<CheckResult> {
     let mut out: Vec<CheckResult> = Vec::new();
     for (ctx, r) in parts {
+        let r_verdict = r.stored_verdict().clone();
         let idx = match out.iter().position(|o| o.id == r.id) {
             Some(i) => i,
             None => {
                 let mut blank = CheckResult::new(r.id.clone(), generic_name(&r.name));
-                blank.verdict = r.verdict.clone();
+                blank.adopt_verdict(r.stored_verdict().clone());
                 blank.seed = r.seed;
                 if !r.note.is_empty() {
                     blank.note = format!("first configuration: {}", r.note);
@@ -44,7 +45,8 @@ pub fn aggregate(parts: impl IntoIterator<Item = (String, CheckResult)>) -> Vec<
             (Some(a), Some(b)) => Some(a.max(b)),
             (a, b) => a.or(b),
         };
-        slot.verdict = combine(&slot.verdict, &r.verdict);
+        let merged = combine(slot.stored_verdict(), &r_verdict);
+        slot.adopt_verdict(merged);
     }
     out
 }

@@ -397,6 +397,7 @@ pub fn merge(acc: &mut Vec<CheckResult>, new: Vec<CheckResult>) {
     for n in new {
         match acc.iter_mut().find(|a| a.id == n.id && a.name == n.name) {
             Some(a) => {
+                let n_verdict = n.stored_verdict().clone();
                 a.examined += n.examined;
                 a.offenders += n.offenders;
                 a.eval_errors += n.eval_errors;
@@ -417,12 +418,12 @@ pub fn merge(acc: &mut Vec<CheckResult>, new: Vec<CheckResult>) {
                     (Some(x), Some(y)) => Some(x.max(y)),
                     (x, y) => x.or(y),
                 };
-                if n.verdict.is_failure() {
-                    a.verdict = Verdict::Fails;
-                } else if matches!(a.verdict, Verdict::Skipped { .. })
-                    && !matches!(n.verdict, Verdict::Skipped { .. })
+                if n_verdict.is_failure() {
+                    a.adopt_verdict(Verdict::Fails);
+                } else if matches!(a.stored_verdict(), Verdict::Skipped { .. })
+                    && !matches!(n_verdict, Verdict::Skipped { .. })
                 {
-                    a.verdict = n.verdict;
+                    a.adopt_verdict(n_verdict);
                 }
             }
             None => acc.push(n),

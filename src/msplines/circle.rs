@@ -347,10 +347,7 @@ pub fn check_d13_2(c: &CircleSplines) -> CheckResult {
         }
     }
     if r.examined == 0 {
-        r.verdict = crate::report::Verdict::Skipped {
-            reason: "no piece has all its knots in two neighbouring charts (Def. 13(1) fails)"
-                .into(),
-        };
+        r.skip("no piece has all its knots in two neighbouring charts (Def. 13(1) fails)");
     }
     r.with_note(format!(
         "{skipped} (chart, piece) pairs skipped: a knot outside a chart"

@@ -5,7 +5,7 @@
 //! Σ_v (w_v − 1) = 2g − 2 − F⁻ (F⁻ = faces whose image under ω is flipped), all exact.
 
 use super::zeros::{Winding, ZeroSet};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use serde_json::json;
 
 /// Sec. 5.3: every vertex's winding number is decided (ω[v, w] ≠ 0, origin off the polygon).
@@ -40,13 +40,11 @@ pub fn check_gauss_bonnet(z: &ZeroSet, genus: usize, faces: usize) -> CheckResul
     );
     r.examined = z.windings.len() as u64 + faces as u64;
     if !z.undecided.is_empty() || !z.ambiguous_faces.is_empty() {
-        r.verdict = Verdict::Skipped {
-            reason: format!(
-                "{} undecided windings, {} faces with degenerate or inconsistent image",
-                z.undecided.len(),
-                z.ambiguous_faces.len()
-            ),
-        };
+        r.skip(format!(
+            "{} undecided windings, {} faces with degenerate or inconsistent image",
+            z.undecided.len(),
+            z.ambiguous_faces.len()
+        ));
         return r;
     }
     let lhs = z.total_order();
@@ -120,7 +118,7 @@ pub fn check_zero_count(z: &ZeroSet, genus: usize) -> CheckResult {
             )
         });
     } else if distinct != want {
-        r.verdict = Verdict::HoldsRestricted { domain: format!("counted with multiplicity only: {distinct} distinct zero points carry total order {want}") };
+        r.restrict(format!("counted with multiplicity only: {distinct} distinct zero points carry total order {want}"));
     }
     r.with_note(format!(
         "{distinct} distinct, {with_mult} with multiplicity, 2g − 2 = {want}"
@@ -163,9 +161,7 @@ pub fn check_cor2(z: &ZeroSet, genus: usize) -> CheckResult {
         "one singular point suffices (Cor. 2): not constructive",
     );
     r.examined = z.windings.len() as u64;
-    r.verdict = Verdict::Skipped {
-        reason: format!("existence claim without a construction for closed surfaces; this ω (genus {genus}) has {} singular points", z.zeros.len()),
-    };
+    r.skip(format!("existence claim without a construction for closed surfaces; this ω (genus {genus}) has {} singular points", z.zeros.len()));
     r
 }
 
@@ -196,9 +192,7 @@ pub fn check_indices_corrected(k: &crate::mesh::SimplicialSurface, z: &ZeroSet) 
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "no vertex with w_v ≤ 0 (the statement as written holds)".into(),
-        };
+        r.skip("no vertex with w_v ≤ 0 (the statement as written holds)");
     }
     r.with_note(format!(
         "{} vertices with w_v ≤ 0, {} flipped and {} degenerate face images",
@@ -219,13 +213,11 @@ pub fn check_zero_count_corrected(z: &ZeroSet, genus: usize) -> CheckResult {
     );
     r.examined = z.windings.len() as u64;
     if !z.undecided.is_empty() || !z.ambiguous_faces.is_empty() {
-        r.verdict = Verdict::Skipped {
-            reason: format!(
-                "{} undecided windings, {} faces with degenerate or inconsistent image",
-                z.undecided.len(),
-                z.ambiguous_faces.len()
-            ),
-        };
+        r.skip(format!(
+            "{} undecided windings, {} faces with degenerate or inconsistent image",
+            z.undecided.len(),
+            z.ambiguous_faces.len()
+        ));
         return r;
     }
     let orders: i64 = z.zeros.iter().map(|x| x.1).sum();

@@ -5,7 +5,7 @@
 
 use super::dms::{det, Dms, Pt};
 use super::polar::{multi_indices, q, ProductPoly, Q};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{Signed, Zero};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -86,9 +86,7 @@ pub fn point_in(dms: &Dms<Q>, i: usize, rng: &mut ChaCha8Rng) -> Pt<Q> {
 
 fn skipped_if_empty(mut r: CheckResult) -> CheckResult {
     if r.examined == 0 && !r.failed() {
-        r.verdict = Verdict::Skipped {
-            reason: "no sample examined".into(),
-        };
+        r.skip("no sample examined");
     }
     r
 }

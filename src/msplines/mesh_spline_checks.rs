@@ -5,7 +5,7 @@
 use super::atlas::Atlas;
 use super::mesh_spline::{face_ring, MeshPoint, MeshSpline, SplineError};
 use crate::mesh::{FaceId, SimplicialSurface};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;
@@ -84,9 +84,7 @@ pub fn check_d13_1(k: &SimplicialSurface, at: &Atlas, sp: &MeshSpline) -> Vec<Ch
 
 fn skipped_if_empty(mut r: CheckResult) -> CheckResult {
     if r.examined == 0 && !r.failed() {
-        r.verdict = Verdict::Skipped {
-            reason: "nothing examined".into(),
-        };
+        r.skip("nothing examined");
     }
     r
 }

@@ -16,7 +16,7 @@ use super::mesh_spline_checks::{check_d13_1, check_d13_2};
 use super::zeros::{locate, ZeroSet};
 use crate::gluing::sampled::SampleConfig;
 use crate::mesh::SimplicialSurface;
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use serde::Serialize;
 use serde_json::json;
 use std::time::Instant;
@@ -179,9 +179,7 @@ fn measured(id: &str, name: &str, value: f64, note: String) -> CheckResult {
     if value.is_nan() {
         r.offend(|| Witness::new(format!("{name}: NaN"), json!({})));
     } else {
-        r.verdict = Verdict::HoldsRestricted {
-            domain: "discrete: a measured defect, shrinking under refinement (tests)".into(),
-        };
+        r.restrict("discrete: a measured defect, shrinking under refinement (tests)");
     }
     r.with_note(note)
 }

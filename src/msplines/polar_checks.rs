@@ -2,7 +2,7 @@
 //! Prop. 3, recurrence (4), the B-patch properties of Sec. 3.1.3 and Lemma 1.1 (1)–(2).
 
 use super::polar::{barycentric, multi_indices, q, q2, Affine, KnotClouds, ProductPoly, Q, Q2};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{One, Signed, Zero};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -219,9 +219,7 @@ pub fn check_convex_hull(kc: &KnotClouds, seed: u64, trials: usize) -> CheckResu
         }
     }
     if let (Some(w), false) = (outside_negative, r.failed()) {
-        r.verdict = Verdict::HoldsRestricted {
-            domain: format!("u ∈ ∩_β Δ^β (all λ_β,i(u) ≥ 0); outside: {w}"),
-        };
+        r.restrict(format!("u ∈ ∩_β Δ^β (all λ_β,i(u) ≥ 0); outside: {w}"));
     }
     r
 }

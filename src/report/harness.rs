@@ -212,7 +212,7 @@ impl Check {
     pub fn finish_as_warning(self, note: impl Into<String>) -> CheckResult {
         let mut r = self.finish(note);
         if r.failed() {
-            r.verdict = Verdict::Warning;
+            r.mark_warning();
         }
         r
     }
@@ -244,17 +244,15 @@ impl Check {
         self.r.note = note;
         if self.r.examined == 0
             && matches!(
-                self.r.verdict,
+                self.r.stored_verdict(),
                 Verdict::Holds | Verdict::HoldsRestricted { .. }
             )
         {
-            self.r.verdict = Verdict::Skipped {
-                reason: if self.r.eval_errors > 0 {
-                    "every sample failed to evaluate; nothing was examined".into()
-                } else {
-                    "no sample fell in the domain of the statement".into()
-                },
-            };
+            self.r.skip(if self.r.eval_errors > 0 {
+                "every sample failed to evaluate; nothing was examined"
+            } else {
+                "no sample fell in the domain of the statement"
+            });
         }
         self.r
     }
@@ -317,8 +315,8 @@ impl Restricted {
     pub fn finish(self, note: String, domain: String, is_restriction: bool) -> Vec<CheckResult> {
         let all = self.all.finish(note.clone());
         let mut res = self.restricted.finish(note);
-        if is_restriction && res.verdict == Verdict::Holds {
-            res.verdict = Verdict::HoldsRestricted { domain };
+        if is_restriction {
+            res.restrict(domain);
         }
         vec![all, res]
     }
@@ -361,13 +359,13 @@ mod tests {
         c.deviation(0.0, w);
         c.error(OnError::Skip, "outside", w);
         let r = c.finish("n");
-        assert_eq!(r.verdict, Verdict::Holds);
+        assert_eq!(r.verdict(), Verdict::Holds);
         assert_eq!(r.eval_errors, 1);
         assert!(r.note.contains("1 sample(s) skipped") && r.note.contains("outside"));
 
         let mut c = Check::sampled("X", "x", 1, 1.0);
         c.error(OnError::Skip, "outside", w);
-        assert!(matches!(c.finish("").verdict, Verdict::Skipped { .. }));
+        assert!(matches!(c.finish("").verdict(), Verdict::Skipped { .. }));
     }
 
     /// SPEC X-harness, rule 1 for enclosures (used by the certify provers).
@@ -406,7 +404,7 @@ mod tests {
         c.examined(2);
         let r = c.finish("");
         assert_eq!(r.examined, 5);
-        assert_eq!(r.verdict, Verdict::Holds);
+        assert_eq!(r.verdict(), Verdict::Holds);
     }
 
     /// SPEC X-harness: `measure` routes a value to rule 1 and an error to rule 2; `failed`
@@ -427,7 +425,7 @@ mod tests {
     /// SPEC X-harness, rule 3: the skip reason says whether samples failed to evaluate.
     #[test]
     fn x_harness_skip_reason_names_the_cause() {
-        let reason = |r: CheckResult| match r.verdict {
+        let reason = |r: CheckResult| match r.verdict() {
             Verdict::Skipped { reason } => reason,
             v => panic!("expected skipped, got {v:?}"),
         };
@@ -449,7 +447,7 @@ mod tests {
         assert!(v[0].failed());
         assert_eq!((v[0].examined, v[1].examined), (2, 1));
         assert_eq!(
-            v[1].verdict,
+            v[1].verdict(),
             Verdict::HoldsRestricted { domain: "d".into() }
         );
     }
@@ -457,11 +455,11 @@ mod tests {
     #[test]
     fn nothing_examined_is_skipped() {
         let r = Check::new("X", "x").finish("");
-        assert!(matches!(r.verdict, Verdict::Skipped { .. }));
+        assert!(matches!(r.verdict(), Verdict::Skipped { .. }));
         let p = Restricted::sampled("X", "x", 1, 1.0).finish(String::new(), "d".into(), true);
         assert!(p
             .iter()
-            .all(|r| matches!(r.verdict, Verdict::Skipped { .. })));
+            .all(|r| matches!(r.verdict(), Verdict::Skipped { .. })));
     }
 
     #[test]
@@ -473,7 +471,7 @@ mod tests {
         assert!(v[0].failed());
         assert_eq!(v[1].id, "X[restricted]");
         assert_eq!(
-            v[1].verdict,
+            v[1].verdict(),
             Verdict::HoldsRestricted { domain: "d".into() }
         );
     }

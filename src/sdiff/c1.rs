@@ -19,7 +19,7 @@ use super::edge::{local, restrict, trim, u_axpy, u_eval, u_mul, u_rem, Frame, UP
 use super::linsys::{positive_solution, rref, Positive, Rref};
 use super::params::{ComplexMap, FamilySpec, MapSpec, Multiset};
 use super::poly::{multi_indices, q, Poly2, Q};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::Zero;
 use serde_json::json;
 use std::collections::{BTreeMap, HashMap};
@@ -350,9 +350,7 @@ pub fn verify(
     rf.note = format!("∇(f̂∘X) agrees along the whole edge on {whole_edge} of {} edges (elsewhere only on 𝒪 ∩ δ: D's derivative jumps, L203)", rf.examined);
     for r in [&mut rn, &mut rf] {
         if r.examined == 0 {
-            r.verdict = Verdict::Skipped {
-                reason: "no interior edge in scope".into(),
-            };
+            r.skip("no interior edge in scope");
         }
     }
     [rn, rf]
@@ -393,9 +391,7 @@ pub fn run(
     let mut report = Vec::new();
     let Some(system) = build(k, &cm, fv, c, scope) else {
         let mut r = CheckResult::new("SD-L219", "L217–L219: the system (12) is underdetermined");
-        r.verdict = Verdict::Skipped {
-            reason: "a control point or vertex of an edge is missing".into(),
-        };
+        r.skip("a control point or vertex of an edge is missing");
         report.push(r);
         return Ok(C1Run {
             report,
@@ -449,7 +445,7 @@ pub fn run(
     p.note = format!("{:?}", solved.positive);
     match &solved.positive {
         Positive::Infeasible { .. } => {
-            p.verdict = Verdict::Warning;
+            p.mark_warning();
             p.offend(|| {
                 Witness::new(
                     "Fourier–Motzkin derives 0 ≥ r > 0 from A q = 0, q ≥ 1: no positive weights make N C¹ on the edges in scope",
@@ -458,18 +454,16 @@ pub fn run(
             });
         }
         Positive::Undecided { inequalities } => {
-            p.verdict = Verdict::Skipped {
-                reason: format!("Fourier–Motzkin exceeded {inequalities} inequalities (budget {max_inequalities})"),
-            };
+            p.skip(format!(
+                "Fourier–Motzkin exceeded {inequalities} inequalities (budget {max_inequalities})"
+            ));
         }
         _ => {}
     }
     report.push(p);
     if eqs == 0 {
         for r in report.iter_mut() {
-            r.verdict = Verdict::Skipped {
-                reason: "no interior edge in scope: no equation".into(),
-            };
+            r.skip("no interior edge in scope: no equation");
         }
     }
     let solution = solved

@@ -7,7 +7,7 @@ use super::maps::{Family, SimplexMap};
 use super::params::ComplexMap;
 use super::poly::{multi_indices, q, qr, to_f64, Poly2, Q};
 use super::positivity::{decide, decide_on, Budget, Decision, Strictness};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 
@@ -119,9 +119,9 @@ pub fn maps_into_simplex(cm: &ComplexMap, budget: Budget) -> CheckResult {
 
 fn inconclusive(r: &mut CheckResult, unresolved: u64) {
     if unresolved > 0 && !r.failed() {
-        r.verdict = Verdict::Skipped {
-            reason: format!("{unresolved} decisions unresolved within the subdivision budget"),
-        };
+        r.skip(format!(
+            "{unresolved} decisions unresolved within the subdivision budget"
+        ));
     }
 }
 
@@ -156,9 +156,7 @@ pub fn shared_edges_agree(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "the complex has no interior edge".into(),
-        };
+        r.skip("the complex has no interior edge");
     }
     r
 }
@@ -311,9 +309,7 @@ pub fn adjusted(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "not a polynomial or rational map".into(),
-        };
+        r.skip("not a polynomial or rational map");
     }
     r
 }
@@ -362,9 +358,7 @@ pub fn monotone_hypotheses(cm: &ComplexMap, budget: Budget) -> CheckResult {
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "not a monotonic map".into(),
-        };
+        r.skip("not a monotonic map");
     }
     r
 }
@@ -387,9 +381,7 @@ pub fn weights_positive(cm: &ComplexMap) -> CheckResult {
         }
     }
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "not a rational map".into(),
-        };
+        r.skip("not a rational map");
     }
     r
 }

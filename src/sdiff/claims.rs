@@ -6,7 +6,7 @@
 use super::maps::{Poly1, SimplexMap};
 use super::poly::{index_of, multi_indices, q, qr, Q};
 use super::positivity::{decide, Budget, Decision, Strictness};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;
@@ -161,9 +161,7 @@ pub fn universal(id: &str, name: &str, s: &Search, samples: usize, seed: u64) ->
         }
     }
     if s.unresolved > 0 && !r.failed() {
-        r.verdict = Verdict::Skipped {
-            reason: format!("{} samples unresolved", s.unresolved),
-        };
+        r.skip(format!("{} samples unresolved", s.unresolved));
     }
     r.note = format!(
         "{} certified exactly, {} refuted, {} unresolved",
@@ -203,11 +201,9 @@ pub fn existential(id: &str, name: &str, s: &Search, samples: usize, seed: u64) 
             ));
         }
         _ => {
-            r.verdict = Verdict::Skipped {
-                reason: format!(
-                    "no example among {samples} samples (the search is not a proof of absence)"
-                ),
-            };
+            r.skip(format!(
+                "no example among {samples} samples (the search is not a proof of absence)"
+            ));
         }
     }
     r.note = format!(

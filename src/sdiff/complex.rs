@@ -9,7 +9,7 @@
 
 use super::poly::{from_f64, Q};
 use crate::mesh::raw::RawMesh;
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{Signed, Zero};
 use std::collections::HashMap;
 
@@ -279,9 +279,7 @@ fn overlap_check(raw: &RawMesh, points: &[[Q; 2]], faces: &[usize]) -> CheckResu
         r.note = "no two triangles have overlapping bounding boxes".into();
     }
     if faces.len() <= 1 {
-        r.verdict = Verdict::Skipped {
-            reason: "fewer than two triangles".into(),
-        };
+        r.skip("fewer than two triangles");
     }
     r
 }

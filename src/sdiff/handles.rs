@@ -136,9 +136,9 @@ pub fn sweep(
             u_f64: to_f64(&u_h),
             u: u_h.to_string(),
             lambda: l.to_string(),
-            diffeomorphism: !failed && !matches!(det.verdict, Verdict::Skipped { .. }),
+            diffeomorphism: !failed && !matches!(det.verdict(), Verdict::Skipped { .. }),
             witness,
-            unresolved: !failed && matches!(det.verdict, Verdict::Skipped { .. }),
+            unresolved: !failed && matches!(det.verdict(), Verdict::Skipped { .. }),
         });
     }
     Ok(out)
@@ -197,9 +197,7 @@ pub fn judge(s: &HandleSweep) -> [CheckResult; 2] {
     r.note = note;
     if r.examined == 0 {
         for x in [&mut w, &mut r] {
-            x.verdict = Verdict::Skipped {
-                reason: "no handle position examined".into(),
-            };
+            x.skip("no handle position examined");
         }
     }
     [w, r]

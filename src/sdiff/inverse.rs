@@ -116,9 +116,7 @@ pub fn inversion_spot_check(cm: &ComplexMap, seed: u64, per_triangle: usize) -> 
         r.examined -= failed_to_converge;
     }
     if r.examined == 0 {
-        r.verdict = crate::report::Verdict::Skipped {
-            reason: "no target converged".into(),
-        };
+        r.skip("no target converged");
     }
     r
 }

@@ -202,9 +202,7 @@ pub fn isocurves(
     }
     inv.worst_deviation = Some(worst);
     if inv.examined == 0 {
-        inv.verdict = crate::report::Verdict::Skipped {
-            reason: "the level set misses every triangle".into(),
-        };
+        inv.skip("the level set misses every triangle");
     }
     let mut topo = CheckResult::new("SD-L168", "Sec. 4: 𝒪 = X⁻¹(O) has the topology of O (components and closed loops) and no self-crossing");
     let (lc, ll) = lin.topology();
@@ -228,9 +226,7 @@ pub fn isocurves(
     }
     topo.note = format!("O: {lc} components, {ll} closed; 𝒪: {cc} components, {cl} closed");
     if topo.examined == 0 {
-        topo.verdict = crate::report::Verdict::Skipped {
-            reason: "the level set misses every triangle".into(),
-        };
+        topo.skip("the level set misses every triangle");
     }
     Ok(Isocurves {
         linear: lin,

@@ -11,7 +11,7 @@ use super::edge::{chart_point, local, restrict, u_axpy, u_eval, Frame, UPoly};
 use super::maps::SimplexMap;
 use super::params::ComplexMap;
 use super::poly::{from_f64, to_f64, Poly2, Q};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{Signed, Zero};
 use serde::Serialize;
 use serde_json::json;
@@ -263,9 +263,7 @@ pub fn check_l203(
         points.len()
     );
     if r.examined == 0 && !r.failed() {
-        r.verdict = Verdict::Skipped {
-            reason: "O crosses no interior edge".into(),
-        };
+        r.skip("O crosses no interior edge");
     }
     (r, points)
 }

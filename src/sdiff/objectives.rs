@@ -163,9 +163,7 @@ pub fn judge_l231(devs: &[EdgeDeviation], crossed: &[[u32; 2]], c1_holds: bool) 
         r.examined
     );
     if r.examined == 0 && !r.failed() {
-        r.verdict = Verdict::Skipped {
-            reason: "no sample on an interior edge crossed by O".into(),
-        };
+        r.skip("no sample on an interior edge crossed by O");
     }
     r
 }
@@ -362,10 +360,8 @@ pub fn judge_l268(best: &ScanPoint, det: &CheckResult, alpha: f64) -> CheckResul
                 json!({"lambda": l, "objective": o, "det": wt}),
             )
         });
-    } else if !matches!(det.verdict, Verdict::Holds) {
-        r.verdict = Verdict::Skipped {
-            reason: "det DX of the minimiser unresolved within the budget".into(),
-        };
+    } else if !matches!(det.verdict(), Verdict::Holds) {
+        r.skip("det DX of the minimiser unresolved within the budget");
     }
     r
 }

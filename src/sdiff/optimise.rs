@@ -291,10 +291,8 @@ pub fn judge(id: &str, opt: &Optimum, det: &CheckResult, alpha: f64) -> CheckRes
                 json!({"lambdas": l, "objective": o, "det": wt}),
             )
         });
-    } else if !matches!(det.verdict, Verdict::Holds) {
-        r.verdict = Verdict::Skipped {
-            reason: "det DX of the minimiser unresolved within the budget".into(),
-        };
+    } else if !matches!(det.verdict(), Verdict::Holds) {
+        r.skip("det DX of the minimiser unresolved within the budget");
     }
     r
 }

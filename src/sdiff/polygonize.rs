@@ -28,7 +28,7 @@ use super::refine::{Mesh2, RefineError};
 use super::refine_optimise::{root_on_edge, LocalRun};
 use super::subdivide::subdivide;
 use crate::mesh::raw::RawMesh;
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 use std::collections::{HashMap, HashSet};
@@ -342,9 +342,7 @@ fn run_note(
         g = opts.grid
     );
     if budget_hit || steps >= opts.max_steps {
-        r.verdict = Verdict::Skipped {
-            reason: "the refinement did not finish within its budget".into(),
-        };
+        r.skip("the refinement did not finish within its budget");
     }
     r
 }
@@ -448,9 +446,7 @@ fn measure(
         });
     }
     if d.examined == 0 {
-        d.verdict = Verdict::Skipped {
-            reason: "O is empty".into(),
-        };
+        d.skip("O is empty");
     }
     let mut t = CheckResult::new(
         "SD-6.2(topology)",
@@ -524,9 +520,7 @@ fn measure(
     }
     l.worst_deviation = Some(worst_lit);
     if l.examined == 0 {
-        l.verdict = Verdict::Skipped {
-            reason: "O is empty".into(),
-        };
+        l.skip("O is empty");
     }
     vec![d, t, l]
 }

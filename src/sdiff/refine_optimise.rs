@@ -247,7 +247,7 @@ fn certify(k: &PlanarComplex, lam: &Lambdas, global: &[u32]) -> Result<Outcome, 
             "{w} (star triangles by global vertex: {vs:?})"
         )));
     }
-    Ok(match det.verdict {
+    Ok(match det.verdict() {
         Verdict::Holds => Outcome::Accepted,
         _ => Outcome::Unresolved,
     })
@@ -303,13 +303,9 @@ pub fn judge(run: &LocalRun, o: &OptimiseOptions) -> CheckResult {
         o.lo, o.hi, o.grid, o.refine, o.sweeps, o.alpha, run.steps.len()
     );
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "no optimisation ran".into(),
-        };
+        r.skip("no optimisation ran");
     } else if r.eval_errors > 0 && r.offenders == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "det DX unresolved on some star".into(),
-        };
+        r.skip("det DX unresolved on some star");
     }
     r
 }

@@ -18,7 +18,7 @@ use super::simplex_poly::{
     det_decision, fixed_control, indices, is_solitary, SimplexDecision, SimplexError, SimplexMapM,
     SimplexPoly,
 };
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;
@@ -253,13 +253,12 @@ pub fn judge(id: &str, s: &SolitarySearch) -> CheckResult {
     }
     if !r.failed() {
         if s.samples == 0 {
-            r.verdict = Verdict::Skipped {
-                reason: "zero samples".into(),
-            };
+            r.skip("zero samples");
         } else if s.unresolved > 0 {
-            r.verdict = Verdict::Skipped {
-                reason: format!("{} of {} samples unresolved", s.unresolved, s.samples),
-            };
+            r.skip(format!(
+                "{} of {} samples unresolved",
+                s.unresolved, s.samples
+            ));
         }
     }
     r.note = format!(

@@ -11,7 +11,7 @@
 //! so ∪_k st(v_k, K_{i+1}) covers the modified region.
 
 use super::refine::{Mesh2, RefineError};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use serde::Serialize;
 use serde_json::json;
 
@@ -82,9 +82,7 @@ pub fn check_l316(steps: &[SubdivideStep]) -> CheckResult {
         steps.len()
     );
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: "no SUBDIVIDE call".into(),
-        };
+        r.skip("no SUBDIVIDE call");
     }
     r
 }

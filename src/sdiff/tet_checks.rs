@@ -18,7 +18,7 @@ use super::tet_complex::TetComplex;
 use super::tet_interval::certify_det_tet;
 use super::tet_maps::multi_indices4;
 use super::tet_params::{MapSpec3, TetMap};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 
@@ -42,17 +42,15 @@ impl Default for Options3 {
 
 fn inconclusive(r: &mut CheckResult, unresolved: u64) {
     if unresolved > 0 && !r.failed() {
-        r.verdict = Verdict::Skipped {
-            reason: format!("{unresolved} decisions unresolved within the subdivision budget"),
-        };
+        r.skip(format!(
+            "{unresolved} decisions unresolved within the subdivision budget"
+        ));
     }
 }
 
 fn skipped_if_empty(r: &mut CheckResult, reason: &str) {
     if r.examined == 0 {
-        r.verdict = Verdict::Skipped {
-            reason: reason.into(),
-        };
+        r.skip(reason);
     }
 }
 

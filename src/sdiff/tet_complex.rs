@@ -26,7 +26,7 @@
 //! the number of candidate pairs are bounded (typed errors, never a panic).
 
 use super::poly::{from_f64, Q};
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 use std::collections::HashMap;
@@ -554,9 +554,7 @@ fn overlap_check(
         active.push(cur);
     }
     if tets.len() <= 1 {
-        r.verdict = Verdict::Skipped {
-            reason: "fewer than two positively oriented tetrahedra".into(),
-        };
+        r.skip("fewer than two positively oriented tetrahedra");
     } else if r.examined == 0 {
         r.note = "no two tetrahedra have overlapping bounding boxes".into();
     }

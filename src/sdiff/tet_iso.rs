@@ -19,7 +19,7 @@ use super::tet::Poly3;
 use super::tet_complex::TetComplex;
 use super::tet_maps::fixed_control4;
 use super::tet_params::TetMap;
-use crate::report::{CheckResult, Verdict, Witness};
+use crate::report::{CheckResult, Witness};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 use std::collections::HashMap;
@@ -420,9 +420,7 @@ pub fn isosurfaces(
         lt.euler, lt.components, lt.boundary_loops, lt.faces, ct.euler, ct.components, ct.boundary_loops, ct.faces
     );
     if curved.triangles.is_empty() && linear.triangles.is_empty() {
-        r.verdict = Verdict::Skipped {
-            reason: "the level set misses every tetrahedron".into(),
-        };
+        r.skip("the level set misses every tetrahedron");
     }
     Ok(Isosurfaces {
         linear,

@@ -12,7 +12,7 @@ fn show(rs: &[CheckResult]) {
             .unwrap_or_default();
         println!(
             "  {:<18} {:<36} ex {:>4} off {:>4} worst {:.2e} tol {:.2e} | {}",
-            r.verdict.label(),
+            r.verdict().label(),
             r.id,
             r.examined,
             r.offenders,

@@ -13,10 +13,13 @@ fn get<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
         .unwrap_or_else(|| panic!("no result {id}"))
 }
 fn holds(r: &CheckResult) -> bool {
-    matches!(r.verdict, Verdict::Holds | Verdict::HoldsRestricted { .. })
+    matches!(
+        r.verdict(),
+        Verdict::Holds | Verdict::HoldsRestricted { .. }
+    )
 }
 fn assert_fails_with_witness(r: &CheckResult) {
-    assert!(r.failed(), "{} should fail: {:?}", r.id, r.verdict);
+    assert!(r.failed(), "{} should fail: {:?}", r.id, r.verdict());
     assert!(!r.witnesses.is_empty(), "{} failed without witness", r.id);
 }
 fn e(mu: u32, i: u32, mw: u32, j: u32) -> EdgeConfig {
@@ -243,7 +246,7 @@ fn d4_1_8_config_validation_is_typed() {
         j: 0,
     };
     let rs = run_edge_checks::<f64>(&bad, SEED, 10, 53);
-    assert!(matches!(rs[0].verdict, Verdict::Skipped { .. }));
+    assert!(matches!(rs[0].verdict(), Verdict::Skipped { .. }));
     assert!(phi_wu(&VertexPair::NotAdjacent, &P2::new(0.1f64, 0.0)).is_err());
 }
 
@@ -285,7 +288,7 @@ fn c4_1_6_gv_bijective_holds_m6_fails_as_written_otherwise() {
         let r = check_c4_1_6_gv_bijective::<f64, _>(&Paper, m, SEED, N, 53);
         assert_fails_with_witness(&r[0]);
         assert!(
-            matches!(r[1].verdict, Verdict::HoldsRestricted { .. }),
+            matches!(r[1].verdict(), Verdict::HoldsRestricted { .. }),
             "m = {m}: {:?}",
             r[1]
         );
@@ -305,7 +308,7 @@ fn c4_1_6_gv_smooth_fails_as_written_unless_6_divides_m() {
         let r = check_c4_1_6_gv_smooth::<f64, _>(&Paper, m, SEED, N, 53);
         assert_fails_with_witness(&r[0]);
         assert!(
-            matches!(r[1].verdict, Verdict::HoldsRestricted { .. }),
+            matches!(r[1].verdict(), Verdict::HoldsRestricted { .. }),
             "m = {m}: {:?}",
             r[1]
         );
@@ -314,7 +317,7 @@ fn c4_1_6_gv_smooth_fails_as_written_unless_6_divides_m() {
         let r = check_c4_1_6_gv_smooth::<f64, _>(&Paper, m, SEED, N, 53);
         assert!(holds(&r[0]), "m = {m}: {:?}", r[0].witnesses);
         // 6 | m: the statement holds as written, so its restricted twin is no restriction.
-        assert_eq!(r[1].verdict, Verdict::Holds, "m = {m}");
+        assert_eq!(r[1].verdict(), Verdict::Holds, "m = {m}");
     }
 }
 
@@ -331,9 +334,9 @@ fn c4_1_8_onto_intc_fails_for_small_degree_holds_otherwise() {
     // The restriction is the sector |β| < m_u·π/6 = 2π/3 for m_u = 4, and it says so.
     let sector = format!("{:.6}", 4.0 * std::f64::consts::PI / 6.0);
     assert!(
-        matches!(&r[1].verdict, Verdict::HoldsRestricted { domain } if domain.contains(&sector)),
+        matches!(&r[1].verdict(), Verdict::HoldsRestricted { domain } if domain.contains(&sector)),
         "{:?}",
-        r[1].verdict
+        r[1].verdict()
     );
     let r = check_c4_1_8_onto_int_c::<f64, _>(&Paper, &e(7, 1, 6, 0), SEED, N, 53);
     assert!(holds(&r[0]));
@@ -360,7 +363,7 @@ fn c4_1_8_lens_in_q_holds_and_planted_fault_caught() {
 fn c4_1_8_guw_bijective_fails_for_m_u_above_6_and_planted_fault_caught() {
     let r = check_c4_1_8_guw_bijective::<f64, _>(&Paper, &e(7, 2, 4, 1), SEED, N, 53);
     assert_fails_with_witness(&r[0]);
-    assert!(matches!(r[1].verdict, Verdict::HoldsRestricted { .. }));
+    assert!(matches!(r[1].verdict(), Verdict::HoldsRestricted { .. }));
     let r = check_c4_1_8_guw_bijective::<f64, _>(&Paper, &e(5, 2, 7, 1), SEED, N, 53);
     assert!(holds(&r[0]));
     let r = check_c4_1_8_guw_bijective::<f64, _>(&ScaledH, &e(5, 2, 7, 1), SEED, N, 53);
@@ -372,7 +375,7 @@ fn p4_1_1_fails_as_written_unless_6_divides_m_u() {
     let r = check_p4_1_1_guw_smooth::<f64, _>(&Paper, &e(5, 1, 6, 0), SEED, N, 53);
     assert_fails_with_witness(&r[0]);
     assert!(
-        matches!(r[1].verdict, Verdict::HoldsRestricted { .. }),
+        matches!(r[1].verdict(), Verdict::HoldsRestricted { .. }),
         "{:?}",
         r[1]
     );
@@ -400,7 +403,7 @@ fn p4_1_3_inverse_fails_for_m_u_ge_11_holds_below() {
     let r = check_p4_1_3::<f64, _>(&Paper, &e(12, 3, 6, 0), SEED, N, 53);
     assert!(holds(&r[0]));
     assert_fails_with_witness(&r[1]);
-    assert!(matches!(r[2].verdict, Verdict::HoldsRestricted { .. }));
+    assert!(matches!(r[2].verdict(), Verdict::HoldsRestricted { .. }));
     let r = check_p4_1_3::<f64, _>(&Paper, &e(10, 3, 4, 0), SEED, N, 53);
     assert!(holds(&r[1]));
 }
@@ -604,8 +607,8 @@ fn edge_checks_same_verdicts_in_f64_and_mp() {
         assert_eq!(a.len(), b.len());
         for (x, y) in a.iter().zip(&b) {
             assert_eq!(
-                (x.id.as_str(), x.verdict.label()),
-                (y.id.as_str(), y.verdict.label()),
+                (x.id.as_str(), x.verdict().label()),
+                (y.id.as_str(), y.verdict().label()),
                 "{cfg:?}"
             );
         }

@@ -93,10 +93,10 @@ fn t4_2_1_abstract_checkers_catch_a_planted_transition_fault() {
     ));
     let results = check_all(&view, &SampleConfig { seed: 3, n: 24 });
     let b3 = results.iter().find(|r| r.id == "D3.4.1(3b)").expect("3b");
-    assert_eq!(b3.verdict, Verdict::Fails);
+    assert_eq!(b3.verdict(), Verdict::Fails);
     assert!(!b3.witnesses.is_empty());
     let c3 = results.iter().find(|r| r.id == "D3.4.1(3c)").expect("3c");
-    assert_eq!(c3.verdict, Verdict::Fails);
+    assert_eq!(c3.verdict(), Verdict::Fails);
 }
 
 fn quick() -> Ch4Options {
@@ -127,7 +127,7 @@ fn c4_1_6_gv_bijective_errata_depend_on_degree_on_meshes() {
         "D4.1.9-lens",
     ] {
         let c = r.checks.iter().find(|c| c.id == id).expect(id);
-        assert_eq!(c.verdict, Verdict::Holds, "{id} on an all-degree-6 torus");
+        assert_eq!(c.verdict(), Verdict::Holds, "{id} on an all-degree-6 torus");
     }
     // A bipyramid over a 12-gon has two degree-12 apexes: the Sec. 6.1.3 lens test errata
     // appear, and nothing else fails unexpectedly.
@@ -156,7 +156,7 @@ fn c4_1_6_gv_bijective_errata_depend_on_degree_on_meshes() {
         "P4.2.3",
     ] {
         let c = r.checks.iter().find(|c| c.id == id).expect(id);
-        assert_eq!(c.verdict, Verdict::Holds, "{id}");
+        assert_eq!(c.verdict(), Verdict::Holds, "{id}");
     }
     assert_eq!(r.coverage.vertices_covered, r.coverage.vertices);
 }
@@ -290,11 +290,11 @@ fn p4_2_2_gluing_domains_are_open_and_a_collapsed_domain_is_caught() {
     let k = surface(&bipyramid(12));
     let cfg = SampleConfig { seed: 5, n: 32 };
     let r = check_2(&AbstractPpm::star_of(PpmGluing::new(&k), VertexId(0)), &cfg);
-    assert_eq!(r.verdict, Verdict::Holds, "{:?}", r.witnesses.first());
+    assert_eq!(r.verdict(), Verdict::Holds, "{:?}", r.witnesses.first());
     assert!(r.examined > 100);
     let bad = Collapsed(AbstractPpm::star_of(PpmGluing::new(&k), VertexId(0)));
     let r = check_2(&bad, &cfg);
-    assert_eq!(r.verdict, Verdict::Fails);
+    assert_eq!(r.verdict(), Verdict::Fails);
     assert!(r.witnesses.iter().any(|w| w.text.contains("not open")));
 }
 
@@ -364,7 +364,7 @@ fn c4_2_nonadjacent_disjoint_on_mesh_stars_including_non_edge_triples() {
         .iter()
         .find(|c| c.id == "C4.2-nonadjacent-disjoint")
         .expect("check");
-    assert_eq!(c.verdict, Verdict::Holds);
+    assert_eq!(c.verdict(), Verdict::Holds);
     assert!(c.examined > 0);
     // The apex (degree 9) has non-adjacent neighbour pairs that are not edges of K.
     let x = VertexId(0);
@@ -480,7 +480,7 @@ fn d3_4_1_3b_transition_perturbed_by_1e_9_is_caught_on_a_mesh() {
         },
     ));
     let r = pseudomanifold::gluing::sampled::check_3b(&view, &SampleConfig { seed: 2, n: 16 });
-    assert_eq!(r.verdict, Verdict::Fails);
+    assert_eq!(r.verdict(), Verdict::Fails);
     let t = r.tolerance.expect("tolerance printed");
     assert!(t < 1e-12, "tolerance {t} must be far below the 1e-9 fault");
 }

@@ -103,7 +103,7 @@ pub fn assert_hold_except_skipped(what: &str, rs: &[CheckResult], skipped: &[&st
         .iter()
         .filter(|r| {
             if skipped.contains(&r.id.as_str()) {
-                !matches!(r.verdict, Verdict::Skipped { .. })
+                !matches!(r.verdict(), Verdict::Skipped { .. })
             } else {
                 !r.holds_with_evidence()
             }

@@ -101,7 +101,7 @@ pub fn assert_holds_for(what: &str, r: &CheckResult) {
         r.id,
         pseudomanifold::report::render_text(std::slice::from_ref(r))
     );
-    let seen = match r.verdict {
+    let seen = match r.verdict() {
         Verdict::HoldsRestricted { .. } => Seen::Restricted,
         _ => Seen::Holds,
     };

@@ -113,7 +113,7 @@ fn agree_4(seed: u64, n: u32) -> bool {
         return true;
     }
     let r = decide::check_4(&g);
-    if matches!(r.verdict, Verdict::Skipped { .. }) {
+    if matches!(r.verdict(), Verdict::Skipped { .. }) {
         // No pair to separate: (4) holds vacuously, so brute force must find none either.
         return brute_separated(&g);
     }

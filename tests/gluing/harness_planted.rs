@@ -19,14 +19,17 @@ const SEED: u64 = 7;
 const N: usize = 60;
 
 fn holds(r: &CheckResult) -> bool {
-    matches!(r.verdict, Verdict::Holds | Verdict::HoldsRestricted { .. })
+    matches!(
+        r.verdict(),
+        Verdict::Holds | Verdict::HoldsRestricted { .. }
+    )
 }
 fn assert_fails(r: &CheckResult) {
     assert!(
         r.failed(),
         "{} should fail: {:?} ({})",
         r.id,
-        r.verdict,
+        r.verdict(),
         r.note
     );
     assert!(!r.witnesses.is_empty(), "{} failed without a witness", r.id);
@@ -36,16 +39,16 @@ fn assert_reported(r: &CheckResult) {
         !holds(r),
         "{} must not hold: {:?} ({})",
         r.id,
-        r.verdict,
+        r.verdict(),
         r.note
     );
 }
 fn assert_skipped(r: &CheckResult) {
     assert!(
-        matches!(r.verdict, Verdict::Skipped { .. }),
+        matches!(r.verdict(), Verdict::Skipped { .. }),
         "{} should be skipped: {:?} (examined {})",
         r.id,
-        r.verdict,
+        r.verdict(),
         r.examined
     );
 }

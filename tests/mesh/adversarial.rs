@@ -364,17 +364,17 @@ fn x_adv_06_too_few_samples_is_not_a_failure_r_few_samples() {
             // Too few samples: inconclusive (skipped) or holding on what was sampled, never
             // a failure (R-few-samples).
             assert!(
-                c.holds_with_evidence() || matches!(c.verdict, Verdict::Skipped { .. }),
+                c.holds_with_evidence() || matches!(c.verdict(), Verdict::Skipped { .. }),
                 "{id} at --samples {samples}: {:?}",
-                c.verdict
+                c.verdict()
             );
         }
         let c = r.checks.iter().find(|c| c.id == "P4.1.3").expect("P4.1.3");
         if samples == 1 {
             assert!(
-                matches!(c.verdict, Verdict::Skipped { .. }),
+                matches!(c.verdict(), Verdict::Skipped { .. }),
                 "{:?}",
-                c.verdict
+                c.verdict()
             );
         }
     }
@@ -798,7 +798,7 @@ fn x_adv_09_check_quadratic_in_degree_r_star_search() {
     for n in [200u32, 2000] {
         let raw = bipyramid(n);
         let (c, pairs) = tested(&raw);
-        assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
+        assert_eq!(c.verdict(), Verdict::Holds, "{c:?}");
         let f = raw.faces.len() as u64;
         assert!(
             pairs < 4 * f,
@@ -814,13 +814,13 @@ fn x_adv_09_check_quadratic_in_degree_r_star_search() {
     raw.faces.push([base, base + 1, base + 2]);
     let raw = pseudomanifold::mesh::RawMesh::from_arrays(raw.positions, raw.faces);
     let (c, _) = tested(&raw);
-    assert_eq!(c.verdict, Verdict::Fails, "piercing triangle not caught");
+    assert_eq!(c.verdict(), Verdict::Fails, "piercing triangle not caught");
     // Fold the fans: ring vertex 5 moved between 7 and 8.
     let mut raw = bipyramid(200);
     let a = 2.0 * std::f64::consts::PI * 7.5 / 200.0;
     raw.positions[2 + 5] = [a.cos(), a.sin(), 0.0];
     let (c, _) = tested(&raw);
-    assert_eq!(c.verdict, Verdict::Fails, "folded fan not caught");
+    assert_eq!(c.verdict(), Verdict::Fails, "folded fan not caught");
     assert!(!c.witnesses.is_empty());
 }
 
@@ -889,7 +889,7 @@ fn x_adv_07_measured_c2_examines_samples() {
     let r = run_surface_checks(&k, &SurfaceCheckOptions::default());
     let c = r.iter().find(|c| c.id == "C3.5.1-C''").expect("C''");
     assert!(c.examined > 0, "{c:?}");
-    assert!(c.offenders > 0 && c.verdict == Verdict::Warning, "{c:?}");
+    assert!(c.offenders > 0 && c.verdict() == Verdict::Warning, "{c:?}");
 }
 
 /// `ppm sample` then `ppm diff --surface` of our own output failed our own check: the printed

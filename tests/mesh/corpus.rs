@@ -39,7 +39,7 @@ fn d3_1_6_corpus_good_meshes_are_simplicial_surfaces_and_d4_1_4_labels_hold() {
         assert_eq!(degs.iter().max().copied(), Some(m.max_degree), "{}", m.file);
         let iso = check_star_isomorphism(&k, |a, b| k.s(a, b));
         assert_eq!(
-            iso.verdict,
+            iso.verdict(),
             Verdict::Holds,
             "{}: {:?}",
             m.file,
@@ -97,7 +97,7 @@ fn d3_1_3_ii_degtri_sliding_overlap_witness() {
         .iter()
         .find(|c| c.id == "D3.1.3(ii)(triangles)")
         .expect("check");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert!(c
         .witnesses
         .iter()

@@ -179,7 +179,7 @@ fn l4_2_4_random_surfaces_high_degree_next_to_degree_3_holds() {
         let e = EdgeConfig::new(cfg.0, cfg.1, cfg.2, cfg.3).expect("valid");
         let r = check_l4_2_4::<f64, _>(&Paper, &e, seed, 240, 53);
         assert!(
-            matches!(r.verdict, Verdict::Holds),
+            matches!(r.verdict(), Verdict::Holds),
             "{e:?}: {:?}",
             r.witnesses.first()
         );
@@ -209,7 +209,7 @@ fn p4_1_1_random_surfaces_restricted_holds_for_high_degree() {
         common::assert_holds(&r[1]);
         if cfg.0 % 6 == 0 {
             assert!(
-                matches!(r[0].verdict, Verdict::Holds),
+                matches!(r[0].verdict(), Verdict::Holds),
                 "{e:?}: {:?}",
                 r[0].witnesses.first()
             );

@@ -50,7 +50,7 @@ fn d3_1_1_collinear_face_is_caught_exactly() {
     m.positions[4] = [0.5, 0.5, 0.0]; // on the segment [v0, v2] = [(1,0,0), (0,1,0)]
     let v = validate(&m);
     let c = check(&v.report, "D3.1.1");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert!(
         c.witnesses[0].text.contains("face 0"),
         "{}",
@@ -67,7 +67,7 @@ fn d3_1_1_nearly_collinear_is_not_degenerate() {
     let mut m = octahedron();
     m.positions[4] = [0.5, f64::from_bits(0.5f64.to_bits() + 1), 0.0];
     let v = validate(&m);
-    assert_eq!(check(&v.report, "D3.1.1").verdict, Verdict::Holds);
+    assert_eq!(check(&v.report, "D3.1.1").verdict(), Verdict::Holds);
 }
 
 #[test]
@@ -96,7 +96,7 @@ fn d3_1_3_i_index_out_of_range_is_caught() {
     m.faces[3] = [7, 3, 2];
     let v = validate(&m);
     let c = check(&v.report, "D3.1.3(i)");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert_eq!(c.offenders, 2, "every offending index is counted");
     assert!(c.witnesses[0].text.contains("face 2"));
     assert!(v
@@ -124,7 +124,7 @@ fn d3_1_3_ii_coincident_vertices_are_caught() {
                      // keep the second octahedron a valid surface by shifting it to touch
     let v = validate(&RawMesh::from_arrays(pos, faces));
     let c = check(&v.report, "D3.1.3(ii)(vertices)");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert!(v
         .report
         .error_classes
@@ -144,15 +144,15 @@ fn d3_1_3_ii_interpenetrating_tetrahedra_are_caught() {
     }
     let v = validate(&RawMesh::from_arrays(pos, faces));
     let c = check(&v.report, "D3.1.3(ii)(triangles)");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert!(c.offenders >= 2);
     assert!(v
         .report
         .error_classes
         .contains(&ErrorClass::SelfIntersection));
     // Combinatorially the two tetrahedra are fine: only the geometric check fires.
-    assert_eq!(check(&v.report, "D3.1.6(edges)").verdict, Verdict::Holds);
-    assert_eq!(check(&v.report, "D3.1.6(link)").verdict, Verdict::Holds);
+    assert_eq!(check(&v.report, "D3.1.6(edges)").verdict(), Verdict::Holds);
+    assert_eq!(check(&v.report, "D3.1.6(link)").verdict(), Verdict::Holds);
     assert!(v.surface.is_none());
 }
 
@@ -165,7 +165,7 @@ fn d3_1_3_ii_vertex_pushed_through_the_tube_is_caught() {
     m.positions[0] = [0.9, 0.0, 0.0];
     let v = validate(&m);
     let c = check(&v.report, "D3.1.3(ii)(triangles)");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert!(v.surface.is_none());
 }
 
@@ -260,7 +260,7 @@ fn d3_1_6_boundary_edge_is_caught() {
     m.face_origin.remove(7);
     let v = validate(&m);
     let c = check(&v.report, "D3.1.6(edges)");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert_eq!(c.offenders, 3, "all three edges of the hole");
     assert!(v.report.error_classes.contains(&ErrorClass::Boundary));
     assert_eq!(check(&v.report, "D3.1.6(link)").offenders, 3);
@@ -281,9 +281,9 @@ fn d3_1_6_nonmanifold_vertex_is_caught() {
         faces.push([map(f[0]), map(f[2]), map(f[1])]);
     }
     let v = validate(&RawMesh::from_arrays(pos, faces));
-    assert_eq!(check(&v.report, "D3.1.6(edges)").verdict, Verdict::Holds);
+    assert_eq!(check(&v.report, "D3.1.6(edges)").verdict(), Verdict::Holds);
     let c = check(&v.report, "D3.1.6(link)");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert_eq!(c.offenders, 1);
     assert!(c.witnesses[0].text.contains("vertex 0"));
     assert_eq!(v.report.error_classes, vec![ErrorClass::NonmanifoldVertex]);
@@ -311,7 +311,7 @@ fn d3_1_6_nonmanifold_edge_is_caught() {
     m.face_origin.push(4);
     let v = validate(&m);
     let c = check(&v.report, "D3.1.6(edges)");
-    assert_eq!(c.verdict, Verdict::Fails);
+    assert_eq!(c.verdict(), Verdict::Fails);
     assert!(c
         .witnesses
         .iter()
@@ -334,7 +334,7 @@ fn d3_1_7_simplicial_map_of_tetrahedron() {
         assert!(t.vertices.contains(&TVertex::Centre));
     }
     assert_eq!(
-        check_star_isomorphism(&k, |v, x| k.s(v, x)).verdict,
+        check_star_isomorphism(&k, |v, x| k.s(v, x)).verdict(),
         Verdict::Holds
     );
 }
@@ -344,7 +344,7 @@ fn d4_1_4_s_v_is_a_simplicial_isomorphism_on_generated_meshes() {
     for (name, m) in good_meshes() {
         let k = validate(&m).surface.expect("valid");
         let r = check_star_isomorphism(&k, |v, x| k.s(v, x));
-        assert_eq!(r.verdict, Verdict::Holds, "{name}: {:?}", r.witnesses);
+        assert_eq!(r.verdict(), Verdict::Holds, "{name}: {:?}", r.witnesses);
         assert_eq!(r.examined as usize, k.num_vertices());
     }
 }
@@ -367,7 +367,7 @@ fn d4_1_4_planted_wrong_labels_are_caught() {
             Some(l)
         }
     });
-    assert_eq!(r.verdict, Verdict::Fails);
+    assert_eq!(r.verdict(), Verdict::Fails);
     assert_eq!(r.offenders, 1);
     assert!(r.witnesses[0].text.contains("vertex 0"));
 }
@@ -376,7 +376,7 @@ fn d4_1_4_planted_wrong_labels_are_caught() {
 fn l3_1_1_surface_invariants() {
     let v = validate(&torus(7, 4));
     let c = check(&v.report, "L3.1.1");
-    assert_eq!(c.verdict, Verdict::Holds);
+    assert_eq!(c.verdict(), Verdict::Holds);
     assert_eq!(v.report.components[0].genus, Some(1));
     let v = validate(&icosahedron());
     assert_eq!(v.report.components[0].genus, Some(0));
@@ -386,7 +386,7 @@ fn l3_1_1_surface_invariants() {
     m.face_origin.pop();
     let v = validate(&m);
     assert!(matches!(
-        check(&v.report, "L3.1.1").verdict,
+        check(&v.report, "L3.1.1").verdict(),
         Verdict::Skipped { .. }
     ));
 }
@@ -451,13 +451,16 @@ fn x_input_sanity_checks_catch_planted_faults() {
     m.positions.push([9.0, 9.0, 9.0]); // unreferenced
     m.vertex_origin.push(6);
     let v = validate(&m);
-    assert_eq!(check(&v.report, "X-finite").verdict, Verdict::Fails);
+    assert_eq!(check(&v.report, "X-finite").verdict(), Verdict::Fails);
     assert_eq!(check(&v.report, "X-repeated-corner").offenders, 1);
-    assert_eq!(check(&v.report, "X-unreferenced").verdict, Verdict::Warning);
+    assert_eq!(
+        check(&v.report, "X-unreferenced").verdict(),
+        Verdict::Warning
+    );
     assert_eq!(check(&v.report, "X-unreferenced").offenders, 1);
     assert!(v.report.error_classes.contains(&ErrorClass::NonFinite));
     let empty = validate(&RawMesh::from_arrays(vec![], vec![]));
-    assert_eq!(check(&empty.report, "X-nonempty").verdict, Verdict::Fails);
+    assert_eq!(check(&empty.report, "X-nonempty").verdict(), Verdict::Fails);
     assert!(!empty.report.is_simplicial_surface);
 }
 

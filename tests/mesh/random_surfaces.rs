@@ -84,7 +84,7 @@ fn assert_as_recorded(r: &CheckResult, m: u32, cfg: &str) {
             r.holds_with_evidence(),
             "{} must hold on its restricted domain ({cfg}): {:?}, examined {}",
             r.id,
-            r.verdict,
+            r.verdict(),
             r.examined
         );
         return;
@@ -94,13 +94,13 @@ fn assert_as_recorded(r: &CheckResult, m: u32, cfg: &str) {
             r.failed() && !r.witnesses.is_empty(),
             "{} should fail with a witness for m_u = {m} ({cfg}): {:?}",
             r.id,
-            r.verdict
+            r.verdict()
         ),
         Some(false) => assert!(
-            matches!(r.verdict, Verdict::Holds),
+            matches!(r.verdict(), Verdict::Holds),
             "{} should hold ({cfg}): {:?} {:?}",
             r.id,
-            r.verdict,
+            r.verdict(),
             r.witnesses.first()
         ),
         None => {}
@@ -214,7 +214,7 @@ proptest! {
         let (s, _) = generate::grow(&base(b), &ops);
         let k = surface(&s.to_raw());
         let iso = check_star_isomorphism(&k, |v, x| k.s(v, x));
-        prop_assert!(iso.holds_with_evidence(), "{:?} {:?}", iso.verdict, iso.witnesses.first());
+        prop_assert!(iso.holds_with_evidence(), "{:?} {:?}", iso.verdict(), iso.witnesses.first());
         prop_assert!(chapter4_as_recorded(&k, seed) > 0);
     }
 }

@@ -42,7 +42,10 @@ fn find<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
 }
 
 fn holds(r: &CheckResult) -> bool {
-    matches!(r.verdict, Verdict::Holds | Verdict::HoldsRestricted { .. })
+    matches!(
+        r.verdict(),
+        Verdict::Holds | Verdict::HoldsRestricted { .. }
+    )
 }
 
 #[test]
@@ -165,7 +168,7 @@ fn ms_t4_index_planted_conjugate_form_gives_negative_windings() {
     flat.y = flat.x.clone();
     let z = locate(&k, &fm.ei, &flat);
     assert!(matches!(
-        claims::check_gauss_bonnet(&z, 1, k.num_faces()).verdict,
+        claims::check_gauss_bonnet(&z, 1, k.num_faces()).verdict(),
         Verdict::Skipped { .. }
     ));
     assert!(claims::check_decided(&z).failed() || !z.ambiguous_faces.is_empty());
@@ -271,7 +274,7 @@ fn ms_t4_count_ms_3_4_3_ms_c2_genus_two_zero_points() {
             && (!rep.zeros.is_empty() || (idx.failed() && !idx.witnesses.is_empty()))
     );
     assert!(matches!(
-        find(&rep.checks, "MS-C2").verdict,
+        find(&rep.checks, "MS-C2").verdict(),
         Verdict::Skipped { .. }
     ));
 }
@@ -330,7 +333,7 @@ fn ms_f7_ms_d13_1_ms_d13_2_ms_f7_c2_ms_d5_circle_example_decided_exactly() {
         rs.iter()
             .find(|r| r.id == "MS-D13(2)")
             .expect("D13(2)")
-            .verdict,
+            .verdict(),
         Verdict::Skipped { .. }
     ));
     // Corrected: charts of ±4 knots hold every condition.
@@ -377,12 +380,12 @@ fn ms_dms_pu_ms_dms_3_1_3_3_partition_of_unity_and_completeness_exact_k2_k3() {
         let (dms, interior) = grid(k, seed);
         let pu = dc::check_partition(&dms, &interior, seed, 12);
         println!("{pu:?}");
-        assert!(matches!(pu.verdict, Verdict::Holds), "k = {k}: {pu:?}");
+        assert!(matches!(pu.verdict(), Verdict::Holds), "k = {k}: {pu:?}");
         assert!(pu.examined >= 12);
         let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed);
         let p = pc::random_poly(&mut rng, k);
         let rp = dc::check_reproduction(&dms, &p, &interior, seed, 8);
-        assert!(matches!(rp.verdict, Verdict::Holds), "k = {k}: {rp:?}");
+        assert!(matches!(rp.verdict(), Verdict::Holds), "k = {k}: {rp:?}");
     }
 }
 
@@ -422,7 +425,7 @@ fn ms_dms_ck_1_basis_is_c_k_minus_1_across_knot_lines_exact_k2_k3() {
         let (dms, interior) = grid(k, seed);
         let ck = dc::check_continuity(&dms, &interior, seed, 40);
         println!("{ck:?}");
-        assert!(matches!(ck.verdict, Verdict::Holds), "k = {k}: {ck:?}");
+        assert!(matches!(ck.verdict(), Verdict::Holds), "k = {k}: {ck:?}");
         assert!(ck.examined >= 20, "{ck:?}");
         // Not vacuous: the k-th derivative jumps on some lines.
         assert!(!ck.note.contains("jumps on 0 "), "{}", ck.note);
@@ -451,7 +454,7 @@ fn ms_3_1_3_1_local_support_exact_and_planted_wide_cloud_caught() {
     let (dms, interior) = grid(2, 31);
     let ls = dc::check_local_support(&dms, &interior, 31, 6);
     println!("{ls:?}");
-    assert!(matches!(ls.verdict, Verdict::Holds), "{ls:?}");
+    assert!(matches!(ls.verdict(), Verdict::Holds), "{ls:?}");
     assert!(ls.examined > 100);
     // Planted: clouds of radius 0.9 reach past the 1-ring.
     let (wide, interior) = dc::planar_grid(5, 2, q(3, 2), 31);
@@ -502,12 +505,12 @@ fn ms_5_5_ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_ms_3_1_3_1_mesh_torus_spline_is_ch
         }
         let d2 = find(&rs, "MS-D13(2)-mesh");
         assert!(
-            matches!(d2.verdict, Verdict::Holds) && d2.examined >= 60,
+            matches!(d2.verdict(), Verdict::Holds) && d2.examined >= 60,
             "{name}: {d2:?}"
         );
         let ev = find(&rs, "MS-5.6");
         assert!(
-            matches!(ev.verdict, Verdict::Holds) && ev.examined >= 50,
+            matches!(ev.verdict(), Verdict::Holds) && ev.examined >= 50,
             "{name}: {ev:?}"
         );
     }
@@ -525,7 +528,7 @@ fn ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_literal_conversion_by_translation() {
         let r = find(&rs, id);
         println!("{r:?}");
         assert!(
-            matches!(r.verdict, Verdict::Holds) && r.examined > 0,
+            matches!(r.verdict(), Verdict::Holds) && r.examined > 0,
             "{r:?}"
         );
     }
@@ -583,7 +586,7 @@ fn ms_d13_1_mesh_ms_d13_1_mesh_corrected_charts_too_small_as_written_star_suffic
     let cor = find(&rs, "MS-D13(1)-mesh-corrected");
     println!("{cor:?}");
     assert!(
-        matches!(cor.verdict, Verdict::Holds) && cor.examined > 0,
+        matches!(cor.verdict(), Verdict::Holds) && cor.examined > 0,
         "{cor:?}"
     );
     // Planted: a knot of vertex 0 moved to a face far from its star is outside the charts.
@@ -725,7 +728,7 @@ fn ms_5_5_planted_collinear_knots_are_reported() {
     let k = torus(24, 16);
     let (at, mut sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
     let r = pseudomanifold::msplines::mesh_spline_checks::check_knots_generic(&k, &sp);
-    assert!(matches!(r.verdict, Verdict::Holds), "{r:?}");
+    assert!(matches!(r.verdict(), Verdict::Holds), "{r:?}");
     // Planted: t_{0,2} := the midpoint of v_0 and t_{0,1} (same face): three collinear knots.
     let t1 = sp.clouds[0][1];
     let at_v = k
@@ -797,11 +800,11 @@ fn ms_d13_2_mesh_ms_dms_pu_mesh_ms_dms_pu_nan_and_empty_domain() {
     let rs = spline_checks(&k, &at, &sp, 0x5eed, 0);
     for id in ["MS-D13(2)-mesh", "MS-5.6", "MS-DMS-PU-mesh"] {
         let r = find(&rs, id);
-        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+        assert!(matches!(r.verdict(), Verdict::Skipped { .. }), "{r:?}");
     }
     let (dms, _) = grid(2, 11);
     let r = dc::check_partition(&dms, &[], 1, 10);
-    assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+    assert!(matches!(r.verdict(), Verdict::Skipped { .. }), "{r:?}");
     // A chart whose images are NaN: every comparison with it fails.
     for t in at.charts[0].faces.values_mut() {
         *t = [[f64::NAN; 2]; 3];

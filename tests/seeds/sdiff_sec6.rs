@@ -345,10 +345,10 @@ fn sd_l146_4_d_fixed_non_solitary_maps_on_the_4_simplex_are_certified_exactly() 
         println!(
             "SD-L146(4-D): m = 4, n = {n}: {samples} samples, seed 146, {:.1} s: {} [{}]",
             t.elapsed().as_secs_f64(),
-            r.verdict.label(),
+            r.verdict().label(),
             r.note
         );
-        assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+        assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
         assert_eq!(s.certified, samples);
         assert_eq!(s.closed_form_mismatches, 0);
     }
@@ -360,10 +360,10 @@ fn sd_l146_4_d_fixed_non_solitary_maps_on_the_4_simplex_are_certified_exactly() 
         println!(
             "SD-L146(4-D) near vertices: m = 4, n = {n}: {samples} samples, seed 147, {:.1} s: {} [{}]",
             t.elapsed().as_secs_f64(),
-            r.verdict.label(),
+            r.verdict().label(),
             r.note
         );
-        assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+        assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     }
 }
 
@@ -383,7 +383,7 @@ fn sd_l146_4_d_planted_faults_are_reported_with_witnesses() {
     };
     let s = search_with(4, 5, 1, 7, b, outside).unwrap();
     let r = judge("SD-L146(4-D)", &s);
-    assert_eq!(r.verdict, Verdict::Fails, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Fails, "{r:?}");
     assert_eq!(r.witnesses.len(), 1);
     let SimplexDecision::Refuted { point, value, .. } = &s.refuted[0].decision else {
         panic!("{s:?}")
@@ -412,14 +412,14 @@ fn sd_l146_4_d_planted_faults_are_reported_with_witnesses() {
     // Zero samples: skipped; an unresolved sample: skipped, never holds.
     let s = search_fixed_solitary(4, 5, 0, 146, b).unwrap();
     assert!(matches!(
-        judge("SD-L146(4-D)", &s).verdict,
+        judge("SD-L146(4-D)", &s).verdict(),
         Verdict::Skipped { .. }
     ));
     let mut s = search_fixed_solitary(4, 3, 1, 146, b).unwrap();
     s.certified -= 1;
     s.unresolved += 1;
     assert!(matches!(
-        judge("SD-L146(4-D)", &s).verdict,
+        judge("SD-L146(4-D)", &s).verdict(),
         Verdict::Skipped { .. }
     ));
     // Too large: a typed error, not unbounded time.
@@ -460,10 +460,10 @@ fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1(
     println!(
         "SD-L268(full,restricted) [{:.1} s]: {} — {}",
         t.elapsed().as_secs_f64(),
-        r.verdict.label(),
+        r.verdict().label(),
         r.note
     );
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     assert!(opt.objective < opt.start);
     // The one-edge scan of SD-L268(restricted) (λ on (0, 2) only, j/16): the full optimiser
     // is at least as good (it contains that family).
@@ -487,7 +487,7 @@ fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1(
     let rw = optimise::judge("SD-L268(full)", &optw, &detw, wide.alpha);
     println!(
         "SD-L268(full): {} — {} — {:?}",
-        rw.verdict.label(),
+        rw.verdict().label(),
         rw.note,
         rw.witnesses.first().map(|w| &w.text)
     );
@@ -511,11 +511,9 @@ fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1(
     fold.insert((0, 2), qr(3, 2));
     assert!(optimise::judge("SD-L268(full)", &opt, &det_of(&fold), o.alpha).failed());
     let mut skipped = det.clone();
-    skipped.verdict = Verdict::Skipped {
-        reason: "planted".into(),
-    };
+    skipped.skip("planted");
     assert!(matches!(
-        optimise::judge("SD-L268(full)", &opt, &skipped, o.alpha).verdict,
+        optimise::judge("SD-L268(full)", &opt, &skipped, o.alpha).verdict(),
         Verdict::Skipped { .. }
     ));
     // A missing handle is a typed error naming the edge.
@@ -543,10 +541,10 @@ fn sd_l146_4_d_every_vertex_configuration_of_degree_4_is_certified() {
     println!(
         "SD-L146(4-D) every vertex configuration, m = 4, n = 4: {total} configurations, {:.1} s: {} [{}]",
         t.elapsed().as_secs_f64(),
-        r.verdict.label(),
+        r.verdict().label(),
         r.note
     );
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
 }
 
 fn report_of<'a>(
@@ -561,7 +559,7 @@ fn print_reports(name: &str, r: &[pseudomanifold::report::CheckResult]) {
         println!(
             "{name} {}: {:?} examined {} worst {:?} — {} {:?}",
             c.id,
-            c.verdict,
+            c.verdict(),
             c.examined,
             c.worst_deviation,
             c.note,
@@ -604,16 +602,16 @@ fn sd_l314_sd_l314_distance_sd_l316_local_optimiser_during_refinement_vs_closed_
         // The refinement is driven by err with X = id: the same triangulation either way.
         assert_eq!(closed.mesh.faces, opt.mesh.faces);
         let l314 = report_of(&opt.report, "SD-L314");
-        assert_eq!(l314.verdict, Verdict::Holds, "{}", l314.note);
+        assert_eq!(l314.verdict(), Verdict::Holds, "{}", l314.note);
         assert!(l314.examined > 0);
         assert!(!run.lambdas.is_empty());
         // Every accepted result is certified on its star, so the whole X_1 is a diffeomorphism.
         assert_eq!(
-            report_of(&opt.report, "SD-L101(det)").verdict,
+            report_of(&opt.report, "SD-L101(det)").verdict(),
             Verdict::Holds
         );
         assert_eq!(
-            report_of(&opt.report, "SD-6.2(topology)").verdict,
+            report_of(&opt.report, "SD-6.2(topology)").verdict(),
             Verdict::Holds
         );
         let d = |r: &[pseudomanifold::report::CheckResult]| {
@@ -652,7 +650,7 @@ fn sd_l314_planted_folds_are_reported_never_accepted() {
     let (p, run) = polygonize::polygonize_local(&Implicit::circle(), &opts, &beyond).unwrap();
     print_reports("planted", &p.report);
     let l314 = report_of(&p.report, "SD-L314");
-    assert_eq!(l314.verdict, Verdict::Fails);
+    assert_eq!(l314.verdict(), Verdict::Fails);
     assert!(!l314.witnesses.is_empty());
     assert!(run
         .steps
@@ -663,14 +661,17 @@ fn sd_l314_planted_folds_are_reported_never_accepted() {
         .iter()
         .all(|s| !matches!(s.outcome, Outcome::Accepted)));
     assert!(run.lambdas.is_empty());
-    assert_eq!(report_of(&p.report, "SD-L101(det)").verdict, Verdict::Holds);
+    assert_eq!(
+        report_of(&p.report, "SD-L101(det)").verdict(),
+        Verdict::Holds
+    );
     let empty = OptimiseOptions {
         grid: 0,
         ..Default::default()
     };
     let (p, _) = polygonize::polygonize_local(&Implicit::circle(), &opts, &empty).unwrap();
     let l314 = report_of(&p.report, "SD-L314");
-    assert_eq!(l314.verdict, Verdict::Fails);
+    assert_eq!(l314.verdict(), Verdict::Fails);
     assert!(l314.witnesses[0].text.contains("empty search range"));
     let none = polygonize::Options {
         max_steps: 0,
@@ -680,7 +681,7 @@ fn sd_l314_planted_folds_are_reported_never_accepted() {
         polygonize::polygonize_local(&Implicit::circle(), &none, &OptimiseOptions::default())
             .unwrap();
     assert!(matches!(
-        report_of(&p.report, "SD-L314").verdict,
+        report_of(&p.report, "SD-L314").verdict(),
         Verdict::Skipped { .. }
     ));
     // The handle normals: exactly unit, within 2⁻²⁰ of the direction, in every quadrant.

@@ -164,10 +164,10 @@ fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_sd_l101_inverse_hold_for_the_bund
         let r = run(name);
         for c in &r {
             assert!(
-                matches!(c.verdict, Verdict::Holds | Verdict::Skipped { .. }),
+                matches!(c.verdict(), Verdict::Holds | Verdict::Skipped { .. }),
                 "{name}: {} {:?} {:?}",
                 c.id,
-                c.verdict,
+                c.verdict(),
                 c.witnesses
             );
         }
@@ -179,12 +179,12 @@ fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_sd_l101_inverse_hold_for_the_bund
             "SD-L101(edges)",
             "SD-L131",
         ] {
-            assert_eq!(by_id(&r, id).verdict, Verdict::Holds, "{name}: {id}");
+            assert_eq!(by_id(&r, id).verdict(), Verdict::Holds, "{name}: {id}");
             assert!(by_id(&r, id).examined > 0);
         }
         assert_eq!(by_id(&r, "SD-L101(interval)").offenders, 0, "{name}");
         assert_eq!(
-            by_id(&r, "SD-L101(inverse)").verdict,
+            by_id(&r, "SD-L101(inverse)").verdict(),
             Verdict::Holds,
             "{name}"
         );
@@ -315,7 +315,7 @@ fn sd_l141_adjusted_quadratic_maps_are_injective() {
         SAMPLES,
         141,
     );
-    assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
+    assert_eq!(c.verdict(), Verdict::Holds, "{c:?}");
     assert_eq!(s.certified as usize, SAMPLES);
 }
 
@@ -334,7 +334,7 @@ fn sd_l146_fixed_non_solitary_cubic_is_injective_for_any_solitary_point() {
         SAMPLES,
         146,
     );
-    assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
+    assert_eq!(c.verdict(), Verdict::Holds, "{c:?}");
 }
 
 #[test]
@@ -350,7 +350,7 @@ fn sd_l161_rational_fixed_points_positive_weights_are_injective() {
             SAMPLES / 2,
             161,
         );
-        assert_eq!(c.verdict, Verdict::Holds, "n = {n}: {c:?}");
+        assert_eq!(c.verdict(), Verdict::Holds, "n = {n}: {c:?}");
     }
 }
 
@@ -358,7 +358,7 @@ fn sd_l161_rational_fixed_points_positive_weights_are_injective() {
 fn sd_l115_monotonic_maps_are_injective() {
     let s = search(SAMPLES, 115, Budget::default(), claims::random_monotonic);
     let c = claims::universal("SD-L115", "monotonic ⇒ injective", &s, SAMPLES, 115);
-    assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
+    assert_eq!(c.verdict(), Verdict::Holds, "{c:?}");
 }
 
 #[test]
@@ -407,7 +407,7 @@ fn sd_l139_adjusted_quartic_can_be_non_injective_witness() {
         1,
         0,
     );
-    assert_eq!(c.verdict, Verdict::Holds, "{c:?}");
+    assert_eq!(c.verdict(), Verdict::Holds, "{c:?}");
     assert_eq!(c.witnesses.len(), 1);
 }
 
@@ -432,7 +432,7 @@ fn sd_l139_degree_3_adjusted_search_for_non_injective_maps() {
     );
     assert_eq!(c.examined as usize, SAMPLES);
     assert!(
-        !matches!(c.verdict, Verdict::Skipped { .. }),
+        !matches!(c.verdict(), Verdict::Skipped { .. }),
         "all samples decided"
     );
 }
@@ -478,7 +478,7 @@ fn sd_l168_curved_isocurve_has_the_topology_of_the_linear_one() {
         let (f, c) = spec.iso.clone().unwrap();
         let out = iso::isocurves(&k, &cm, &f, &c).unwrap();
         for r in &out.report {
-            assert_eq!(r.verdict, Verdict::Holds, "{name}: {r:?}");
+            assert_eq!(r.verdict(), Verdict::Holds, "{name}: {r:?}");
         }
         assert_eq!(out.linear.topology(), out.curved.topology());
         assert_eq!(out.linear.topology().0, 1);
@@ -518,7 +518,7 @@ fn sd_l203_identity_keeps_the_kink_and_a_derivative_jump_alone_does_not_smooth()
     let id = inline("family = \"polynomial\"\ndegree = 1\n");
     let cm = id.build(&k, Path::new("inline.toml")).unwrap();
     let (r, pts) = normals::check_l203(&k, &cm, &f, &q(0));
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     let p = pts
         .iter()
         .find(|p| p.edge == [0, 2])
@@ -537,7 +537,7 @@ fn sd_l203_identity_keeps_the_kink_and_a_derivative_jump_alone_does_not_smooth()
     // jump is necessary (L203), not sufficient.
     let (km, _, cmm) = load("monotonic.toml");
     let (r, pts) = normals::check_l203(&km, &cmm, &f, &q(0));
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     let p = pts.iter().find(|p| p.edge == [0, 2]).unwrap();
     assert!(p.dx_jumps && p.linear_kink && !p.curved_smooth, "{p:?}");
     println!(
@@ -612,11 +612,11 @@ fn sd_e12_sd_e12_n_square_system_solved_exactly_positive_weights_and_c1_verified
         let spec2 = c1::with_weights(&spec, &sys, &w);
         let cm2 = spec2.build(&k, Path::new("inline.toml")).unwrap();
         let [rn, rf] = c1::verify(&k, &cm2, &f, &q(0), c1::Scope::AllInteriorEdges);
-        assert_eq!(rn.verdict, Verdict::Holds, "{rn:?}");
-        assert_eq!(rf.verdict, Verdict::Holds, "{rf:?}");
+        assert_eq!(rn.verdict(), Verdict::Holds, "{rn:?}");
+        assert_eq!(rf.verdict(), Verdict::Holds, "{rf:?}");
         // Positive weights, fixed control points: a diffeomorphism (SD-L161), certified.
         let all = check_all(&k, &cm2, &Options::default());
-        assert_eq!(by_id(&all, "SD-L101(det)").verdict, Verdict::Holds);
+        assert_eq!(by_id(&all, "SD-L101(det)").verdict(), Verdict::Holds);
         // L203, the positive case: at 𝒪's crossing of the diagonal DX jumps and the normals
         // agree (to the level shift of the nearest rational point).
         let (_, pts) = normals::check_l203(&k, &cm2, &f, &q(0));
@@ -740,11 +740,11 @@ fn sd_l219_sd_l219_positive_crossed_edges_only_on_grids() {
             );
             if let Some(sol) = &run.solution {
                 for r in &run.report[2..] {
-                    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+                    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
                 }
                 let cm = sol.build(&k, Path::new("inline.toml")).unwrap();
                 let checks = check_all(&k, &cm, &Options::default());
-                assert_eq!(by_id(&checks, "SD-L101(det)").verdict, Verdict::Holds);
+                assert_eq!(by_id(&checks, "SD-L101(det)").verdict(), Verdict::Holds);
                 // The solved map reads back from its TOML.
                 let back = params::parse(&sol.to_toml(), Path::new("solved.toml")).unwrap();
                 assert_eq!(back.weights, sol.weights);
@@ -800,7 +800,7 @@ fn sd_6_1_handle_restricted_sweep_on_the_diagonal_is_certified_exactly_inside_th
     let s = handles::sweep(&k, &f, &q(0), (0, 2), 32, Budget::default()).unwrap();
     assert_eq!(s.u_linear, "1/3");
     let [w, r] = handles::judge(&s);
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     assert!(w.failed(), "{w:?}");
     assert!(w.witnesses[0].text.contains("needs λ"), "{:?}", w.witnesses);
     let ok: Vec<f64> = s
@@ -849,14 +849,14 @@ fn sd_6_2_distance_sd_6_2_topology_sd_l302_sd_l324_taubin_and_circle() {
                 "{} {}: {:?} examined {} — {} {:?}",
                 g.name,
                 r.id,
-                r.verdict,
+                r.verdict(),
                 r.examined,
                 r.note,
                 r.witnesses.first().map(|w| &w.text)
             );
         }
-        assert_eq!(by_id(&out.report, "SD-L101(det)").verdict, Verdict::Holds);
-        assert_eq!(by_id(&out.report, "SD-L168").verdict, Verdict::Holds);
+        assert_eq!(by_id(&out.report, "SD-L101(det)").verdict(), Verdict::Holds);
+        assert_eq!(by_id(&out.report, "SD-L168").verdict(), Verdict::Holds);
         assert!(out.iso.curved.to_obj().contains("\nl "));
         assert!(polygonize::to_off(&out.mesh).starts_with("OFF\n"));
     }
@@ -874,7 +874,7 @@ fn sd_6_2_distance_sd_6_2_topology_sd_l302_sd_l324_taubin_and_circle() {
     shifted.terms.push((0, 0, q(1)));
     let out = polygonize::polygonize(&shifted, &opts).unwrap();
     assert!(matches!(
-        by_id(&out.report, "SD-6.2(distance)").verdict,
+        by_id(&out.report, "SD-6.2(distance)").verdict(),
         Verdict::Skipped { .. }
     ));
 }
@@ -917,7 +917,7 @@ fn sd_l115_3_d_monotonic_maps_on_tetrahedra_are_certified_exactly() {
     // The search behind `ppm sd claims` (extreme coefficients included).
     let s = tet::search_monotonic(20, 115, Budget::default());
     let r = claims::universal("SD-L115(3-D)", "search", &s, 20, 115);
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     assert_eq!(s.certified, 20);
     // Planted: g = t² at vertex 1 (g′(0) = 0) → det = 0 exactly on the face w_1 = 0; g′ < 0
     // → refuted.
@@ -1085,16 +1085,16 @@ fn sd_l203_sd_e12_sd_l219_a_single_triangle_is_skipped_not_held() {
     let (spec, cm) = rational_fixed(&k, 2);
     let (r, pts) = normals::check_l203(&k, &cm, &f, &q(0));
     assert!(
-        pts.is_empty() && matches!(r.verdict, Verdict::Skipped { .. }),
+        pts.is_empty() && matches!(r.verdict(), Verdict::Skipped { .. }),
         "{r:?}"
     );
     for r in c1::verify(&k, &cm, &f, &q(0), c1::Scope::AllInteriorEdges) {
-        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+        assert!(matches!(r.verdict(), Verdict::Skipped { .. }), "{r:?}");
     }
     let run = c1::run(&k, &spec, &f, &q(0), c1::Scope::AllInteriorEdges, 100).unwrap();
     assert_eq!(run.solved.counts[0], 0);
     for r in &run.report {
-        assert!(matches!(r.verdict, Verdict::Skipped { .. }), "{r:?}");
+        assert!(matches!(r.verdict(), Verdict::Skipped { .. }), "{r:?}");
     }
 }
 
@@ -1146,7 +1146,7 @@ fn sd_l231_sd_l231_corrected_normal_deviation_is_positive_on_exactly_c1_curves_a
             .build(&k, Path::new("inline.toml"))
             .unwrap();
         let [_, rf] = c1::verify(&k, &cm2, &f, &q(0), c1::Scope::AllInteriorEdges);
-        assert_eq!(rf.verdict, Verdict::Holds, "{rf:?}");
+        assert_eq!(rf.verdict(), Verdict::Holds, "{rf:?}");
         let devs = objectives::normal_deviation(&k, &cm2, &f, 7);
         let r = objectives::judge_l231(&devs, &crossed, true);
         assert!(r.failed(), "{r:?}");
@@ -1183,7 +1183,7 @@ fn sd_l231_sd_l231_corrected_normal_deviation_is_positive_on_exactly_c1_curves_a
         &crossed,
         true,
     );
-    assert!(matches!(r0.verdict, Verdict::Skipped { .. }), "{r0:?}");
+    assert!(matches!(r0.verdict(), Verdict::Skipped { .. }), "{r0:?}");
     let mut bad = devs.clone();
     bad.iter_mut().for_each(|d| d.undefined = 1);
     let r = objectives::judge_l231(&bad, &crossed, false);
@@ -1279,7 +1279,7 @@ fn sd_l268_sd_l268_restricted_minimiser_over_x1_is_not_a_diffeomorphism_for_a_ha
     println!(
         "SD-L268 α = 1/100: {} → {:?} {:?}",
         r.note,
-        r.verdict,
+        r.verdict(),
         r.witnesses.first().map(|w| &w.text)
     );
     assert!(r.failed(), "{r:?}");
@@ -1290,7 +1290,7 @@ fn sd_l268_sd_l268_restricted_minimiser_over_x1_is_not_a_diffeomorphism_for_a_ha
         objectives::scan_l268(&k, &f, &handles(qr(1, 32)), (0, 2), 0.01, &inside).unwrap();
     let (b, det) = best.unwrap();
     let r = objectives::judge_l268(&b, &det, 0.01);
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     assert!(b.objective > 0.0);
     println!("SD-L268(restricted) α = 1/100, λ ∈ (0, 1): {}", r.note);
     // A handle inside the adjusted range (u_h = 1/4): the α = 0 minimiser is a diffeomorphism.
@@ -1301,7 +1301,7 @@ fn sd_l268_sd_l268_restricted_minimiser_over_x1_is_not_a_diffeomorphism_for_a_ha
     let (b, det) = best.unwrap();
     assert_eq!(b.lambda, lam.to_string());
     let r = objectives::judge_l268(&b, &det, 0.0);
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     println!("SD-L268 handle inside: {}", r.note);
 }
 
@@ -1333,7 +1333,7 @@ fn sd_l310_sd_l316_stand_in_subdivide_is_conforming_and_local() {
     let (raw, _) = mesh.to_raw();
     let (k, _) = validate(&raw).unwrap();
     let r = check_l316(&steps);
-    assert_eq!(r.verdict, Verdict::Holds, "{r:?}");
+    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
     let ks: Vec<usize> = steps.iter().map(|s| s.new_vertices.len()).collect();
     assert!(ks.iter().any(|&x| x > 1), "no propagation seen: {ks:?}");
     println!(
@@ -1353,7 +1353,7 @@ fn sd_l310_sd_l316_stand_in_subdivide_is_conforming_and_local() {
     let mut bad = steps.clone();
     bad[0].new_vertices.clear();
     assert!(check_l316(&bad).failed());
-    assert!(matches!(check_l316(&[]).verdict, Verdict::Skipped { .. }));
+    assert!(matches!(check_l316(&[]).verdict(), Verdict::Skipped { .. }));
 }
 
 // ---- 3-D: the polynomial family on a tetrahedron (L141, L146 with m = 3) ----------------

@@ -222,7 +222,7 @@ fn loop_normal_mask_planted_faults_caught() {
     let k = surface(&generate::icosahedron());
     let s = LoopSurface::new(&k).expect("Loop surface");
     assert!(matches!(
-        check_normals(&k, &s, &none).verdict,
+        check_normals(&k, &s, &none).verdict(),
         pseudomanifold::report::Verdict::Skipped { .. }
     ));
 }
@@ -288,7 +288,7 @@ fn loop_c0_edge_loop_c2_edge_planted_faults_caught() {
     };
     for r in check_edges(&k, &s, &none) {
         assert!(
-            matches!(r.verdict, pseudomanifold::report::Verdict::Skipped { .. }),
+            matches!(r.verdict(), pseudomanifold::report::Verdict::Skipped { .. }),
             "{}",
             r.id
         );
@@ -414,10 +414,10 @@ fn loop_c0_edge_loop_c1_edge_loop_c2_edge_loop_c0_vertex_empty_sample_is_skipped
     assert_eq!(rs.len(), 5);
     for r in rs {
         assert!(
-            matches!(r.verdict, pseudomanifold::report::Verdict::Skipped { .. }),
+            matches!(r.verdict(), pseudomanifold::report::Verdict::Skipped { .. }),
             "{}: {:?}",
             r.id,
-            r.verdict
+            r.verdict()
         );
         assert_eq!((r.examined, r.eval_errors), (0, 0), "{}", r.id);
     }

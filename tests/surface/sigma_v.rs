@@ -342,9 +342,9 @@ fn sv_smooth_planted_nan_error_and_empty_sample() {
     };
     let r = check_smooth_with(&outside, &view, &CFG);
     assert!(
-        matches!(r.verdict, pseudomanifold::report::Verdict::Skipped { .. }),
+        matches!(r.verdict(), pseudomanifold::report::Verdict::Skipped { .. }),
         "{:?}",
-        r.verdict
+        r.verdict()
     );
     assert_eq!(r.examined, 0);
     assert!(
@@ -355,7 +355,7 @@ fn sv_smooth_planted_nan_error_and_empty_sample() {
     let empty = SigmaVView::new(&pps.gluing, vec![], Version::Fixed);
     let r = check_smooth(&pps, &empty, &CFG);
     assert!(matches!(
-        r.verdict,
+        r.verdict(),
         pseudomanifold::report::Verdict::Skipped { .. }
     ));
     assert_eq!((r.examined, r.eval_errors), (0, 0));
@@ -368,14 +368,14 @@ fn sv_d13_sv_h_empty_sample_is_skipped() {
     let pps = build(&k);
     let r = check_eval(&pps, 0, 7);
     assert!(matches!(
-        r.verdict,
+        r.verdict(),
         pseudomanifold::report::Verdict::Skipped { .. }
     ));
     assert_eq!(r.examined, 0);
     let t = WedgeTable::<f64>::new(pps.gluing.degrees().iter().copied(), pps.gluing.kappa, 53);
     let r = check_declared_empty(&k, &pps.gluing, &t, 0);
     assert!(matches!(
-        r.verdict,
+        r.verdict(),
         pseudomanifold::report::Verdict::Skipped { .. }
     ));
     assert_eq!(r.examined, 0);
@@ -471,7 +471,7 @@ fn sv_d1_sv_d5_sv_d8_run_sigma_v_checks_on_fixtures() {
             eprintln!(
                 "{}: {:?} {} examined {}",
                 p.display(),
-                r.verdict,
+                r.verdict(),
                 r.id,
                 r.examined
             );

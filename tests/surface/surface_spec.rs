@@ -52,7 +52,7 @@ fn assert_holds(r: &CheckResult) {
     );
 }
 fn assert_fails(r: &CheckResult) {
-    assert!(r.failed(), "{} should fail: {:?}", r.id, r.verdict);
+    assert!(r.failed(), "{} should fail: {:?}", r.id, r.verdict());
     assert!(!r.witnesses.is_empty());
     eprintln!("{} planted fault caught: {}", r.id, r.witnesses[0].text);
 }
@@ -174,9 +174,9 @@ fn c5_3_support_holds_in_mp_restricted_in_f64() {
     assert_holds(&r);
     // In f64, γ_v underflows near the rim: reported as a restriction.
     assert!(
-        matches!(r.verdict, Verdict::HoldsRestricted { .. }),
+        matches!(r.verdict(), Verdict::HoldsRestricted { .. }),
         "{:?}",
-        r.verdict
+        r.verdict()
     );
     // The restriction is the thin annulus where γ_v is 0 in f64 inside Ω_v, measured from
     // the sampled points: 0 < width ≤ 10^-3·r (the inner samples sit 10^-1·r … 10^-13·r
@@ -405,9 +405,9 @@ fn c5_4_smooth_planted_fault_caught() {
 fn c5_4_regular_measured_on_fixtures() {
     for (name, k) in fixtures() {
         let r = check_regular(&build(&k, Profile::Paper), &opts());
-        eprintln!("{name}: {:?} worst {:?}", r.verdict, r.worst_deviation);
+        eprintln!("{name}: {:?} worst {:?}", r.verdict(), r.worst_deviation);
         assert!(r.examined > 0);
-        assert_eq!(r.verdict, Verdict::Holds, "{name}: {:?}", r.witnesses);
+        assert_eq!(r.verdict(), Verdict::Holds, "{name}: {:?}", r.witnesses);
     }
 }
 
@@ -423,7 +423,7 @@ fn c5_4_regular_planted_fault_caught() {
         }
     }
     let r = check_regular(&pps, &opts());
-    assert!(r.offenders > 0 && matches!(r.verdict, Verdict::Warning));
+    assert!(r.offenders > 0 && matches!(r.verdict(), Verdict::Warning));
 }
 
 // ------------------------------------------------------------------ Sec. 6.1.4
@@ -615,11 +615,14 @@ fn c3_5_1_c_prime_and_c_second_measured() {
         for r in rs {
             eprintln!(
                 "{name} {}: {:?} offenders {} examined {}",
-                r.id, r.verdict, r.offenders, r.examined
+                r.id,
+                r.verdict(),
+                r.offenders,
+                r.examined
             );
             // Measured (the paper claims neither): no close pair on these fixtures.
             assert!(
-                r.verdict == Verdict::Holds && r.examined > 0 && r.offenders == 0,
+                r.verdict() == Verdict::Holds && r.examined > 0 && r.offenders == 0,
                 "{name}: {r:?}"
             );
         }
@@ -791,7 +794,7 @@ fn run_surface_checks_reports_every_id() {
         if id == "C3.6-approx" {
             // A measurement, not a statement: reported as a warning with its value (Sec. 3.6 (2)).
             assert!(
-                matches!(r.verdict, Verdict::Warning) && r.examined > 0,
+                matches!(r.verdict(), Verdict::Warning) && r.examined > 0,
                 "{r:?}"
             );
         } else {

@@ -119,7 +119,7 @@ pub fn check_p4_2_1<S: Scalar, M: Ppm<S>>(
     ));
     r.worst_deviation = None;
     if (a == 0 || b == 0) && !conclusive {
-        r.verdict = inconclusive_search(n);
+        r.adopt_verdict(inconclusive_search(n));
     }
     r
 }
@@ -306,9 +306,7 @@ pub fn run_edge_checks_with<S: Scalar, M: Ppm<S>>(
 ) -> Vec<CheckResult> {
     if let Err(err) = e.validate() {
         let mut r = CheckResult::new("D4.1.8", "edge configuration");
-        r.verdict = Verdict::Skipped {
-            reason: err.to_string(),
-        };
+        r.skip(err.to_string());
         return vec![r];
     }
     let mut v = vec![check_d4_1_5_polar(model, seed, n, prec)];

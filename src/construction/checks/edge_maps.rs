@@ -425,7 +425,7 @@ pub fn check_p4_1_3<S: Scalar, M: Ppm<S>>(
     let domain = format!("p with |θ(R_(u,w)p)| < {bound:.6} (= min(π, 6π/m_u)); for m_u ≤ 10 this is all of g_(u,w)⁻¹(Ω_w)");
     let mut ne = ne.finish(note.clone());
     if hits == 0 && !conclusive {
-        ne.verdict = inconclusive_search(n);
+        ne.adopt_verdict(inconclusive_search(n));
     }
     vec![ne]
         .into_iter()

@@ -289,9 +289,7 @@ pub fn run_triangle_checks_with<S: Scalar, M: Ppm<S>>(
         Ok(o) => o,
         Err(err) => {
             let mut r = CheckResult::new("L4.2.2", "triangle configuration");
-            r.verdict = Verdict::Skipped {
-                reason: err.to_string(),
-            };
+            r.skip(err.to_string());
             return vec![r];
         }
     };

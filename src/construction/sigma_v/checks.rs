@@ -77,6 +77,7 @@ impl Default for SvCheckOptions {
 /// errors) add, the worst deviation is the NaN-propagating maximum, a failure anywhere fails
 /// the merge, and a view that examined something replaces a skipped verdict.
 fn merge(a: &mut CheckResult, b: CheckResult) {
+    let b_verdict = b.stored_verdict().clone();
     a.examined += b.examined;
     a.offenders += b.offenders;
     a.eval_errors += b.eval_errors;
@@ -93,12 +94,12 @@ fn merge(a: &mut CheckResult, b: CheckResult) {
         (Some(x), Some(y)) => Some(dev_max(x, y)),
         (x, y) => x.or(y),
     };
-    if b.verdict.is_failure() {
-        a.verdict = Verdict::Fails;
-    } else if matches!(a.verdict, Verdict::Skipped { .. })
-        && !matches!(b.verdict, Verdict::Skipped { .. })
+    if b_verdict.is_failure() {
+        a.adopt_verdict(Verdict::Fails);
+    } else if matches!(a.stored_verdict(), Verdict::Skipped { .. })
+        && !matches!(b_verdict, Verdict::Skipped { .. })
     {
-        a.verdict = b.verdict;
+        a.adopt_verdict(b_verdict);
     }
     if a.note.is_empty() {
         a.note = b.note;

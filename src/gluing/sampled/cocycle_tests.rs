@@ -67,7 +67,7 @@ fn verdicts(amplification: f64) -> [Verdict; 2] {
         amplification,
     };
     let cfg = SampleConfig { seed: 3, n: 40 };
-    [check_3b(&g, &cfg).verdict, check_3c(&g, &cfg).verdict]
+    [check_3b(&g, &cfg).verdict(), check_3c(&g, &cfg).verdict()]
 }
 
 /// D3.4.1(3b), (3c): the tolerance of the equation checks is 64·ε·|value| times the declared

@@ -248,9 +248,9 @@ fn d3_4_1_4_no_image_near_x_is_skipped_not_held() {
     let (r, seps) = check_4_with_radii(&g, &SampleConfig::default());
     assert_eq!(r.examined, 0);
     assert!(
-        matches!(r.verdict, crate::report::Verdict::Skipped { .. }),
+        matches!(r.verdict(), crate::report::Verdict::Skipped { .. }),
         "{:?}",
-        r.verdict
+        r.verdict()
     );
     assert!(seps.is_empty());
 }
@@ -270,9 +270,9 @@ fn d3_4_1_4_separating_radii_come_from_a_sampled_ball() {
     let (r, seps) = check_4_with_radii(&g, &SampleConfig::default());
     assert!(r.examined > 0);
     assert!(
-        matches!(r.verdict, crate::report::Verdict::Holds),
+        matches!(r.verdict(), crate::report::Verdict::Holds),
         "{:?}",
-        r.verdict
+        r.verdict()
     );
     let s = seps
         .iter()

@@ -16,7 +16,7 @@ pub mod topology;
 pub use incidence::Incidence;
 
 use crate::mesh::{RawMesh, SimplicialSurface};
-use crate::report::{Check, CheckResult, Verdict, Witness};
+use crate::report::{Check, CheckResult, Witness};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -166,16 +166,11 @@ pub fn validate(raw: &RawMesh) -> Validation {
     let (links, c_links) = surface::links_are_cycles(raw, &inc);
     classes.extend(c_links);
 
-    let (orientation, mut orient_check) = topology::orient(raw, &inc);
+    // Holds exactly when a consistent orientation was found (topology::orient offends only
+    // on an edge that cannot be oriented).
+    let (orientation, orient_check) = topology::orient(raw, &inc);
     if orient_check.failed() {
         classes.push(ErrorClass::NonOrientable);
-    }
-    if !(edges.failed() || links.failed())
-        && orientation.orientable
-        && !matches!(orient_check.verdict, Verdict::Skipped { .. })
-    {
-        // Informational: consistent orientation found.
-        orient_check.verdict = Verdict::Holds;
     }
     let closed = !edges.failed();
     let components = topology::components(raw, &inc, orientation.orientable, closed);
@@ -227,9 +222,7 @@ pub fn validate(raw: &RawMesh) -> Validation {
             }
         }
     } else {
-        lemma.verdict = Verdict::Skipped {
-            reason: "K is not a simplicial surface (Def. 3.1.6), so |K| is not a surface".into(),
-        };
+        lemma.skip("K is not a simplicial surface (Def. 3.1.6), so |K| is not a surface");
     }
 
     checks.extend([

@@ -48,8 +48,8 @@ pub fn check_approx(pps: &Pps) -> CheckResult {
     ));
     r.worst_deviation = Some(worst);
     // A measurement: a warning, unless θ_v(0) failed or was not finite (an offence).
-    if r.verdict == Verdict::Holds {
-        r.verdict = Verdict::Warning;
+    if r.verdict() == Verdict::Holds {
+        r.mark_warning();
     }
     r
 }
@@ -192,7 +192,7 @@ pub fn check_intersections(pps: &Pps, opts: &SurfaceCheckOptions) -> Vec<CheckRe
             // Measured, not claimed: close unglued pairs are warnings; a failed or
             // non-finite θ stays an offence.
             if r.failed() && !broken {
-                r.verdict = Verdict::Warning;
+                r.mark_warning();
             }
             r
         })

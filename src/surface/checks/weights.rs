@@ -18,10 +18,8 @@ pub fn check_fit(pps: &Pps) -> CheckResult {
         deficient |= f.rank < f.unknowns;
     }
     let mut r = r.finish(notes.join("; "));
-    if deficient && r.verdict == Verdict::Holds {
-        r.verdict = Verdict::HoldsRestricted {
-            domain: "rank-deficient degrees solved in the minimum-norm sense".into(),
-        };
+    if deficient {
+        r.restrict("rank-deficient degrees solved in the minimum-norm sense");
     }
     r
 }
@@ -160,10 +158,8 @@ pub fn check_support(pps: &Pps, opts: &SurfaceCheckOptions) -> CheckResult {
         }
     }
     let mut r = r.finish("");
-    if r.verdict == Verdict::Holds && f64_gap > 0.0 {
-        r.verdict = Verdict::HoldsRestricted {
-            domain: format!("in f64, γ_v underflows to 0 on the rim annulus of width ≤ {f64_gap:.1e} inside Ω_v (e^(2s) overflows); holds in Mp"),
-        };
+    if f64_gap > 0.0 {
+        r.restrict(format!("in f64, γ_v underflows to 0 on the rim annulus of width ≤ {f64_gap:.1e} inside Ω_v (e^(2s) overflows); holds in Mp"));
     }
     r.worst_deviation = Some(f64_gap);
     r

@@ -730,8 +730,8 @@ pub fn check_pps_distance(
     }
     // A measurement, not a claim: shown as a warning unless a sample offended (rule 1/2) or
     // nothing was examined (rule 3).
-    if r.verdict == Verdict::Holds {
-        r.verdict = Verdict::Warning;
+    if r.verdict() == Verdict::Holds {
+        r.mark_warning();
     }
     r
 }
