@@ -377,6 +377,7 @@ fn l3_1_1_surface_invariants() {
     let v = validate(&torus(7, 4));
     let c = check(&v.report, "L3.1.1");
     assert_eq!(c.verdict, Verdict::Holds);
+    common::assert_holds(c);
     assert_eq!(v.report.components[0].genus, Some(1));
     let v = validate(&icosahedron());
     assert_eq!(v.report.components[0].genus, Some(0));
@@ -408,6 +409,7 @@ fn c6_1_2_labelling_dcel_invariants_hold_on_generated_meshes() {
             assert_eq!(k.label(rot), (k.label(h) + 1) % m_v, "{name}");
         }
     }
+    common::verdicts::record("C6.1.2-labelling", common::verdicts::Seen::Holds, good_meshes().len() as u64);
 }
 
 #[test]
@@ -431,6 +433,7 @@ fn c4_1_degree_ge_3_follows_from_link_cycle() {
         let k = validate(&m).surface.expect("valid");
         assert!(k.vertices().all(|v| k.degree(v) >= 3));
     }
+    common::verdicts::record("C4.1-degree-ge-3", common::verdicts::Seen::Holds, good_meshes().len() as u64);
 }
 
 #[test]
@@ -459,6 +462,8 @@ fn x_input_sanity_checks_catch_planted_faults() {
     let empty = validate(&RawMesh::from_arrays(vec![], vec![]));
     assert_eq!(check(&empty.report, "X-nonempty").verdict, Verdict::Fails);
     assert!(!empty.report.is_simplicial_surface);
+    // Non-finite, repeated corner, unreferenced (warning), empty: four planted faults caught.
+    common::verdicts::record("X-input", common::verdicts::Seen::Caught, 4);
 }
 
 /// The error classes' names are the corpus manifest's spellings (manifest.tsv, `ppm check`'s
