@@ -176,7 +176,11 @@ fn cert_shard_merge_and_coverage() {
     assert!(coverage(&m, &need4)
         .iter()
         .all(|c| !c.certified && !c.missing.is_empty()));
-    crate::common::verdicts::record("CERT-shard-merge", crate::common::verdicts::Seen::Holds, cov.len() as u64);
+    crate::common::verdicts::record(
+        "CERT-shard-merge",
+        crate::common::verdicts::Seen::Holds,
+        cov.len() as u64,
+    );
 }
 
 #[test]
@@ -270,5 +274,9 @@ fn cert_check_spec_certificates_coverage_of_a_mesh() {
     for p in &cov.properties {
         assert!(p.certified, "{p:?}");
     }
-    crate::common::verdicts::record("CERT-check-spec", crate::common::verdicts::Seen::Holds, cov.properties.len() as u64);
+    crate::common::verdicts::record(
+        "CERT-check-spec",
+        crate::common::verdicts::Seen::Holds,
+        cov.properties.len() as u64,
+    );
 }

@@ -172,9 +172,7 @@ fn d4_1_7_h_involution_and_c4_1_7_h_identity_holds() {
     let p = P2::new(0.3f64, -0.7);
     assert!(h(&h(&p)).dist_f64(&p) <= f64::EPSILON);
     assert!(h_identity_lhs(&p).dist_f64(&p) < 1e-15);
-    common::assert_holds(&check_c4_1_7_h_identity::<f64, _>(
-        &Paper, SEED, N, 53
-    ));
+    common::assert_holds(&check_c4_1_7_h_identity::<f64, _>(&Paper, SEED, N, 53));
     let r = check_c4_1_7_h_identity::<Mp, _>(&Paper, SEED, N, 256);
     assert!(holds(&r) && r.worst_deviation.unwrap() < 1e-70, "{r:?}");
 }
@@ -348,12 +346,8 @@ fn c4_1_8_onto_intc_planted_fault_caught() {
 
 #[test]
 fn c4_1_8_lens_in_q_holds_and_planted_fault_caught() {
-    common::assert_holds(&check_c4_1_8_lens_in_q::<f64, _>(
-        &Paper, SEED, N, 53
-    ));
-    common::assert_holds(&check_c4_1_8_lens_in_q::<Mp, _>(
-        &Paper, SEED, N, 256
-    ));
+    common::assert_holds(&check_c4_1_8_lens_in_q::<f64, _>(&Paper, SEED, N, 53));
+    common::assert_holds(&check_c4_1_8_lens_in_q::<Mp, _>(&Paper, SEED, N, 256));
     assert_fails_with_witness(&check_c4_1_8_lens_in_q::<f64, _>(&ShiftedLens, SEED, N, 53));
 }
 
@@ -442,13 +436,7 @@ fn d4_1_9_lens_planted_fault_caught() {
 
 #[test]
 fn p4_2_1_holds_and_planted_fault_caught() {
-    common::assert_holds(&check_p4_2_1::<f64, _>(
-        &Paper,
-        &e(5, 0, 7, 3),
-        SEED,
-        N,
-        53
-    ));
+    common::assert_holds(&check_p4_2_1::<f64, _>(&Paper, &e(5, 0, 7, 3), SEED, N, 53));
     assert_fails_with_witness(&check_p4_2_1::<f64, _>(
         &EmptyWhenLabelZero,
         &e(5, 0, 7, 3),
@@ -481,13 +469,7 @@ fn p4_2_3_planted_fault_caught() {
 
 #[test]
 fn l4_2_3_holds_and_planted_fault_caught() {
-    common::assert_holds(&check_l4_2_3::<f64, _>(
-        &Paper,
-        &e(4, 1, 9, 2),
-        SEED,
-        N,
-        53
-    ));
+    common::assert_holds(&check_l4_2_3::<f64, _>(&Paper, &e(4, 1, 9, 2), SEED, N, 53));
     assert_fails_with_witness(&check_l4_2_3::<f64, _>(
         &ShiftedG,
         &e(4, 1, 9, 2),

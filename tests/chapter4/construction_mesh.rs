@@ -463,7 +463,11 @@ fn c4_1_9_nonempty_iff_edge_on_the_icosahedron() {
     }
     want.sort_unstable();
     assert_eq!(found, want);
-    crate::common::verdicts::record("C4.1.9-nonempty-iff-edge", crate::common::verdicts::Seen::Holds, want.len() as u64);
+    crate::common::verdicts::record(
+        "C4.1.9-nonempty-iff-edge",
+        crate::common::verdicts::Seen::Holds,
+        want.len() as u64,
+    );
 }
 
 #[test]

@@ -409,7 +409,11 @@ fn c6_1_2_labelling_dcel_invariants_hold_on_generated_meshes() {
             assert_eq!(k.label(rot), (k.label(h) + 1) % m_v, "{name}");
         }
     }
-    common::verdicts::record("C6.1.2-labelling", common::verdicts::Seen::Holds, good_meshes().len() as u64);
+    common::verdicts::record(
+        "C6.1.2-labelling",
+        common::verdicts::Seen::Holds,
+        good_meshes().len() as u64,
+    );
 }
 
 #[test]
@@ -433,7 +437,11 @@ fn c4_1_degree_ge_3_follows_from_link_cycle() {
         let k = validate(&m).surface.expect("valid");
         assert!(k.vertices().all(|v| k.degree(v) >= 3));
     }
-    common::verdicts::record("C4.1-degree-ge-3", common::verdicts::Seen::Holds, good_meshes().len() as u64);
+    common::verdicts::record(
+        "C4.1-degree-ge-3",
+        common::verdicts::Seen::Holds,
+        good_meshes().len() as u64,
+    );
 }
 
 #[test]
