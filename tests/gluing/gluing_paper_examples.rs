@@ -123,7 +123,7 @@ fn ca_2_line_repaired_satisfies_everything() {
     rs.push(check_equivalence(&g, &s));
     rs.push(check_claim(&g, &s));
     for r in &rs {
-        common::assert_holds(&r);
+        common::assert_holds(r);
         assert!(r.examined > 0, "{} examined nothing", r.id);
     }
     assert!(related(&g, &(1, q(1, 2)), &(3, q(17, 2))));
@@ -140,7 +140,7 @@ fn ca_2_fork_fails_only_4_with_witness_minus_two_two() {
             assert_eq!((w["i"].as_u64(), w["j"].as_u64()), (Some(1), Some(2)));
             assert_eq!((w["x"].as_str(), w["y"].as_str()), (Some("-2"), Some("2")));
         } else {
-            common::assert_holds(&r);
+            common::assert_holds(r);
         }
     }
     let s = GridSample::new(&g, 24);

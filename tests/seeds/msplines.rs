@@ -322,7 +322,7 @@ fn ms_f7_ms_d13_1_ms_d13_2_ms_f7_c2_ms_d5_circle_example_decided_exactly() {
     let paper = CircleSplines::example(9, 2);
     let rs = circle::check_all(&paper);
     for r in rs.iter().filter(|r| r.id.starts_with("MS-F7:")) {
-        common::assert_holds(&r);
+        common::assert_holds(r);
     }
     // Every condition of Def. 3.4.1 decided on Fig. 7's atlas held (SPEC `MS-F7`).
     let f7 = rs.iter().filter(|r| r.id.starts_with("MS-F7:")).count() as u64;
@@ -330,7 +330,7 @@ fn ms_f7_ms_d13_1_ms_d13_2_ms_f7_c2_ms_d5_circle_example_decided_exactly() {
     common::verdicts::record("MS-F7", common::verdicts::Seen::Holds, f7);
     let d13 = rs.iter().find(|r| r.id == "MS-D13(1)").expect("D13");
     common::assert_fails_as_written(d13);
-    common::assert_holds(&rs.iter().find(|r| r.id == "MS-F7-C2").expect("C2"));
+    common::assert_holds(rs.iter().find(|r| r.id == "MS-F7-C2").expect("C2"));
     common::assert_fails_as_written(rs.iter().find(|r| r.id == "MS-D5").expect("D5"));
     assert!(matches!(
         rs.iter()

@@ -438,7 +438,7 @@ fn sd_l99_3_d_planted_disagreement_on_a_shared_triangle_is_caught() {
     assert_eq!(l99.offenders, 2, "{l99:?}");
     println!("SD-L99(3-D) witness: {}", l99.witnesses[0].text);
     // The map of tetrahedron 0 is still a diffeomorphism of it: only agreement fails.
-    common::assert_holds(&by_id(&r, "SD-L101(det,3-D)"));
+    common::assert_holds(by_id(&r, "SD-L101(det,3-D)"));
 }
 
 #[test]
@@ -485,7 +485,7 @@ fn sd_l101_det_3_d_planted_fold_is_refuted_exactly_and_the_interval_route_does_n
         let v = maps[f].num[c].mul(&maps[f].den).eval(&pt);
         assert!(v < q(0), "x^{c}·D² = {v} at {pt:?}");
     }
-    common::assert_holds(&by_id(&r, "SD-L101(interval,3-D)"));
+    common::assert_holds(by_id(&r, "SD-L101(interval,3-D)"));
     // Non-injective, exactly: on edge (0, 1), X(u) = 2u(1 − u)·6/5 + u² (the fraction of the way
     // to vertex 1), and X(u) = 1 iff (1 − u)(1 − 7u/5) = 0: u = 5/7 and u = 1 have one image.
     let x = |u: Q| &u * (q(1) - &u) * qr(12, 5) + &u * &u;
@@ -524,7 +524,7 @@ fn sd_e9_hyp_3_d_sd_l131_3_d_planted_monotone_and_unity_faults_are_caught() {
     let r = check_all3(&k, &maps, &Options3::default());
     // Barycentric coordinates of (1, 1, 11/10) sum to 1 (they are barycentric); the defect has
     // to be planted in the barycentric control point itself.
-    common::assert_holds(&by_id(&r, "SD-L131(3-D)"));
+    common::assert_holds(by_id(&r, "SD-L131(3-D)"));
     let mut bad = TetMap::bezier(1, fixed_control4(1), None);
     bad.control[0][0] = qr(11, 10);
     let bad = TetMap::bezier(1, bad.control, None);

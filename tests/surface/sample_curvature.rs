@@ -9,10 +9,10 @@ use pseudomanifold::surface::output::{sample_surface_with, Attributes};
 use pseudomanifold::surface::pps::{Pps, PpsOptions};
 use pseudomanifold::surface::profile::Profile;
 use pseudomanifold::surface::target::{SPrime, SurfaceKind};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// (sample values examined, the first non-finite one) of one mesh, one S′, levels 0–2.
-fn sample_values(path: &PathBuf, kind: SurfaceKind) -> (u64, Option<String>) {
+fn sample_values(path: &Path, kind: SurfaceKind) -> (u64, Option<String>) {
     let k = load_surface(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let target = SPrime::for_profile(kind, &k, Profile::Paper)
         .unwrap_or_else(|e| panic!("{}: S′ = {}: {e}", path.display(), kind.name()));
