@@ -403,6 +403,9 @@ fn p4_2_4_proof_replays_exactly() {
         }
     }
     assert!(n > 1000);
+    // Each replay asserts the expected verdict of every step, the failures of s10, s15, s11,
+    // s3, s4/s7a, s9b where the degrees make them fail (SPEC `P4.2.4(proof)`).
+    record("P4.2.4(proof)", Seen::Fails, n);
     println!(
         "{}",
         render(
@@ -440,9 +443,12 @@ fn lemma_configs() -> Vec<Tri> {
 #[cfg_attr(kani, kani::proof)]
 #[test]
 fn l4_2_1_proof_replays_exactly() {
-    for t in lemma_configs() {
-        assert_replay(&format!("L4.2.1 {t:?}"), &l4_2_1_steps(t));
+    let configs = lemma_configs();
+    for t in &configs {
+        assert_replay(&format!("L4.2.1 {t:?}"), &l4_2_1_steps(*t));
     }
+    // The replays assert c1, c4, c10 failing where the degrees make them fail.
+    record("L4.2.1(proof)", Seen::Fails, configs.len() as u64);
     let t = Tri {
         mu: 3,
         mw: 5,
@@ -458,9 +464,11 @@ fn l4_2_1_proof_replays_exactly() {
 #[cfg_attr(kani, kani::proof)]
 #[test]
 fn l4_2_2_proof_replays_exactly() {
-    for t in lemma_configs() {
-        assert_replay(&format!("L4.2.2 {t:?}"), &l4_2_2_steps(t));
+    let configs = lemma_configs();
+    for t in &configs {
+        assert_replay(&format!("L4.2.2 {t:?}"), &l4_2_2_steps(*t));
     }
+    record("L4.2.2(proof)", Seen::Holds, configs.len() as u64);
     let t = Tri {
         mu: 3,
         mw: 3,
@@ -526,6 +534,7 @@ fn a_1_planted_rotation_sign_error_fails_at_the_right_step() {
             }),
         ),
     ];
+    let n_cases = cases.len() as u64;
     for (id, mut steps) in cases {
         assert!(
             first_mismatch(&replay(&steps)).is_none(),
@@ -545,4 +554,5 @@ fn a_1_planted_rotation_sign_error_fails_at_the_right_step() {
             render(&steps, &out)
         );
     }
+    record("A.1-planted", Seen::Caught, n_cases);
 }

@@ -221,7 +221,8 @@ fn configs() -> Vec<Tri> {
     v
 }
 
-fn replay_case(which: &str) {
+fn replay_case(which: &str) -> u64 {
+    let mut n = 0;
     for t in configs() {
         let steps = eval_steps(t);
         assert_replay(&format!("Sec. 6.1.4 {t:?}"), &steps);
@@ -231,6 +232,7 @@ fn replay_case(which: &str) {
             .find(|o| o.id == which)
             .expect("case step exists");
         assert!(o.matches);
+        n += 1;
     }
     let t = Tri {
         mu: 3,
@@ -242,6 +244,7 @@ fn replay_case(which: &str) {
     };
     let steps = eval_steps(t);
     println!("{}", render(&steps, &replay(&steps)));
+    n
 }
 
 /// Case (1) q' ∈ C∩D, replayed exactly over `configs`: m_u ∈ 3..=48 with m_w, m_x ∈
@@ -249,25 +252,31 @@ fn replay_case(which: &str) {
 #[cfg_attr(kani, kani::proof)]
 #[test]
 fn c6_1_4_case1_proof_replays_exactly() {
-    replay_case("C6.1.4-case1");
+    let n = replay_case("C6.1.4-case1");
+    record("C6.1.4-case1(proof)", Seen::Holds, n);
 }
 /// Case (2) q' ∈ C∩E_b.
 #[cfg_attr(kani, kani::proof)]
 #[test]
 fn c6_1_4_case2_proof_replays_exactly_with_rotation_corrected() {
-    replay_case("C6.1.4-case2");
+    // The replay asserts the as-written steps fail (Expect::Fails unless m_u = 6) and the
+    // corrected ones hold.
+    let n = replay_case("C6.1.4-case2");
+    record("C6.1.4-case2(proof)", Seen::Fails, n);
 }
 /// Case (3) q' ∈ D∩E_b.
 #[cfg_attr(kani, kani::proof)]
 #[test]
 fn c6_1_4_case3_proof_replays_exactly_last_line_typo_found() {
-    replay_case("C6.1.4-case3");
+    let n = replay_case("C6.1.4-case3");
+    record("C6.1.4-case3(proof)", Seen::Holds, n);
 }
 /// Case (4) q' ∈ C∩D∩E_b.
 #[cfg_attr(kani, kani::proof)]
 #[test]
 fn c6_1_4_case4_proof_replays_exactly() {
-    replay_case("C6.1.4-case4");
+    let n = replay_case("C6.1.4-case4");
+    record("C6.1.4-case4(proof)", Seen::Holds, n);
 }
 
 /// Planted fault: a wrong sign in one rotation fails the replay at that step.
@@ -302,4 +311,5 @@ fn c6_1_4_planted_rotation_sign_error_fails_at_the_right_step() {
             render(&steps, &out)
         );
     }
+    record("C6.1.4-planted", Seen::Caught, 6);
 }

@@ -91,6 +91,7 @@ fn p4_2_1_cert_nonempty_certified() {
         // One certified point per direction; nothing unresolved, so no δ.
         assert_eq!((r.boxes, r.unresolved, r.delta), (2, 0, None), "{r:?}");
     }
+    crate::common::verdicts::record("P4.2.1(cert)", crate::common::verdicts::Seen::Certified, 3);
 }
 
 #[test]
@@ -175,6 +176,11 @@ fn cert_shard_merge_and_coverage() {
     assert!(coverage(&m, &need4)
         .iter()
         .all(|c| !c.certified && !c.missing.is_empty()));
+    crate::common::verdicts::record(
+        "CERT-shard-merge",
+        crate::common::verdicts::Seen::Holds,
+        cov.len() as u64,
+    );
 }
 
 #[test]
@@ -268,4 +274,9 @@ fn cert_check_spec_certificates_coverage_of_a_mesh() {
     for p in &cov.properties {
         assert!(p.certified, "{p:?}");
     }
+    crate::common::verdicts::record(
+        "CERT-check-spec",
+        crate::common::verdicts::Seen::Holds,
+        cov.properties.len() as u64,
+    );
 }

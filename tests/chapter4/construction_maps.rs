@@ -1,4 +1,5 @@
 //! Chapter 4 maps: unit identities, f64 vs Mp agreement, findings, and planted faults.
+use crate::common;
 use pseudomanifold::construction::checks::*;
 use pseudomanifold::construction::maps::*;
 use pseudomanifold::construction::*;
@@ -13,10 +14,7 @@ fn get<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
         .unwrap_or_else(|| panic!("no result {id}"))
 }
 fn holds(r: &CheckResult) -> bool {
-    matches!(
-        r.verdict(),
-        Verdict::Holds | Verdict::HoldsRestricted { .. }
-    )
+    matches!(r.verdict(), Verdict::Holds | Verdict::HoldsRestricted { .. })
 }
 fn assert_fails_with_witness(r: &CheckResult) {
     assert!(r.failed(), "{} should fail: {:?}", r.id, r.verdict());
@@ -160,8 +158,8 @@ fn d4_1_5_negative_axis_theta_is_pi_for_both_zeros() {
 
 #[test]
 fn d4_1_5_pi_roundtrip_holds() {
-    assert!(holds(&check_d4_1_5_polar::<f64, _>(&Paper, SEED, N, 53)));
-    assert!(holds(&check_d4_1_5_polar::<Mp, _>(&Paper, SEED, N, 256)));
+    common::assert_holds(&check_d4_1_5_polar::<f64, _>(&Paper, SEED, N, 53));
+    common::assert_holds(&check_d4_1_5_polar::<Mp, _>(&Paper, SEED, N, 256));
 }
 
 #[test]
@@ -174,9 +172,7 @@ fn d4_1_7_h_involution_and_c4_1_7_h_identity_holds() {
     let p = P2::new(0.3f64, -0.7);
     assert!(h(&h(&p)).dist_f64(&p) <= f64::EPSILON);
     assert!(h_identity_lhs(&p).dist_f64(&p) < 1e-15);
-    assert!(holds(&check_c4_1_7_h_identity::<f64, _>(
-        &Paper, SEED, N, 53
-    )));
+    common::assert_holds(&check_c4_1_7_h_identity::<f64, _>(&Paper, SEED, N, 53));
     let r = check_c4_1_7_h_identity::<Mp, _>(&Paper, SEED, N, 256);
     assert!(holds(&r) && r.worst_deviation.unwrap() < 1e-70, "{r:?}");
 }
@@ -286,7 +282,7 @@ fn c4_1_6_gv_bijective_holds_m6_fails_as_written_otherwise() {
     assert!(holds(&r[0]) && holds(&r[1]));
     for m in [3, 5, 7, 12] {
         let r = check_c4_1_6_gv_bijective::<f64, _>(&Paper, m, SEED, N, 53);
-        assert_fails_with_witness(&r[0]);
+        common::assert_fails_as_written(&r[0]);
         assert!(
             matches!(r[1].verdict(), Verdict::HoldsRestricted { .. }),
             "m = {m}: {:?}",
@@ -306,7 +302,7 @@ fn c4_1_6_gv_bijective_planted_fault_caught() {
 fn c4_1_6_gv_smooth_fails_as_written_unless_6_divides_m() {
     for m in [3, 4, 5, 7, 11] {
         let r = check_c4_1_6_gv_smooth::<f64, _>(&Paper, m, SEED, N, 53);
-        assert_fails_with_witness(&r[0]);
+        common::assert_fails_as_written(&r[0]);
         assert!(
             matches!(r[1].verdict(), Verdict::HoldsRestricted { .. }),
             "m = {m}: {:?}",
@@ -330,7 +326,7 @@ fn c4_1_6_gv_smooth_planted_fault_caught() {
 #[test]
 fn c4_1_8_onto_intc_fails_for_small_degree_holds_otherwise() {
     let r = check_c4_1_8_onto_int_c::<f64, _>(&Paper, &e(4, 1, 6, 0), SEED, N, 53);
-    assert_fails_with_witness(&r[0]);
+    common::assert_fails_as_written(&r[0]);
     // The restriction is the sector |β| < m_u·π/6 = 2π/3 for m_u = 4, and it says so.
     let sector = format!("{:.6}", 4.0 * std::f64::consts::PI / 6.0);
     assert!(
@@ -350,19 +346,15 @@ fn c4_1_8_onto_intc_planted_fault_caught() {
 
 #[test]
 fn c4_1_8_lens_in_q_holds_and_planted_fault_caught() {
-    assert!(holds(&check_c4_1_8_lens_in_q::<f64, _>(
-        &Paper, SEED, N, 53
-    )));
-    assert!(holds(&check_c4_1_8_lens_in_q::<Mp, _>(
-        &Paper, SEED, N, 256
-    )));
+    common::assert_holds(&check_c4_1_8_lens_in_q::<f64, _>(&Paper, SEED, N, 53));
+    common::assert_holds(&check_c4_1_8_lens_in_q::<Mp, _>(&Paper, SEED, N, 256));
     assert_fails_with_witness(&check_c4_1_8_lens_in_q::<f64, _>(&ShiftedLens, SEED, N, 53));
 }
 
 #[test]
 fn c4_1_8_guw_bijective_fails_for_m_u_above_6_and_planted_fault_caught() {
     let r = check_c4_1_8_guw_bijective::<f64, _>(&Paper, &e(7, 2, 4, 1), SEED, N, 53);
-    assert_fails_with_witness(&r[0]);
+    common::assert_fails_as_written(&r[0]);
     assert!(matches!(r[1].verdict(), Verdict::HoldsRestricted { .. }));
     let r = check_c4_1_8_guw_bijective::<f64, _>(&Paper, &e(5, 2, 7, 1), SEED, N, 53);
     assert!(holds(&r[0]));
@@ -373,7 +365,7 @@ fn c4_1_8_guw_bijective_fails_for_m_u_above_6_and_planted_fault_caught() {
 #[test]
 fn p4_1_1_fails_as_written_unless_6_divides_m_u() {
     let r = check_p4_1_1_guw_smooth::<f64, _>(&Paper, &e(5, 1, 6, 0), SEED, N, 53);
-    assert_fails_with_witness(&r[0]);
+    common::assert_fails_as_written(&r[0]);
     assert!(
         matches!(r[1].verdict(), Verdict::HoldsRestricted { .. }),
         "{:?}",
@@ -392,8 +384,8 @@ fn p4_1_1_planted_fault_caught() {
 #[test]
 fn p4_1_2_holds_proof_step_fails_and_planted_fault_caught() {
     let r = check_p4_1_2::<f64, _>(&Paper, &e(5, 1, 6, 0), SEED, N, 53);
-    assert!(holds(&r[0]));
-    assert_fails_with_witness(&r[1]);
+    common::assert_holds(&r[0]);
+    common::assert_fails_as_written(&r[1]);
     let r = check_p4_1_2::<f64, _>(&HalfH, &e(6, 1, 6, 0), SEED, N, 53);
     assert_fails_with_witness(&r[0]);
 }
@@ -401,8 +393,8 @@ fn p4_1_2_holds_proof_step_fails_and_planted_fault_caught() {
 #[test]
 fn p4_1_3_inverse_fails_for_m_u_ge_11_holds_below() {
     let r = check_p4_1_3::<f64, _>(&Paper, &e(12, 3, 6, 0), SEED, N, 53);
-    assert!(holds(&r[0]));
-    assert_fails_with_witness(&r[1]);
+    common::assert_holds(&r[0]);
+    common::assert_fails_as_written(&r[1]);
     assert!(matches!(r[2].verdict(), Verdict::HoldsRestricted { .. }));
     let r = check_p4_1_3::<f64, _>(&Paper, &e(10, 3, 4, 0), SEED, N, 53);
     assert!(holds(&r[1]));
@@ -425,7 +417,7 @@ fn d4_1_9_lens_agreement_holds_below_11_fails_from_11() {
         );
     }
     for cfg in [e(11, 0, 6, 3), e(12, 3, 6, 0)] {
-        assert_fails_with_witness(&check_d4_1_9_lens_agreement::<f64, _>(
+        common::assert_fails_as_written(&check_d4_1_9_lens_agreement::<f64, _>(
             &Paper, &cfg, SEED, N, 53,
         ));
     }
@@ -444,13 +436,7 @@ fn d4_1_9_lens_planted_fault_caught() {
 
 #[test]
 fn p4_2_1_holds_and_planted_fault_caught() {
-    assert!(holds(&check_p4_2_1::<f64, _>(
-        &Paper,
-        &e(5, 0, 7, 3),
-        SEED,
-        N,
-        53
-    )));
+    common::assert_holds(&check_p4_2_1::<f64, _>(&Paper, &e(5, 0, 7, 3), SEED, N, 53));
     assert_fails_with_witness(&check_p4_2_1::<f64, _>(
         &EmptyWhenLabelZero,
         &e(5, 0, 7, 3),
@@ -465,6 +451,8 @@ fn p4_2_3_phi_inverse_holds() {
     for cfg in [e(6, 0, 6, 0), e(3, 2, 13, 4), e(12, 5, 4, 1)] {
         let r = check_p4_2_3::<f64, _>(&Paper, &cfg, SEED, N, 53);
         assert!(holds(&r[0]) && holds(&r[1]), "{cfg:?}: {:?}", r);
+        common::assert_holds_for(&format!("{cfg:?}"), &r[0]);
+        common::assert_holds_for(&format!("{cfg:?}"), &r[1]);
     }
     let r = check_p4_2_3::<Mp, _>(&Paper, &e(5, 1, 7, 2), SEED, 80, 192);
     assert!(
@@ -481,13 +469,7 @@ fn p4_2_3_planted_fault_caught() {
 
 #[test]
 fn l4_2_3_holds_and_planted_fault_caught() {
-    assert!(holds(&check_l4_2_3::<f64, _>(
-        &Paper,
-        &e(4, 1, 9, 2),
-        SEED,
-        N,
-        53
-    )));
+    common::assert_holds(&check_l4_2_3::<f64, _>(&Paper, &e(4, 1, 9, 2), SEED, N, 53));
     assert_fails_with_witness(&check_l4_2_3::<f64, _>(
         &ShiftedG,
         &e(4, 1, 9, 2),
@@ -528,6 +510,7 @@ fn l4_2_2_cocycle_holds_on_sampled_triangles() {
         let r = check_l4_2_1_l4_2_2::<f64, _>(&Paper, &t, SEED, N, 53);
         for x in &r {
             assert!(holds(x), "{t:?}: {} {:?}", x.id, x.witnesses.first());
+            common::assert_holds_for(&format!("{t:?}"), x);
         }
         assert!(r[1].examined > 20, "too few samples in Ω_xu ∩ Ω_xw");
     }
@@ -547,12 +530,12 @@ fn l4_2_1_l4_2_2_cocycle_planted_fault_caught() {
 fn p4_2_4_fails_as_written_for_m_u_3_holds_otherwise() {
     let t = TriangleConfig::ccw(3, 5, 7, 1, 2, 0).unwrap();
     let r = run_triangle_checks::<f64>(&t, SEED, N, 53);
-    assert_fails_with_witness(get(&r, "P4.2.4(i,ii)"));
-    assert!(holds(get(&r, "P4.2.4(iii,iv)")));
+    common::assert_fails_as_written(get(&r, "P4.2.4(i,ii)"));
+    common::assert_holds(get(&r, "P4.2.4(iii,iv)"));
     for mu in [4, 5, 6, 9, 12] {
         let t = TriangleConfig::ccw(mu, 5, 7, 1, 2, 0).unwrap();
         let r = run_triangle_checks::<f64>(&t, SEED, N, 53);
-        assert!(holds(get(&r, "P4.2.4(i,ii)")), "m_u = {mu}");
+        common::assert_holds_for(&format!("m_u = {mu}"), get(&r, "P4.2.4(i,ii)"));
     }
 }
 

@@ -292,6 +292,7 @@ fn p4_2_2_gluing_domains_are_open_and_a_collapsed_domain_is_caught() {
     let r = check_2(&AbstractPpm::star_of(PpmGluing::new(&k), VertexId(0)), &cfg);
     assert_eq!(r.verdict(), Verdict::Holds, "{:?}", r.witnesses.first());
     assert!(r.examined > 100);
+    crate::common::verdicts::record("P4.2.2", crate::common::verdicts::Seen::Holds, r.examined);
     let bad = Collapsed(AbstractPpm::star_of(PpmGluing::new(&k), VertexId(0)));
     let r = check_2(&bad, &cfg);
     assert_eq!(r.verdict(), Verdict::Fails);
@@ -462,6 +463,11 @@ fn c4_1_9_nonempty_iff_edge_on_the_icosahedron() {
     }
     want.sort_unstable();
     assert_eq!(found, want);
+    crate::common::verdicts::record(
+        "C4.1.9-nonempty-iff-edge",
+        crate::common::verdicts::Seen::Holds,
+        want.len() as u64,
+    );
 }
 
 #[test]

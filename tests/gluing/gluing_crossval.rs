@@ -228,6 +228,11 @@ fn c3_4_1_3ab_from_3c_on_random_data() {
         3 * antecedent >= total && 3 * broken_ab >= total,
         "{total} well formed: {antecedent} with 3(c), {broken_ab} with 3(a)/3(b) broken"
     );
+    common::verdicts::record(
+        "C3.4.1-3ab-from-3c",
+        common::verdicts::Seen::Holds,
+        antecedent,
+    );
 }
 
 /// Running text after Def. 3.4.1: "If i ≠ j, as Ω_i and Ω_j are disjoint, so are Ω_ij and Ω_ji."
@@ -248,4 +253,9 @@ fn c3_4_1_disjoint_gluing_domains_on_random_data() {
         }
     }
     assert!(pairs > 50);
+    common::verdicts::record(
+        "C3.4.1-disjoint-gluing-domains",
+        common::verdicts::Seen::Holds,
+        pairs,
+    );
 }

@@ -70,6 +70,7 @@ fn d3_3_1_stereographic_charts_are_homeomorphisms_onto_rn() {
         }
     }
     assert!(worst < 1e-9, "worst deviation {worst}");
+    common::verdicts::record("D3.3.1", common::verdicts::Seen::Holds, 3);
 }
 
 #[test]
@@ -89,6 +90,7 @@ fn d3_3_2_transition_functions_compose_charts_and_are_mutually_inverse() {
             assert!(vd(&phi_north(&phi_south_inv(&sn)), &un) < 1e-9);
         }
     }
+    common::verdicts::record("D3.3.2", common::verdicts::Seen::Holds, 2);
 }
 
 #[test]
@@ -107,6 +109,7 @@ fn c3_3_stereo_transition_is_inversion_on_rn_minus_origin() {
         }
         assert!(worst < 1e-12, "n = {n}: {worst}");
     }
+    common::verdicts::record("C3.3-stereo-transition", common::verdicts::Seen::Holds, 3);
 }
 
 #[test]
@@ -132,6 +135,7 @@ fn c3_4_1_sphere_two_discs_glued_along_annulus_satisfy_def_3_4_1() {
         "{:?}",
         &seps[..2]
     );
+    common::verdicts::record("C3.4.1-sphere-two-discs", common::verdicts::Seen::Holds, 2);
 }
 
 #[test]
@@ -242,6 +246,7 @@ fn c3_5_1_overlap_c_implies_equal_images_of_gluing_domains() {
         }
     }
     assert!(n > 300);
+    common::verdicts::record("C3.5.1-overlap", common::verdicts::Seen::Holds, n);
 }
 
 #[test]

@@ -59,6 +59,7 @@ fn x_adv_01_nan_normals_at_edge_midpoints_r_xi_finite() {
         .eval_geometry(FaceId(1), [0.5, 0.5, 0.0], &cj)
         .expect("eval");
     assert!(g.gaussian.is_finite() && g.area_element > 0.0, "{g:?}");
+    crate::common::verdicts::record("R-xi-finite", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// The unit roundoff 2^-bits in f64 is 0 from 1024 bits on (2^bits overflows): tolerances
@@ -113,6 +114,7 @@ fn x_adv_02_precision_1024_breaks_membership_r_unit_roundoff() {
         }
         assert!(inside > 0, "no interior point sampled for ({mu}, {mw})");
     }
+    crate::common::verdicts::record("R-unit-roundoff", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// `sample --level` above 12 was silently clamped to 12 (and level 12 then aborted on
@@ -335,6 +337,7 @@ fn x_adv_04_diff_surface_missing_points_r_diff_two_sided() {
     let out = ppm(&["diff", "--mesh", OCTAHEDRON, "/dev/null"]);
     assert_eq!(out.status.code(), Some(1), "empty table");
     assert!(String::from_utf8_lossy(&out.stdout).contains("NOTHING COMPARED"));
+    crate::common::verdicts::record("R-diff-two-sided", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// `check --spec --samples 1..3` reported "UNEXPECTED failures: P4.1.3, P4.2.1" on valid
@@ -402,6 +405,7 @@ fn x_adv_06_too_few_samples_is_not_a_failure_r_few_samples() {
         let out = ppm(args);
         assert_ne!(out.status.code(), Some(0), "{args:?} passed");
     }
+    crate::common::verdicts::record("R-few-samples", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// The multi-precision type clamps a precision of 0 or 1 bits silently: every boundary where
@@ -536,6 +540,7 @@ fn x_adv_17_oracle_reply_shape_r_oracle_shape() {
     );
     assert_eq!(r[2]["error"]["kind"], "load_failed");
     assert_eq!(r[3]["error"]["kind"], "no_mesh", "{}", r[3]);
+    crate::common::verdicts::record("R-oracle-shape", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// `diff` printed a 2.5e296 deviation as `inf`, did not name a NaN vertex, gave no line number
@@ -690,6 +695,7 @@ fn x_adv_08_high_degree_fit_refused_r_fit_budget() {
     let out = ppm(&["eval", p, "0", "0.2", "0.3", "0.5"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("degree 200"));
+    crate::common::verdicts::record("R-fit-budget", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// Coordinates near the f64 range: a tetrahedron scaled to 1e308 was sampled to all-NaN
@@ -766,6 +772,7 @@ fn x_adv_03_coordinates_near_f64_range_r_scale_range() {
     ]);
     assert_eq!(out.status.code(), Some(2));
     assert!(!out_file.exists(), "NaN output written");
+    crate::common::verdicts::record("R-scale-range", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// `ppm check` was quadratic in vertex degree (degree 10,000: 21 s; the star's boxes all
@@ -822,6 +829,7 @@ fn x_adv_09_check_quadratic_in_degree_r_star_search() {
     let (c, _) = tested(&raw);
     assert_eq!(c.verdict(), Verdict::Fails, "folded fan not caught");
     assert!(!c.witnesses.is_empty());
+    crate::common::verdicts::record("R-star-search", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// `ppm gluing` files within every documented entry limit took 16–60+ s (one domain, 256
@@ -871,6 +879,7 @@ fn x_adv_10_gluing_limits_bound_time_r_gluing_work() {
             read_gluing_file(&p).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
         }
     }
+    crate::common::verdicts::record("R-gluing-work", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// Measured (C″) "held, examined 0" on two disjoint tetrahedra 1e−12 apart whose sampled
@@ -937,6 +946,7 @@ fn x_adv_05_own_sampling_fails_own_diff_r_diff_f64_bound() {
         .as_ref()
         .is_some_and(|c| c.bound.is_some_and(|b| c.reference_error > b))));
     assert!(pseudomanifold::oracle::surface_diff::render_surface(&r).contains("WRONG"));
+    crate::common::verdicts::record("R-diff-f64-bound", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// The structured-solver experiment after the fit budget: the numerical rank of the Sec. 5.2
@@ -965,4 +975,5 @@ fn x_adv_08_structured_solver_rank_r_fit_scaling() {
             assert_eq!(factor_degree_plain(m, Profile::Paper).info.rank, i.rank);
         }
     }
+    crate::common::verdicts::record("R-fit-scaling", crate::common::verdicts::Seen::Holds, 1);
 }

@@ -184,6 +184,8 @@ fn l4_2_4_random_surfaces_high_degree_next_to_degree_3_holds() {
             r.witnesses.first()
         );
         assert!(r.examined > 50, "{e:?}: only {} samples", r.examined);
+        common::assert_holds_for(&format!("{e:?}"), &r);
+        common::verdicts::record("L4.2.4-random", common::verdicts::Seen::Holds, r.examined);
     }
 }
 
@@ -207,6 +209,11 @@ fn p4_1_1_random_surfaces_restricted_holds_for_high_degree() {
         let e = EdgeConfig::new(cfg.0, cfg.1, cfg.2, cfg.3).expect("valid");
         let r = check_p4_1_1_guw_smooth::<f64, _>(&Paper, &e, seed, 240, 53);
         common::assert_holds(&r[1]);
+        common::verdicts::record(
+            "P4.1.1-random",
+            common::verdicts::Seen::Restricted,
+            r[1].examined,
+        );
         if cfg.0 % 6 == 0 {
             assert!(
                 matches!(r[0].verdict(), Verdict::Holds),

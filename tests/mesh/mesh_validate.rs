@@ -377,6 +377,7 @@ fn l3_1_1_surface_invariants() {
     let v = validate(&torus(7, 4));
     let c = check(&v.report, "L3.1.1");
     assert_eq!(c.verdict(), Verdict::Holds);
+    common::assert_holds(c);
     assert_eq!(v.report.components[0].genus, Some(1));
     let v = validate(&icosahedron());
     assert_eq!(v.report.components[0].genus, Some(0));
@@ -408,6 +409,11 @@ fn c6_1_2_labelling_dcel_invariants_hold_on_generated_meshes() {
             assert_eq!(k.label(rot), (k.label(h) + 1) % m_v, "{name}");
         }
     }
+    common::verdicts::record(
+        "C6.1.2-labelling",
+        common::verdicts::Seen::Holds,
+        good_meshes().len() as u64,
+    );
 }
 
 #[test]
@@ -431,6 +437,11 @@ fn c4_1_degree_ge_3_follows_from_link_cycle() {
         let k = validate(&m).surface.expect("valid");
         assert!(k.vertices().all(|v| k.degree(v) >= 3));
     }
+    common::verdicts::record(
+        "C4.1-degree-ge-3",
+        common::verdicts::Seen::Holds,
+        good_meshes().len() as u64,
+    );
 }
 
 #[test]
@@ -453,15 +464,14 @@ fn x_input_sanity_checks_catch_planted_faults() {
     let v = validate(&m);
     assert_eq!(check(&v.report, "X-finite").verdict(), Verdict::Fails);
     assert_eq!(check(&v.report, "X-repeated-corner").offenders, 1);
-    assert_eq!(
-        check(&v.report, "X-unreferenced").verdict(),
-        Verdict::Warning
-    );
+    assert_eq!(check(&v.report, "X-unreferenced").verdict(), Verdict::Warning);
     assert_eq!(check(&v.report, "X-unreferenced").offenders, 1);
     assert!(v.report.error_classes.contains(&ErrorClass::NonFinite));
     let empty = validate(&RawMesh::from_arrays(vec![], vec![]));
     assert_eq!(check(&empty.report, "X-nonempty").verdict(), Verdict::Fails);
     assert!(!empty.report.is_simplicial_surface);
+    // Non-finite, repeated corner, unreferenced (warning), empty: four planted faults caught.
+    common::verdicts::record("X-input", common::verdicts::Seen::Caught, 4);
 }
 
 /// The error classes' names are the corpus manifest's spellings (manifest.tsv, `ppm check`'s

@@ -181,6 +181,7 @@ fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_sd_l101_inverse_hold_for_the_bund
         ] {
             assert_eq!(by_id(&r, id).verdict(), Verdict::Holds, "{name}: {id}");
             assert!(by_id(&r, id).examined > 0);
+            common::assert_holds_for(name, by_id(&r, id));
         }
         assert_eq!(by_id(&r, "SD-L101(interval)").offenders, 0, "{name}");
         assert_eq!(
@@ -188,6 +189,7 @@ fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_sd_l101_inverse_hold_for_the_bund
             Verdict::Holds,
             "{name}"
         );
+        common::assert_holds_for(name, by_id(&r, "SD-L101(inverse)"));
     }
 }
 
@@ -317,6 +319,7 @@ fn sd_l141_adjusted_quadratic_maps_are_injective() {
     );
     assert_eq!(c.verdict(), Verdict::Holds, "{c:?}");
     assert_eq!(s.certified as usize, SAMPLES);
+    common::assert_holds(&c);
 }
 
 #[test]
@@ -335,6 +338,7 @@ fn sd_l146_fixed_non_solitary_cubic_is_injective_for_any_solitary_point() {
         146,
     );
     assert_eq!(c.verdict(), Verdict::Holds, "{c:?}");
+    common::assert_holds(&c);
 }
 
 #[test]
@@ -351,6 +355,7 @@ fn sd_l161_rational_fixed_points_positive_weights_are_injective() {
             161,
         );
         assert_eq!(c.verdict(), Verdict::Holds, "n = {n}: {c:?}");
+        common::assert_holds_for(&format!("n = {n}"), &c);
     }
 }
 
@@ -359,6 +364,7 @@ fn sd_l115_monotonic_maps_are_injective() {
     let s = search(SAMPLES, 115, Budget::default(), claims::random_monotonic);
     let c = claims::universal("SD-L115", "monotonic ⇒ injective", &s, SAMPLES, 115);
     assert_eq!(c.verdict(), Verdict::Holds, "{c:?}");
+    common::assert_holds(&c);
 }
 
 #[test]

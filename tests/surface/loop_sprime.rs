@@ -64,6 +64,11 @@ fn loop_adjacent_extraordinary_bipyramids_valence_3_to_64_hold() {
         rs.extend(check_edges(&k, &s, &opts));
         assert_all_hold(&rs, &format!("bipyramid {n}"));
     }
+    crate::common::verdicts::record(
+        "LOOP-adjacent-extraordinary",
+        crate::common::verdicts::Seen::Holds,
+        5,
+    );
 }
 
 #[test]
@@ -73,6 +78,7 @@ fn loop_valence_above_max_is_a_typed_error() {
         Err(LoopError::ValenceTooHigh { valence, .. }) => assert_eq!(valence, MAX_VALENCE + 1),
         other => panic!("expected ValenceTooHigh, got {:?}", other.map(|s| s.stats)),
     }
+    crate::common::verdicts::record("LOOP-valence", crate::common::verdicts::Seen::Holds, 1);
 }
 
 #[test]
@@ -111,6 +117,7 @@ fn loop_mp_eval_f64_matches_mp256() {
             }
         }
     }
+    crate::common::verdicts::record("LOOP-mp", crate::common::verdicts::Seen::Holds, 1);
 }
 
 /// Planted faults: the checks must report each with a witness.
