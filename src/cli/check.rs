@@ -7,7 +7,7 @@ use crate::construction::{phi_wu_f64_vs_mp, PpmGluing};
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::mesh::star::check_star_isomorphism;
 use crate::mesh::validate::{validate, ValidationReport};
-use crate::mesh::VertexId;
+use crate::mesh::{RawMesh, VertexId};
 use crate::report::{render_text, CheckResult};
 use serde::Serialize;
 use std::path::Path;
@@ -87,18 +87,134 @@ impl Ch4Args {
     }
 }
 
-#[derive(Serialize)]
-struct CheckOutput<'a> {
-    #[serde(flatten)]
-    validation: &'a ValidationReport,
-    extra_checks: &'a [CheckResult],
-    #[serde(skip_serializing_if = "Option::is_none")]
-    chapter4: Option<&'a Ch4Report>,
-    #[serde(skip_serializing_if = "<[CheckResult]>::is_empty")]
-    chapter5: &'a [CheckResult],
-    seconds: f64,
+/// Why [`check_report`] produced no report: the options or the certificate file, never the
+/// mesh (an invalid mesh is a report whose `is_simplicial_surface` is false).
+#[derive(Debug, thiserror::Error)]
+pub enum CheckError {
+    /// An option is out of range (`--precision`, `--surface`, `--samples 0`, ...): exit 2.
+    #[error("{0}")]
+    Usage(String),
+    /// The `--certificates` file could not be read.
+    #[error("{0}")]
+    Certificate(#[from] crate::certify::CertifyError),
 }
 
+/// The report of `ppm check [--labels] [--spec] --json`, as data: serialised with serde it is
+/// exactly the JSON the command prints (SPEC `PY-check-report`).
+#[derive(Debug, Serialize)]
+pub struct CheckReport {
+    /// Sec. 3.1: every check of the validator, components, degree histogram.
+    #[serde(flatten)]
+    pub validation: ValidationReport,
+    /// The s_v labelling check (Def. 4.1.4), with `--labels` or `--spec` on a valid surface.
+    pub extra_checks: Vec<CheckResult>,
+    /// Chapters 3.4–4 (with `--spec` on a valid surface).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub chapter4: Option<Ch4Report>,
+    /// Chapter 5 and Sec. 6.1.4 (with `--spec`, unless `--no-surface`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub chapter5: Vec<CheckResult>,
+    /// Wall-clock seconds of the run.
+    pub seconds: f64,
+}
+
+impl CheckReport {
+    /// The IDs of the Chapter 5 checks that fail (Chapter 5 has no documented erratum, SPEC.md
+    /// "Errata found": each one fails the run).
+    pub fn chapter5_unexpected(&self) -> Vec<&str> {
+        self.chapter5
+            .iter()
+            .filter(|c| c.failed())
+            .map(|c| c.id.as_str())
+            .collect()
+    }
+
+    /// What `ppm check` exits with 0 for: a simplicial surface, no failing extra or Chapter 5
+    /// check, and a Chapter 4 run (if any) that passes.
+    pub fn passes(&self) -> bool {
+        self.validation.is_simplicial_surface
+            && self.chapter5_unexpected().is_empty()
+            && self.extra_checks.iter().all(|c| !c.failed())
+            && self.chapter4.as_ref().map_or(true, |r| r.passes())
+    }
+}
+
+/// `ppm check` on a mesh already read: the library form of the command (the Python layer's
+/// `check()` calls it). `labels` is `--labels`; `spec` the options of `--spec` (see
+/// [`super::parse_check_spec_args`] for them parsed from flags exactly as `ppm` parses them);
+/// `progress` shows the progress lines on a terminal.
+pub fn check_report(
+    raw: &RawMesh,
+    labels: bool,
+    spec: Option<&Ch4Args>,
+    progress: bool,
+) -> Result<CheckReport, CheckError> {
+    let t0 = Instant::now();
+    let big = progress && raw.faces.len() >= PROGRESS_FACES;
+    let v = validate(raw);
+    let mut extra = Vec::new();
+    let mut ch4 = None;
+    let mut ch5: Vec<CheckResult> = Vec::new();
+    if let Some(k) = &v.surface {
+        if labels || spec.is_some() {
+            extra.push(check_star_isomorphism(k, |a, b| k.s(a, b)));
+        }
+        if let Some(a) = spec {
+            let opts = a.options().map_err(CheckError::Usage)?;
+            if big {
+                eprintln!("ppm: running the Chapter 4 checks ...");
+            }
+            let cert = match &a.certificates {
+                Some(path) => Some((
+                    path.display().to_string(),
+                    crate::certify::read_certificate(path)?,
+                )),
+                None => None,
+            };
+            let line = super::progress::Line::new("ppm check --spec", "configurations", progress);
+            let hook = line.hook();
+            let mut rep = run_chapter4_with(k, &opts, hook.as_ref().map(|h| h as _));
+            line.finish();
+            if let Some((file, c)) = &cert {
+                rep.certificates = Some(certificate_coverage(k, c, file));
+            }
+            ch4 = Some(rep);
+            if !a.no_surface {
+                if big {
+                    eprintln!("ppm: running the Chapter 5 checks ...");
+                }
+                let sopts = crate::surface::checks::SurfaceCheckOptions {
+                    seed: opts.seed,
+                    samples_per_vertex: opts.samples.max(1),
+                    max_vertices: opts.max_star_configs,
+                    surface: crate::surface::SurfaceKind::parse(&a.surface).unwrap_or_default(),
+                    ..Default::default()
+                };
+                let line = super::progress::Line::new(
+                    "ppm check --spec (Ch. 5)",
+                    "check families",
+                    progress,
+                );
+                let hook = line.hook();
+                ch5 = crate::surface::checks::run_surface_checks_with(
+                    k,
+                    &sopts,
+                    hook.as_ref().map(|h| h as _),
+                );
+                line.finish();
+            }
+        }
+    }
+    Ok(CheckReport {
+        validation: v.report,
+        extra_checks: extra,
+        chapter4: ch4,
+        chapter5: ch5,
+        seconds: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// `ppm check FILE [--json] [--triangulate] [--labels] [--spec ...]`: prints [`check_report`].
 pub fn run(
     file: &Path,
     json: bool,
@@ -127,89 +243,23 @@ pub fn run(
             t0.elapsed().as_secs_f64()
         );
     }
-    let v = validate(&raw);
-    let mut extra = Vec::new();
-    let mut ch4 = None;
-    let mut ch5: Vec<CheckResult> = Vec::new();
-    if let Some(k) = &v.surface {
-        if labels || spec.is_some() {
-            extra.push(check_star_isomorphism(k, |a, b| k.s(a, b)));
+    let mut rep = match check_report(&raw, labels, spec, true) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
         }
-        if let Some(a) = spec {
-            let opts = match a.options() {
-                Ok(o) => o,
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    return ExitCode::from(2);
-                }
-            };
-            if big {
-                eprintln!("ppm: running the Chapter 4 checks ...");
-            }
-            let cert = match &a.certificates {
-                Some(path) => match crate::certify::read_certificate(path) {
-                    Ok(c) => Some((path.display().to_string(), c)),
-                    Err(e) => {
-                        eprintln!("error: {e}");
-                        return ExitCode::from(2);
-                    }
-                },
-                None => None,
-            };
-            let line = super::progress::Line::new("ppm check --spec", "configurations", true);
-            let hook = line.hook();
-            let mut rep = run_chapter4_with(k, &opts, hook.as_ref().map(|h| h as _));
-            line.finish();
-            if let Some((file, c)) = &cert {
-                rep.certificates = Some(certificate_coverage(k, c, file));
-            }
-            ch4 = Some(rep);
-            if !a.no_surface {
-                if big {
-                    eprintln!("ppm: running the Chapter 5 checks ...");
-                }
-                let sopts = crate::surface::checks::SurfaceCheckOptions {
-                    seed: opts.seed,
-                    samples_per_vertex: opts.samples.max(1),
-                    max_vertices: opts.max_star_configs,
-                    surface: crate::surface::SurfaceKind::parse(&a.surface).unwrap_or_default(),
-                    ..Default::default()
-                };
-                let line =
-                    super::progress::Line::new("ppm check --spec (Ch. 5)", "check families", true);
-                let hook = line.hook();
-                ch5 = crate::surface::checks::run_surface_checks_with(
-                    k,
-                    &sopts,
-                    hook.as_ref().map(|h| h as _),
-                );
-                line.finish();
-            }
-        }
-    }
+    };
     if big {
         eprintln!("ppm: validated in {:.2} s", t0.elapsed().as_secs_f64());
     }
-    // Chapter 5 has no documented erratum (SPEC.md, "Errata found"): every failure fails the run.
-    let ch5_unexpected: Vec<&str> = ch5
-        .iter()
-        .filter(|c| c.failed())
-        .map(|c| c.id.as_str())
-        .collect();
-    let ok = v.report.is_simplicial_surface
-        && ch5_unexpected.is_empty()
-        && extra.iter().all(|c| !c.failed())
-        && ch4.as_ref().map_or(true, |r| r.passes());
-    let secs = t0.elapsed().as_secs_f64();
+    // The command's time includes reading the file.
+    rep.seconds = t0.elapsed().as_secs_f64();
+    let secs = rep.seconds;
+    let ch5_unexpected = rep.chapter5_unexpected();
+    let ok = rep.passes();
     if json {
-        let out = CheckOutput {
-            validation: &v.report,
-            extra_checks: &extra,
-            chapter4: ch4.as_ref(),
-            chapter5: &ch5,
-            seconds: secs,
-        };
-        match serde_json::to_string_pretty(&out) {
+        match serde_json::to_string_pretty(&rep) {
             Ok(s) => println!("{s}"),
             Err(e) => {
                 eprintln!("error: cannot serialise report: {e}");
@@ -217,13 +267,13 @@ pub fn run(
             }
         }
     } else {
-        print!("{}", render_report(&v.report, &extra, secs));
-        if let Some(r) = &ch4 {
+        print!("{}", render_report(&rep.validation, &rep.extra_checks, secs));
+        if let Some(r) = &rep.chapter4 {
             print!("{}", render_ch4(r));
         }
-        if !ch5.is_empty() {
+        if !rep.chapter5.is_empty() {
             println!("Chapter 5 checks (surface, condition (C), eval of Sec. 6.1.4):");
-            print!("{}", crate::report::render_text(&ch5));
+            print!("{}", crate::report::render_text(&rep.chapter5));
             if ch5_unexpected.is_empty() {
                 println!("Chapter 5: no failure");
             } else {

@@ -2,7 +2,7 @@
 //! (Sec. 3.1) and prints every check with its offending elements.
 
 mod certify;
-mod check;
+pub mod check;
 mod load;
 mod msplines;
 mod oracle;
@@ -235,9 +235,42 @@ fn patch_degree_parser(s: &str) -> Result<usize, String> {
     }
 }
 
+/// The options of `ppm check --spec FLAGS...` parsed from `flags` exactly as `ppm` parses
+/// them (same defaults, same validation): the library callers of [`check::check_report`] (the
+/// Python layer's `check()`) get the command's behaviour without restating its defaults.
+/// `flags` are the options only, e.g. `["--seed", "7", "--precision", "mp:128"]`.
+pub fn parse_check_spec_args<I, S>(flags: I) -> Result<check::Ch4Args, String>
+where
+    I: IntoIterator<Item = S>,
+    S: Into<std::ffi::OsString> + Clone,
+{
+    let argv = ["ppm", "check", "--spec", "-"]
+        .into_iter()
+        .map(std::ffi::OsString::from)
+        .chain(flags.into_iter().map(Into::into));
+    match Cli::try_parse_from(argv) {
+        Ok(Cli {
+            command: Command::Check { ch4, .. },
+        }) => Ok(ch4),
+        Ok(_) => Err("not a check command".into()),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
 /// Entry point of the `ppm` binary.
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
+    main_from(std::env::args_os())
+}
+
+/// [`main`] on the given command line (`args[0]` is the program name): the same commands from
+/// another host, e.g. the `ppm` console script of the Python package (docs/python.md). Like the
+/// binary, a usage error or `--help` prints and exits the process (clap).
+pub fn main_from<I, T>(args: I) -> ExitCode
+where
+    I: IntoIterator<Item = T>,
+    T: Into<std::ffi::OsString> + Clone,
+{
+    let cli = Cli::parse_from(args);
     match cli.command {
         Command::Check {
             file,

@@ -10,6 +10,7 @@ mod docs_pictures;
 mod loop_sprime;
 mod oracle;
 mod oracle_surface;
+mod python_layer;
 mod render;
 mod sample_curvature;
 mod sigma_v;
