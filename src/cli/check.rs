@@ -267,7 +267,10 @@ pub fn run(
             }
         }
     } else {
-        print!("{}", render_report(&rep.validation, &rep.extra_checks, secs));
+        print!(
+            "{}",
+            render_report(&rep.validation, &rep.extra_checks, secs)
+        );
         if let Some(r) = &rep.chapter4 {
             print!("{}", render_ch4(r));
         }

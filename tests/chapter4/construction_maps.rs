@@ -14,7 +14,10 @@ fn get<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
         .unwrap_or_else(|| panic!("no result {id}"))
 }
 fn holds(r: &CheckResult) -> bool {
-    matches!(r.verdict(), Verdict::Holds | Verdict::HoldsRestricted { .. })
+    matches!(
+        r.verdict(),
+        Verdict::Holds | Verdict::HoldsRestricted { .. }
+    )
 }
 fn assert_fails_with_witness(r: &CheckResult) {
     assert!(r.failed(), "{} should fail: {:?}", r.id, r.verdict());

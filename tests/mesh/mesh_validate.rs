@@ -464,7 +464,10 @@ fn x_input_sanity_checks_catch_planted_faults() {
     let v = validate(&m);
     assert_eq!(check(&v.report, "X-finite").verdict(), Verdict::Fails);
     assert_eq!(check(&v.report, "X-repeated-corner").offenders, 1);
-    assert_eq!(check(&v.report, "X-unreferenced").verdict(), Verdict::Warning);
+    assert_eq!(
+        check(&v.report, "X-unreferenced").verdict(),
+        Verdict::Warning
+    );
     assert_eq!(check(&v.report, "X-unreferenced").offenders, 1);
     assert!(v.report.error_classes.contains(&ErrorClass::NonFinite));
     let empty = validate(&RawMesh::from_arrays(vec![], vec![]));

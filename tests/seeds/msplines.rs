@@ -42,7 +42,10 @@ fn find<'a>(rs: &'a [CheckResult], id: &str) -> &'a CheckResult {
 }
 
 fn holds(r: &CheckResult) -> bool {
-    matches!(r.verdict(), Verdict::Holds | Verdict::HoldsRestricted { .. })
+    matches!(
+        r.verdict(),
+        Verdict::Holds | Verdict::HoldsRestricted { .. }
+    )
 }
 
 #[test]

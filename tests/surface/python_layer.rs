@@ -14,7 +14,9 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
 fn data(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data")
+        .join(name)
 }
 
 fn without_seconds(mut v: Value) -> Value {
@@ -34,8 +36,14 @@ fn py_check_report_library_equals_cli_json() {
             "icosahedron_binary_le.ply",
             vec!["--max-configs", "2", "--samples", "4", "--seed", "7"],
         ),
-        ("octahedron.obj", vec!["--max-configs", "1", "--samples", "3", "--no-surface"]),
-        ("tetrahedron.off", vec!["--max-configs", "1", "--samples", "2"]),
+        (
+            "octahedron.obj",
+            vec!["--max-configs", "1", "--samples", "3", "--no-surface"],
+        ),
+        (
+            "tetrahedron.off",
+            vec!["--max-configs", "1", "--samples", "2"],
+        ),
     ] {
         let path = data(file);
         let out = Command::new(env!("CARGO_BIN_EXE_ppm"))
@@ -57,13 +65,18 @@ fn py_check_report_library_equals_cli_json() {
     let raw = read_mesh(&data("tetrahedron.off"), &ReadOptions::default()).expect("reads");
     let bad = parse_check_spec_args(["--precision", "mp:1"]).expect("parses");
     assert!(check_report(&raw, false, Some(&bad), false).is_err());
+    crate::common::verdicts::record("PY-check-report", crate::common::verdicts::Seen::Holds, 3);
 }
 
 /// The `ppm` console script of the Python package runs `cli::main_from`: the same commands
 /// and exit statuses as the binary (2: unreadable file, 1: not a simplicial surface).
 #[test]
 fn py_cli_main_from_is_the_command_line() {
-    let ok = main_from(["ppm", "check", &data("tetrahedron.off").display().to_string()]);
+    let ok = main_from([
+        "ppm",
+        "check",
+        &data("tetrahedron.off").display().to_string(),
+    ]);
     assert_eq!(ok, ExitCode::SUCCESS);
     let missing = main_from(["ppm", "check", "/nonexistent/mesh.off"]);
     assert_eq!(missing, ExitCode::from(2));
@@ -73,6 +86,7 @@ fn py_cli_main_from_is_the_command_line() {
     let code = main_from(["ppm", "check", &open.display().to_string()]);
     let _ = std::fs::remove_file(&open);
     assert_eq!(code, ExitCode::from(1));
+    crate::common::verdicts::record("PY-cli", crate::common::verdicts::Seen::Holds, 3);
 }
 
 /// The run-dependent parts cleared: timings, thread count, and the order of the results (a
@@ -103,13 +117,26 @@ fn py_certify_shards_merged_equal_the_unsharded_run() {
     let n = 3;
     let parts: Vec<Certificate> = (1..=n)
         .map(|k| {
-            run_with(&shard(&all, k, n), m, &Model::paper(), &s, 1, Some((k, n)), None)
-                .expect("shard")
+            run_with(
+                &shard(&all, k, n),
+                m,
+                &Model::paper(),
+                &s,
+                1,
+                Some((k, n)),
+                None,
+            )
+            .expect("shard")
         })
         .collect();
     let merged = merge(parts).expect("merge");
     assert_eq!(merged.configs, all.len());
     assert_eq!(strip(merged), strip(whole));
+    crate::common::verdicts::record(
+        "PY-certify-shards",
+        crate::common::verdicts::Seen::Holds,
+        all.len() as u64,
+    );
 }
 
 /// The Python `eval` gives positions from plain f64 eval (`attributes="positions"`) or from the
@@ -118,24 +145,32 @@ fn py_certify_shards_merged_equal_the_unsharded_run() {
 /// with the second).
 #[test]
 fn py_eval_positions_from_f64_and_jets_agree() {
-    let raw = read_mesh(&data("icosahedron_binary_le.ply"), &ReadOptions::default()).expect("reads");
+    let raw =
+        read_mesh(&data("icosahedron_binary_le.ply"), &ReadOptions::default()).expect("reads");
     let k = validate(&raw).surface.expect("surface");
     let pps = Pps::build(&k, &PnTriangles::new(&k), PpsOptions::default());
     let cj: Consts<Jet2<f64>> = pps.consts(53);
     let mut worst = 0.0f64;
+    let mut n = 0u64;
     for f in 0..pps.num_faces() as u32 {
         for (i, j) in [(0, 0), (1, 2), (3, 1), (2, 5), (7, 0), (4, 4)] {
             let a = i as f64 / 8.0;
             let b = j as f64 / 8.0;
             let bary = [1.0 - a - b, a, b];
             let p = pps.eval_f64(FaceId(f), bary).expect("eval");
-            let g = pps.eval_geometry_of_order(FaceId(f), bary, &cj).expect("jets").2;
+            let g = pps
+                .eval_geometry_of_order(FaceId(f), bary, &cj)
+                .expect("jets")
+                .2;
             for d in 0..3 {
-                worst = worst.max((p[d] - g.point[d]).abs());
+                // NaN-propagating: a NaN coordinate must fail the bound below.
+                worst = pseudomanifold::report::dev_max(worst, (p[d] - g.point[d]).abs());
             }
+            n += 1;
         }
     }
     assert!(worst <= 1e-13, "worst {worst:e}");
+    crate::common::verdicts::record("PY-eval-positions", crate::common::verdicts::Seen::Holds, n);
 }
 
 /// python/ is a crate of its own (its own `[workspace]`, the root crate by path), so `cargo
@@ -144,7 +179,10 @@ fn py_eval_positions_from_f64_and_jets_agree() {
 fn py_crate_separate_from_the_root_crate() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let top = std::fs::read_to_string(root.join("Cargo.toml")).expect("Cargo.toml");
-    assert!(!top.contains("[workspace]"), "the root crate must not become a workspace");
+    assert!(
+        !top.contains("[workspace]"),
+        "the root crate must not become a workspace"
+    );
     assert!(!top.contains("pyo3"));
     let py = std::fs::read_to_string(root.join("python/Cargo.toml")).expect("python/Cargo.toml");
     assert!(py.contains("[workspace]"));
@@ -152,4 +190,5 @@ fn py_crate_separate_from_the_root_crate() {
     assert!(py.contains("cdylib"));
     let pyproject = std::fs::read_to_string(root.join("python/pyproject.toml")).expect("pyproject");
     assert!(pyproject.contains("build-backend = \"maturin\""));
+    crate::common::verdicts::record("PY-crate-separate", crate::common::verdicts::Seen::Holds, 1);
 }
