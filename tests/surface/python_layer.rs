@@ -162,9 +162,9 @@ fn py_eval_positions_from_f64_and_jets_agree() {
                 .eval_geometry_of_order(FaceId(f), bary, &cj)
                 .expect("jets")
                 .2;
-            for d in 0..3 {
+            for (a, b) in p.iter().zip(g.point) {
                 // NaN-propagating: a NaN coordinate must fail the bound below.
-                worst = pseudomanifold::report::dev_max(worst, (p[d] - g.point[d]).abs());
+                worst = pseudomanifold::report::dev_max(worst, (a - b).abs());
             }
             n += 1;
         }
