@@ -15,9 +15,10 @@
 //! Rows listed in `unrecorded.txt` are the ones whose tests do not yet record their verdict;
 //! the list is printed with its length.
 
-#[path = "../common/verdicts.rs"]
+#[path = "../common/mod.rs"]
 #[allow(dead_code)]
-mod verdicts;
+mod common;
+use common::verdicts;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -258,6 +259,18 @@ fn x_spec_verdicts_spec_md_states_what_the_tests_saw() {
         dir.display()
     );
     let (mut bad, unrecorded) = compare(&rows, &records);
+    // Which rows were recorded depends on the corpus (../shared): without it the other
+    // binaries skip their corpus parts (and say how many), so only the contradictions are
+    // decided here; the one rule for missing data skips the rest (and fails under CI=true).
+    if common::shared_dir("x_spec_verdicts_spec_md_states_what_the_tests_saw").is_none() {
+        assert!(
+            bad.is_empty(),
+            "{} departures:\n{}",
+            bad.len(),
+            bad.join("\n")
+        );
+        return;
+    }
     let list_text = std::fs::read_to_string(root.join("tests/verdicts/unrecorded.txt"))
         .expect("tests/verdicts/unrecorded.txt");
     let allowed = listed(&list_text);
