@@ -16,7 +16,6 @@
 //! the list is printed with its length.
 
 #[path = "../common/mod.rs"]
-#[allow(dead_code)]
 mod common;
 use common::verdicts;
 
