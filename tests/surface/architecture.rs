@@ -5,6 +5,7 @@
 //! docs/architecture.md); a new upward import fails, and so does a listed one that is gone
 //! (the list only shrinks).
 
+use crate::spec_sync::rust_files;
 use std::collections::BTreeSet;
 use std::path::Path;
 
@@ -37,20 +38,6 @@ const ALLOWED_UP: &[(&str, &str)] = &[
 
 fn floor(m: &str) -> Option<u32> {
     FLOORS.iter().find(|(n, _)| *n == m).map(|(_, f)| *f)
-}
-
-fn rust_files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
-    let Ok(rd) = std::fs::read_dir(dir) else {
-        return;
-    };
-    for e in rd.flatten() {
-        let p = e.path();
-        if p.is_dir() {
-            rust_files(&p, out);
-        } else if p.extension().is_some_and(|x| x == "rs") {
-            out.push(p);
-        }
-    }
 }
 
 /// The top-level modules named as `crate::X` in code (comments dropped).
