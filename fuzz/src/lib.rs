@@ -202,7 +202,7 @@ pub fn chapter4_low_density(s: &SimplicialSurface, pick: u64, edges: usize, n: u
         }
         let cfg = edge_config(s, u, w).expect("validated surface gives a valid edge config");
         for r in run_edge_checks::<f64>(&cfg, pick ^ k as u64, n, 53) {
-            assert_verdict(&r.id, &r.verdict, &format!("{cfg:?}"), &r);
+            assert_verdict(&r.id, &r.verdict(), &format!("{cfg:?}"), &r);
         }
     }
     let nf = s.num_faces();
@@ -210,7 +210,7 @@ pub fn chapter4_low_density(s: &SimplicialSurface, pick: u64, edges: usize, n: u
     if let Some(t) = triangle_config(s, f) {
         if t.m_u.max(t.m_w).max(t.m_x) <= 64 {
             for r in run_triangle_checks::<f64>(&t, pick, n, 53) {
-                assert_verdict(&r.id, &r.verdict, &format!("{t:?}"), &r);
+                assert_verdict(&r.id, &r.verdict(), &format!("{t:?}"), &r);
             }
         }
     } else {
