@@ -107,6 +107,7 @@ pub mod cli;
 pub mod conditions;
 pub mod construction;
 pub mod exact;
+pub mod fitting;
 pub mod gluing;
 pub mod mesh;
 pub mod msplines;

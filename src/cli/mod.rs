@@ -3,6 +3,7 @@
 
 mod certify;
 pub mod check;
+mod fit;
 mod load;
 mod msplines;
 mod oracle;
@@ -193,6 +194,9 @@ enum Command {
     /// Draw K, S′ or the PPS coloured by curvature to a PNG (software rendering; Figs. 6.4–6.7
     /// with --panels).
     Render(render::RenderArgs),
+    /// Adaptive manifold fitting (seed 002, Parts I–II): a C-infinity (sigma, v) PPS within
+    /// epsilon of every vertex of a dense mesh, with few charts (SPEC rows AF-…).
+    Fit(fit::FitArgs),
     /// Simplicial diffeomorphisms of a planar complex (Mello–Velho): check a map, write curved
     /// isocurves, search the injectivity claims (SPEC rows SD-…).
     Sd(sd::SdArgs),
@@ -407,6 +411,7 @@ where
         }
         Command::Certify(a) => certify::run(a),
         Command::Render(a) => render::run(a),
+        Command::Fit(a) => fit::run(a),
         Command::Sd(a) => sd::run(a),
         Command::Gluing { file, json } => match crate::gluing::report::gluing_report(&file, json) {
             Ok((text, all_hold)) => {

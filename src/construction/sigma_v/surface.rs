@@ -51,7 +51,8 @@ impl<S: SurfaceScalar> SvConsts<S> {
             eval: Consts::new(g.degrees().iter().copied(), prec),
         }
     }
-    fn wedge(&self, m: u32) -> &WedgeConsts<S> {
+    /// The wedge constants of degree m.
+    pub fn wedge(&self, m: u32) -> &WedgeConsts<S> {
         // Built for every degree of K; a missing one is a programming error upstream.
         self.wedges
             .get(m)
@@ -286,6 +287,20 @@ impl SigmaVPps {
             }
         }
         Ok(())
+    }
+
+    /// J(p) with the local point of φ_ji(p) for each j: where θ_i(p) evaluates each ψ_j
+    /// (the adaptive fit's rows, `fitting::fitted`).
+    pub fn local_points(
+        &self,
+        i: Corner,
+        q: [f64; 2],
+    ) -> Result<Vec<(CornerId, [f64; 2])>, SigmaVError> {
+        let mut out = Vec::new();
+        self.for_each_term(i, &P2::new(q[0], q[1]), &self.consts, |j, _, p, _| {
+            out.push((j, [p.x, p.y]))
+        })?;
+        Ok(out)
     }
 
     /// J(p) as a list (corner id, γ_j(φ_ji(p))), for the checks.

@@ -1,0 +1,135 @@
+//! `ppm fit MESH --epsilon E [--relative] -o FIT`: adaptive manifold fitting (seed 002,
+//! "Adaptive Manifold Fitting", Parts I–II; SPEC rows `AF-…`).
+
+use super::load::surface as load;
+use crate::fitting::{fit_surface, FitOptions};
+use clap::Args;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+/// Arguments of `ppm fit`.
+#[derive(Args, Debug)]
+pub struct FitArgs {
+    /// The dense mesh S_T (OFF, OBJ, PLY; a closed simplicial surface).
+    pub file: PathBuf,
+    /// ε: the largest distance allowed between a vertex of S_T and the fitted surface at its
+    /// parameter.
+    #[arg(long)]
+    pub epsilon: f64,
+    /// ε is relative to the diagonal of S_T's bounding box.
+    #[arg(long)]
+    pub relative: bool,
+    /// Write the fitted surface here (docs/fit-format.md).
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+    /// κ of the (σ, v) construction (SPEC SV-D3).
+    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
+    pub kappa: f64,
+    /// Degree of the triangular patches ψ_(σ,v), 1..=15.
+    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+          value_parser = super::patch_degree_parser)]
+    pub patch_degree: usize,
+    /// How far (in ε) the simplification may leave S_T from the flat base triangles.
+    #[arg(long, default_value_t = 4.0)]
+    pub deviation_ratio: f64,
+    /// Refinement rounds at most.
+    #[arg(long, default_value_t = 40)]
+    pub max_rounds: usize,
+    /// Print the summary as JSON.
+    #[arg(long)]
+    pub json: bool,
+    /// No progress lines on stderr.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// Diagonal of the bounding box of the vertices.
+fn diagonal(k: &crate::mesh::SimplicialSurface) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for v in k.vertices() {
+        let p = k.position(v);
+        for i in 0..3 {
+            lo[i] = lo[i].min(p[i]);
+            hi[i] = hi[i].max(p[i]);
+        }
+    }
+    crate::numeric::robust_norm(&[hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]])
+}
+
+/// Run `ppm fit`.
+pub fn run(a: FitArgs) -> ExitCode {
+    let t0 = Instant::now();
+    let k = match load(&a.file) {
+        Ok(k) => k,
+        Err(c) => return c,
+    };
+    let diag = diagonal(&k);
+    let eps = if a.relative {
+        a.epsilon * diag
+    } else {
+        a.epsilon
+    };
+    let mut o = FitOptions::new(eps);
+    o.kappa = a.kappa;
+    o.degree = a.patch_degree;
+    o.deviation_ratio = a.deviation_ratio;
+    o.max_rounds = a.max_rounds;
+    let quiet = a.quiet;
+    let fit = match fit_surface(&k, &o, |line| {
+        if !quiet {
+            eprintln!("[{:7.1} s] {line}", t0.elapsed().as_secs_f64());
+        }
+    }) {
+        Ok(f) => f,
+        Err(e) => {
+            eprintln!("error: {}: {e}", a.file.display());
+            return ExitCode::from(1);
+        }
+    };
+    if let Some(out) = &a.output {
+        if let Err(e) = crate::fitting::format::write_fit(out, &fit) {
+            eprintln!("error: {e}");
+            return ExitCode::from(2);
+        }
+    }
+    let last = fit.rounds.last();
+    let summary = serde_json::json!({
+        "mesh": a.file.display().to_string(),
+        "vertices": k.num_vertices(),
+        "epsilon": eps,
+        "diagonal": diag,
+        "charts": fit.surface.fine_of.len(),
+        "base_faces": fit.surface.k.num_faces(),
+        "max_error": last.map(|r| r.max_error),
+        "p99_error": last.map(|r| r.p99_error),
+        "rounding_bound": fit.rounding_bound,
+        "hierarchy": fit.hierarchy,
+        "repairs": fit.repairs,
+        "rounds": fit.rounds,
+        "snaps": fit.base.snaps,
+        "seconds": t0.elapsed().as_secs_f64(),
+    });
+    if a.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&summary).unwrap_or_default()
+        );
+    } else {
+        println!(
+            "fit: {} — {} vertices, epsilon {:.3e}{}: {} charts (base vertices), {} rounds, max error {:.3e}, p99 {:.3e} (rounding bound {:.1e})  [{:.2} s]",
+            a.file.display(),
+            k.num_vertices(),
+            eps,
+            if a.relative { format!(" ({} of the diagonal {:.4})", a.epsilon, diag) } else { String::new() },
+            fit.surface.fine_of.len(),
+            fit.rounds.len(),
+            last.map_or(f64::NAN, |r| r.max_error),
+            last.map_or(f64::NAN, |r| r.p99_error),
+            fit.rounding_bound,
+            t0.elapsed().as_secs_f64()
+        );
+    }
+    ExitCode::SUCCESS
+}

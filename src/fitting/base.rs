@@ -1,0 +1,649 @@
+//! The base mesh S̃_T over the dense mesh S_T, and the parametrization of S_T onto it
+//! (seed 002, "Adaptive Manifold Fitting", Parts I–II).
+//!
+//! The base mesh's vertices are vertices of S_T (Part II: "the vertices of S̃_T are vertices
+//! of S_T"), so a base vertex is named by its fine id. Every other vertex of S_T carries a
+//! parameter: a base face and barycentric coordinates in it. The parameters define a
+//! piecewise-linear bijection from |S_T| onto the base mesh seen as a complex of triangles,
+//! which the three stellar operations below keep a bijection:
+//!
+//! * [`BaseMesh::remove_vertex`] (simplification; a weld after flips in stellar terms): the
+//!   1-ring is flattened by the geodesic polar map (lengths kept, angles scaled to 2π; the
+//!   local map of Floater's 1997 shape-preserving parametrization), the hole is
+//!   re-triangulated by ears, and the points of the removed faces are re-located in the flat
+//!   layout;
+//! * [`BaseMesh::split_face`] (refinement, stellar face split at a vertex of S_T): points are
+//!   re-expressed in the three sub-triangles, an affine computation in the face's barycentric
+//!   coordinates;
+//! * [`BaseMesh::flip`] (edge flip): the two faces are unfolded isometrically (lengths of the
+//!   base triangles in R³) and the points re-located; refused unless the unfolded quadrilateral
+//!   is strictly convex, so no point leaves the pair.
+//!
+//! Re-location in floating point can put a point a rounding error outside every new triangle;
+//! it is then snapped to the nearest one (barycentrics clamped at 0). Each snap is counted with
+//! its size ([`SnapStats`]) and reported; a point further out than `SNAP_LIMIT` is an internal
+//! error, never clamped.
+
+use crate::mesh::{SimplicialSurface, VertexId};
+use std::collections::HashMap;
+
+/// Largest negative barycentric coordinate a re-located point may be snapped from.
+pub const SNAP_LIMIT: f64 = 1e-7;
+
+/// Where a vertex of S_T sits on the base mesh.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Param {
+    /// It is a vertex of the base mesh.
+    Vertex,
+    /// In base face slot `f`, barycentric coordinates in the face's corner order.
+    Face {
+        /// Base face slot.
+        f: u32,
+        /// Barycentric coordinates (sum 1, each ≥ 0).
+        b: [f64; 3],
+    },
+}
+
+/// Why a stellar operation was refused (the mesh is unchanged).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Refusal {
+    /// The vertex is not (or no longer) a base vertex, or the edge does not exist.
+    Missing,
+    /// The flattened 1-ring has an angle ≥ π (a cone too sharp to flatten).
+    Flatten,
+    /// No valid ear: every diagonal exists already or the polygon has no convex empty ear.
+    NoEar,
+    /// The new triangles are too far from the removed vertex's normal or too thin.
+    Shape,
+    /// A vertex would get degree < 3 or above the cap.
+    Degree,
+    /// Points of S_T would lie further than the deviation bound from their new triangle.
+    Deviation,
+    /// The unfolded quadrilateral of a flip is not strictly convex.
+    NotConvex,
+    /// Re-location left a point outside every new triangle by more than `SNAP_LIMIT`.
+    Locate,
+}
+
+/// Re-location snaps (see the module doc).
+#[derive(Debug, Clone, Copy, Default, PartialEq, serde::Serialize)]
+pub struct SnapStats {
+    /// Points snapped.
+    pub count: u64,
+    /// Largest |negative barycentric coordinate| removed by a snap.
+    pub worst: f64,
+}
+
+/// Limits of a vertex removal.
+#[derive(Debug, Clone, Copy)]
+pub struct RemovalLimits {
+    /// Largest distance from a point of S_T to its place on its base triangle.
+    pub max_deviation: f64,
+    /// Smallest cosine between a new triangle's normal and the removed vertex's normal.
+    pub min_normal_cos: f64,
+    /// Smallest triangle quality 4√3·area/Σ edge² (1 for equilateral).
+    pub min_quality: f64,
+    /// Largest vertex degree.
+    pub max_degree: usize,
+}
+
+/// S̃_T with the parameters of S_T on it.
+#[derive(Debug, Clone)]
+pub struct BaseMesh {
+    pos: Vec<[f64; 3]>,
+    faces: Vec<Option<[u32; 3]>>,
+    free: Vec<u32>,
+    he: HashMap<(u32, u32), u32>,
+    vfaces: Vec<Vec<u32>>,
+    param: Vec<Param>,
+    members: Vec<Vec<u32>>,
+    /// Re-location snaps so far.
+    pub snaps: SnapStats,
+}
+
+type V3 = [f64; 3];
+fn sub(a: V3, b: V3) -> V3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+fn cross(a: V3, b: V3) -> V3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+fn norm(a: V3) -> f64 {
+    dot(a, a).sqrt()
+}
+fn orient2(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+/// Barycentric coordinates of x w.r.t. the planar triangle (a, b, c).
+fn bary2(a: [f64; 2], b: [f64; 2], c: [f64; 2], x: [f64; 2]) -> [f64; 3] {
+    let d = orient2(a, b, c);
+    let l1 = orient2(x, b, c) / d;
+    let l2 = orient2(a, x, c) / d;
+    [l1, l2, 1.0 - l1 - l2]
+}
+
+/// Triangle quality 4√3·area/(|ab|²+|bc|²+|ca|²) ∈ [0, 1].
+pub fn quality(a: V3, b: V3, c: V3) -> f64 {
+    let n = cross(sub(b, a), sub(c, a));
+    let s = dot(sub(b, a), sub(b, a)) + dot(sub(c, b), sub(c, b)) + dot(sub(a, c), sub(a, c));
+    if s > 0.0 {
+        2.0 * 3f64.sqrt() * norm(n) / s
+    } else {
+        0.0
+    }
+}
+
+fn rot(face: [u32; 3], v: u32) -> Option<[u32; 3]> {
+    let i = face.iter().position(|&x| x == v)?;
+    Some([face[i], face[(i + 1) % 3], face[(i + 2) % 3]])
+}
+fn permute(face: [u32; 3], b: [f64; 3], order: [u32; 3]) -> [f64; 3] {
+    let mut out = [0.0; 3];
+    for (k, &o) in order.iter().enumerate() {
+        if let Some(i) = face.iter().position(|&x| x == o) {
+            out[k] = b[i];
+        }
+    }
+    out
+}
+
+/// Pick the triangle of `tris` (planar corners) containing `x` best; snap if needed.
+fn locate(tris: &[[[f64; 2]; 3]], x: [f64; 2], snaps: &mut SnapStats) -> Option<(usize, [f64; 3])> {
+    let mut best: Option<(usize, [f64; 3], f64)> = None;
+    for (t, c) in tris.iter().enumerate() {
+        let b = bary2(c[0], c[1], c[2], x);
+        let mn = b[0].min(b[1]).min(b[2]);
+        if mn.is_finite() && best.as_ref().map_or(true, |(_, _, m)| mn > *m) {
+            best = Some((t, b, mn));
+        }
+    }
+    let (t, mut b, mn) = best?;
+    if mn < 0.0 {
+        if mn < -SNAP_LIMIT {
+            return None;
+        }
+        snaps.count += 1;
+        snaps.worst = snaps.worst.max(-mn);
+        b = b.map(|x| x.max(0.0));
+        let s = b[0] + b[1] + b[2];
+        b = b.map(|x| x / s);
+    }
+    Some((t, b))
+}
+
+impl BaseMesh {
+    /// The base mesh equal to S_T (every vertex a base vertex).
+    pub fn new(k: &SimplicialSurface) -> Self {
+        let n = k.vertex_slots();
+        let pos: Vec<V3> = (0..n).map(|i| k.position(VertexId(i as u32))).collect();
+        let mut b = BaseMesh {
+            pos,
+            faces: Vec::new(),
+            free: Vec::new(),
+            he: HashMap::new(),
+            vfaces: vec![Vec::new(); n],
+            param: vec![Param::Vertex; n],
+            members: Vec::new(),
+            snaps: SnapStats::default(),
+        };
+        for f in k.faces() {
+            let c = k.face(f).map(|v| v.0);
+            b.add_face(c);
+        }
+        b
+    }
+
+    /// Positions of S_T.
+    pub fn positions(&self) -> &[V3] {
+        &self.pos
+    }
+    /// Parameter of every vertex of S_T.
+    pub fn params(&self) -> &[Param] {
+        &self.param
+    }
+    /// Live base faces as (slot, corners).
+    pub fn faces(&self) -> impl Iterator<Item = (u32, [u32; 3])> + '_ {
+        self.faces
+            .iter()
+            .enumerate()
+            .filter_map(|(i, f)| f.map(|c| (i as u32, c)))
+    }
+    /// Corners of a live face slot.
+    pub fn face(&self, f: u32) -> Option<[u32; 3]> {
+        self.faces.get(f as usize).copied().flatten()
+    }
+    /// Number of base faces.
+    pub fn num_faces(&self) -> usize {
+        self.faces.len() - self.free.len()
+    }
+    /// Is fine vertex `v` a base vertex?
+    pub fn is_base(&self, v: u32) -> bool {
+        !self.vfaces[v as usize].is_empty()
+    }
+    /// Base vertices, ascending fine ids.
+    pub fn base_vertices(&self) -> Vec<u32> {
+        (0..self.pos.len() as u32)
+            .filter(|&v| self.is_base(v))
+            .collect()
+    }
+    /// The vertices of S_T parametrized in base face slot `f`.
+    pub fn members(&self, f: u32) -> &[u32] {
+        self.members.get(f as usize).map_or(&[], |m| m.as_slice())
+    }
+    /// The base face slots around base vertex v.
+    pub fn faces_around(&self, v: u32) -> &[u32] {
+        self.vfaces.get(v as usize).map_or(&[], |f| f.as_slice())
+    }
+    /// Degree of a base vertex.
+    pub fn degree(&self, v: u32) -> usize {
+        self.vfaces[v as usize].len()
+    }
+    /// The face holding the directed edge a → b.
+    pub fn face_of_edge(&self, a: u32, b: u32) -> Option<u32> {
+        self.he.get(&(a, b)).copied()
+    }
+    /// The point of the base triangle `f` at barycentric coordinates `b` (in R³).
+    pub fn flat_point(&self, f: u32, b: [f64; 3]) -> Option<V3> {
+        let c = self.face(f)?;
+        let p = c.map(|v| self.pos[v as usize]);
+        Some(std::array::from_fn(|i| {
+            b[0] * p[0][i] + b[1] * p[1][i] + b[2] * p[2][i]
+        }))
+    }
+
+    fn add_face(&mut self, c: [u32; 3]) -> u32 {
+        let slot = match self.free.pop() {
+            Some(s) => {
+                self.faces[s as usize] = Some(c);
+                self.members[s as usize].clear();
+                s
+            }
+            None => {
+                self.faces.push(Some(c));
+                self.members.push(Vec::new());
+                (self.faces.len() - 1) as u32
+            }
+        };
+        for i in 0..3 {
+            self.he.insert((c[i], c[(i + 1) % 3]), slot);
+            self.vfaces[c[i] as usize].push(slot);
+        }
+        slot
+    }
+
+    fn remove_face(&mut self, f: u32) -> Vec<u32> {
+        let Some(c) = self.faces[f as usize].take() else {
+            return Vec::new();
+        };
+        for i in 0..3 {
+            self.he.remove(&(c[i], c[(i + 1) % 3]));
+            self.vfaces[c[i] as usize].retain(|&x| x != f);
+        }
+        self.free.push(f);
+        std::mem::take(&mut self.members[f as usize])
+    }
+
+    fn set_param(&mut self, x: u32, p: Param) {
+        if let Param::Face { f, .. } = p {
+            self.members[f as usize].push(x);
+        }
+        self.param[x as usize] = p;
+    }
+
+    /// The 1-ring of base vertex v: neighbours u_0..u_{m−1} in the faces' order and the faces
+    /// (v, u_i, u_{i+1}).
+    pub fn ring(&self, v: u32) -> Option<(Vec<u32>, Vec<u32>)> {
+        let f0 = *self.vfaces.get(v as usize)?.first()?;
+        let c = rot(self.face(f0)?, v)?;
+        let (mut us, mut fs) = (vec![c[1]], vec![f0]);
+        let mut cur = c[2];
+        while cur != us[0] {
+            let f = self.face_of_edge(v, cur)?;
+            let c = rot(self.face(f)?, v)?;
+            us.push(cur);
+            fs.push(f);
+            cur = c[2];
+            if us.len() > self.vfaces[v as usize].len() {
+                return None;
+            }
+        }
+        Some((us, fs))
+    }
+
+    /// The points of face `f` with barycentric coordinates in the order `order`.
+    fn points_in(&self, f: u32, order: [u32; 3]) -> Vec<(u32, [f64; 3])> {
+        let c = self.faces[f as usize].unwrap_or(order);
+        self.members[f as usize]
+            .iter()
+            .filter_map(|&x| match self.param[x as usize] {
+                Param::Face { b, .. } => Some((x, permute(c, b, order))),
+                Param::Vertex => None,
+            })
+            .collect()
+    }
+
+    fn deviation(&self, tri: [u32; 3], x: u32, b: [f64; 3]) -> f64 {
+        let p = tri.map(|v| self.pos[v as usize]);
+        let q: V3 = std::array::from_fn(|i| b[0] * p[0][i] + b[1] * p[1][i] + b[2] * p[2][i]);
+        norm(sub(q, self.pos[x as usize]))
+    }
+
+    /// Remove base vertex v (see the module doc). On refusal nothing changes.
+    pub fn remove_vertex(&mut self, v: u32, lim: &RemovalLimits) -> Result<(), Refusal> {
+        let (us, fs) = self.ring(v).ok_or(Refusal::Missing)?;
+        let m = us.len();
+        let pv = self.pos[v as usize];
+        let d: Vec<V3> = us.iter().map(|&u| sub(self.pos[u as usize], pv)).collect();
+        let ang: Vec<f64> = (0..m)
+            .map(|i| {
+                let (a, b) = (d[i], d[(i + 1) % m]);
+                norm(cross(a, b)).atan2(dot(a, b))
+            })
+            .collect();
+        let total: f64 = ang.iter().sum();
+        let scale = std::f64::consts::TAU / total;
+        if !(total > 0.0) || ang.iter().any(|a| a * scale >= std::f64::consts::PI - 1e-3) {
+            return Err(Refusal::Flatten);
+        }
+        let mut alpha = 0.0f64;
+        let poly: Vec<[f64; 2]> = (0..m)
+            .map(|i| {
+                let r = norm(d[i]);
+                let p = [r * alpha.cos(), r * alpha.sin()];
+                alpha += ang[i] * scale;
+                p
+            })
+            .collect();
+        // Normal of v: area-weighted normal of its faces.
+        let mut nv = [0.0; 3];
+        for i in 0..m {
+            let n = cross(d[i], d[(i + 1) % m]);
+            nv = [nv[0] + n[0], nv[1] + n[1], nv[2] + n[2]];
+        }
+        let nvn = norm(nv);
+        let tris = self.ears(&us, &poly, nv, nvn, lim)?;
+        // Degrees after: each u loses v and gains its diagonals.
+        let mut deg: HashMap<u32, usize> = us.iter().map(|&u| (u, self.degree(u) - 1)).collect();
+        for t in &tris {
+            for i in 0..3 {
+                let (a, b) = (t[i], t[(i + 1) % 3]);
+                if (a + 1) % m != b && (b + 1) % m != a {
+                    *deg.entry(us[a]).or_default() += 1;
+                }
+            }
+        }
+        // Each diagonal was counted from both of its triangles: halve the extra count.
+        for &u in &us {
+            let base = self.degree(u) - 1;
+            let e = deg[&u] - base;
+            let dd = base + e / 2;
+            if dd < 3 || dd > lim.max_degree {
+                return Err(Refusal::Degree);
+            }
+        }
+        let flat: Vec<[[f64; 2]; 3]> = tris.iter().map(|t| t.map(|i| poly[i])).collect();
+        let corners: Vec<[u32; 3]> = tris.iter().map(|t| t.map(|i| us[i])).collect();
+        // Re-locate v and the points of the removed faces.
+        let mut snaps = self.snaps;
+        let mut moved: Vec<(u32, usize, [f64; 3])> = Vec::new();
+        let (t, b) = locate(&flat, [0.0, 0.0], &mut snaps).ok_or(Refusal::Locate)?;
+        moved.push((v, t, b));
+        for (i, &f) in fs.iter().enumerate() {
+            let order = [v, us[i], us[(i + 1) % m]];
+            let (p1, p2) = (poly[i], poly[(i + 1) % m]);
+            for (x, b) in self.points_in(f, order) {
+                let q = [b[1] * p1[0] + b[2] * p2[0], b[1] * p1[1] + b[2] * p2[1]];
+                let (t, bb) = locate(&flat, q, &mut snaps).ok_or(Refusal::Locate)?;
+                moved.push((x, t, bb));
+            }
+        }
+        for &(x, t, b) in &moved {
+            if self.deviation(corners[t], x, b) > lim.max_deviation {
+                return Err(Refusal::Deviation);
+            }
+        }
+        // Commit.
+        self.snaps = snaps;
+        for &f in &fs {
+            self.remove_face(f);
+        }
+        let slots: Vec<u32> = corners.iter().map(|&c| self.add_face(c)).collect();
+        for (x, t, b) in moved {
+            self.set_param(x, Param::Face { f: slots[t], b });
+        }
+        Ok(())
+    }
+
+    /// Ear-clipping triangulation of the flattened ring (indices into `us`), best 3-D quality
+    /// first; diagonals that are edges already are refused (they would make K non-simplicial).
+    fn ears(
+        &self,
+        us: &[u32],
+        poly: &[[f64; 2]],
+        nv: V3,
+        nvn: f64,
+        lim: &RemovalLimits,
+    ) -> Result<Vec<[usize; 3]>, Refusal> {
+        let m = us.len();
+        if m == 3 {
+            // The one triangle must not be a face already (the tetrahedron case).
+            if let Some(f) = self.face_of_edge(us[1], us[0]) {
+                if self.face(f).is_some_and(|c| c.contains(&us[2])) {
+                    return Err(Refusal::NoEar);
+                }
+            }
+        }
+        let mut idx: Vec<usize> = (0..m).collect();
+        let mut out = Vec::new();
+        let scale = poly
+            .iter()
+            .map(|p| p[0].abs().max(p[1].abs()))
+            .fold(0.0, f64::max);
+        let mut shape_refused = false;
+        while idx.len() > 3 {
+            let n = idx.len();
+            let mut best: Option<(usize, f64)> = None;
+            for j in 0..n {
+                let (a, b, c) = (idx[(j + n - 1) % n], idx[j], idx[(j + 1) % n]);
+                if orient2(poly[a], poly[b], poly[c]) <= 1e-12 * scale * scale {
+                    continue;
+                }
+                let (ua, uc) = (us[a], us[c]);
+                if self.he.contains_key(&(ua, uc)) || self.he.contains_key(&(uc, ua)) {
+                    continue;
+                }
+                let empty = idx.iter().all(|&o| {
+                    o == a
+                        || o == b
+                        || o == c
+                        || bary2(poly[a], poly[b], poly[c], poly[o])
+                            .iter()
+                            .any(|&l| l < -1e-12)
+                });
+                if !empty {
+                    continue;
+                }
+                let q = self.tri_ok([us[a], us[b], us[c]], nv, nvn, lim);
+                let Some(q) = q else {
+                    shape_refused = true;
+                    continue;
+                };
+                if best.map_or(true, |(_, bq)| q > bq) {
+                    best = Some((j, q));
+                }
+            }
+            let Some((j, _)) = best else {
+                return Err(if shape_refused {
+                    Refusal::Shape
+                } else {
+                    Refusal::NoEar
+                });
+            };
+            let n = idx.len();
+            out.push([idx[(j + n - 1) % n], idx[j], idx[(j + 1) % n]]);
+            idx.remove(j);
+        }
+        let last = [idx[0], idx[1], idx[2]];
+        if self.tri_ok(last.map(|i| us[i]), nv, nvn, lim).is_none() {
+            return Err(Refusal::Shape);
+        }
+        out.push(last);
+        Ok(out)
+    }
+
+    /// The quality of a candidate triangle, or None if it breaks the shape limits.
+    fn tri_ok(&self, t: [u32; 3], nv: V3, nvn: f64, lim: &RemovalLimits) -> Option<f64> {
+        let p = t.map(|v| self.pos[v as usize]);
+        let n = cross(sub(p[1], p[0]), sub(p[2], p[0]));
+        let c = dot(n, nv) / (norm(n) * nvn);
+        let q = quality(p[0], p[1], p[2]);
+        (c >= lim.min_normal_cos && q >= lim.min_quality).then_some(q)
+    }
+
+    /// Split base face `f` at the vertex x of S_T parametrized in it (a stellar face split);
+    /// x becomes a base vertex. Returns the three new face slots.
+    pub fn split_face(&mut self, x: u32) -> Result<[u32; 3], Refusal> {
+        let Param::Face { f, b: bx } = self.param[x as usize] else {
+            return Err(Refusal::Missing);
+        };
+        let c = self.face(f).ok_or(Refusal::Missing)?;
+        if bx.iter().any(|&l| !(l > 0.0)) {
+            return Err(Refusal::Locate);
+        }
+        // Sub-triangle t replaces corner t of f by x: (x, c1, c2), (c0, x, c2), (c0, c1, x).
+        // A point β lies in sub-triangle t with coordinates λ_t = β_t/bx_t at x and
+        // β_s − λ_t·bx_s at the two kept corners s.
+        let pts = self.points_in(f, c);
+        let mut snaps = self.snaps;
+        let mut moved = Vec::with_capacity(pts.len());
+        for (y, beta) in pts {
+            if y == x {
+                continue;
+            }
+            let mut best: Option<(usize, [f64; 3], f64)> = None;
+            for t in 0..3 {
+                let lt = beta[t] / bx[t];
+                let mut l = [0.0; 3];
+                for s in 0..3 {
+                    l[s] = if s == t { lt } else { beta[s] - lt * bx[s] };
+                }
+                let mn = l[0].min(l[1]).min(l[2]);
+                if best.as_ref().map_or(true, |(_, _, m)| mn > *m) {
+                    best = Some((t, l, mn));
+                }
+            }
+            let Some((t, mut l, mn)) = best else {
+                return Err(Refusal::Locate);
+            };
+            if mn < 0.0 {
+                if mn < -SNAP_LIMIT {
+                    return Err(Refusal::Locate);
+                }
+                snaps.count += 1;
+                snaps.worst = snaps.worst.max(-mn);
+                l = l.map(|v| v.max(0.0));
+                let s = l[0] + l[1] + l[2];
+                l = l.map(|v| v / s);
+            }
+            moved.push((y, t, l));
+        }
+        self.snaps = snaps;
+        self.remove_face(f);
+        let subs: [[u32; 3]; 3] = std::array::from_fn(|t| {
+            let mut s = c;
+            s[t] = x;
+            s
+        });
+        let slots = subs.map(|s| self.add_face(s));
+        self.param[x as usize] = Param::Vertex;
+        for (y, t, l) in moved {
+            self.set_param(y, Param::Face { f: slots[t], b: l });
+        }
+        Ok(slots)
+    }
+
+    /// Flip the edge a–b of the faces (a, b, c) and (b, a, d) to c–d (see the module doc).
+    pub fn flip(&mut self, a: u32, b: u32) -> Result<(), Refusal> {
+        let f1 = self.face_of_edge(a, b).ok_or(Refusal::Missing)?;
+        let f2 = self.face_of_edge(b, a).ok_or(Refusal::Missing)?;
+        let c = rot(self.face(f1).ok_or(Refusal::Missing)?, a).ok_or(Refusal::Missing)?[2];
+        let d = rot(self.face(f2).ok_or(Refusal::Missing)?, b).ok_or(Refusal::Missing)?[2];
+        if c == d || self.he.contains_key(&(c, d)) || self.he.contains_key(&(d, c)) {
+            return Err(Refusal::Missing);
+        }
+        if self.degree(a) <= 3 || self.degree(b) <= 3 {
+            return Err(Refusal::Degree);
+        }
+        let [la, lc, ld] = self.unfold(a, b, c, d);
+        let lb = [norm(sub(self.pos[b as usize], self.pos[a as usize])), 0.0];
+        let t1 = [la, ld, lc];
+        let t2 = [ld, lb, lc];
+        let s = lb[0] * lb[0];
+        if orient2(t1[0], t1[1], t1[2]) <= 1e-12 * s || orient2(t2[0], t2[1], t2[2]) <= 1e-12 * s {
+            return Err(Refusal::NotConvex);
+        }
+        let flat = [t1, t2];
+        let mut snaps = self.snaps;
+        let mut moved = Vec::new();
+        for (f, order, p) in [(f1, [a, b, c], [la, lb, lc]), (f2, [b, a, d], [lb, la, ld])] {
+            for (x, bb) in self.points_in(f, order) {
+                let q = [
+                    bb[0] * p[0][0] + bb[1] * p[1][0] + bb[2] * p[2][0],
+                    bb[0] * p[0][1] + bb[1] * p[1][1] + bb[2] * p[2][1],
+                ];
+                let (t, l) = locate(&flat, q, &mut snaps).ok_or(Refusal::Locate)?;
+                moved.push((x, t, l));
+            }
+        }
+        self.snaps = snaps;
+        self.remove_face(f1);
+        self.remove_face(f2);
+        let s1 = self.add_face([a, d, c]);
+        let s2 = self.add_face([d, b, c]);
+        for (x, t, l) in moved {
+            self.set_param(
+                x,
+                Param::Face {
+                    f: [s1, s2][t],
+                    b: l,
+                },
+            );
+        }
+        Ok(())
+    }
+
+    /// Isometric layout of the faces (a, b, c), (b, a, d): a at 0, b on +x, c above, d below.
+    fn unfold(&self, a: u32, b: u32, c: u32, d: u32) -> [[f64; 2]; 3] {
+        let p = |v: u32| self.pos[v as usize];
+        let ab = sub(p(b), p(a));
+        let l = norm(ab);
+        let place = |x: u32, sign: f64| {
+            let ax = sub(p(x), p(a));
+            let t = dot(ax, ab) / l;
+            let h = norm(cross(ab, ax)) / l;
+            [t, sign * h]
+        };
+        [[0.0, 0.0], place(c, 1.0), place(d, -1.0)]
+    }
+
+    /// Is the edge a–b (faces (a, b, c), (b, a, d)) locally Delaunay in the unfolded layout?
+    pub fn is_delaunay(&self, a: u32, b: u32) -> Option<bool> {
+        let f1 = self.face_of_edge(a, b)?;
+        let f2 = self.face_of_edge(b, a)?;
+        let c = rot(self.face(f1)?, a)?[2];
+        let d = rot(self.face(f2)?, b)?[2];
+        let p = |v: u32| self.pos[v as usize];
+        let angle = |o: u32| {
+            let (x, y) = (sub(p(a), p(o)), sub(p(b), p(o)));
+            norm(cross(x, y)).atan2(dot(x, y))
+        };
+        Some(angle(c) + angle(d) <= std::f64::consts::PI + 1e-12)
+    }
+}

@@ -1,0 +1,338 @@
+//! Adaptive manifold fitting (seed 002, "Adaptive Manifold Fitting", Parts I–II): given a
+//! closed triangle mesh S_T and ε > 0, a C^∞ surface S — the (σ, v)-indexed PPS over a base
+//! mesh S̃_T whose vertices are vertices of S_T — with ‖S(p_v) − v‖ ≤ ε at the parameter p_v
+//! of every vertex v of S_T, with few charts.
+//!
+//! The pipeline, one module per stage:
+//! 1. [`simplify`]: stellar simplification ranked by quadric error, independent sets per level;
+//!    it carries the parametrization of S_T onto the base mesh ([`base`]).
+//! 2. [`fitted`]: the (σ, v) construction over the base mesh with ψ_(σ,v) fitted by least
+//!    squares to the vertices of S_T.
+//! 3. [`refine`]: where a vertex misses ε, the base mesh is refined locally (stellar face
+//!    split at the worst vertex, Lawson flips), and 2 is repeated.
+//!
+//! Where the slides are silent, the choices are stated at each module and in SPEC.md
+//! (section "Adaptive fitting", rows `AF-…`).
+
+pub mod base;
+pub mod fitted;
+pub mod format;
+pub mod refine;
+pub mod simplify;
+
+use base::{BaseMesh, RemovalLimits};
+use fitted::{BaseSurface, BaseSurfaceError, Fitted, SurfaceParam};
+use rayon::prelude::*;
+use serde::Serialize;
+use simplify::{Hierarchy, SimplifyOptions};
+
+use crate::construction::sigma_v::{SigmaVError, SigmaVPps};
+use crate::mesh::SimplicialSurface;
+
+/// Options of [`fit_surface`].
+#[derive(Debug, Clone, Copy)]
+pub struct FitOptions {
+    /// ε, absolute.
+    pub epsilon: f64,
+    /// The simplification may leave vertices of S_T this many ε from the flat base triangles
+    /// (the smooth fit then closes the gap; refinement where it does not).
+    pub deviation_ratio: f64,
+    /// κ of the (σ, v) construction.
+    pub kappa: f64,
+    /// Patch degree of ψ_(σ,v).
+    pub degree: usize,
+    /// Largest base vertex degree.
+    pub max_degree: usize,
+    /// Refinement rounds at most.
+    pub max_rounds: usize,
+}
+
+impl FitOptions {
+    /// Defaults for a given ε.
+    pub fn new(epsilon: f64) -> Self {
+        FitOptions {
+            epsilon,
+            deviation_ratio: 4.0,
+            kappa: crate::construction::sigma_v::DEFAULT_KAPPA,
+            degree: crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+            max_degree: 12,
+            max_rounds: 40,
+        }
+    }
+}
+
+/// Why a fit failed.
+#[derive(Debug, thiserror::Error)]
+pub enum FitError {
+    /// ε must be a positive finite number.
+    #[error("epsilon must be positive and finite, got {0}")]
+    BadEpsilon(f64),
+    /// The (σ, v) construction refused the base mesh.
+    #[error("the (sigma, v) construction refused the base mesh: {0}")]
+    SigmaV(#[from] SigmaVError),
+    /// The base mesh stayed invalid (classes) after the repair rounds.
+    #[error("the base mesh is not a simplicial surface after {rounds} repair rounds: {classes}")]
+    BaseInvalid {
+        /// Rounds spent.
+        rounds: usize,
+        /// The validator's defect classes.
+        classes: String,
+    },
+    /// ε was not reached in the allowed rounds.
+    #[error("epsilon {epsilon} not reached after {rounds} refinement rounds: {offenders} vertices still further (worst {worst})")]
+    NotReached {
+        /// ε.
+        epsilon: f64,
+        /// Rounds spent.
+        rounds: usize,
+        /// Vertices still beyond ε.
+        offenders: usize,
+        /// Largest error.
+        worst: f64,
+    },
+}
+
+/// One round of fit and refinement.
+#[derive(Debug, Clone, Serialize)]
+pub struct Round {
+    /// Base vertices (charts: one p-domain per corner, |I| = 3·faces; the vertex count is
+    /// what refinement adds to).
+    pub base_vertices: usize,
+    /// Largest ‖S(p_v) − v‖ over the vertices of S_T.
+    pub max_error: f64,
+    /// Its 99th percentile.
+    pub p99_error: f64,
+    /// Vertices beyond ε (error plus rounding bound).
+    pub offenders: usize,
+    /// Refinement done after the round (None for the last).
+    pub refine: Option<refine::RefineStats>,
+    /// Seconds spent in the round.
+    pub seconds: f64,
+}
+
+/// A fit and how it was reached.
+pub struct Fit {
+    /// ε (absolute).
+    pub epsilon: f64,
+    /// The base mesh with the parametrization of S_T.
+    pub base: BaseMesh,
+    /// The base mesh as a validated surface.
+    pub surface: BaseSurface,
+    /// Parameters of the vertices of S_T in the surface's ids.
+    pub params: Vec<SurfaceParam>,
+    /// The fitted PPS.
+    pub fitted: Fitted,
+    /// Error of every vertex of S_T.
+    pub errors: Vec<f64>,
+    /// Bound on the f64 rounding of eval (added to each error before comparing with ε).
+    pub rounding_bound: f64,
+    /// The simplification.
+    pub hierarchy: Hierarchy,
+    /// Repair rounds spent on an invalid base mesh.
+    pub repairs: usize,
+    /// The rounds.
+    pub rounds: Vec<Round>,
+}
+
+/// A bound on |fl(eval) − eval| for the fitted PPS: the operation count of
+/// `surface::eval_bound` (patches of degree d: γ_{8d+8}; maps and blend: `MAP_BOUND_ULPS` ulps)
+/// times the largest control point. An operation count, not a proof; the checks compare it
+/// with 256-bit evaluations on a seeded sample (SPEC `AF-epsilon`).
+pub fn rounding_bound(pps: &SigmaVPps) -> f64 {
+    use crate::surface::eval_bound::{gamma_n, MAP_BOUND_ULPS};
+    (gamma_n(8 * pps.degree + 8) + MAP_BOUND_ULPS * f64::EPSILON) * pps.scale()
+}
+
+/// ‖S(p_x) − x‖ for every vertex x of S_T (NaN when eval fails).
+pub fn vertex_errors(pps: &SigmaVPps, pos: &[[f64; 3]], params: &[SurfaceParam]) -> Vec<f64> {
+    params
+        .par_iter()
+        .zip(pos.par_iter())
+        .map(|(&(f, b), x)| match pps.eval_f64(f, b) {
+            Ok(s) => crate::numeric::robust_norm(&[s[0] - x[0], s[1] - x[1], s[2] - x[2]]),
+            Err(_) => f64::NAN,
+        })
+        .collect()
+}
+
+fn percentile(v: &[f64], q: f64) -> f64 {
+    let mut s: Vec<f64> = v.to_vec();
+    s.sort_by(f64::total_cmp);
+    s.get(((s.len() as f64 - 1.0) * q).round() as usize)
+        .copied()
+        .unwrap_or(f64::NAN)
+}
+
+/// Repair rounds at most for a base mesh the validator refuses.
+const MAX_REPAIRS: usize = 60;
+
+/// The adaptive fit of S_T = `k` (module doc). `progress` receives one line per stage.
+pub fn fit_surface(
+    k: &SimplicialSurface,
+    opts: &FitOptions,
+    mut progress: impl FnMut(&str),
+) -> Result<Fit, FitError> {
+    if !(opts.epsilon > 0.0 && opts.epsilon.is_finite()) {
+        return Err(FitError::BadEpsilon(opts.epsilon));
+    }
+    let t0 = std::time::Instant::now();
+    let mut base = BaseMesh::new(k);
+    let sopts = SimplifyOptions {
+        limits: RemovalLimits {
+            max_deviation: opts.deviation_ratio * opts.epsilon,
+            min_normal_cos: 0.5,
+            min_quality: 0.1,
+            max_degree: opts.max_degree,
+        },
+        min_vertices: 4,
+        max_levels: 200,
+    };
+    let hierarchy = simplify::simplify(&mut base, k, &sopts, |lvl, n| {
+        progress(&format!("simplify: level {lvl}, {n} base vertices"))
+    });
+    progress(&format!(
+        "simplify: {} levels, {} base vertices of {} ({:.1} s)",
+        hierarchy.levels.len(),
+        base.base_vertices().len(),
+        k.num_vertices(),
+        t0.elapsed().as_secs_f64()
+    ));
+    let pos = base.positions().to_vec();
+    let mut rounds: Vec<Round> = Vec::new();
+    let mut repairs = 0;
+    loop {
+        let tr = std::time::Instant::now();
+        let surface = match BaseSurface::new(&base) {
+            Ok(s) => s,
+            Err(BaseSurfaceError::NotASurface { classes, crossing }) => {
+                repairs += 1;
+                let names: Vec<&str> = classes.iter().map(|c| c.name()).collect();
+                if repairs > MAX_REPAIRS || crossing.is_empty() {
+                    return Err(FitError::BaseInvalid {
+                        rounds: repairs,
+                        classes: names.join(", "),
+                    });
+                }
+                let mut st = refine::RefineStats::default();
+                for f in crossing {
+                    // The crossing face's own vertices of S_T, else its neighbours' (a face
+                    // with none inside is refined from across its edges).
+                    let mut cand: Vec<u32> = base.members(f).to_vec();
+                    if cand.is_empty() {
+                        if let Some(c) = base.face(f) {
+                            for i in 0..3 {
+                                if let Some(g) = base.face_of_edge(c[(i + 1) % 3], c[i]) {
+                                    cand.extend_from_slice(base.members(g));
+                                }
+                            }
+                        }
+                    }
+                    let worst = cand.into_iter().max_by(|&a, &b| {
+                        flat_deviation(&base, a).total_cmp(&flat_deviation(&base, b))
+                    });
+                    if let Some(x) = worst {
+                        if !base.is_base(x) {
+                            refine::insert(&mut base, x, &mut st);
+                        }
+                    }
+                }
+                progress(&format!(
+                    "repair: base mesh refused ({}), {} vertices inserted",
+                    names.join(", "),
+                    st.inserted
+                ));
+                if st.inserted == 0 {
+                    return Err(FitError::BaseInvalid {
+                        rounds: repairs,
+                        classes: names.join(", "),
+                    });
+                }
+                continue;
+            }
+            Err(BaseSurfaceError::SigmaV(e)) => return Err(e.into()),
+        };
+        let params = surface.params(&base);
+        let fitted = fitted::fit(&surface, &pos, &params, opts.kappa, opts.degree)?;
+        let errors = vertex_errors(&fitted.pps, &pos, &params);
+        let bound = rounding_bound(&fitted.pps);
+        let offenders: Vec<u32> = errors
+            .iter()
+            .enumerate()
+            .filter(|(_, &e)| !(e + bound <= opts.epsilon))
+            .map(|(i, _)| i as u32)
+            .collect();
+        let max_error = errors
+            .iter()
+            .copied()
+            .fold(0.0, crate::report::harness::dev_max);
+        let mut round = Round {
+            base_vertices: surface.fine_of.len(),
+            max_error,
+            p99_error: percentile(&errors, 0.99),
+            offenders: offenders.len(),
+            refine: None,
+            seconds: 0.0,
+        };
+        progress(&format!(
+            "fit round {}: {} charts (base vertices), max error {:.3e}, p99 {:.3e}, {} vertices beyond epsilon {:.3e}",
+            rounds.len() + 1,
+            round.base_vertices,
+            round.max_error,
+            round.p99_error,
+            round.offenders,
+            opts.epsilon
+        ));
+        if offenders.is_empty() {
+            round.seconds = tr.elapsed().as_secs_f64();
+            rounds.push(round);
+            return Ok(Fit {
+                epsilon: opts.epsilon,
+                base,
+                surface,
+                params,
+                fitted,
+                errors,
+                rounding_bound: bound,
+                hierarchy,
+                repairs,
+                rounds,
+            });
+        }
+        if rounds.len() + 1 >= opts.max_rounds {
+            return Err(FitError::NotReached {
+                epsilon: opts.epsilon,
+                rounds: rounds.len() + 1,
+                offenders: offenders.len(),
+                worst: max_error,
+            });
+        }
+        let mut st = refine::RefineStats::default();
+        for x in refine::choose(&base, &errors, &offenders) {
+            if !base.is_base(x) {
+                refine::insert(&mut base, x, &mut st);
+            }
+        }
+        round.refine = Some(st);
+        round.seconds = tr.elapsed().as_secs_f64();
+        rounds.push(round);
+        if st.inserted == 0 {
+            return Err(FitError::NotReached {
+                epsilon: opts.epsilon,
+                rounds: rounds.len(),
+                offenders: offenders.len(),
+                worst: max_error,
+            });
+        }
+    }
+}
+
+/// Distance of vertex x of S_T from its place on the flat base triangle.
+fn flat_deviation(base: &BaseMesh, x: u32) -> f64 {
+    match base.params()[x as usize] {
+        base::Param::Face { f, b } => base.flat_point(f, b).map_or(f64::INFINITY, |q| {
+            let p = base.positions()[x as usize];
+            crate::numeric::robust_norm(&[q[0] - p[0], q[1] - p[1], q[2] - p[2]])
+        }),
+        base::Param::Vertex => 0.0,
+    }
+}
