@@ -2,7 +2,9 @@
 //! "Adaptive Manifold Fitting", Parts I–II; SPEC rows `AF-…`).
 
 use super::load::surface as load;
+use crate::construction::sigma_v::checks::{check_built, sv_erratum, SvCheckOptions};
 use crate::fitting::{fit_surface, FitOptions};
+use crate::report::render_text;
 use clap::Args;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -39,6 +41,9 @@ pub struct FitArgs {
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
+    /// Seed of the sampled checks.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
     /// No progress lines on stderr.
     #[arg(long)]
     pub quiet: bool,
@@ -94,6 +99,15 @@ pub fn run(a: FitArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     }
+    if !quiet {
+        eprintln!("[{:7.1} s] checking the fit", t0.elapsed().as_secs_f64());
+    }
+    let checks = fit_checks(&k, &fit, a.seed, a.kappa, a.patch_degree);
+    let unexpected: Vec<String> = checks
+        .iter()
+        .filter(|r| r.failed() && sv_erratum(&r.id).is_none())
+        .map(|r| r.id.clone())
+        .collect();
     let last = fit.rounds.last();
     let summary = serde_json::json!({
         "mesh": a.file.display().to_string(),
@@ -109,6 +123,8 @@ pub fn run(a: FitArgs) -> ExitCode {
         "repairs": fit.repairs,
         "rounds": fit.rounds,
         "snaps": fit.base.snaps,
+        "checks": checks,
+        "unexpected_failures": unexpected,
         "seconds": t0.elapsed().as_secs_f64(),
     });
     if a.json {
@@ -131,5 +147,43 @@ pub fn run(a: FitArgs) -> ExitCode {
             t0.elapsed().as_secs_f64()
         );
     }
-    ExitCode::SUCCESS
+    if !a.json {
+        print!("{}", render_text(&checks));
+        for r in checks.iter().filter(|r| r.failed()) {
+            if let Some(why) = sv_erratum(&r.id) {
+                println!("documented erratum {}: {why}", r.id);
+            }
+        }
+        if unexpected.is_empty() {
+            println!("verdict: no failure beyond the documented errata");
+        } else {
+            println!("verdict: unexpected failures: {}", unexpected.join(", "));
+        }
+    }
+    if unexpected.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
+}
+
+/// The checks of each stage (SPEC `AF-…`) and those of the (σ, v) construction on the
+/// fitted PPS (SPEC `SV-…`).
+fn fit_checks(
+    k: &crate::mesh::SimplicialSurface,
+    fit: &crate::fitting::Fit,
+    seed: u64,
+    kappa: f64,
+    degree: usize,
+) -> Vec<crate::report::CheckResult> {
+    let mut out = crate::fitting::checks::run_fit_checks(k, fit, seed);
+    let o = SvCheckOptions {
+        seed,
+        kappa,
+        patch_degree: degree,
+        ..SvCheckOptions::default()
+    };
+    let pps = &fit.fitted.pps;
+    out.extend(check_built(&fit.surface.k, &pps.gluing, pps, &o));
+    out
 }

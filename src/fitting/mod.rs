@@ -15,6 +15,7 @@
 //! (section "Adaptive fitting", rows `AF-…`).
 
 pub mod base;
+pub mod checks;
 pub mod fitted;
 pub mod format;
 pub mod refine;
@@ -166,6 +167,10 @@ fn percentile(v: &[f64], q: f64) -> f64 {
 /// Repair rounds at most for a base mesh the validator refuses.
 const MAX_REPAIRS: usize = 60;
 
+/// Simplification attempts: a base mesh the repair cannot make valid is simplified again
+/// with half the deviation allowance (closer to S_T, so fewer crossings).
+const ATTEMPTS: usize = 4;
+
 /// The adaptive fit of S_T = `k` (module doc). `progress` receives one line per stage.
 pub fn fit_surface(
     k: &SimplicialSurface,
@@ -175,6 +180,28 @@ pub fn fit_surface(
     if !(opts.epsilon > 0.0 && opts.epsilon.is_finite()) {
         return Err(FitError::BadEpsilon(opts.epsilon));
     }
+    let mut o = *opts;
+    let mut attempt = 1;
+    loop {
+        match fit_once(k, &o, &mut progress) {
+            Err(FitError::BaseInvalid { .. }) if attempt < ATTEMPTS => {
+                o.deviation_ratio /= 2.0;
+                attempt += 1;
+                progress(&format!(
+                    "simplify again: deviation allowance {} epsilon",
+                    o.deviation_ratio
+                ));
+            }
+            r => return r,
+        }
+    }
+}
+
+fn fit_once(
+    k: &SimplicialSurface,
+    opts: &FitOptions,
+    progress: &mut impl FnMut(&str),
+) -> Result<Fit, FitError> {
     let t0 = std::time::Instant::now();
     let mut base = BaseMesh::new(k);
     let sopts = SimplifyOptions {
@@ -215,13 +242,13 @@ pub fn fit_surface(
                 }
                 let mut st = refine::RefineStats::default();
                 for f in crossing {
-                    // The crossing face's own vertices of S_T, else its neighbours' (a face
-                    // with none inside is refined from across its edges).
+                    // The crossing face's own vertices of S_T, else those of the faces
+                    // around its corners (a face with none inside is refined beside it).
                     let mut cand: Vec<u32> = base.members(f).to_vec();
                     if cand.is_empty() {
                         if let Some(c) = base.face(f) {
-                            for i in 0..3 {
-                                if let Some(g) = base.face_of_edge(c[(i + 1) % 3], c[i]) {
+                            for v in c {
+                                for &g in base.faces_around(v) {
                                     cand.extend_from_slice(base.members(g));
                                 }
                             }
@@ -230,18 +257,41 @@ pub fn fit_surface(
                     let worst = cand.into_iter().max_by(|&a, &b| {
                         flat_deviation(&base, a).total_cmp(&flat_deviation(&base, b))
                     });
-                    if let Some(x) = worst {
-                        if !base.is_base(x) {
+                    match worst {
+                        Some(x) if !base.is_base(x) => {
                             refine::insert(&mut base, x, &mut st);
+                        }
+                        _ => {
+                            // No vertex of S_T near it: change the crossing face by a flip of
+                            // its longest flippable edge.
+                            if let Some(c) = base.face(f) {
+                                let mut edges: Vec<(f64, u32, u32)> = (0..3)
+                                    .map(|i| {
+                                        let (a, b) = (c[i], c[(i + 1) % 3]);
+                                        let (p, q) = (pos[a as usize], pos[b as usize]);
+                                        let l = crate::numeric::robust_norm(&[
+                                            p[0] - q[0],
+                                            p[1] - q[1],
+                                            p[2] - q[2],
+                                        ]);
+                                        (l, a, b)
+                                    })
+                                    .collect();
+                                edges.sort_by(|x, y| y.0.total_cmp(&x.0));
+                                if edges.iter().any(|&(_, a, b)| base.flip(a, b).is_ok()) {
+                                    st.flips += 1;
+                                }
+                            }
                         }
                     }
                 }
                 progress(&format!(
-                    "repair: base mesh refused ({}), {} vertices inserted",
+                    "repair: base mesh refused ({}), {} vertices inserted, {} edges flipped",
                     names.join(", "),
-                    st.inserted
+                    st.inserted,
+                    st.flips
                 ));
-                if st.inserted == 0 {
+                if st.inserted == 0 && st.flips == 0 {
                     return Err(FitError::BaseInvalid {
                         rounds: repairs,
                         classes: names.join(", "),

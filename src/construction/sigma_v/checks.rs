@@ -557,14 +557,33 @@ pub fn run_sigma_v_checks(
         .map(|f| f.condition)
         .fold(0.0, dev_max);
     out.push(fit.finish(format!("largest κ(A) = {worst_cond:.3e}")));
+    out.extend(check_built(k, &g, &pps, o));
+    out
+}
+
+/// The checks of a built (σ, v) PPS over K: Def. 3.4.1 and condition (C) on the abstract
+/// views at seeded faces, smoothness, eval. Shared by the sampled construction and the
+/// adaptive fit (`fitting`), whose ψ are fitted otherwise.
+pub fn check_built(
+    k: &SimplicialSurface,
+    g: &SigmaV,
+    pps: &SigmaVPps,
+    o: &SvCheckOptions,
+) -> Vec<CheckResult> {
+    let mut out = Vec::new();
+    let cfg = SampleConfig {
+        seed: o.seed,
+        n: o.samples.max(1),
+    };
+    let faces = view_faces(k, o.max_views.max(1), o.seed);
     let mut merged: Vec<CheckResult> = Vec::new();
     for &f in &faces {
-        let view = SigmaVView::at_vertices(&g, &k.face(f), Version::Fixed);
+        let view = SigmaVView::at_vertices(g, &k.face(f), Version::Fixed);
         let mut rs: Vec<CheckResult> = check_all(&view, &cfg)
             .into_iter()
             .map(|r| renamed(r, "SV-"))
             .collect();
-        let th = theta_fn(&pps, &view);
+        let th = theta_fn(pps, &view);
         rs.push(renamed(
             crate::gluing::ppm::check_c(&view, &th, &cfg),
             "SV-",
@@ -579,7 +598,7 @@ pub fn run_sigma_v_checks(
                 "SV-",
             ));
         }
-        rs.push(check_smooth(&pps, &view, &cfg));
+        rs.push(check_smooth(pps, &view, &cfg));
         for r in rs {
             match merged.iter_mut().find(|m| m.id == r.id) {
                 Some(m) => merge(m, r),
@@ -588,6 +607,6 @@ pub fn run_sigma_v_checks(
         }
     }
     out.extend(merged);
-    out.push(check_eval(&pps, 2000, o.seed));
+    out.push(check_eval(pps, 2000, o.seed));
     out
 }

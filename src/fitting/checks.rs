@@ -1,0 +1,325 @@
+//! The checks of an adaptive fit, one per stage (SPEC rows `AF-…`). Each records through the
+//! harness: examined counts, NaN as an offence, nothing examined as skipped.
+
+use super::base::{BaseMesh, Param};
+use super::fitted::CornerFit;
+use super::Fit;
+use crate::construction::sigma_v::patch::num_control_points;
+use crate::construction::sigma_v::SigmaVPps;
+use crate::construction::{Mp, Scalar};
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::report::harness::dev_max;
+use crate::report::{CheckResult, Witness};
+use serde_json::json;
+
+/// Every base vertex is a vertex of S_T at the same position (Part II: "the vertices of S̃_T
+/// are vertices of S_T").
+pub fn check_base_vertices(
+    k: &SimplicialSurface,
+    base_k: &SimplicialSurface,
+    fine_of: &[u32],
+) -> CheckResult {
+    let mut r = CheckResult::new("AF-simplify-vertices", "base vertices are vertices of S_T");
+    for (i, &f) in fine_of.iter().enumerate() {
+        r.examined += 1;
+        let here = base_k.position(VertexId(i as u32));
+        let fine = (f as usize) < k.vertex_slots();
+        if !fine || k.position(VertexId(f)) != here {
+            r.offend(|| {
+                Witness::new(
+                    format!("base vertex {i} (fine id {f}) at {here:?} is not that vertex of S_T"),
+                    json!({"base_vertex": i, "fine": f}),
+                )
+            });
+        }
+    }
+    r
+}
+
+/// χ = V − E + F.
+pub fn euler(k: &SimplicialSurface) -> i64 {
+    k.num_vertices() as i64 - k.num_edges() as i64 + k.num_faces() as i64
+}
+
+/// S̃_T is a simplicial surface (it was validated to exist) of the same genus as S_T.
+pub fn check_genus(k: &SimplicialSurface, base_k: &SimplicialSurface) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-simplify-genus",
+        "the base mesh is a simplicial surface of the same genus",
+    );
+    r.examined = 1;
+    let (a, b) = (euler(k), euler(base_k));
+    if a != b {
+        r.offend(|| {
+            Witness::new(
+                format!("Euler characteristic {b} of the base mesh, {a} of S_T"),
+                json!({"base": b, "mesh": a}),
+            )
+        });
+    }
+    r
+}
+
+/// Layout of the closed star of base vertex v by the polar map (as the simplification's
+/// flattening): the plane point of a parameter in the star, or None outside it or when the
+/// star does not flatten to an embedded fan.
+struct StarLayout {
+    v: u32,
+    ring: Vec<u32>,
+    faces: Vec<u32>,
+    pts: Vec<[f64; 2]>,
+}
+
+impl StarLayout {
+    fn new(base: &BaseMesh, v: u32) -> Option<Self> {
+        let (ring, faces) = base.ring(v)?;
+        let pos = base.positions();
+        let pv = pos[v as usize];
+        let d: Vec<[f64; 3]> = ring
+            .iter()
+            .map(|&u| {
+                let p = pos[u as usize];
+                [p[0] - pv[0], p[1] - pv[1], p[2] - pv[2]]
+            })
+            .collect();
+        let m = ring.len();
+        let ang: Vec<f64> = (0..m)
+            .map(|i| {
+                let (a, b) = (d[i], d[(i + 1) % m]);
+                let c = [
+                    a[1] * b[2] - a[2] * b[1],
+                    a[2] * b[0] - a[0] * b[2],
+                    a[0] * b[1] - a[1] * b[0],
+                ];
+                let n = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+                n.atan2(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
+            })
+            .collect();
+        let total: f64 = ang.iter().sum();
+        let s = std::f64::consts::TAU / total;
+        if !(total > 0.0) || ang.iter().any(|a| !(a * s < std::f64::consts::PI)) {
+            return None;
+        }
+        let mut al = 0.0f64;
+        let pts = (0..m)
+            .map(|i| {
+                let r = (d[i][0] * d[i][0] + d[i][1] * d[i][1] + d[i][2] * d[i][2]).sqrt();
+                let p = [r * al.cos(), r * al.sin()];
+                al += ang[i] * s;
+                p
+            })
+            .collect();
+        Some(StarLayout {
+            v,
+            ring,
+            faces,
+            pts,
+        })
+    }
+
+    fn place(&self, base: &BaseMesh, x: u32) -> Option<[f64; 2]> {
+        if x == self.v {
+            return Some([0.0, 0.0]);
+        }
+        if let Some(i) = self.ring.iter().position(|&u| u == x) {
+            return Some(self.pts[i]);
+        }
+        let Param::Face { f, b } = base.params()[x as usize] else {
+            return None;
+        };
+        let i = self.faces.iter().position(|&g| g == f)?;
+        let c = base.face(f)?;
+        let m = self.ring.len();
+        let at = |u: u32| -> [f64; 2] {
+            if u == self.v {
+                [0.0, 0.0]
+            } else if u == self.ring[i] {
+                self.pts[i]
+            } else {
+                self.pts[(i + 1) % m]
+            }
+        };
+        let p = c.map(at);
+        Some([
+            b[0] * p[0][0] + b[1] * p[1][0] + b[2] * p[2][0],
+            b[0] * p[0][1] + b[1] * p[1][1] + b[2] * p[2][1],
+        ])
+    }
+}
+
+/// The parametrization is a bijection: every triangle of S_T, mapped to the base mesh by its
+/// vertices' parameters, is positively oriented in the polar layout of a base star containing
+/// its three parameters. Triangles whose parameters share no flattenable base star are not
+/// decided here (counted; the verdict is then restricted to the decided ones).
+pub fn check_param_orientation(k: &SimplicialSurface, base: &BaseMesh) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-param-bijective",
+        "every triangle of S_T maps to a positively oriented triangle of the base mesh",
+    );
+    let mut undecided = 0u64;
+    let mut cache: std::collections::HashMap<u32, Option<StarLayout>> = Default::default();
+    for f in k.faces() {
+        let c = k.face(f).map(|v| v.0);
+        // Candidate base vertices: each vertex itself if a base vertex, else its face's corners.
+        let mut cands: Vec<u32> = Vec::new();
+        for &x in &c {
+            match base.params()[x as usize] {
+                Param::Vertex => cands.push(x),
+                Param::Face { f, .. } => cands.extend(base.face(f).into_iter().flatten()),
+            }
+        }
+        cands.sort_unstable();
+        cands.dedup();
+        let mut decided = false;
+        for v in cands {
+            let lay = cache.entry(v).or_insert_with(|| StarLayout::new(base, v));
+            let Some(lay) = lay.as_ref() else { continue };
+            let p: Vec<[f64; 2]> = c.iter().filter_map(|&x| lay.place(base, x)).collect();
+            if p.len() < 3 {
+                continue;
+            }
+            decided = true;
+            r.examined += 1;
+            let o = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1])
+                - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+            if !(o > 0.0) {
+                r.offend(|| {
+                    Witness::new(
+                        format!("triangle {f:?} {c:?} maps to a triangle of signed area {o:.3e} in the star of base vertex {v}"),
+                        json!({"face": f.0, "area": o, "star": v}),
+                    )
+                });
+            }
+            break;
+        }
+        if !decided {
+            undecided += 1;
+        }
+    }
+    if undecided > 0 {
+        r.restrict(format!(
+            "{undecided} triangles of S_T whose parameters share no flattenable base star are not decided"
+        ));
+    }
+    r.note = format!("decided in polar layouts of base stars; {undecided} undecided");
+    r
+}
+
+/// Every corner's least-squares system has full rank; the worst condition number is
+/// reported (SPEC `AF-fit-rank`).
+pub fn check_fit_rank(corners: &[CornerFit], degree: usize) -> CheckResult {
+    let n = num_control_points(degree) as u32;
+    let mut r = CheckResult::new(
+        "AF-fit-rank",
+        "every least-squares system of the fit has full rank",
+    );
+    let mut worst = 0.0f64;
+    for (i, c) in corners.iter().enumerate() {
+        r.examined += 1;
+        worst = dev_max(worst, c.condition);
+        if c.rank != n || !c.condition.is_finite() {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "corner {i}: rank {} of {n} unknowns, condition {:.3e}",
+                        c.rank, c.condition
+                    ),
+                    json!({"corner": i, "rank": c.rank, "condition": c.condition}),
+                )
+            });
+        }
+    }
+    r.worst_deviation = Some(worst);
+    r.note = format!("largest condition number {worst:.3e}");
+    r
+}
+
+/// Seeded sample size of the 256-bit cross-check of the rounding bound.
+pub const MP_SAMPLES: usize = 32;
+
+/// ‖S(p_v) − v‖ + (rounding bound) ≤ ε at every vertex v of S_T (the fitting problem's
+/// statement, Part II), and the rounding bound itself checked against 256-bit evaluations at
+/// a seeded sample of vertices.
+pub fn check_epsilon(
+    pps: &SigmaVPps,
+    pos: &[[f64; 3]],
+    params: &[(FaceId, [f64; 3])],
+    epsilon: f64,
+    seed: u64,
+) -> CheckResult {
+    let errors = super::vertex_errors(pps, pos, params);
+    let bound = super::rounding_bound(pps);
+    let mut r = CheckResult::new(
+        "AF-epsilon",
+        "every vertex of S_T is within epsilon of the fitted surface at its parameter",
+    );
+    r.tolerance = Some(epsilon);
+    let mut worst = 0.0f64;
+    for (i, &e) in errors.iter().enumerate() {
+        r.examined += 1;
+        worst = dev_max(worst, e);
+        if !(e + bound <= epsilon) {
+            r.offend(|| {
+                Witness::new(
+                    format!("vertex {i}: error {e:.3e} + rounding bound {bound:.1e} > epsilon {epsilon:.3e}"),
+                    json!({"vertex": i, "error": e, "bound": bound}),
+                )
+            });
+        }
+    }
+    r.worst_deviation = Some(worst);
+    // The bound against 256 bits.
+    let n = params.len();
+    let mut broken = 0;
+    let consts = pps.consts::<Mp>(256);
+    let mut state = seed | 1;
+    for _ in 0..MP_SAMPLES.min(n) {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        let x = (state % n as u64) as usize;
+        let (f, b) = params[x];
+        let bm = b.map(|t| Mp::from_f64(t, 256));
+        let (Ok(lo), Ok(hi)) = (pps.eval_f64(f, b), pps.eval(f, &bm, &consts)) else {
+            broken += 1;
+            continue;
+        };
+        let d = crate::numeric::robust_norm(&[
+            lo[0] - hi.2[0].to_f64(),
+            lo[1] - hi.2[1].to_f64(),
+            lo[2] - hi.2[2].to_f64(),
+        ]);
+        if !(d <= bound) {
+            broken += 1;
+            r.offend(|| {
+                Witness::new(
+                    format!("vertex {x}: f64 and 256-bit eval differ by {d:.3e} > rounding bound {bound:.3e}"),
+                    json!({"vertex": x, "difference": d, "bound": bound}),
+                )
+            });
+        }
+    }
+    r.seed = Some(seed);
+    r.note = format!(
+        "max error {worst:.3e}; rounding bound {bound:.1e} (operation count), checked at 256 bits on {} seeded vertices, {broken} broken",
+        MP_SAMPLES.min(n)
+    );
+    r
+}
+
+/// Every check of a fit on S_T = `k`.
+pub fn run_fit_checks(k: &SimplicialSurface, fit: &Fit, seed: u64) -> Vec<CheckResult> {
+    vec![
+        check_base_vertices(k, &fit.surface.k, &fit.surface.fine_of),
+        check_genus(k, &fit.surface.k),
+        check_param_orientation(k, &fit.base),
+        check_fit_rank(&fit.fitted.corners, fit.fitted.pps.degree),
+        check_epsilon(
+            &fit.fitted.pps,
+            fit.base.positions(),
+            &fit.params,
+            fit.epsilon,
+            seed,
+        ),
+    ]
+}
