@@ -297,6 +297,18 @@ impl BaseMesh {
         self.param[x as usize] = p;
     }
 
+    /// Overwrite the parameter of vertex x of S_T, keeping the face membership consistent:
+    /// for planted-fault tests of the checks (a folded parametrization), never used by the
+    /// pipeline.
+    pub fn plant_param(&mut self, x: u32, p: Param) {
+        if let Param::Face { f, .. } = self.param[x as usize] {
+            if let Some(m) = self.members.get_mut(f as usize) {
+                m.retain(|&y| y != x);
+            }
+        }
+        self.set_param(x, p);
+    }
+
     /// The 1-ring of base vertex v: neighbours u_0..u_{m−1} in the faces' order and the faces
     /// (v, u_i, u_{i+1}).
     pub fn ring(&self, v: u32) -> Option<(Vec<u32>, Vec<u32>)> {
@@ -507,41 +519,83 @@ impl BaseMesh {
         (c >= lim.min_normal_cos && q >= lim.min_quality).then_some(q)
     }
 
-    /// Split base face `f` at the vertex x of S_T parametrized in it (a stellar face split);
-    /// x becomes a base vertex. Returns the three new face slots.
-    pub fn split_face(&mut self, x: u32) -> Result<[u32; 3], Refusal> {
+    /// Split at the vertex x of S_T (a stellar split; x becomes a base vertex): the face of its
+    /// parameter 1→3, or, when x lies on a base edge (one barycentric coordinate 0), the two
+    /// faces of that edge 2→4. Returns the new face slots.
+    pub fn split_face(&mut self, x: u32) -> Result<Vec<u32>, Refusal> {
         let Param::Face { f, b: bx } = self.param[x as usize] else {
             return Err(Refusal::Missing);
         };
         let c = self.face(f).ok_or(Refusal::Missing)?;
-        if bx.iter().any(|&l| !(l > 0.0)) {
-            return Err(Refusal::Locate);
+        let zeros: Vec<usize> = (0..3).filter(|&t| !(bx[t] > 0.0)).collect();
+        let mut parts = vec![(f, c, bx)];
+        match zeros.as_slice() {
+            [] => {}
+            [t] => {
+                let (e0, e1) = (c[(t + 1) % 3], c[(t + 2) % 3]);
+                let g = self.face_of_edge(e1, e0).ok_or(Refusal::Missing)?;
+                let cg = self.face(g).ok_or(Refusal::Missing)?;
+                parts.push((g, cg, permute(c, bx, cg)));
+            }
+            _ => return Err(Refusal::Locate),
         }
-        // Sub-triangle t replaces corner t of f by x: (x, c1, c2), (c0, x, c2), (c0, c1, x).
-        // A point β lies in sub-triangle t with coordinates λ_t = β_t/bx_t at x and
-        // β_s − λ_t·bx_s at the two kept corners s.
-        let pts = self.points_in(f, c);
         let mut snaps = self.snaps;
-        let mut moved = Vec::with_capacity(pts.len());
-        for (y, beta) in pts {
+        let mut plan = Vec::new();
+        for &(face, corners, xb) in &parts {
+            let moved = self.split_points(face, corners, xb, x, &mut snaps)?;
+            plan.push((face, corners, xb, moved));
+        }
+        self.snaps = snaps;
+        let mut out = Vec::new();
+        for (face, corners, xb, moved) in plan {
+            self.remove_face(face);
+            let mut slot_of = [u32::MAX; 3];
+            for t in (0..3).filter(|&t| xb[t] > 0.0) {
+                let mut sub = corners;
+                sub[t] = x;
+                slot_of[t] = self.add_face(sub);
+                out.push(slot_of[t]);
+            }
+            for (y, t, l) in moved {
+                self.set_param(
+                    y,
+                    Param::Face {
+                        f: slot_of[t],
+                        b: l,
+                    },
+                );
+            }
+        }
+        self.param[x as usize] = Param::Vertex;
+        Ok(out)
+    }
+
+    /// The points of `face` re-expressed in the sub-triangles that replace one corner t (with
+    /// xb[t] > 0) by x: λ_t = β_t/xb_t at x and β_s − λ_t·xb_s at the kept corners s.
+    fn split_points(
+        &self,
+        face: u32,
+        corners: [u32; 3],
+        xb: [f64; 3],
+        x: u32,
+        snaps: &mut SnapStats,
+    ) -> Result<Vec<(u32, usize, [f64; 3])>, Refusal> {
+        let mut moved = Vec::new();
+        for (y, beta) in self.points_in(face, corners) {
             if y == x {
                 continue;
             }
             let mut best: Option<(usize, [f64; 3], f64)> = None;
-            for t in 0..3 {
-                let lt = beta[t] / bx[t];
-                let mut l = [0.0; 3];
-                for s in 0..3 {
-                    l[s] = if s == t { lt } else { beta[s] - lt * bx[s] };
-                }
+            for t in (0..3).filter(|&t| xb[t] > 0.0) {
+                let lt = beta[t] / xb[t];
+                let l: [f64; 3] =
+                    std::array::from_fn(|s| if s == t { lt } else { beta[s] - lt * xb[s] });
                 let mn = l[0].min(l[1]).min(l[2]);
                 if best.as_ref().map_or(true, |(_, _, m)| mn > *m) {
                     best = Some((t, l, mn));
                 }
             }
-            let Some((t, mut l, mn)) = best else {
-                return Err(Refusal::Locate);
-            };
+            let (t, mut l, mn) = best.ok_or(Refusal::Locate)?;
             if mn < 0.0 {
                 if mn < -SNAP_LIMIT {
                     return Err(Refusal::Locate);
@@ -554,19 +608,7 @@ impl BaseMesh {
             }
             moved.push((y, t, l));
         }
-        self.snaps = snaps;
-        self.remove_face(f);
-        let subs: [[u32; 3]; 3] = std::array::from_fn(|t| {
-            let mut s = c;
-            s[t] = x;
-            s
-        });
-        let slots = subs.map(|s| self.add_face(s));
-        self.param[x as usize] = Param::Vertex;
-        for (y, t, l) in moved {
-            self.set_param(y, Param::Face { f: slots[t], b: l });
-        }
-        Ok(slots)
+        Ok(moved)
     }
 
     /// Flip the edge a–b of the faces (a, b, c) and (b, a, d) to c–d (see the module doc).

@@ -1,9 +1,11 @@
 //! Integration tests, one binary per theme (each test binary links the whole crate, so
-//! fewer binaries build faster): Seeds 003 (manifold splines) and 004 (simplicial diffeomorphisms).
+//! fewer binaries build faster): seed 002 adaptive fitting, seeds 003 (manifold splines) and
+//! 004 (simplicial diffeomorphisms).
 
 #[path = "../common/mod.rs"]
 mod common;
 
+mod fitting;
 mod msplines;
 mod sdiff_3d;
 mod sdiff_sec6;

@@ -1,0 +1,238 @@
+//! Adaptive manifold fitting (seed 002, "Adaptive Manifold Fitting", Parts I–II): SPEC rows
+//! `AF-…`. Each stage's check holds on real fits and catches its planted fault.
+
+use crate::common::verdicts::{assert_caught, assert_holds_for, record, Seen};
+use pseudomanifold::fitting::base::Param;
+use pseudomanifold::fitting::checks::{
+    check_epsilon, check_fit_rank, check_param_orientation, run_fit_checks,
+};
+use pseudomanifold::fitting::fitted::CornerFit;
+use pseudomanifold::fitting::format::{read_fit, write_fit, FitFormatError};
+use pseudomanifold::fitting::{fit_surface, Fit, FitOptions};
+use pseudomanifold::mesh::validate::validate;
+use pseudomanifold::mesh::{generate, SimplicialSurface};
+use pseudomanifold::report::Verdict;
+
+fn torus() -> SimplicialSurface {
+    validate(&generate::torus(24, 12))
+        .surface
+        .expect("the generated torus is a simplicial surface")
+}
+
+fn diagonal(k: &SimplicialSurface) -> f64 {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for v in k.vertices() {
+        let p = k.position(v);
+        for i in 0..3 {
+            lo[i] = lo[i].min(p[i]);
+            hi[i] = hi[i].max(p[i]);
+        }
+    }
+    (0..3).map(|i| (hi[i] - lo[i]).powi(2)).sum::<f64>().sqrt()
+}
+
+fn fit(k: &SimplicialSurface, rel: f64) -> Fit {
+    fit_surface(k, &FitOptions::new(rel * diagonal(k)), |_| {}).expect("the fit succeeds")
+}
+
+/// Every stage's check holds on a fit of the generated torus at three ε (the corpus meshes
+/// are covered by `af_corpus_fits`).
+#[test]
+fn af_epsilon_af_stages_hold_on_the_generated_torus() {
+    let k = torus();
+    for rel in [1e-2, 3e-3, 1e-3] {
+        let f = fit(&k, rel);
+        // A coarse torus at a fine ε may need every vertex as a chart; at 10⁻² it needs few.
+        if rel == 1e-2 {
+            assert!(
+                f.surface.fine_of.len() < k.num_vertices() / 2,
+                "the fit simplified: {} charts of {} vertices",
+                f.surface.fine_of.len(),
+                k.num_vertices()
+            );
+        }
+        for r in run_fit_checks(&k, &f, 1) {
+            assert_holds_for(&format!("torus at {rel}"), &r);
+        }
+        record("AF-fit", Seen::Holds, k.num_vertices() as u64);
+    }
+}
+
+/// The corpus: every good mesh small enough for the suite, at ε = 10⁻² of the diagonal.
+#[test]
+fn af_corpus_fits() {
+    let Some(dir) = crate::common::shared_path("af_corpus_fits", "meshes/good") else {
+        return;
+    };
+    for name in ["bob_small.ply", "eight.off", "anchor.off"] {
+        let k = pseudomanifold::mesh::load_surface(&dir.join(name)).expect("corpus mesh loads");
+        let f = fit(&k, 1e-2);
+        for r in run_fit_checks(&k, &f, 1) {
+            assert_holds_for(name, &r);
+        }
+    }
+}
+
+/// A shape function moved by 2ε (every ψ of one base vertex's corners) is caught by
+/// `AF-epsilon` at that vertex.
+#[test]
+fn af_planted_shape_function_moved_by_2eps_is_caught() {
+    let k = torus();
+    let mut f = fit(&k, 1e-2);
+    let eps = f.epsilon;
+    let v = pseudomanifold::mesh::VertexId(0);
+    let pps = &mut f.fitted.pps;
+    let ids: Vec<_> = pps.gluing.corners_at(v).map(|c| pps.gluing.id(c)).collect();
+    for id in ids {
+        for p in pps.patch_mut(id) {
+            p[2] += 2.0 * eps;
+        }
+    }
+    let r = check_epsilon(&f.fitted.pps, f.base.positions(), &f.params, eps, 1);
+    assert_caught(&r);
+    record("AF-planted", Seen::Caught, r.examined);
+}
+
+/// A NaN control point is an offence, never a pass.
+#[test]
+fn af_planted_nan_control_point_is_caught() {
+    let k = torus();
+    let mut f = fit(&k, 1e-2);
+    let id = f.fitted.pps.gluing.ids().next().expect("a corner");
+    f.fitted.pps.patch_mut(id)[0] = [f64::NAN; 3];
+    let r = check_epsilon(&f.fitted.pps, f.base.positions(), &f.params, f.epsilon, 1);
+    assert_caught(&r);
+    record("AF-planted", Seen::Caught, r.examined);
+}
+
+/// A folded parametrization (one vertex's parameter reflected across its neighbour's) is
+/// caught by `AF-param-bijective`.
+#[test]
+fn af_planted_folded_parametrization_is_caught() {
+    let k = torus();
+    let mut f = fit(&k, 1e-2);
+    let (x, slot, b) = f
+        .base
+        .params()
+        .iter()
+        .enumerate()
+        .find_map(|(x, p)| match *p {
+            Param::Face { f, b } if b.iter().all(|&t| t > 0.05) => Some((x as u32, f, b)),
+            _ => None,
+        })
+        .expect("an inner vertex of S_T");
+    // Reflect x through the face's first corner: far outside its star, so the triangles of
+    // S_T at x fold.
+    let c = f.base.face(slot).expect("live face");
+    let nb = f.base.faces_around(c[0]).to_vec();
+    let other = nb
+        .into_iter()
+        .find(|&g| g != slot)
+        .expect("another face at the corner");
+    f.base.plant_param(
+        x,
+        Param::Face {
+            f: other,
+            b: [b[1], b[0], b[2]],
+        },
+    );
+    let r = check_param_orientation(&k, &f.base);
+    assert_caught(&r);
+    record("AF-planted", Seen::Caught, r.examined);
+}
+
+/// A rank-deficient corner is caught; no corners is skipped, not a pass.
+#[test]
+fn af_planted_rank_deficient_corner_and_empty_fit() {
+    let good = CornerFit {
+        data_rows: 10,
+        rank: 36,
+        condition: 10.0,
+    };
+    let bad = CornerFit {
+        data_rows: 0,
+        rank: 35,
+        condition: f64::INFINITY,
+    };
+    let r = check_fit_rank(&[good, bad], 7);
+    assert_caught(&r);
+    let r = check_fit_rank(
+        &[
+            good,
+            CornerFit {
+                condition: f64::NAN,
+                ..good
+            },
+        ],
+        7,
+    );
+    assert_caught(&r);
+    let r = check_fit_rank(&[], 7);
+    assert!(
+        matches!(r.verdict(), Verdict::Skipped { .. }),
+        "{:?}",
+        r.verdict()
+    );
+    record("AF-planted", Seen::Caught, 3);
+}
+
+/// No vertex of S_T: AF-epsilon examined nothing and is skipped.
+#[test]
+fn af_epsilon_with_no_vertex_is_skipped() {
+    let k = torus();
+    let f = fit(&k, 1e-2);
+    let r = check_epsilon(&f.fitted.pps, &[], &[], f.epsilon, 1);
+    assert_eq!(r.examined, 0);
+    assert!(
+        matches!(r.verdict(), Verdict::Skipped { .. }),
+        "{:?}",
+        r.verdict()
+    );
+}
+
+/// The file reads back bit-exactly; truncated, foreign and future files are typed errors that
+/// name the line.
+#[test]
+fn af_format_roundtrip_and_bad_files() {
+    let k = torus();
+    let f = fit(&k, 3e-3);
+    let dir = std::env::temp_dir().join(format!("ppm-af-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("torus.fit");
+    write_fit(&path, &f).expect("write");
+    let back = read_fit(&path).expect("read back");
+    let pps = &f.fitted.pps;
+    let mut n = 0u64;
+    for id in pps.gluing.ids() {
+        for (a, b) in pps.patch(id).iter().zip(back.pps.patch(id)) {
+            assert_eq!(a.map(f64::to_bits), b.map(f64::to_bits));
+            n += 1;
+        }
+    }
+    for (a, b) in f.params.iter().zip(&back.params) {
+        assert_eq!(a.0, b.0);
+        assert_eq!(a.1.map(f64::to_bits), b.1.map(f64::to_bits));
+    }
+    assert_eq!(back.epsilon.to_bits(), f.epsilon.to_bits());
+    for (fc, b) in f.params.iter().take(50) {
+        let x = pps.eval_f64(*fc, *b).expect("eval");
+        let y = back.pps.eval_f64(*fc, *b).expect("eval");
+        assert_eq!(x.map(f64::to_bits), y.map(f64::to_bits));
+    }
+    record("AF-format-roundtrip", Seen::Holds, n);
+    let text = std::fs::read_to_string(&path).expect("read");
+    let lines: Vec<&str> = text.lines().collect();
+    let cut = dir.join("cut.fit");
+    std::fs::write(&cut, lines[..lines.len() / 2].join("\n")).expect("write");
+    assert!(matches!(read_fit(&cut), Err(FitFormatError::Parse { .. })));
+    let v2 = dir.join("v2.fit");
+    std::fs::write(&v2, text.replacen("ppm-fit 1", "ppm-fit 2", 1)).expect("write");
+    match read_fit(&v2) {
+        Err(FitFormatError::Parse { line, .. }) => assert_eq!(line, 1),
+        other => panic!("version 2 accepted: {:?}", other.err()),
+    }
+    let bad = dir.join("bad.fit");
+    std::fs::write(&bad, text.replacen("\np ", "\np x", 1)).expect("write");
+    assert!(matches!(read_fit(&bad), Err(FitFormatError::Parse { .. })));
+    let _ = std::fs::remove_dir_all(&dir);
+}
