@@ -236,3 +236,20 @@ fn af_format_roundtrip_and_bad_files() {
     assert!(matches!(read_fit(&bad), Err(FitFormatError::Parse { .. })));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The parametrization carried by the simplification folds triangles of S_T on some corpus
+/// meshes (spot at ε = 10⁻² of the diagonal): `AF-param-bijective` fails with a witness. The
+/// removals check the points they move, not the triangles of S_T that straddle the new base
+/// edges; SPEC `AF-param-bijective` states it.
+#[test]
+fn af_param_bijective_fails_on_spot() {
+    let Some(dir) = crate::common::shared_path("af_param_bijective_fails_on_spot", "meshes/good")
+    else {
+        return;
+    };
+    let k = pseudomanifold::mesh::load_surface(&dir.join("spot_low_resolution.obj"))
+        .expect("corpus mesh loads");
+    let f = fit(&k, 1e-2);
+    let r = check_param_orientation(&k, &f.base);
+    crate::common::verdicts::assert_fails_as_written(&r);
+}
