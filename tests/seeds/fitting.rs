@@ -38,7 +38,8 @@ fn fit(k: &SimplicialSurface, rel: f64) -> Fit {
 /// Every stage's check holds on a fit of the generated torus at three ε (the corpus meshes
 /// are covered by `af_corpus_fits`).
 #[test]
-fn af_epsilon_af_stages_hold_on_the_generated_torus() {
+fn af_fit_af_simplify_vertices_af_simplify_genus_af_fit_rows_af_fit_rank_af_refine_rule_af_epsilon_hold_on_the_generated_torus(
+) {
     let k = torus();
     for rel in [1e-2, 3e-3, 1e-3] {
         let f = fit(&k, rel);
@@ -252,4 +253,22 @@ fn af_param_bijective_fails_on_spot() {
     let f = fit(&k, 1e-2);
     let r = check_param_orientation(&k, &f.base);
     crate::common::verdicts::assert_fails_as_written(&r);
+}
+
+/// The hierarchy's height and triangle qualities are reported (Part I's "logarithmic height,
+/// good aspect ratios" gives no constant to check): each level removed vertices, the counts
+/// fall, the qualities are in (0, 1].
+#[test]
+fn af_simplify_height_is_reported() {
+    let k = torus();
+    let f = fit(&k, 1e-2);
+    let h = &f.hierarchy;
+    assert!(!h.levels.is_empty());
+    let mut prev = k.num_vertices();
+    for l in &h.levels {
+        assert!(l.vertices_after <= prev);
+        prev = l.vertices_after;
+    }
+    assert!(h.levels[0].removed > 0);
+    assert!(h.min_quality > 0.0 && h.min_quality <= h.median_quality && h.median_quality <= 1.0);
 }

@@ -20,6 +20,7 @@ const FLOORS: &[(&str, u32)] = &[
     ("surface", 4),
     ("msplines", 4),
     ("sdiff", 4),
+    ("fitting", 4),
     ("conditions", 5),
     ("certify", 5),
     ("render", 5),
