@@ -14,9 +14,13 @@
 //! * sin, cos, atan2, acos at an endpoint are evaluated by astro-float at [`ENDPOINT_BITS`] bits
 //!   (correctly rounded), rounded to the nearest `f64` and widened by one ulp each way: the two
 //!   roundings together are less than one ulp, so the widened pair encloses the true value.
+//!   sin, cos and atan2 first try a double-word evaluation (`super::dd`) that answers only
+//!   when it proves the same rounded `f64`: identical endpoints, ~50× less time (the certified
+//!   provers are dominated by these endpoints).
 //! * sin and cos are monotone between consecutive multiples of π/2; the extrema ±1 are added
 //!   when the interval may contain a point π/2 + kπ (resp. kπ), decided on the exact endpoints
-//!   in 256-bit arithmetic with a margin that only ever adds an extremum.
+//!   in 256-bit arithmetic with a margin that only ever adds an extremum (after an `f64`
+//!   pre-test that answers, with the same answer, whenever no such point is near an end).
 //! * atan2 over a box that misses the origin and does not cross the cut of the principal
 //!   argument (−π, π] takes its extrema at the corners.
 
@@ -155,6 +159,13 @@ const RM: RoundingMode = RoundingMode::ToEven;
 /// at 256 bits (for |a|, |b| ≤ 2^60 the error is far below the 2^-60 margin, which only ever
 /// answers "yes" more often); larger endpoints answer "yes".
 fn may_contain_phase(a: f64, b: f64, k: i64) -> bool {
+    // The f64 test decides all but the endpoints within 2⁻²⁰ periods of a phase point, with
+    // the same answer (construction::dd); ~100× cheaper than 256-bit arithmetic.
+    super::dd::may_contain_phase(a, b, k).unwrap_or_else(|| may_contain_phase_exact(a, b, k))
+}
+
+/// [`may_contain_phase`] in 256-bit arithmetic.
+pub(super) fn may_contain_phase_exact(a: f64, b: f64, k: i64) -> bool {
     const LIM: f64 = 1.152_921_504_606_847e18; // 2^60
     if !(a.abs() <= LIM && b.abs() <= LIM) {
         return true;
@@ -312,15 +323,30 @@ impl Interval {
     }
     /// {sin x}.
     pub fn sin(self) -> Interval {
-        self.periodic(1, |x, cc| x.sin(ENDPOINT_BITS, RM, cc))
+        self.periodic(
+            1,
+            |x| super::dd::sin_cos(x, false),
+            |x, cc| x.sin(ENDPOINT_BITS, RM, cc),
+        )
     }
     /// {cos x}.
     pub fn cos(self) -> Interval {
-        self.periodic(0, |x, cc| x.cos(ENDPOINT_BITS, RM, cc))
+        self.periodic(
+            0,
+            |x| super::dd::sin_cos(x, true),
+            |x, cc| x.cos(ENDPOINT_BITS, RM, cc),
+        )
     }
     /// sin (`max_phase` = 1: maxima at π/2 + 2πn) or cos (`max_phase` = 0: maxima at 2πn), in
     /// quarter periods; the minima are half a period further.
-    fn periodic(self, max_phase: i64, f: impl Fn(&BigFloat, &mut Consts) -> BigFloat) -> Interval {
+    /// `fast` is the double-word evaluation (construction::dd): the same `f64` as `f` when it
+    /// answers, at a small fraction of the cost; `f` is the fallback.
+    fn periodic(
+        self,
+        max_phase: i64,
+        fast: impl Fn(f64) -> Option<f64>,
+        f: impl Fn(&BigFloat, &mut Consts) -> BigFloat,
+    ) -> Interval {
         if self.is_empty() {
             return self;
         }
@@ -328,8 +354,12 @@ impl Interval {
         if !(self.lo.is_finite() && self.hi.is_finite()) || add_dir(self.hi, -self.lo).0 >= 6.3 {
             return full;
         }
-        let (a1, a2) = point_enclosure(self.lo, &f);
-        let (b1, b2) = point_enclosure(self.hi, &f);
+        let end = |x: f64| match fast(x) {
+            Some(r) => (down(r), up(r)),
+            None => point_enclosure(x, &f),
+        };
+        let (a1, a2) = end(self.lo);
+        let (b1, b2) = end(self.hi);
         let (mut lo, mut hi) = (a1.min(b1), a2.max(b2));
         if may_contain_phase(self.lo, self.hi, max_phase) {
             hi = 1.0;
@@ -374,8 +404,14 @@ impl Interval {
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
         for yy in [fix(y.lo), fix(y.hi)] {
             for xx in [x.lo, x.hi] {
-                let xb = BigFloat::from_f64(xx, ENDPOINT_BITS);
-                let (l, h) = point_enclosure(yy, |yb, cc| atan2_point(yb, &xb, cc));
+                // Double-word fast path (construction::dd): the same f64 when it answers.
+                let (l, h) = match super::dd::atan2(yy, xx) {
+                    Some(r) => (down(r), up(r)),
+                    None => {
+                        let xb = BigFloat::from_f64(xx, ENDPOINT_BITS);
+                        point_enclosure(yy, |yb, cc| atan2_point(yb, &xb, cc))
+                    }
+                };
                 lo = lo.min(l);
                 hi = hi.max(h);
             }
@@ -385,7 +421,7 @@ impl Interval {
 }
 
 /// atan2 of two finite points, not both zero, at [`ENDPOINT_BITS`] (+ guard) bits.
-fn atan2_point(y: &BigFloat, x: &BigFloat, cc: &mut Consts) -> BigFloat {
+pub(super) fn atan2_point(y: &BigFloat, x: &BigFloat, cc: &mut Consts) -> BigFloat {
     let p = ENDPOINT_BITS + 64;
     let pi = cc.pi(p, RM);
     if x.is_zero() {

@@ -8,6 +8,7 @@
 pub mod abstract_view;
 pub mod checks;
 pub mod config;
+mod dd;
 pub mod figure;
 pub mod interval;
 pub mod maps;
