@@ -236,15 +236,16 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
                 "p = ({:.9}, {:.9}) in u's chart, triangle {t:?}: {txt}",
                 p[0], p[1]
             ),
-            f64_confirms: cocycle_gap(model, &uw, &ux, &xw, &P2::<f64>::new(p[0], p[1]))
-                > s.fail_tol,
-            mp_confirms: cocycle_gap(
+            // `!(gap <= tol)`: a NaN gap confirms the refutation too.
+            f64_confirms: !(cocycle_gap(model, &uw, &ux, &xw, &P2::<f64>::new(p[0], p[1]))
+                <= s.fail_tol),
+            mp_confirms: !(cocycle_gap(
                 model,
                 &uw,
                 &ux,
                 &xw,
                 &P2::<Mp>::from_f64(p[0], p[1], MP_PREC),
-            ) > s.fail_tol,
+            ) <= s.fail_tol),
         }
     });
     let ms = t0.elapsed().as_millis() as u64;
