@@ -24,6 +24,24 @@ where
     Ok(back.sub(p).norm2().sqrt())
 }
 
+/// Rule 1 for enclosures: the image of a point interval is enclosed by finite bounds (an
+/// unbounded one is how a NaN or an overflow shows in interval arithmetic: `Iv::point(NaN)`
+/// is the entire line).
+pub(super) fn finite_p2(q: &P2<Iv>) -> bool {
+    [q.x.inf(), q.x.sup(), q.y.inf(), q.y.sup()]
+        .iter()
+        .all(|v| v.is_finite())
+}
+
+/// "≥ lo" for a refuting enclosure, or "not finite" when it is unbounded (NaN).
+pub(super) fn at_least(lo: f64) -> String {
+    if lo.is_finite() {
+        format!("≥ {lo:.3e}")
+    } else {
+        "not finite (a NaN or an overflow)".into()
+    }
+}
+
 /// L4.2.1 violated at p (u's chart): p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw, but p ∉ Ω_uw. One generic
 /// evaluation, used to confirm a witness in f64 and in MPFR.
 pub(super) fn inclusion_violated<S: Scalar>(
@@ -137,9 +155,16 @@ pub fn prove_inverse(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Propert
         let (tm, rm) = b.mid();
         let mut cb = None;
         if member_any(&du, c(tm), c(rm), Domain::Literal).is_true() {
-            match roundtrip_dev(model, &e, &iv_point(b.centre_xy())) {
+            let p = iv_point(b.centre_xy());
+            // φ_wu(p) unbounded: the round trip would only see an undecidable point.
+            if let Ok(q) = model.g_uw_formula(&e, &p) {
+                if !finite_p2(&q) {
+                    return Leaf::Refuted("φ_wu(p) is not finite (a NaN or an overflow)".into());
+                }
+            }
+            match roundtrip_dev(model, &e, &p) {
                 Ok(dv) if enclosure_exceeds(dv.inf(), dv.sup(), s.fail_tol) => {
-                    return Leaf::Refuted(format!("|φ_uw(φ_wu(p)) − p| ≥ {:.3e}", dv.inf()))
+                    return Leaf::Refuted(format!("|φ_uw(φ_wu(p)) − p| {}", at_least(dv.inf())))
                 }
                 Ok(dv) => cb = Some(dv.sup()),
                 // A decision the point interval could not make: a smaller box may.

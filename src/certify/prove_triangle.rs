@@ -65,6 +65,10 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
     let cocycle = |p: &P2<Iv>| -> Option<Iv> {
         let lhs = model.g_uw_formula(&uw, p).ok()?;
         let mid = model.g_uw_formula(&ux, p).ok()?;
+        if !finite_p2(&lhs) || !finite_p2(&mid) {
+            // Rule 1: an unbounded image of a point (a NaN) refutes, never "undecided".
+            return Some(Iv::point(f64::NAN));
+        }
         let rhs = model.g_uw_formula(&xw, &mid).ok()?;
         Some(lhs.sub(&rhs).norm2().sqrt())
     };
@@ -189,8 +193,10 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
                     if enclosure_exceeds(dv.inf(), dv.sup(), s.fail_tol)
                         && cocycle_refuted.is_none() =>
                 {
-                    cocycle_refuted =
-                        Some((*b, format!("|φ_wu(p) − φ_wx(φ_xu(p))| ≥ {:.3e}", dv.inf())));
+                    cocycle_refuted = Some((
+                        *b,
+                        format!("|φ_wu(p) − φ_wx(φ_xu(p))| {}", at_least(dv.inf())),
+                    ));
                 }
                 Some(dv) if enclosure_exceeds(dv.inf(), dv.sup(), s.fail_tol) => {}
                 Some(dv) => cb = omax(cb, Some(dv.sup())),
