@@ -110,9 +110,9 @@ pub(super) fn bnb(
     let mut st = Stats::default();
     let mut stack = vec![(root, 0u32)];
     while let Some((b, d)) = stack.pop() {
-        st.boxes += 1;
-        st.max_depth = st.max_depth.max(d);
-        if st.boxes > budget {
+        // `boxes` counts the boxes evaluated (the certificate's `examined`): with budget 0
+        // nothing is examined and the result is inconclusive, never certified.
+        if st.boxes >= budget {
             st.budget_hit = true;
             st.unresolved += 1 + stack.len() as u64;
             st.delta = st.delta.max(b.diam());
@@ -121,6 +121,8 @@ pub(super) fn bnb(
             }
             break;
         }
+        st.boxes += 1;
+        st.max_depth = st.max_depth.max(d);
         match f(&b) {
             Leaf::Proven(bd, cb) => {
                 st.bound = omax(st.bound, bd);

@@ -13,6 +13,20 @@ pub struct Model {
     pub lens_radius_offset: f64,
     /// Added to the label in R_(u,w)⁻¹ (a wrong rotation label in g_(u,w), Def. 4.1.8).
     pub label_shift: i64,
+    /// A planted evaluation fault of g_v⁻¹ (Def. 4.1.6), hence of every transition map the
+    /// provers evaluate at box centres (SPEC `X-planted-certify`); `None` in the paper's model.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fault: Option<EvalFault>,
+}
+
+/// A planted evaluation fault of the model's g_v⁻¹.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EvalFault {
+    /// g_v⁻¹ returns NaN coordinates (with a point interval: the empty/NaN enclosure).
+    Nan,
+    /// g_v⁻¹ returns an error (`MapError::NotInDomain`) everywhere.
+    Error,
 }
 
 impl Model {
@@ -21,6 +35,7 @@ impl Model {
         Model {
             lens_radius_offset: 0.0,
             label_shift: 0,
+            fault: None,
         }
     }
     /// True when no fault is planted.
@@ -32,8 +47,12 @@ impl Model {
         if self.is_paper() {
             "paper".into()
         } else {
+            let fault = match self.fault {
+                None => String::new(),
+                Some(f) => format!(", fault={f:?}"),
+            };
             format!(
-                "planted(lens_radius_offset={}, label_shift={})",
+                "planted(lens_radius_offset={}, label_shift={}{fault})",
                 self.lens_radius_offset, self.label_shift
             )
         }
@@ -63,6 +82,13 @@ impl<S: Scalar> Ppm<S> for Model {
             .and(d.norm2().lt(&rr))
             .and(is_nonzero(q))
             .and(is_nonzero(&d))
+    }
+    fn g_v_inv(&self, m: u32, q: &P2<S>) -> Result<P2<S>, maps::MapError> {
+        match self.fault {
+            None => maps::g_v_inv(m, q),
+            Some(EvalFault::Nan) => Ok(P2::new(q.x.like_f64(f64::NAN), q.y.like_f64(f64::NAN))),
+            Some(EvalFault::Error) => Err(maps::MapError::NotInDomain("planted: g_v⁻¹ fails")),
+        }
     }
     fn r_uw_inv(&self, e: &EdgeConfig, p: &P2<S>) -> P2<S> {
         maps::rotate_frac(p, e.i as i64 + self.label_shift, e.m_u as i64)

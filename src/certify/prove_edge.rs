@@ -11,13 +11,35 @@ pub(super) fn iv_point(p: [f64; 2]) -> P2<Iv> {
 }
 
 /// Enclosure (sup) of |g_(w,u)(g_(u,w)(p)) − p| by the generic maps on point intervals.
-pub(super) fn roundtrip_dev<S: Scalar>(model: &Model, e: &EdgeConfig, p: &P2<S>) -> Option<S>
+pub(super) fn roundtrip_dev<S: Scalar>(
+    model: &Model,
+    e: &EdgeConfig,
+    p: &P2<S>,
+) -> Result<S, maps::MapError>
 where
     Model: Ppm<S>,
 {
-    let q = model.g_uw_formula(e, p).ok()?;
-    let back = model.g_uw_formula(&e.reversed(), &q).ok()?;
-    Some(back.sub(p).norm2().sqrt())
+    let q = model.g_uw_formula(e, p)?;
+    let back = model.g_uw_formula(&e.reversed(), &q)?;
+    Ok(back.sub(p).norm2().sqrt())
+}
+
+/// Rule 1 for enclosures: the image of a point interval is enclosed by finite bounds (an
+/// unbounded one is how a NaN or an overflow shows in interval arithmetic: `Iv::point(NaN)`
+/// is the entire line).
+pub(super) fn finite_p2(q: &P2<Iv>) -> bool {
+    [q.x.inf(), q.x.sup(), q.y.inf(), q.y.sup()]
+        .iter()
+        .all(|v| v.is_finite())
+}
+
+/// "≥ lo" for a refuting enclosure, or "not finite" when it is unbounded (NaN).
+pub(super) fn at_least(lo: f64) -> String {
+    if lo.is_finite() {
+        format!("≥ {lo:.3e}")
+    } else {
+        "not finite (a NaN or an overflow)".into()
+    }
 }
 
 /// L4.2.1 violated at p (u's chart): p ∈ Ω_ux, φ_xu(p) ∈ Ω_xw, but p ∉ Ω_uw. One generic
@@ -133,23 +155,40 @@ pub fn prove_inverse(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Propert
         let (tm, rm) = b.mid();
         let mut cb = None;
         if member_any(&du, c(tm), c(rm), Domain::Literal).is_true() {
-            match roundtrip_dev(model, &e, &iv_point(b.centre_xy())) {
-                Some(dv) if enclosure_exceeds(dv.inf(), dv.sup(), s.fail_tol) => {
-                    return Leaf::Refuted(format!("|φ_uw(φ_wu(p)) − p| ≥ {:.3e}", dv.inf()))
+            let p = iv_point(b.centre_xy());
+            // φ_wu(p) unbounded: the round trip would only see an undecidable point.
+            if let Ok(q) = model.g_uw_formula(&e, &p) {
+                if !finite_p2(&q) {
+                    return Leaf::Refuted("φ_wu(p) is not finite (a NaN or an overflow)".into());
                 }
-                Some(dv) => cb = Some(dv.sup()),
-                None => return Leaf::Split,
+            }
+            match roundtrip_dev(model, &e, &p) {
+                Ok(dv) if enclosure_exceeds(dv.inf(), dv.sup(), s.fail_tol) => {
+                    return Leaf::Refuted(format!("|φ_uw(φ_wu(p)) − p| {}", at_least(dv.inf())))
+                }
+                Ok(dv) => cb = Some(dv.sup()),
+                // A decision the point interval could not make: a smaller box may.
+                Err(maps::MapError::Undecided(_)) => return Leaf::Split,
+                // The centre is in Ω_uw and the branch conditions hold on the box, so both
+                // maps are defined there: an evaluation error refutes (never a silent split
+                // that would end as "certified outside δ").
+                Err(err) => {
+                    return Leaf::Refuted(format!(
+                        "the model's maps fail to evaluate at a point of Ω_uw: {err}"
+                    ))
+                }
             }
         }
         Leaf::Proven(Some(0.0), cb)
     });
     let witness = st.refuted.as_ref().map(|(b, txt)| {
         let p = b.centre_xy();
+        // `!(v <= tol)`: a NaN round trip confirms the refutation too.
         let f = roundtrip_dev(model, &e, &P2::<f64>::new(p[0], p[1]))
-            .map(|v| v > s.fail_tol)
+            .map(|v| !(v <= s.fail_tol))
             .unwrap_or(true);
         let g = roundtrip_dev(model, &e, &P2::<Mp>::from_f64(p[0], p[1], MP_PREC))
-            .map(|v| v.to_f64() > s.fail_tol)
+            .map(|v| !(v.to_f64() <= s.fail_tol))
             .unwrap_or(true);
         CertWitness {
             point: p,
@@ -245,7 +284,7 @@ pub fn prove_hausdorff(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Prope
     st.centre = if sep.is_finite() { Some(sep) } else { None };
     st.delta = delta;
     let witness = refuted.map(|(pf, txt)| {
-        let chk = |v: f64| (v - dw.rm.mid()).abs() > s.fail_tol;
+        let chk = |v: f64| !((v - dw.rm.mid()).abs() <= s.fail_tol);
         let f = model
             .g_uw_formula(&e, &P2::<f64>::new(pf[0], pf[1]))
             .map(|q| chk(q.norm2().sqrt()))

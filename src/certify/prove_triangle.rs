@@ -65,6 +65,10 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
     let cocycle = |p: &P2<Iv>| -> Option<Iv> {
         let lhs = model.g_uw_formula(&uw, p).ok()?;
         let mid = model.g_uw_formula(&ux, p).ok()?;
+        if !finite_p2(&lhs) || !finite_p2(&mid) {
+            // Rule 1: an unbounded image of a point (a NaN) refutes, never "undecided".
+            return Some(Iv::point(f64::NAN));
+        }
         let rhs = model.g_uw_formula(&xw, &mid).ok()?;
         Some(lhs.sub(&rhs).norm2().sqrt())
     };
@@ -189,8 +193,10 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
                     if enclosure_exceeds(dv.inf(), dv.sup(), s.fail_tol)
                         && cocycle_refuted.is_none() =>
                 {
-                    cocycle_refuted =
-                        Some((*b, format!("|φ_wu(p) − φ_wx(φ_xu(p))| ≥ {:.3e}", dv.inf())));
+                    cocycle_refuted = Some((
+                        *b,
+                        format!("|φ_wu(p) − φ_wx(φ_xu(p))| {}", at_least(dv.inf())),
+                    ));
                 }
                 Some(dv) if enclosure_exceeds(dv.inf(), dv.sup(), s.fail_tol) => {}
                 Some(dv) => cb = omax(cb, Some(dv.sup())),
@@ -236,15 +242,16 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
                 "p = ({:.9}, {:.9}) in u's chart, triangle {t:?}: {txt}",
                 p[0], p[1]
             ),
-            f64_confirms: cocycle_gap(model, &uw, &ux, &xw, &P2::<f64>::new(p[0], p[1]))
-                > s.fail_tol,
-            mp_confirms: cocycle_gap(
+            // `!(gap <= tol)`: a NaN gap confirms the refutation too.
+            f64_confirms: !(cocycle_gap(model, &uw, &ux, &xw, &P2::<f64>::new(p[0], p[1]))
+                <= s.fail_tol),
+            mp_confirms: !(cocycle_gap(
                 model,
                 &uw,
                 &ux,
                 &xw,
                 &P2::<Mp>::from_f64(p[0], p[1], MP_PREC),
-            ) > s.fail_tol,
+            ) <= s.fail_tol),
         }
     });
     let ms = t0.elapsed().as_millis() as u64;

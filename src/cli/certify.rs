@@ -98,6 +98,7 @@ fn run_inner(a: CertifyArgs) -> Result<bool, CertifyError> {
     let model = Model {
         lens_radius_offset: a.planted_lens_offset,
         label_shift: a.planted_label_shift,
+        fault: None,
     };
     let all = all_configs(a.max_degree);
     let sh = a.shard.as_deref().map(parse_shard).transpose()?;

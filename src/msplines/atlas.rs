@@ -133,7 +133,9 @@ pub fn develop(
         let vs = k.face(f);
         for (c, &v) in vs.iter().enumerate() {
             match vertex_seen.get(&v) {
-                Some(p) => defect = defect.max((p[0] - t[c][0]).hypot(p[1] - t[c][1])),
+                Some(p) => {
+                    defect = crate::report::dev_max(defect, (p[0] - t[c][0]).hypot(p[1] - t[c][1]))
+                }
                 None => {
                     vertex_seen.insert(v, t[c]);
                 }
@@ -168,7 +170,7 @@ pub fn develop(
             let cand = [pb[0] + d[0], pb[1] + d[1]];
             tg[cg] = match placed.get(&gv[cg]) {
                 Some(p) => {
-                    defect = defect.max((p[0] - cand[0]).hypot(p[1] - cand[1]));
+                    defect = crate::report::dev_max(defect, (p[0] - cand[0]).hypot(p[1] - cand[1]));
                     *p
                 }
                 None => {
@@ -188,7 +190,7 @@ pub fn develop(
     for (f, t) in &img {
         for (c, v) in k.face(*f).iter().enumerate() {
             if let Some(p) = vertex_seen.get(v) {
-                defect = defect.max((p[0] - t[c][0]).hypot(p[1] - t[c][1]));
+                defect = crate::report::dev_max(defect, (p[0] - t[c][0]).hypot(p[1] - t[c][1]));
             }
         }
     }

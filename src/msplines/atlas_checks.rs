@@ -139,7 +139,8 @@ fn injective(at: &Atlas, id: &str, name: &str) -> (CheckResult, Vec<usize>) {
         let before = r.offenders;
         let tris: Vec<(&FaceId, &[P2; 3])> = ch.faces.iter().collect();
         for (f, t) in &tris {
-            if orient2d(c(t[0]), c(t[1]), c(t[2])) <= 0.0 {
+            // `!(o > 0)`: a NaN image (orient2d of a NaN point is NaN) is not oriented.
+            if !(orient2d(c(t[0]), c(t[1]), c(t[2])) > 0.0) {
                 r.offend(|| {
                     Witness::new(
                         format!(
@@ -267,8 +268,19 @@ pub fn check_affine(at: &Atlas) -> CheckResult {
     for (&(a, b), common) in &at.pairs {
         r.examined += 1;
         let (ca, cb) = (&at.charts[a as usize], &at.charts[b as usize]);
-        let Some(f0) = common.first() else { continue };
-        let (Some(ta), Some(tb)) = (ca.faces.get(f0), cb.faces.get(f0)) else {
+        // A pair is overlapping because of its common faces, each in both charts: a pair
+        // without one, or a common face missing from a chart, is an inconsistent atlas (an
+        // offence with a witness, never a silently skipped pair).
+        let Some((f0, ta, tb)) = common
+            .first()
+            .and_then(|f0| Some((f0, ca.faces.get(f0)?, cb.faces.get(f0)?)))
+        else {
+            r.offend(|| {
+                Witness::new(
+                    format!("pair ({a},{b}): no common face present in both charts"),
+                    json!({"alpha": a, "beta": b, "kind": "missing"}),
+                )
+            });
             continue;
         };
         let Some((m, off, cond)) = fit_affine(ta, tb) else {
@@ -291,6 +303,12 @@ pub fn check_affine(at: &Atlas) -> CheckResult {
         let tol = 64.0 * f64::EPSILON * (1.0 + cond) * (scale + mag);
         for f in common {
             let (Some(ta), Some(tb)) = (ca.faces.get(f), cb.faces.get(f)) else {
+                r.offend(|| {
+                    Witness::new(
+                        format!("pair ({a},{b}): common face {f} missing from a chart"),
+                        json!({"alpha": a, "beta": b, "face": f.0, "kind": "missing"}),
+                    )
+                });
                 continue;
             };
             for i in 0..3 {

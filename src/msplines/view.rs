@@ -61,7 +61,7 @@ impl<'a> AtlasView<'a> {
         let radius = ids
             .iter()
             .map(|&i| atlas.charts[i as usize].radius())
-            .fold(0.0, f64::max);
+            .fold(0.0, crate::report::dev_max);
         AtlasView {
             k,
             atlas,

@@ -26,6 +26,11 @@ fn d4_1_9_lens_cert_agreement_certified_below_11_refuted_from_11() {
         let r = prove_lens_agreement(m, &Model::paper(), &quick());
         assert!(ok(r.outcome), "m = {m}: {r:?}");
     }
+    crate::common::verdicts::record(
+        "D4.1.9-lens(cert)",
+        crate::common::verdicts::Seen::Certified,
+        3,
+    );
     let r = prove_lens_agreement(12, &Model::paper(), &quick());
     assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
     let w = r.witness.expect("witness");
@@ -38,6 +43,7 @@ fn d4_1_9_lens_cert_planted_lens_radius_refuted() {
     let model = Model {
         lens_radius_offset: 1e-2,
         label_shift: 0,
+        fault: None,
     };
     let r = prove_lens_agreement(5, &model, &quick());
     assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
@@ -48,6 +54,7 @@ fn d4_1_9_lens_cert_planted_lens_radius_refuted() {
     let model = Model {
         lens_radius_offset: 1e-6,
         label_shift: 0,
+        fault: None,
     };
     let r = prove_lens_agreement(5, &model, &quick());
     assert_ne!(r.outcome, Outcome::Certified, "{r:?}");
@@ -66,6 +73,9 @@ fn c5_4_at_most_two_cert_and_c4_2_nonadjacent_disjoint_cert_literal_certified() 
             prove_star(m, false, true, &Model::paper(), &quick()).outcome
         ));
     }
+    for id in ["C5.4-at-most-two(cert)", "C4.2-nonadjacent-disjoint(cert)"] {
+        crate::common::verdicts::record(id, crate::common::verdicts::Seen::Certified, 4);
+    }
 }
 
 #[test]
@@ -81,6 +91,11 @@ fn c4_2_nonadjacent_disjoint_sec6_1_3_cert_refuted_at_12() {
     let r = prove_star(12, true, true, &Model::paper(), &quick());
     assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
     assert!(r.witness.expect("w").f64_confirms);
+    crate::common::verdicts::record(
+        "C4.2-nonadjacent-disjoint[sec6.1.3](cert)",
+        crate::common::verdicts::Seen::Fails,
+        1,
+    );
 }
 
 #[test]
@@ -102,6 +117,7 @@ fn p4_2_3_cert_inverse_certified_and_planted_rotation_refuted() {
     let bad = Model {
         lens_radius_offset: 0.0,
         label_shift: 1,
+        fault: None,
     };
     let r = prove_inverse(5, 7, &bad, &quick());
     assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
@@ -126,6 +142,7 @@ fn l4_2_1_cert_l4_2_2_cert_triangle_certified_and_planted_rotation_refuted() {
     let bad = Model {
         lens_radius_offset: 0.0,
         label_shift: 1,
+        fault: None,
     };
     let rs = prove_triangle(key, &bad, &quick());
     assert_eq!(rs[1].outcome, Outcome::Refuted, "{rs:?}");
@@ -153,6 +170,11 @@ fn l4_2_3_cert_hausdorff_arc_certified() {
         "{h:?}"
     );
     assert!(h.centre_bound.expect("separation") > 0.0, "{h:?}");
+    crate::common::verdicts::record(
+        "L4.2.3(cert)",
+        crate::common::verdicts::Seen::Certified,
+        h.boxes,
+    );
 }
 
 #[test]
@@ -215,6 +237,7 @@ fn l4_2_1_cert_planted_rotation_not_certified() {
     let bad = Model {
         lens_radius_offset: 0.0,
         label_shift: 1,
+        fault: None,
     };
     let key = ConfigKey::Triangle {
         m_u: 4,
@@ -234,6 +257,11 @@ fn p4_2_3_cert_exact_bound_zero() {
         assert_eq!(r.outcome, Outcome::Certified, "{r:?}");
         assert_eq!(r.bound, Some(0.0));
         assert!(r.centre_bound.expect("centre checks ran") < 1e-12);
+        crate::common::verdicts::record(
+            "P4.2.3(cert)",
+            crate::common::verdicts::Seen::Certified,
+            r.boxes,
+        );
     }
 }
 
@@ -278,5 +306,72 @@ fn cert_check_spec_certificates_coverage_of_a_mesh() {
         "CERT-check-spec",
         crate::common::verdicts::Seen::Holds,
         cov.properties.len() as u64,
+    );
+}
+
+/// SPEC `X-planted-certify`: the certify provers under the harness rules, on planted models
+/// (`Model::fault`: g_v⁻¹ NaN, or failing, at every point). A NaN enclosure at a box centre
+/// of Ω_uw refutes (`enclosure_exceeds`), and both evaluators confirm the witness (they used
+/// to compare `v > tol`, false for NaN); an evaluation error at a centre of Ω_uw, where the
+/// branch conditions make both maps defined, refutes P4.2.3(cert) (it used to split the box
+/// until the depth limit, ending "certified outside δ") and makes the triangle provers
+/// inconclusive (their model cross-check fails; never certified); a prover allowed no box
+/// examines nothing and is skipped (`boxes` counts evaluated boxes only).
+#[test]
+fn x_planted_certify_nan_error_and_empty_domain_are_reported() {
+    use pseudomanifold::certify::EvalFault;
+    use pseudomanifold::report::Verdict;
+    let planted = |f| Model {
+        fault: Some(f),
+        ..Model::paper()
+    };
+    let key = ConfigKey::Triangle {
+        m_u: 3,
+        m_w: 5,
+        m_x: 7,
+        ccw: true,
+    };
+    // NaN.
+    let r = prove_inverse(5, 7, &planted(EvalFault::Nan), &quick());
+    assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
+    let w = r.witness.as_ref().expect("witness");
+    assert!(w.f64_confirms && w.mp_confirms, "{w:?}");
+    let c = r.to_check_result();
+    assert!(c.failed() && c.examined > 0, "{c:?}");
+    crate::common::assert_caught(&c);
+    let rs = prove_triangle(key, &planted(EvalFault::Nan), &quick());
+    assert_eq!(rs[1].outcome, Outcome::Refuted, "{rs:?}");
+    assert!(rs[1].witness.as_ref().expect("w").f64_confirms, "{rs:?}");
+    // An evaluation error.
+    let r = prove_inverse(5, 7, &planted(EvalFault::Error), &quick());
+    assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
+    let w = r.witness.as_ref().expect("witness");
+    assert!(
+        w.text.contains("fail to evaluate") && w.f64_confirms && w.mp_confirms,
+        "{w:?}"
+    );
+    let c = r.to_check_result();
+    assert!(c.failed() && c.examined > 0, "{c:?}");
+    crate::common::assert_caught(&c);
+    for r in prove_triangle(key, &planted(EvalFault::Error), &quick()) {
+        assert_eq!(r.outcome, Outcome::Inconclusive, "{r:?}");
+        assert!(!r.to_check_result().holds_with_evidence(), "{r:?}");
+    }
+    // Empty: a budget of no box.
+    let none = Settings {
+        budget: 0,
+        ..quick()
+    };
+    let r = prove_inverse(5, 7, &Model::paper(), &none);
+    assert_eq!((r.outcome, r.boxes), (Outcome::Inconclusive, 0), "{r:?}");
+    let c = r.to_check_result();
+    assert!(
+        matches!(c.verdict(), Verdict::Skipped { .. }) && c.examined == 0,
+        "{c:?}"
+    );
+    crate::common::verdicts::record(
+        "X-planted-certify",
+        crate::common::verdicts::Seen::Caught,
+        3,
     );
 }

@@ -106,8 +106,7 @@ fn ms_5_2_3_ms_5_2_3_closed_ms_5_2_4_closed_harmonic_residual_and_closedness_hol
     let k = torus(12, 8);
     let (rep, mut fm, _) = run(&k, &Options::default()).expect("torus runs");
     for id in ["MS-5.2(3)", "MS-5.2(3)-closed", "MS-5.2(4)-closed"] {
-        let r = find(&rep.checks, id);
-        assert!(holds(r), "{r:?}");
+        common::assert_holds(find(&rep.checks, id));
     }
     fm.harmonic.backward_error = f64::NAN;
     assert!(pseudomanifold::msplines::harmonic::check_harmonic_residual(&k, &fm.harmonic).failed());
@@ -208,8 +207,7 @@ fn ms_d4_ms_d6_ms_d7_ms_t4_atlas_ms_gd_torus_translation_atlas_and_def_3_4_1_all
         "D3.4.1(3c)",
         "D3.4.1(4)",
     ] {
-        let r = find(&rep.checks, id);
-        assert!(holds(r) && r.examined > 0, "{r:?}");
+        common::assert_holds_for("torus 12×8", find(&rep.checks, id));
     }
 }
 
@@ -217,8 +215,7 @@ fn ms_d4_ms_d6_ms_d7_ms_t4_atlas_ms_gd_torus_translation_atlas_and_def_3_4_1_all
 fn ms_5_4_6_ms_5_4_6_corrected_step_six_as_written_has_the_wrong_sign() {
     let k = torus(12, 8);
     let (rep, _, _) = run(&k, &Options::default()).expect("torus");
-    let r = find(&rep.checks, "MS-5.4(6)");
-    assert!(r.failed() && !r.witnesses.is_empty(), "{r:?}");
+    common::assert_fails_as_written(find(&rep.checks, "MS-5.4(6)"));
 }
 
 #[test]
@@ -517,6 +514,7 @@ fn ms_5_5_ms_5_6_ms_d13_2_mesh_ms_dms_pu_mesh_ms_3_1_3_1_mesh_torus_spline_is_ch
             matches!(d2.verdict(), Verdict::Holds) && d2.examined >= 60,
             "{name}: {d2:?}"
         );
+        common::assert_holds_for(name, d2);
         let ev = find(&rs, "MS-5.6");
         assert!(
             matches!(ev.verdict(), Verdict::Holds) && ev.examined >= 50,
@@ -586,7 +584,7 @@ fn ms_d13_1_mesh_ms_d13_1_mesh_corrected_charts_too_small_as_written_star_suffic
     let rs = spline_report(&k, 4);
     let lit = find(&rs, "MS-D13(1)-mesh");
     println!("{lit:?}");
-    assert!(lit.failed() && !lit.witnesses.is_empty(), "{lit:?}");
+    common::assert_fails_as_written(lit);
     assert!(
         witness_text(lit).contains("outside chart"),
         "{}",
@@ -598,6 +596,7 @@ fn ms_d13_1_mesh_ms_d13_1_mesh_corrected_charts_too_small_as_written_star_suffic
         matches!(cor.verdict(), Verdict::Holds) && cor.examined > 0,
         "{cor:?}"
     );
+    common::assert_holds(cor);
     // Planted: a knot of vertex 0 moved to a face far from its star is outside the charts.
     let (at, mut sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
     let far = pseudomanifold::mesh::FaceId((k.num_faces() / 2) as u32);
@@ -625,20 +624,24 @@ fn ms_5_6_ms_dms_pu_mesh_ms_5_5_ms_3_1_3_1_mesh_eight_spline_undefined_near_the_
         "{}",
         witness_text(ev)
     );
+    common::assert_fails_as_written(ev);
     // DMS conditions violated where ω nearly vanishes (thin images): Δ_β flipped, Σ N ≠ 1.
     let kn = find(&rs, "MS-5.5");
     assert!(
         kn.failed() && witness_text(kn).contains("orientation"),
         "{kn:?}"
     );
+    common::assert_fails_as_written(kn);
     let pu = find(&rs, "MS-DMS-PU-mesh");
     assert!(pu.failed() && witness_text(pu).contains("Σ N ="), "{pu:?}");
+    common::assert_fails_as_written(pu);
     // Folded charts: faces outside the 1-ring of F have knots over F in the chart.
     let ls = find(&rs, "MS-3.1.3(1)-mesh");
     assert!(
         ls.failed() && witness_text(ls).contains("outside the 1-ring"),
         "{ls:?}"
     );
+    common::assert_fails_as_written(ls);
     // Where F is defined, the charts still agree (Def. 13(2)).
     let d2 = find(&rs, "MS-D13(2)-mesh");
     println!("{d2:?}");
@@ -960,4 +963,100 @@ fn ms_d4_corrected_ms_t4_index_corrected_ms_3_4_3_corrected_planted_faults_are_c
     assert!(rep.failed());
     rep.checks.remove(i);
     assert!(rep.failed());
+}
+
+/// SPEC `X-planted-msplines`: the mesh-spline checkers under the harness, on planted models of
+/// F (through the evaluator seam of `check_d13_2_with`) and of the atlas. NaN values of F on
+/// half the faces fail Def. 13(2) and Σ N = 1 with every sample examined; an evaluation error
+/// everywhere fails Sec. 5.6 (F is defined on M ∖ Z), counted, and leaves nothing to compare
+/// (skipped, never holds); zero sampled faces is skipped; NaN chart images fail Def. 4.
+#[test]
+fn x_planted_msplines_nan_error_and_empty_domain_are_reported() {
+    use pseudomanifold::msplines::mesh_spline::SplineError;
+    use pseudomanifold::msplines::mesh_spline_checks::check_d13_2_with;
+    let k = torus(12, 8);
+    let (mut at, sp) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    let ids = [
+        "MS-D13(2)-mesh",
+        "MS-5.6",
+        "MS-3.1.3(1)-mesh",
+        "MS-DMS-PU-mesh",
+    ];
+    let clean = check_d13_2_with(&k, &at, &sp, 0x5eed, 60, &|p, g| sp.evaluate(&k, &at, p, g));
+    for id in ids {
+        let r = find(&clean, id);
+        assert!(r.holds_with_evidence() && r.eval_errors == 0, "clean {r:?}");
+    }
+    // NaN: F and Σ N are NaN on the faces of even index (part of the domain).
+    let nan = check_d13_2_with(&k, &at, &sp, 0x5eed, 60, &|p, g| {
+        sp.evaluate(&k, &at, p, g).map(|mut e| {
+            if p.face.0 % 2 == 0 {
+                e.value = [f64::NAN; 3];
+                e.sum_n = f64::NAN;
+            }
+            e
+        })
+    });
+    for id in ["MS-D13(2)-mesh", "MS-DMS-PU-mesh"] {
+        let (r, c) = (find(&nan, id), find(&clean, id));
+        assert!(r.failed() && !r.witnesses.is_empty(), "NaN: {r:?}");
+        assert_eq!(r.examined, c.examined, "{id}: every sample examined");
+        assert!(r.examined > 0 && r.eval_errors == 0, "{id}: {r:?}");
+        assert_eq!(r.worst_deviation, Some(f64::INFINITY), "{id}");
+        common::assert_caught(r);
+    }
+    assert!(find(&nan, "MS-5.6").holds_with_evidence(), "F is defined");
+    // Error: F cannot be evaluated in any chart.
+    let err = check_d13_2_with(&k, &at, &sp, 0x5eed, 60, &|p, _| {
+        Err(SplineError::NoChart { face: p.face.0 })
+    });
+    let ev = find(&err, "MS-5.6");
+    assert!(
+        ev.failed() && witness_text(ev).contains("F undefined"),
+        "{ev:?}"
+    );
+    assert_eq!(ev.examined, find(&clean, "MS-5.6").examined, "{ev:?}");
+    assert!(ev.eval_errors >= ev.examined && ev.examined > 0, "{ev:?}");
+    common::assert_caught(ev);
+    for id in ["MS-D13(2)-mesh", "MS-3.1.3(1)-mesh", "MS-DMS-PU-mesh"] {
+        let r = find(&err, id);
+        assert!(
+            matches!(r.verdict(), Verdict::Skipped { .. }) && r.examined == 0,
+            "error: {r:?}"
+        );
+    }
+    // Error in one chart of a face only: a counted, skipped comparison of Def. 13(2).
+    let first = |p: &MeshPoint| sp.chart_of_vertex[&k.face(p.face)[0]];
+    let one = check_d13_2_with(&k, &at, &sp, 0x5eed, 60, &|p, g| {
+        if g == first(p) {
+            Err(SplineError::NoChart { face: p.face.0 })
+        } else {
+            sp.evaluate(&k, &at, p, g)
+        }
+    });
+    let d2 = find(&one, "MS-D13(2)-mesh");
+    assert!(d2.eval_errors > 0 && d2.note.contains("skipped"), "{d2:?}");
+    assert!(!d2.failed() && d2.examined < find(&clean, "MS-D13(2)-mesh").examined);
+    // Empty domain: no sampled face.
+    let empty = check_d13_2_with(&k, &at, &sp, 0x5eed, 0, &|p, g| sp.evaluate(&k, &at, p, g));
+    for id in ids {
+        let r = find(&empty, id);
+        assert!(
+            matches!(r.verdict(), Verdict::Skipped { .. }) && (r.examined, r.eval_errors) == (0, 0),
+            "empty: {r:?}"
+        );
+    }
+    // NaN chart images (the atlas): Def. 4's orientation test fails them (it used to compare
+    // `orient2d(..) <= 0`, false for NaN, so a NaN chart was injective).
+    assert!(ac::check_charts_injective(&at).holds_with_evidence());
+    for t in at.charts[0].faces.values_mut() {
+        *t = [[f64::NAN; 2]; 3];
+    }
+    let d4 = ac::check_charts_injective(&at);
+    assert!(d4.failed() && d4.examined > 0, "{d4:?}");
+    assert!(
+        witness_text(&d4).contains("not positively oriented"),
+        "{d4:?}"
+    );
+    common::verdicts::record("X-planted-msplines", common::verdicts::Seen::Caught, 4);
 }

@@ -1451,3 +1451,58 @@ fn sd_l141_3_d_sd_l146_3_d_polynomial_maps_on_a_tetrahedron_are_certified_exactl
     let (num, d) = tet_map(2, &fixed_control4(2), Some(&w));
     assert!(tet_det(&num, &d, Budget::default()).certified());
 }
+
+/// SPEC `X-planted-sdiff`: the f64 checker of seed 004 (`SD-L101(inverse)`, Newton from four
+/// starts) under the harness, on planted models of X through the evaluator seam of
+/// `inversion_spot_check_with`. X NaN on half of σ, and X failing to evaluate everywhere,
+/// each fail with witnesses and counted errors (X is defined on σ: D > 0); no target is
+/// skipped, never holds. Before, Newton's `None` for a NaN iterate was a non-converged
+/// target, dropped from the sample, so the NaN map held on the targets that stayed away.
+#[test]
+fn x_planted_sdiff_nan_error_and_empty_domain_are_reported() {
+    use pseudomanifold::sdiff::inverse::inversion_spot_check_with;
+    let (_, _, cm) = load("rational.toml");
+    let exact = |f: usize, p: [f64; 2]| Ok(cm.maps[f].eval_f64_with_jacobian(p[0], p[1]));
+    let clean = inversion_spot_check_with(&cm, 1, 16, &exact);
+    assert!(
+        clean.holds_with_evidence() && clean.eval_errors == 0,
+        "{clean:?}"
+    );
+    // NaN on the half s > t of every triangle.
+    let nan = inversion_spot_check_with(&cm, 1, 16, &|f, p| {
+        let (x, j) = exact(f, p)?;
+        Ok(if p[0] > p[1] {
+            ([f64::NAN; 2], [[f64::NAN; 2]; 2])
+        } else {
+            (x, j)
+        })
+    });
+    assert!(nan.failed() && nan.eval_errors > 0, "{nan:?}");
+    assert!(nan.witnesses[0].text.contains("not finite"), "{nan:?}");
+    assert!(
+        nan.examined >= clean.examined && nan.examined > 0,
+        "{nan:?}"
+    );
+    common::assert_caught(&nan);
+    // An evaluation error everywhere: every target is an offence, counted and examined.
+    let err = inversion_spot_check_with(&cm, 1, 16, &|_, _| Err("planted".to_string()));
+    let targets = 16 * cm.maps.len() as u64;
+    assert!(err.failed(), "{err:?}");
+    assert_eq!(
+        (err.examined, err.eval_errors, err.offenders),
+        (targets, targets, targets)
+    );
+    assert!(
+        err.witnesses[0].text.contains("could not be evaluated"),
+        "{err:?}"
+    );
+    common::assert_caught(&err);
+    // Empty domain: no target.
+    let empty = inversion_spot_check_with(&cm, 1, 0, &exact);
+    assert!(
+        matches!(empty.verdict(), Verdict::Skipped { .. })
+            && (empty.examined, empty.eval_errors) == (0, 0),
+        "{empty:?}"
+    );
+    common::verdicts::record("X-planted-sdiff", common::verdicts::Seen::Caught, 3);
+}
