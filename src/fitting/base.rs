@@ -63,6 +63,9 @@ pub enum Refusal {
     NotConvex,
     /// Re-location left a point outside every new triangle by more than `SNAP_LIMIT`.
     Locate,
+    /// A triangle of S_T whose three vertices lie in the changed region would fold (negative
+    /// area in the region's flat layout).
+    Fold,
 }
 
 /// Re-location snaps (see the module doc).
@@ -97,6 +100,8 @@ pub struct BaseMesh {
     vfaces: Vec<Vec<u32>>,
     param: Vec<Param>,
     members: Vec<Vec<u32>>,
+    fine_faces: Vec<[u32; 3]>,
+    fine_around: Vec<Vec<u32>>,
     /// Re-location snaps so far.
     pub snaps: SnapStats,
 }
@@ -191,11 +196,17 @@ impl BaseMesh {
             vfaces: vec![Vec::new(); n],
             param: vec![Param::Vertex; n],
             members: Vec::new(),
+            fine_faces: Vec::new(),
+            fine_around: vec![Vec::new(); n],
             snaps: SnapStats::default(),
         };
         for f in k.faces() {
             let c = k.face(f).map(|v| v.0);
             b.add_face(c);
+            for v in c {
+                b.fine_around[v as usize].push(b.fine_faces.len() as u32);
+            }
+            b.fine_faces.push(c);
         }
         b
     }
@@ -421,6 +432,18 @@ impl BaseMesh {
                 return Err(Refusal::Deviation);
             }
         }
+        let mut placed: HashMap<u32, [f64; 2]> =
+            us.iter().copied().zip(poly.iter().copied()).collect();
+        for &(x, t, b) in &moved {
+            let c = flat[t];
+            placed.insert(
+                x,
+                std::array::from_fn(|i| b[0] * c[0][i] + b[1] * c[1][i] + b[2] * c[2][i]),
+            );
+        }
+        if self.folds(&placed, moved.iter().map(|m| m.0)) {
+            return Err(Refusal::Fold);
+        }
         // Commit.
         self.snaps = snaps;
         for &f in &fs {
@@ -644,6 +667,18 @@ impl BaseMesh {
                 moved.push((x, t, l));
             }
         }
+        let mut placed: HashMap<u32, [f64; 2]> =
+            [(a, la), (b, lb), (c, lc), (d, ld)].into_iter().collect();
+        for &(x, t, l) in &moved {
+            let c = flat[t];
+            placed.insert(
+                x,
+                std::array::from_fn(|i| l[0] * c[0][i] + l[1] * c[1][i] + l[2] * c[2][i]),
+            );
+        }
+        if self.folds(&placed, moved.iter().map(|m| m.0)) {
+            return Err(Refusal::Fold);
+        }
         self.snaps = snaps;
         self.remove_face(f1);
         self.remove_face(f2);
@@ -659,6 +694,24 @@ impl BaseMesh {
             );
         }
         Ok(())
+    }
+
+    /// Does a triangle of S_T at one of `movers`, with all three vertices `placed` in a flat
+    /// layout of the changed region, have non-positive area there?
+    fn folds(&self, placed: &HashMap<u32, [f64; 2]>, movers: impl Iterator<Item = u32>) -> bool {
+        for x in movers {
+            for &t in &self.fine_around[x as usize] {
+                let c = self.fine_faces[t as usize];
+                if let (Some(a), Some(b), Some(d)) =
+                    (placed.get(&c[0]), placed.get(&c[1]), placed.get(&c[2]))
+                {
+                    if !(orient2(*a, *b, *d) > 0.0) {
+                        return true;
+                    }
+                }
+            }
+        }
+        false
     }
 
     /// Isometric layout of the faces (a, b, c), (b, a, d): a at 0, b on +x, c above, d below.

@@ -60,9 +60,8 @@ pub fn check_genus(k: &SimplicialSurface, base_k: &SimplicialSurface) -> CheckRe
     r
 }
 
-/// Layout of the closed star of base vertex v by the polar map (as the simplification's
-/// flattening): the plane point of a parameter in the star, or None outside it or when the
-/// star does not flatten to an embedded fan.
+/// The closed star of base vertex v laid out as T_v: the plane point of a parameter in the
+/// star, or None outside it.
 struct StarLayout {
     v: u32,
     ring: Vec<u32>,
@@ -71,42 +70,15 @@ struct StarLayout {
 }
 
 impl StarLayout {
+    /// T_v of the (σ, v) construction: the ring on the regular m-gon of unit circumradius, each
+    /// face of the star a sector, barycentric coordinates kept (tutorial Part IV).
     fn new(base: &BaseMesh, v: u32) -> Option<Self> {
         let (ring, faces) = base.ring(v)?;
-        let pos = base.positions();
-        let pv = pos[v as usize];
-        let d: Vec<[f64; 3]> = ring
-            .iter()
-            .map(|&u| {
-                let p = pos[u as usize];
-                [p[0] - pv[0], p[1] - pv[1], p[2] - pv[2]]
-            })
-            .collect();
         let m = ring.len();
-        let ang: Vec<f64> = (0..m)
-            .map(|i| {
-                let (a, b) = (d[i], d[(i + 1) % m]);
-                let c = [
-                    a[1] * b[2] - a[2] * b[1],
-                    a[2] * b[0] - a[0] * b[2],
-                    a[0] * b[1] - a[1] * b[0],
-                ];
-                let n = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
-                n.atan2(a[0] * b[0] + a[1] * b[1] + a[2] * b[2])
-            })
-            .collect();
-        let total: f64 = ang.iter().sum();
-        let s = std::f64::consts::TAU / total;
-        if !(total > 0.0) || ang.iter().any(|a| !(a * s < std::f64::consts::PI)) {
-            return None;
-        }
-        let mut al = 0.0f64;
         let pts = (0..m)
             .map(|i| {
-                let r = (d[i][0] * d[i][0] + d[i][1] * d[i][1] + d[i][2] * d[i][2]).sqrt();
-                let p = [r * al.cos(), r * al.sin()];
-                al += ang[i] * s;
-                p
+                let a = std::f64::consts::TAU * i as f64 / m as f64;
+                [a.cos(), a.sin()]
             })
             .collect();
         Some(StarLayout {
@@ -147,16 +119,53 @@ impl StarLayout {
     }
 }
 
-/// The parametrization is a bijection: every triangle of S_T, mapped to the base mesh by its
-/// vertices' parameters, is positively oriented in the polar layout of a base star containing
-/// its three parameters. Triangles whose parameters share no flattenable base star are not
-/// decided here (counted; the verdict is then restricted to the decided ones).
+/// The parametrization is a bijection: every triangle of S_T, mapped by its vertices'
+/// parameters, is positively oriented in T_v for a base vertex v whose star holds its three
+/// parameters (the chart of the (σ, v) construction). Triangles whose parameters share no base
+/// star are not decided here (counted; the verdict is then restricted to the decided ones).
 pub fn check_param_orientation(k: &SimplicialSurface, base: &BaseMesh) -> CheckResult {
     let mut r = CheckResult::new(
         "AF-param-bijective",
         "every triangle of S_T maps to a positively oriented triangle of the base mesh",
     );
-    let mut undecided = 0u64;
+    let o = orientations(k, base);
+    r.examined = o.decided;
+    for (f, c, area, v) in o.folded {
+        r.offend(|| {
+            Witness::new(
+                format!("triangle {f:?} {c:?} maps to a triangle of signed area {area:.3e} in T_v of base vertex {v}"),
+                json!({"face": f.0, "area": area, "star": v}),
+            )
+        });
+    }
+    let undecided = o.undecided;
+    if undecided > 0 {
+        r.restrict(format!(
+            "{undecided} triangles of S_T whose parameters share no base star are not decided"
+        ));
+    }
+    r.note = format!("decided in T_v of a base star; {undecided} undecided");
+    r
+}
+
+/// The orientations of the triangles of S_T in T_v (see [`check_param_orientation`]).
+pub struct Orientations {
+    /// Triangles decided.
+    pub decided: u64,
+    /// Triangles whose parameters share no base star.
+    pub undecided: u64,
+    /// The folded ones: face, vertices, signed area, the base vertex of the layout.
+    pub folded: Vec<(FaceId, [u32; 3], f64, u32)>,
+}
+
+/// Decide the orientation of every triangle of S_T in T_v of a base star holding its three
+/// parameters (the first such star, smallest vertex id first).
+pub fn orientations(k: &SimplicialSurface, base: &BaseMesh) -> Orientations {
+    let mut out = Orientations {
+        decided: 0,
+        undecided: 0,
+        folded: Vec::new(),
+    };
     let mut cache: std::collections::HashMap<u32, Option<StarLayout>> = Default::default();
     for f in k.faces() {
         let c = k.face(f).map(|v| v.0);
@@ -179,30 +188,19 @@ pub fn check_param_orientation(k: &SimplicialSurface, base: &BaseMesh) -> CheckR
                 continue;
             }
             decided = true;
-            r.examined += 1;
+            out.decided += 1;
             let o = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1])
                 - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
             if !(o > 0.0) {
-                r.offend(|| {
-                    Witness::new(
-                        format!("triangle {f:?} {c:?} maps to a triangle of signed area {o:.3e} in the star of base vertex {v}"),
-                        json!({"face": f.0, "area": o, "star": v}),
-                    )
-                });
+                out.folded.push((f, c, o, v));
             }
             break;
         }
         if !decided {
-            undecided += 1;
+            out.undecided += 1;
         }
     }
-    if undecided > 0 {
-        r.restrict(format!(
-            "{undecided} triangles of S_T whose parameters share no flattenable base star are not decided"
-        ));
-    }
-    r.note = format!("decided in polar layouts of base stars; {undecided} undecided");
-    r
+    out
 }
 
 /// Every corner's least-squares system has full rank; the worst condition number is

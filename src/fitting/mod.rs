@@ -80,7 +80,7 @@ pub enum FitError {
         classes: String,
     },
     /// ε was not reached in the allowed rounds.
-    #[error("epsilon {epsilon} not reached after {rounds} refinement rounds: {offenders} vertices still further (worst {worst})")]
+    #[error("epsilon {epsilon} not reached after {rounds} refinement rounds: {offenders} vertices still further (worst {worst}), {folds} triangles of S_T folded")]
     NotReached {
         /// ε.
         epsilon: f64,
@@ -90,6 +90,8 @@ pub enum FitError {
         offenders: usize,
         /// Largest error.
         worst: f64,
+        /// Triangles of S_T still folded in T_v.
+        folds: usize,
     },
 }
 
@@ -105,6 +107,8 @@ pub struct Round {
     pub p99_error: f64,
     /// Vertices beyond ε (error plus rounding bound).
     pub offenders: usize,
+    /// Triangles of S_T folded in T_v (`AF-param-bijective`), reported.
+    pub folds: usize,
     /// Refinement done after the round (None for the last).
     pub refine: Option<refine::RefineStats>,
     /// Seconds spent in the round.
@@ -311,6 +315,10 @@ fn fit_once(
             .filter(|(_, &e)| !(e + bound <= opts.epsilon))
             .map(|(i, _)| i as u32)
             .collect();
+        // Triangles of S_T folded in T_v are counted per round (SPEC `AF-param-bijective`);
+        // inserting their vertices does not remove them (measured), so they are reported by
+        // the check, not repaired here.
+        let folds = checks::orientations(k, &base).folded;
         let max_error = errors
             .iter()
             .copied()
@@ -320,18 +328,21 @@ fn fit_once(
             max_error,
             p99_error: percentile(&errors, 0.99),
             offenders: offenders.len(),
+            folds: 0,
             refine: None,
             seconds: 0.0,
         };
         progress(&format!(
-            "fit round {}: {} charts (base vertices), max error {:.3e}, p99 {:.3e}, {} vertices beyond epsilon {:.3e}",
+            "fit round {}: {} charts (base vertices), max error {:.3e}, p99 {:.3e}, {} vertices beyond epsilon {:.3e}, {} folded triangles",
             rounds.len() + 1,
             round.base_vertices,
             round.max_error,
             round.p99_error,
             round.offenders,
-            opts.epsilon
+            opts.epsilon,
+            folds.len()
         ));
+        round.folds = folds.len();
         if offenders.is_empty() {
             round.seconds = tr.elapsed().as_secs_f64();
             rounds.push(round);
@@ -354,6 +365,7 @@ fn fit_once(
                 rounds: rounds.len() + 1,
                 offenders: offenders.len(),
                 worst: max_error,
+                folds: folds.len(),
             });
         }
         let mut st = refine::RefineStats::default();
@@ -371,6 +383,7 @@ fn fit_once(
                 rounds: rounds.len(),
                 offenders: offenders.len(),
                 worst: max_error,
+                folds: folds.len(),
             });
         }
     }
