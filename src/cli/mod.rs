@@ -284,6 +284,9 @@ where
             spec,
             ch4,
         } => match ch4.construction.as_str() {
+            _ if spec && crate::fitting::format::is_fit_file(&file) => {
+                fit::check_fit_file(&file, json, ch4.seed)
+            }
             "vertex" => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
             "sigma-v" if spec => sigma_v::run_check(
                 &file,
@@ -448,6 +451,9 @@ where
             kappa,
             patch_degree,
         } => match construction.as_str() {
+            _ if crate::fitting::format::is_fit_file(&file) => {
+                fit::sample_fit(&file, level, &output, quiet)
+            }
             "vertex" => sample::run_sample(
                 &file,
                 level,
@@ -464,6 +470,16 @@ where
             }
         },
         Command::Msplines(c) => msplines::run_command(c),
+        Command::Eval {
+            file,
+            face,
+            lambda,
+            mu,
+            nu,
+            ..
+        } if crate::fitting::format::is_fit_file(&file) => {
+            fit::eval_fit(&file, face, [lambda, mu, nu])
+        }
         Command::Eval {
             file,
             face,
