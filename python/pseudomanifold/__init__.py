@@ -36,6 +36,7 @@ from .errors import (
 __all__ = [
     "__version__",
     "load",
+    "load_fit",
     "Surface",
     "Pps",
     "SigmaV",
@@ -223,6 +224,16 @@ class SigmaV:
         """Sampled by midpoint subdivision at ``level``: ``(V, F, attributes)``."""
         v, f, n, g, h = self._p.sample(int(level))
         return v, f, {"normals": n, "gaussian": g, "mean": h}
+
+
+def load_fit(path: PathLike) -> SigmaV:
+    """A fitted surface written by ``ppm fit -o`` (seed 002, adaptive manifold fitting; SPEC
+    AF-format-roundtrip): the (sigma, v) PPS over its base mesh, read bit-exactly. ``eval``
+    takes faces of the base mesh; ``surface`` is None (the base mesh lives in the file)."""
+    s = SigmaV.__new__(SigmaV)
+    s.surface = None
+    s._p = _native.SigmaVHandle.from_fit(os.fspath(path))
+    return s
 
 
 class OracleResult(dict):

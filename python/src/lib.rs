@@ -560,6 +560,15 @@ impl SigmaVHandle {
         .map_err(|e| err_simple("BuildError", e))
     }
 
+    /// A fitted surface written by `ppm fit -o` (seed 002 adaptive fitting, SPEC
+    /// AF-format-roundtrip): the (σ, v) PPS over its base mesh, read bit-exactly.
+    #[staticmethod]
+    fn from_fit(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Self> {
+        py.allow_threads(|| pseudomanifold::fitting::format::read_fit(&path).map_err(|e| e.to_string()))
+            .map(|f| SigmaVHandle { pps: f.pps })
+            .map_err(|e| err_simple("MeshError", e))
+    }
+
     /// eval (SV-D13) in f64 at every point: positions (n, 3).
     fn eval<'py>(
         &self,
