@@ -149,7 +149,9 @@ fn rot(face: [u32; 3], v: u32) -> Option<[u32; 3]> {
     let i = face.iter().position(|&x| x == v)?;
     Some([face[i], face[(i + 1) % 3], face[(i + 2) % 3]])
 }
-fn permute(face: [u32; 3], b: [f64; 3], order: [u32; 3]) -> [f64; 3] {
+/// Barycentric coordinates `b` w.r.t. the corners `face`, re-ordered to the corners `order`
+/// (0 for a corner of `order` not in `face`).
+pub(crate) fn permute(face: [u32; 3], b: [f64; 3], order: [u32; 3]) -> [f64; 3] {
     let mut out = [0.0; 3];
     for (k, &o) in order.iter().enumerate() {
         if let Some(i) = face.iter().position(|&x| x == o) {
@@ -169,18 +171,24 @@ fn locate(tris: &[[[f64; 2]; 3]], x: [f64; 2], snaps: &mut SnapStats) -> Option<
             best = Some((t, b, mn));
         }
     }
-    let (t, mut b, mn) = best?;
-    if mn < 0.0 {
-        if mn < -SNAP_LIMIT {
-            return None;
-        }
-        snaps.count += 1;
-        snaps.worst = snaps.worst.max(-mn);
-        b = b.map(|x| x.max(0.0));
-        let s = b[0] + b[1] + b[2];
-        b = b.map(|x| x / s);
+    let (t, b, mn) = best?;
+    Some((t, snap(b, mn, snaps)?))
+}
+
+/// Barycentric coordinates `b` with smallest coordinate `mn`: kept when `mn` ≥ 0, snapped to
+/// the triangle (negatives to 0, renormalized; counted) when `mn` ≥ −`SNAP_LIMIT`, else None.
+fn snap(b: [f64; 3], mn: f64, snaps: &mut SnapStats) -> Option<[f64; 3]> {
+    if mn >= 0.0 {
+        return Some(b);
     }
-    Some((t, b))
+    if mn < -SNAP_LIMIT {
+        return None;
+    }
+    snaps.count += 1;
+    snaps.worst = snaps.worst.max(-mn);
+    let b = b.map(|x| x.max(0.0));
+    let s = b[0] + b[1] + b[2];
+    Some(b.map(|x| x / s))
 }
 
 impl BaseMesh {
@@ -350,6 +358,17 @@ impl BaseMesh {
                 Param::Vertex => None,
             })
             .collect()
+    }
+
+    /// Distance of vertex x of S_T from its place on its flat base triangle (0 for a base
+    /// vertex).
+    pub fn flat_deviation(&self, x: u32) -> f64 {
+        match self.param[x as usize] {
+            Param::Face { f, b } => self
+                .face(f)
+                .map_or(f64::INFINITY, |c| self.deviation(c, x, b)),
+            Param::Vertex => 0.0,
+        }
     }
 
     fn deviation(&self, tri: [u32; 3], x: u32, b: [f64; 3]) -> f64 {
@@ -618,18 +637,8 @@ impl BaseMesh {
                     best = Some((t, l, mn));
                 }
             }
-            let (t, mut l, mn) = best.ok_or(Refusal::Locate)?;
-            if mn < 0.0 {
-                if mn < -SNAP_LIMIT {
-                    return Err(Refusal::Locate);
-                }
-                snaps.count += 1;
-                snaps.worst = snaps.worst.max(-mn);
-                l = l.map(|v| v.max(0.0));
-                let s = l[0] + l[1] + l[2];
-                l = l.map(|v| v / s);
-            }
-            moved.push((y, t, l));
+            let (t, l, mn) = best.ok_or(Refusal::Locate)?;
+            moved.push((y, t, snap(l, mn, snaps).ok_or(Refusal::Locate)?));
         }
         Ok(moved)
     }

@@ -270,12 +270,10 @@ pub fn check_epsilon(
     let n = params.len();
     let mut broken = 0;
     let consts = pps.consts::<Mp>(256);
-    let mut state = seed | 1;
+    // The harness's sampler (`report::harness`), so the printed seed reproduces the sample.
+    let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed);
     for _ in 0..MP_SAMPLES.min(n) {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        let x = (state % n as u64) as usize;
+        let x = rand::Rng::gen_range(&mut rng, 0..n);
         let (f, b) = params[x];
         let bm = b.map(|t| Mp::from_f64(t, 256));
         let (Ok(lo), Ok(hi)) = (pps.eval_f64(f, b), pps.eval(f, &bm, &consts)) else {

@@ -13,7 +13,7 @@
 //! condition number of the weighted design matrix are reported per corner
 //! (SPEC `AF-fit-rank`).
 
-use super::base::{BaseMesh, Param};
+use super::base::{permute, BaseMesh, Param};
 use crate::construction::maps::P2;
 use crate::construction::sigma_v::patch::{
     bernstein_tri, multinomials, num_control_points, tri_samples,
@@ -22,7 +22,6 @@ use crate::construction::sigma_v::{Corner, CornerId, SigmaVError, SigmaVPps};
 use crate::mesh::raw::RawMesh;
 use crate::mesh::validate::{validate, ErrorClass};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
-use crate::surface::TargetSurface;
 use rayon::prelude::*;
 use serde::Serialize;
 
@@ -121,14 +120,7 @@ impl BaseSurface {
                 Param::Face { f, b } => {
                     let fid = FaceId(self.face_of_slot[f as usize]);
                     let order = self.k.face(fid).map(|v| self.fine_of[v.idx()]);
-                    let c = base.face(f).unwrap_or(order);
-                    let mut out = [0.0; 3];
-                    for (k, o) in order.iter().enumerate() {
-                        if let Some(i) = c.iter().position(|x| x == o) {
-                            out[k] = b[i];
-                        }
-                    }
-                    (fid, out)
+                    (fid, permute(base.face(f).unwrap_or(order), b, order))
                 }
                 Param::Vertex => {
                     let v = VertexId(base_id[x]);
@@ -141,17 +133,14 @@ impl BaseSurface {
     }
 }
 
-/// S′ = the flat base triangles: the data of the prior rows.
-struct FlatBase<'a>(&'a SimplicialSurface);
+/// What the fitted ψ approximate (the PPS's target name).
+pub const FIT_TARGET: &str = "fitted to S_T";
 
-impl TargetSurface for FlatBase<'_> {
-    fn name(&self) -> &str {
-        "fitted to S_T"
-    }
-    fn eval(&self, _f: FaceId, corners: [VertexId; 3], b: [f64; 3]) -> [f64; 3] {
-        let p = corners.map(|v| self.0.position(v));
-        std::array::from_fn(|i| b[0] * p[0][i] + b[1] * p[1][i] + b[2] * p[2][i])
-    }
+/// The point of the flat triangle `corners` of K at barycentric coordinates `b`: the data of
+/// the prior rows.
+fn flat(k: &SimplicialSurface, corners: [VertexId; 3], b: [f64; 3]) -> [f64; 3] {
+    let p = corners.map(|v| k.position(v));
+    std::array::from_fn(|i| b[0] * p[0][i] + b[1] * p[1][i] + b[2] * p[2][i])
 }
 
 /// A data row: corner id, local point, vertex of S_T.
@@ -188,7 +177,7 @@ pub fn fit(
     degree: usize,
 ) -> Result<Fitted, SigmaVError> {
     let k = &bs.k;
-    let mut pps = SigmaVPps::build(k, &FlatBase(k), kappa, degree)?;
+    let mut pps = SigmaVPps::unfitted(k, kappa, degree, FIT_TARGET)?;
     let d = pps.degree;
     let ncp = num_control_points(d);
     let coef = multinomials(d);
@@ -253,9 +242,8 @@ pub fn fit(
             };
             for s in &samples {
                 let sec = (kk + s.sector) % m;
-                let f = g.face_of(Corner { v, k: sec });
                 let corners = [v, g.link(v, sec), g.link(v, (sec + 1) % m)];
-                let x = FlatBase(k).eval(f, corners, s.bary);
+                let x = flat(k, corners, s.bary);
                 let l = w.envelope_bary(&P2::new(s.p[0], s.p[1]));
                 add(l, x, PRIOR_WEIGHT, &mut buf);
             }
@@ -266,7 +254,11 @@ pub fn fit(
             }
             let eig = nalgebra::SymmetricEigen::new(ata.clone());
             let ev = &eig.eigenvalues;
-            let emax = ev.iter().cloned().fold(0.0f64, f64::max);
+            // NaN-propagating: a NaN eigenvalue makes the condition NaN, which AF-fit-rank fails.
+            let emax = ev
+                .iter()
+                .cloned()
+                .fold(0.0f64, crate::report::harness::dev_max);
             let emin = ev.iter().cloned().fold(f64::INFINITY, f64::min);
             let cut = emax * (ncp as f64) * f64::EPSILON;
             let rank = ev.iter().filter(|&&e| e > cut).count() as u32;

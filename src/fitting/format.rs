@@ -9,7 +9,6 @@ use crate::construction::sigma_v::{Corner, CornerId, SigmaVPps};
 use crate::mesh::raw::RawMesh;
 use crate::mesh::validate::validate;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
-use crate::surface::TargetSurface;
 use std::fmt::Write as _;
 use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
@@ -64,17 +63,6 @@ pub struct FitFile {
     pub pps: SigmaVPps,
     /// The parameters of the vertices of S_T.
     pub params: Vec<SurfaceParam>,
-}
-
-struct Flat<'a>(&'a SimplicialSurface);
-impl TargetSurface for Flat<'_> {
-    fn name(&self) -> &str {
-        "fitted to S_T"
-    }
-    fn eval(&self, _f: FaceId, c: [VertexId; 3], b: [f64; 3]) -> [f64; 3] {
-        let p = c.map(|v| self.0.position(v));
-        std::array::from_fn(|i| b[0] * p[0][i] + b[1] * p[1][i] + b[2] * p[2][i])
-    }
 }
 
 /// Write `fit` to `path`.
@@ -160,6 +148,13 @@ pub fn read_fit(path: &Path) -> Result<FitFile, FitFormatError> {
             msg: format!("field {i}: {s:?} is not a number of the expected kind"),
         })
     }
+    let num3 = |w: &[String], i: usize, l: usize| -> Result<[f64; 3], FitFormatError> {
+        Ok([
+            num(w, i, l, path)?,
+            num(w, i + 1, l, path)?,
+            num(w, i + 2, l, path)?,
+        ])
+    };
     let (l, w) = next(MAGIC)?;
     let ver: u32 = num(&w, 1, l, path)?;
     if ver != VERSION {
@@ -189,11 +184,7 @@ pub fn read_fit(path: &Path) -> Result<FitFile, FitFormatError> {
     let mut fine_of = Vec::new();
     for _ in 0..nv {
         let (l, w) = next("v")?;
-        pos.push([
-            num(&w, 1, l, path)?,
-            num(&w, 2, l, path)?,
-            num(&w, 3, l, path)?,
-        ]);
+        pos.push(num3(&w, 1, l)?);
         let f: u32 = num(&w, 4, l, path)?;
         if f as usize >= nfine {
             return Err(perr(l, format!("fine id {f} ≥ fine_vertices {nfine}")));
@@ -217,11 +208,12 @@ pub fn read_fit(path: &Path) -> Result<FitFile, FitFormatError> {
     let k = validate(&raw)
         .surface
         .ok_or_else(|| invalid("the base mesh is not a simplicial surface (Sec. 3.1)".into()))?;
-    let mut pps = SigmaVPps::build(&k, &Flat(&k), kappa, degree).map_err(|e| {
-        invalid(format!(
-            "the (sigma, v) construction refused the base mesh: {e}"
-        ))
-    })?;
+    let mut pps =
+        SigmaVPps::unfitted(&k, kappa, degree, super::fitted::FIT_TARGET).map_err(|e| {
+            invalid(format!(
+                "the (sigma, v) construction refused the base mesh: {e}"
+            ))
+        })?;
     let ids: Vec<CornerId> = pps.gluing.ids().collect();
     for id in ids {
         let (l, w) = next("c")?;
@@ -246,11 +238,7 @@ pub fn read_fit(path: &Path) -> Result<FitFile, FitFormatError> {
         let mut cps = Vec::with_capacity(n);
         for _ in 0..n {
             let (l, w) = next("p")?;
-            cps.push([
-                num(&w, 1, l, path)?,
-                num(&w, 2, l, path)?,
-                num(&w, 3, l, path)?,
-            ]);
+            cps.push(num3(&w, 1, l)?);
         }
         pps.patch_mut(id).copy_from_slice(&cps);
     }
@@ -261,14 +249,7 @@ pub fn read_fit(path: &Path) -> Result<FitFile, FitFormatError> {
         if f as usize >= k.num_faces() {
             return Err(perr(l, format!("face {f} ≥ base_faces {}", k.num_faces())));
         }
-        params.push((
-            FaceId(f),
-            [
-                num(&w, 2, l, path)?,
-                num(&w, 3, l, path)?,
-                num(&w, 4, l, path)?,
-            ],
-        ));
+        params.push((FaceId(f), num3(&w, 2, l)?));
     }
     if let Some((i, _)) = lines.next() {
         return Err(perr(

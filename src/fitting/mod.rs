@@ -258,9 +258,9 @@ fn fit_once(
                             }
                         }
                     }
-                    let worst = cand.into_iter().max_by(|&a, &b| {
-                        flat_deviation(&base, a).total_cmp(&flat_deviation(&base, b))
-                    });
+                    let worst = cand
+                        .into_iter()
+                        .max_by(|&a, &b| base.flat_deviation(a).total_cmp(&base.flat_deviation(b)));
                     match worst {
                         Some(x) if !base.is_base(x) => {
                             refine::insert(&mut base, x, &mut st);
@@ -386,16 +386,5 @@ fn fit_once(
                 folds: folds.len(),
             });
         }
-    }
-}
-
-/// Distance of vertex x of S_T from its place on the flat base triangle.
-fn flat_deviation(base: &BaseMesh, x: u32) -> f64 {
-    match base.params()[x as usize] {
-        base::Param::Face { f, b } => base.flat_point(f, b).map_or(f64::INFINITY, |q| {
-            let p = base.positions()[x as usize];
-            crate::numeric::robust_norm(&[q[0] - p[0], q[1] - p[1], q[2] - p[2]])
-        }),
-        base::Param::Vertex => 0.0,
     }
 }

@@ -111,16 +111,13 @@ impl SigmaVPps {
         kappa: f64,
         degree: usize,
     ) -> Result<Self, SigmaVError> {
-        let g = SigmaV::new(k, kappa)?;
-        let degree = degree.clamp(1, super::patch::MAX_PATCH_DEGREE);
-        let ncp = num_control_points(degree);
-        let consts = SvConsts::<f64>::new(&g, 53);
+        let mut pps = Self::unfitted(k, kappa, degree, target.name())?;
+        let (g, ncp) = (&pps.gluing, pps.ncp);
         let fits: Vec<TriFit> = g
             .degrees()
             .par_iter()
-            .map(|&m| factor(consts.wedge(m), degree))
+            .map(|&m| factor(pps.consts.wedge(m), pps.degree))
             .collect();
-        let mut cps = vec![[0.0; 3]; g.len() * ncp];
         // Work items: (fit, vertices of its degree), chunked.
         let mut tasks: Vec<(&TriFit, Vec<VertexId>)> = Vec::new();
         for f in &fits {
@@ -132,23 +129,40 @@ impl SigmaVPps {
         }
         let results: Vec<Vec<(u32, Vec<[f64; 3]>)>> = tasks
             .par_iter()
-            .map(|(fit, vs)| fit_vertices(&g, target, fit, vs, ncp))
+            .map(|(fit, vs)| fit_vertices(g, target, fit, vs, ncp))
             .collect();
         for batch in results {
             for (c, pts) in batch {
                 let s = c as usize * ncp;
-                cps[s..s + ncp].copy_from_slice(&pts);
+                pps.cps[s..s + ncp].copy_from_slice(&pts);
             }
         }
+        pps.fits = fits.into_iter().map(|f| f.info).collect();
+        Ok(pps)
+    }
+
+    /// The construction over K with every control point 0 and no sampled fit, for shape
+    /// functions fitted or read elsewhere (the adaptive fit, `fitting`), set through
+    /// [`Self::patch_mut`]; `target_name` names what they approximate.
+    pub fn unfitted(
+        k: &SimplicialSurface,
+        kappa: f64,
+        degree: usize,
+        target_name: &str,
+    ) -> Result<Self, SigmaVError> {
+        let g = SigmaV::new(k, kappa)?;
+        let degree = degree.clamp(1, super::patch::MAX_PATCH_DEGREE);
+        let ncp = num_control_points(degree);
+        let consts = SvConsts::<f64>::new(&g, 53);
         Ok(SigmaVPps {
+            cps: vec![[0.0; 3]; g.len() * ncp],
             gluing: g,
             degree,
             fault: None,
-            target_name: target.name().to_string(),
+            target_name: target_name.to_string(),
             coef: multinomials(degree),
             ncp,
-            cps,
-            fits: fits.into_iter().map(|f| f.info).collect(),
+            fits: Vec::new(),
             consts,
         })
     }
