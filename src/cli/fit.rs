@@ -3,8 +3,9 @@
 
 use super::load::surface as load;
 use crate::construction::sigma_v::checks::{check_built, sv_erratum, SvCheckOptions};
+use crate::construction::sigma_v::SigmaVPps;
 use crate::fitting::{fit_surface, FitOptions};
-use crate::report::render_text;
+use crate::report::{render_text, CheckResult};
 use clap::Args;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -50,20 +51,6 @@ pub struct FitArgs {
     pub quiet: bool,
 }
 
-/// Diagonal of the bounding box of the vertices.
-fn diagonal(k: &crate::mesh::SimplicialSurface) -> f64 {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for v in k.vertices() {
-        let p = k.position(v);
-        for i in 0..3 {
-            lo[i] = lo[i].min(p[i]);
-            hi[i] = hi[i].max(p[i]);
-        }
-    }
-    crate::numeric::robust_norm(&[hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]])
-}
-
 /// Run `ppm fit`.
 pub fn run(a: FitArgs) -> ExitCode {
     let t0 = Instant::now();
@@ -71,7 +58,7 @@ pub fn run(a: FitArgs) -> ExitCode {
         Ok(k) => k,
         Err(c) => return c,
     };
-    let diag = diagonal(&k);
+    let diag = crate::oracle::tsv_diff::diagonal(&k);
     let eps = if a.relative {
         a.epsilon * diag
     } else {
@@ -103,12 +90,8 @@ pub fn run(a: FitArgs) -> ExitCode {
     if !quiet {
         eprintln!("[{:7.1} s] checking the fit", t0.elapsed().as_secs_f64());
     }
-    let checks = fit_checks(&k, &fit, a.seed, a.kappa, a.patch_degree);
-    let unexpected: Vec<String> = checks
-        .iter()
-        .filter(|r| r.failed() && sv_erratum(&r.id).is_none())
-        .map(|r| r.id.clone())
-        .collect();
+    let checks = fit_checks(&k, &fit, a.seed);
+    let unexpected = unexpected(&checks);
     let last = fit.rounds.last();
     let summary = serde_json::json!({
         "mesh": a.file.display().to_string(),
@@ -149,23 +132,9 @@ pub fn run(a: FitArgs) -> ExitCode {
         );
     }
     if !a.json {
-        print!("{}", render_text(&checks));
-        for r in checks.iter().filter(|r| r.failed()) {
-            if let Some(why) = sv_erratum(&r.id) {
-                println!("documented erratum {}: {why}", r.id);
-            }
-        }
-        if unexpected.is_empty() {
-            println!("verdict: no failure beyond the documented errata");
-        } else {
-            println!("verdict: unexpected failures: {}", unexpected.join(", "));
-        }
+        print_checks(&checks, &unexpected);
     }
-    if unexpected.is_empty() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    }
+    status(&unexpected)
 }
 
 /// The checks of each stage (SPEC `AF-…`) and those of the (σ, v) construction on the
@@ -174,19 +143,54 @@ fn fit_checks(
     k: &crate::mesh::SimplicialSurface,
     fit: &crate::fitting::Fit,
     seed: u64,
-    kappa: f64,
-    degree: usize,
-) -> Vec<crate::report::CheckResult> {
+) -> Vec<CheckResult> {
     let mut out = crate::fitting::checks::run_fit_checks(k, fit, seed);
+    out.extend(sv_checks(&fit.surface.k, &fit.fitted.pps, seed));
+    out
+}
+
+/// The (σ, v) checks (Def. 3.4.1, condition (C), smoothness, eval) on a fitted PPS over K.
+fn sv_checks(k: &crate::mesh::SimplicialSurface, pps: &SigmaVPps, seed: u64) -> Vec<CheckResult> {
     let o = SvCheckOptions {
         seed,
-        kappa,
-        patch_degree: degree,
+        kappa: pps.gluing.kappa,
+        patch_degree: pps.degree,
         ..SvCheckOptions::default()
     };
-    let pps = &fit.fitted.pps;
-    out.extend(check_built(&fit.surface.k, &pps.gluing, pps, &o));
-    out
+    check_built(k, &pps.gluing, pps, &o)
+}
+
+/// The failures that are not documented errata of the (σ, v) construction.
+fn unexpected(checks: &[CheckResult]) -> Vec<String> {
+    checks
+        .iter()
+        .filter(|r| r.failed() && sv_erratum(&r.id).is_none())
+        .map(|r| r.id.clone())
+        .collect()
+}
+
+/// The check table, the documented errata met, and the verdict line.
+fn print_checks(checks: &[CheckResult], unexpected: &[String]) {
+    print!("{}", render_text(checks));
+    for r in checks.iter().filter(|r| r.failed()) {
+        if let Some(why) = sv_erratum(&r.id) {
+            println!("documented erratum {}: {why}", r.id);
+        }
+    }
+    if unexpected.is_empty() {
+        println!("verdict: no failure beyond the documented errata");
+    } else {
+        println!("verdict: unexpected failures: {}", unexpected.join(", "));
+    }
+}
+
+/// Exit 1 on a failure that is not a documented erratum.
+fn status(unexpected: &[String]) -> ExitCode {
+    if unexpected.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    }
 }
 
 /// Read a fitted-surface file, printing the typed error (file and line) on failure.
@@ -258,18 +262,8 @@ pub fn check_fit_file(file: &std::path::Path, json: bool, seed: u64) -> ExitCode
         Ok(f) => f,
         Err(c) => return c,
     };
-    let o = SvCheckOptions {
-        seed,
-        kappa: f.pps.gluing.kappa,
-        patch_degree: f.pps.degree,
-        ..SvCheckOptions::default()
-    };
-    let checks = check_built(&f.k, &f.pps.gluing, &f.pps, &o);
-    let unexpected: Vec<&str> = checks
-        .iter()
-        .filter(|r| r.failed() && sv_erratum(&r.id).is_none())
-        .map(|r| r.id.as_str())
-        .collect();
+    let checks = sv_checks(&f.k, &f.pps, seed);
+    let unexpected = unexpected(&checks);
     if json {
         let out = serde_json::json!({"fit": file.display().to_string(), "checks": checks, "unexpected_failures": unexpected});
         println!("{}", serde_json::to_string_pretty(&out).unwrap_or_default());
@@ -280,16 +274,7 @@ pub fn check_fit_file(file: &std::path::Path, json: bool, seed: u64) -> ExitCode
             f.k.num_vertices(),
             f.epsilon
         );
-        print!("{}", render_text(&checks));
-        if unexpected.is_empty() {
-            println!("verdict: no failure beyond the documented errata");
-        } else {
-            println!("verdict: unexpected failures: {}", unexpected.join(", "));
-        }
+        print_checks(&checks, &unexpected);
     }
-    if unexpected.is_empty() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    }
+    status(&unexpected)
 }

@@ -476,18 +476,14 @@ where
             lambda,
             mu,
             nu,
-            ..
-        } if crate::fitting::format::is_fit_file(&file) => {
-            fit::eval_fit(&file, face, [lambda, mu, nu])
-        }
-        Command::Eval {
-            file,
-            face,
-            lambda,
-            mu,
-            nu,
             profile,
             surface,
-        } => sample::run_eval(&file, face, [lambda, mu, nu], &profile, &surface),
+        } => {
+            if crate::fitting::format::is_fit_file(&file) {
+                fit::eval_fit(&file, face, [lambda, mu, nu])
+            } else {
+                sample::run_eval(&file, face, [lambda, mu, nu], &profile, &surface)
+            }
+        }
     }
 }

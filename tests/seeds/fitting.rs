@@ -11,24 +11,13 @@ use pseudomanifold::fitting::format::{read_fit, write_fit, FitFormatError};
 use pseudomanifold::fitting::{fit_surface, Fit, FitOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{generate, SimplicialSurface};
+use pseudomanifold::oracle::tsv_diff::diagonal;
 use pseudomanifold::report::Verdict;
 
 fn torus() -> SimplicialSurface {
     validate(&generate::torus(24, 12))
         .surface
         .expect("the generated torus is a simplicial surface")
-}
-
-fn diagonal(k: &SimplicialSurface) -> f64 {
-    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-    for v in k.vertices() {
-        let p = k.position(v);
-        for i in 0..3 {
-            lo[i] = lo[i].min(p[i]);
-            hi[i] = hi[i].max(p[i]);
-        }
-    }
-    (0..3).map(|i| (hi[i] - lo[i]).powi(2)).sum::<f64>().sqrt()
 }
 
 fn fit(k: &SimplicialSurface, rel: f64) -> Fit {
