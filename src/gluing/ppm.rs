@@ -57,7 +57,7 @@ where
             r.deviation_within(d, t, || {
                 Witness::new(
                     format!(
-                        "(i,j)=({i},{j}): θ_{i}({}) = {a:?} ≠ θ_{j}(φ_{j}{i}(x)) = {b:?}",
+                        "(i,j)=({i},{j}): θ_{i}({}) = {a:?} ≠ θ_{j}(φ_({j},{i})(x)) = {b:?}",
                         fmt_point(&x)
                     ),
                     json!({"kind": "c", "i": i, "j": j, "x": point_json(&x), "deviation": d}),
@@ -181,7 +181,7 @@ where
                                 "(i,j)=({i},{j}): θ_{i}({}) = θ_{j}({}) ≈ {target:?} (gap {d:.2e}){}",
                                 fmt_point(&a),
                                 fmt_point(&b),
-                                if want_k { format!(" with a ∉ Ω_{i}{j}") } else { format!(" though ({i},{j}) ∉ K") }
+                                if want_k { format!(" with a ∉ Ω_({i},{j})") } else { format!(" though ({i},{j}) ∉ K") }
                             ),
                             json!({"kind": "coincidence", "i": i, "j": j, "a": point_json(&a), "b": point_json(&b), "gap": d}),
                         )

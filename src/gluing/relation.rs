@@ -213,7 +213,7 @@ pub fn check_claim(g: &Exact1d, s: &GridSample) -> CheckResult {
                         r.offend(|| {
                             Witness::new(
                                 format!(
-                                    "[{}] ∈ τ_{i}(Ω_{i}) ∩ τ_{j}(Ω_{j}) but {} ∉ Ω_{i}{j}: class {{{}}}",
+                                    "[{}] ∈ τ_{i}(Ω_{i}) ∩ τ_{j}(Ω_{j}) but {} ∉ Ω_({i},{j}): class {{{}}}",
                                     fmt_t(p), fmt_q(&p.1), c.iter().map(fmt_t).collect::<Vec<_>>().join(", ")
                                 ),
                                 json!({"kind": "not_in_gluing_domain", "i": i, "j": j, "x": fmt_q(&p.1)}),

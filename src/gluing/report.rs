@@ -40,7 +40,7 @@ pub fn gluing_report(path: &Path, json: bool) -> Result<(String, bool), GluingFi
         for ((i, j), ps) in &f.data.glue {
             for p in ps {
                 s.push_str(&format!(
-                    "  φ_{j}{i} : Ω_{i}{j} → Ω_{j}{i}, {}\n",
+                    "  φ_({j},{i}) : Ω_({i},{j}) → Ω_({j},{i}), {}\n",
                     p.describe()
                 ));
             }

@@ -213,7 +213,7 @@ fn d3_4_1_cli_reports_verdict_table_with_witnesses() {
     assert!(!ok);
     assert!(text.contains("FAILS    D3.4.1(4)"), "{text}");
     assert!(
-        text.contains("x = -2 ∈ ∂Ω_12 ∩ Ω_1, y = 2 ∈ ∂Ω_21 ∩ Ω_2"),
+        text.contains("x = -2 ∈ ∂Ω_(1,2) ∩ Ω_1, y = 2 ∈ ∂Ω_(2,1) ∩ Ω_2"),
         "{text}"
     );
     let (text, ok) = gluing_report(&path("circle3"), false).expect("runs");

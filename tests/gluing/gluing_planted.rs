@@ -144,6 +144,64 @@ fn d3_4_1_2_planted_gluing_domain_outside_asymmetric_k_and_diagonal() {
     assert_caught(&sampled::check_2(&g, &cfg), "diag");
 }
 
+/// `circle3` with a sampler that never finds a point of Ω_21 (as a rejection sampler can miss
+/// a sliver a few ulps wide): membership and φ are untouched.
+struct BlindTo21(Exact1d);
+
+impl GluingData<1> for BlindTo21 {
+    type S = f64;
+    fn indices(&self) -> Vec<Idx> {
+        self.0.indices()
+    }
+    fn in_p_domain(&self, i: Idx, p: &Point<f64, 1>) -> bool {
+        self.0.in_p_domain(i, p)
+    }
+    fn in_gluing_domain(&self, i: Idx, j: Idx, p: &Point<f64, 1>) -> bool {
+        self.0.in_gluing_domain(i, j, p)
+    }
+    fn phi(&self, j: Idx, i: Idx, p: &Point<f64, 1>) -> Option<Point<f64, 1>> {
+        GluingData::<1>::phi(&self.0, j, i, p)
+    }
+    fn sample_p_domain(&self, i: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<Point<f64, 1>> {
+        self.0.sample_p_domain(i, rng, n)
+    }
+    fn sample_gluing_domain(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<f64, 1>> {
+        if (i, j) == (2, 1) {
+            return vec![];
+        }
+        self.0.sample_gluing_domain(i, j, rng, n)
+    }
+    fn gluing_boundary_points(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<f64, 1>> {
+        self.0.gluing_boundary_points(i, j, rng, n)
+    }
+}
+
+#[test]
+fn d3_4_1_2_sampler_miss_is_not_an_asymmetric_k() {
+    // Ω_21 ≠ ∅ but its sampler finds nothing: φ_21 carries points of Ω_12 into Ω_21, which
+    // the membership test confirms, so K is symmetric (a fitted base mesh of the cube met
+    // this: SPEC `SV-D3.4.1(2)`).
+    let cfg = SampleConfig::default();
+    let r = sampled::check_2(&BlindTo21(load("circle3")), &cfg);
+    assert!(!r.failed() && r.examined > 0, "{r:?}");
+    // With Ω_21 really empty the blind sampler changes nothing: still caught.
+    let mut g = load("circle3");
+    g.glue.remove(&(2, 1));
+    assert_caught(&sampled::check_2(&BlindTo21(g), &cfg), "asymmetric_k");
+}
+
 #[test]
 fn d3_4_1_3_planted_not_a_bijection() {
     // φ_21 = 2x + 6 maps (2,3) onto (10,12), not onto Ω_21 = (10,11).

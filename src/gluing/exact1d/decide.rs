@@ -287,7 +287,7 @@ pub fn check_2(g: &Exact1d) -> CheckResult {
             if let Some(x) = oij.subset_witness(&g.omega(i)) {
                 r.offend(|| {
                     Witness::new(
-                        format!("Ω_{i}{j} = {oij} ⊄ Ω_{i}: {} ∉ Ω_{i}", fmt_q(&x)),
+                        format!("Ω_({i},{j}) = {oij} ⊄ Ω_{i}: {} ∉ Ω_{i}", fmt_q(&x)),
                         json!({"kind": "not_subset", "i": i, "j": j, "x": qs(&x)}),
                     )
                 });
@@ -296,7 +296,7 @@ pub fn check_2(g: &Exact1d) -> CheckResult {
                 if let Some(x) = g.omega(i).subset_witness(&oij) {
                     r.offend(|| {
                         Witness::new(
-                            format!("Ω_{i}{i} = {oij} ≠ Ω_{i}: {} ∈ Ω_{i} ∖ Ω_{i}{i}", fmt_q(&x)),
+                            format!("Ω_({i},{i}) = {oij} ≠ Ω_{i}: {} ∈ Ω_{i} ∖ Ω_({i},{i})", fmt_q(&x)),
                             json!({"kind": "diag", "i": i, "x": qs(&x)}),
                         )
                     });
@@ -306,7 +306,7 @@ pub fn check_2(g: &Exact1d) -> CheckResult {
                 r.offend(|| {
                     Witness::new(
                         format!(
-                            "Ω_{i}{j} = {oij} but Ω_{j}{i} = {}: Ω_ij ≠ ∅ ⇔ Ω_ji ≠ ∅ fails",
+                            "Ω_({i},{j}) = {oij} but Ω_({j},{i}) = {}: Ω_ij ≠ ∅ ⇔ Ω_ji ≠ ∅ fails",
                             g.omega_ij(j, i)
                         ),
                         json!({"kind": "asymmetric_k", "i": i, "j": j}),
@@ -330,7 +330,7 @@ pub fn check_bijection(g: &Exact1d) -> CheckResult {
             if p.a.is_zero() {
                 r.offend(|| {
                     Witness::new(
-                        format!("φ_{j}{i} is constant on {}: not injective", p.dom),
+                        format!("φ_({j},{i}) is constant on {}: not injective", p.dom),
                         json!({"kind": "constant", "i": i, "j": j}),
                     )
                 });
@@ -344,7 +344,7 @@ pub fn check_bijection(g: &Exact1d) -> CheckResult {
                         r.offend(|| {
                             Witness::new(
                                 format!(
-                                    "φ_{j}{i} given twice at {}: {} vs {}",
+                                    "φ_({j},{i}) given twice at {}: {} vs {}",
                                     fmt_q(&x),
                                     fmt_q(&p.eval(&x)),
                                     fmt_q(&o.eval(&x))
@@ -361,7 +361,7 @@ pub fn check_bijection(g: &Exact1d) -> CheckResult {
                         r.offend(|| {
                             Witness::new(
                                 format!(
-                                    "φ_{j}{i} not injective: {} has preimages in {} and {}",
+                                    "φ_({j},{i}) not injective: {} has preimages in {} and {}",
                                     fmt_q(&y),
                                     p.dom,
                                     o.dom
@@ -381,7 +381,7 @@ pub fn check_bijection(g: &Exact1d) -> CheckResult {
             r.offend(|| {
                 Witness::new(
                     format!(
-                        "φ_{j}{i}(Ω_{i}{j}) = {image} ⊄ Ω_{j}{i} = {target}: {} ∉ Ω_{j}{i}",
+                        "φ_({j},{i})(Ω_({i},{j})) = {image} ⊄ Ω_({j},{i}) = {target}: {} ∉ Ω_({j},{i})",
                         fmt_q(&y)
                     ),
                     json!({"kind": "not_into", "i": i, "j": j, "y": qs(&y)}),
@@ -392,7 +392,7 @@ pub fn check_bijection(g: &Exact1d) -> CheckResult {
             r.offend(|| {
                 Witness::new(
                     format!(
-                        "φ_{j}{i} not onto Ω_{j}{i} = {target}: {} has no preimage",
+                        "φ_({j},{i}) not onto Ω_({j},{i}) = {target}: {} has no preimage",
                         fmt_q(&y)
                     ),
                     json!({"kind": "not_onto", "i": i, "j": j, "y": qs(&y)}),
@@ -417,7 +417,7 @@ pub fn check_3a(g: &Exact1d) -> CheckResult {
                 r.offend(|| {
                     Witness::new(
                         format!(
-                            "φ_{i}{i}({}) = {} ≠ {} ({})",
+                            "φ_({i},{i})({}) = {} ≠ {} ({})",
                             fmt_q(&x),
                             fmt_q(&y),
                             fmt_q(&x),
@@ -432,7 +432,7 @@ pub fn check_3a(g: &Exact1d) -> CheckResult {
             r.error(OnError::Offence, UNDEFINED, || {
                 Witness::new(
                     format!(
-                        "φ_{i}{i}({}) undefined, but id_Ω_{i} is defined there",
+                        "φ_({i},{i})({}) undefined, but id_Ω_{i} is defined there",
                         fmt_q(&x)
                     ),
                     json!({"kind": "undefined", "i": i, "x": qs(&x)}),
@@ -456,7 +456,7 @@ pub fn check_3b(g: &Exact1d) -> CheckResult {
         if let Some(x) = oij.subset_witness(&defined) {
             r.error(OnError::Offence, UNDEFINED, || {
                 Witness::new(
-                    format!("φ_{i}{j}(φ_{j}{i}({})) undefined", fmt_q(&x)),
+                    format!("φ_({i},{j})(φ_({j},{i})({})) undefined", fmt_q(&x)),
                     json!({"kind": "undefined", "i": i, "j": j, "x": qs(&x)}),
                 )
             });
@@ -481,7 +481,7 @@ pub fn check_3b(g: &Exact1d) -> CheckResult {
             dev(&mut r, &(&z - &x));
             r.offend(|| {
                 Witness::new(
-                    format!("φ_{i}{j}(φ_{j}{i}({})) = {} ≠ x", fmt_q(&x), fmt_q(&z)),
+                    format!("φ_({i},{j})(φ_({j},{i})({})) = {} ≠ x", fmt_q(&x), fmt_q(&z)),
                     json!({"kind": "not_inverse", "i": i, "j": j, "x": qs(&x), "back": qs(&z)}),
                 )
             });
@@ -529,7 +529,7 @@ pub fn check_3c_with(g: &Exact1d, comp: &mut Compositions) -> CheckResult {
                     r.offend(|| {
                         Witness::new(
                             format!(
-                                "(i,j,k)=({i},{j},{k}): x = {} ∈ φ_{j}{i}⁻¹(Ω_{j}{i} ∩ Ω_{j}{k}) = {d} but x ∉ Ω_{i}{k} = {oik}; so {} ∼ {} ∼ {} yet φ_{k}{i}({}) is undefined",
+                                "(i,j,k)=({i},{j},{k}): x = {} ∈ φ_({j},{i})⁻¹(Ω_({j},{i}) ∩ Ω_({j},{k})) = {d} but x ∉ Ω_({i},{k}) = {oik}; so {} ∼ {} ∼ {} yet φ_({k},{i})({}) is undefined",
                                 fmt_q(&x), fmt_q(&x), at(&y), at(&z), fmt_q(&x)
                             ),
                             json!({"kind": "inclusion", "i": i, "j": j, "k": k, "x": qs(&x), "y": qs_opt(&y), "z": qs_opt(&z)}),
@@ -546,7 +546,7 @@ pub fn check_3c_with(g: &Exact1d, comp: &mut Compositions) -> CheckResult {
                     r.offend(|| {
                         Witness::new(
                             format!(
-                                "(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}(φ_{j}{i}(x)) = {}",
+                                "(i,j,k)=({i},{j},{k}): φ_({k},{i})({}) = {} ≠ φ_({k},{j})(φ_({j},{i})(x)) = {}",
                                 fmt_q(&x), fmt_q(&lhs), fmt_q(&rhs)
                             ),
                             json!({"kind": "equation", "i": i, "j": j, "k": k, "x": qs(&x), "lhs": qs(&lhs), "rhs": qs(&rhs)}),
@@ -599,7 +599,7 @@ pub fn check_grimm_hughes_with(g: &Exact1d, strict: bool, comp: &mut Composition
                         r.offend(|| {
                             Witness::new(
                                 format!(
-                                    "(i,j,k)=({i},{j},{k}): x = {} ∈ Ω_{i}{j} ∩ Ω_{i}{k} but φ_{j}{i}(x) = {} ∉ Ω_{j}{k}, so φ_{k}{j}∘φ_{j}{i}(x) is undefined",
+                                    "(i,j,k)=({i},{j},{k}): x = {} ∈ Ω_({i},{j}) ∩ Ω_({i},{k}) but φ_({j},{i})(x) = {} ∉ Ω_({j},{k}), so φ_({k},{j})∘φ_({j},{i})(x) is undefined",
                                     fmt_q(&x), at(&y)
                                 ),
                                 json!({"kind": "rhs_undefined", "i": i, "j": j, "k": k, "x": qs(&x), "y": qs_opt(&y)}),
@@ -616,7 +616,7 @@ pub fn check_grimm_hughes_with(g: &Exact1d, strict: bool, comp: &mut Composition
                     dev(&mut r, &(&lhs - &rhs));
                     r.offend(|| {
                         Witness::new(
-                            format!("(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}∘φ_{j}{i}(x) = {}", fmt_q(&x), fmt_q(&lhs), fmt_q(&rhs)),
+                            format!("(i,j,k)=({i},{j},{k}): φ_({k},{i})({}) = {} ≠ φ_({k},{j})∘φ_({j},{i})(x) = {}", fmt_q(&x), fmt_q(&lhs), fmt_q(&rhs)),
                             json!({"kind": "equation", "i": i, "j": j, "k": k, "x": qs(&x)}),
                         )
                     });
@@ -692,7 +692,7 @@ pub fn check_4_with_radii(g: &Exact1d) -> (CheckResult, Vec<Separation>) {
                     r.offend(|| {
                         Witness::new(
                             format!(
-                                "(i,j)=({i},{j}): x = {} ∈ ∂Ω_{i}{j} ∩ Ω_{i}, y = {} ∈ ∂Ω_{j}{i} ∩ Ω_{j}, and φ_{j}{i} ({}) extends continuously with x ↦ y: no balls separate them",
+                                "(i,j)=({i},{j}): x = {} ∈ ∂Ω_({i},{j}) ∩ Ω_{i}, y = {} ∈ ∂Ω_({j},{i}) ∩ Ω_{j}, and φ_({j},{i}) ({}) extends continuously with x ↦ y: no balls separate them",
                                 fmt_q(&x), fmt_q(y), p.describe()
                             ),
                             json!({"kind": "not_separated", "i": i, "j": j, "x": qs(&x), "y": qs(y)}),

@@ -27,13 +27,13 @@ pub fn check_maps_into<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConf
             match g.phi(j, i, &x) {
                 None => r.error(OnError::Offence, UNDEFINED, || {
                     Witness::new(
-                        format!("φ_{j}{i}({}) undefined though the point is in Ω_{i}{j}", fmt_point(&x)),
+                        format!("φ_({j},{i})({}) undefined though the point is in Ω_({i},{j})", fmt_point(&x)),
                         json!({"kind": "undefined", "i": i, "j": j, "x": point_json(&x)}),
                     )
                 }),
                 Some(y) if !g.in_gluing_domain(j, i, &y) => r.holds(false, || {
                     Witness::new(
-                        format!("φ_{j}{i}({}) = {} ∉ Ω_{j}{i}", fmt_point(&x), fmt_point(&y)),
+                        format!("φ_({j},{i})({}) = {} ∉ Ω_({j},{i})", fmt_point(&x), fmt_point(&y)),
                         json!({"kind": "not_into", "i": i, "j": j, "x": point_json(&x), "y": point_json(&y)}),
                     )
                 }),
@@ -55,7 +55,7 @@ pub fn check_3a<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
             match g.phi(i, i, &x) {
                 None => r.error(OnError::Offence, UNDEFINED, || {
                     Witness::new(
-                        format!("φ_{i}{i}({}) undefined", fmt_point(&x)),
+                        format!("φ_({i},{i})({}) undefined", fmt_point(&x)),
                         json!({"kind": "undefined", "i": i, "x": point_json(&x)}),
                     )
                 }),
@@ -63,7 +63,7 @@ pub fn check_3a<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                     let d = dist(&x, &y);
                     r.deviation_within(d, t, || {
                         Witness::new(
-                            format!("φ_{i}{i}({}) = {} ≠ {}", fmt_point(&x), fmt_point(&y), fmt_point(&x)),
+                            format!("φ_({i},{i})({}) = {} ≠ {}", fmt_point(&x), fmt_point(&y), fmt_point(&x)),
                             json!({"kind": "not_identity", "i": i, "x": point_json(&x), "phi": point_json(&y), "deviation": d}),
                         )
                     });
@@ -94,7 +94,7 @@ pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                 None => r.error(OnError::Offence, UNDEFINED, || {
                     Witness::new(
                         format!(
-                            "φ_{i}{j}(φ_{j}{i}({})) undefined: φ_{j}{i}(x) = {} ∉ Ω_{j}{i}",
+                            "φ_({i},{j})(φ_({j},{i})({})) undefined: φ_({j},{i})(x) = {} ∉ Ω_({j},{i})",
                             fmt_point(&x),
                             fmt_point(&y)
                         ),
@@ -105,7 +105,7 @@ pub fn check_3b<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                     let d = dist(&x, &z);
                     r.deviation_within(d, t, || {
                         Witness::new(
-                            format!("φ_{i}{j}(φ_{j}{i}({})) = {} ≠ x", fmt_point(&x), fmt_point(&z)),
+                            format!("φ_({i},{j})(φ_({j},{i})({})) = {} ≠ x", fmt_point(&x), fmt_point(&z)),
                             json!({"kind": "not_inverse", "i": i, "j": j, "x": point_json(&x), "back": point_json(&z), "deviation": d}),
                         )
                     });
@@ -169,7 +169,7 @@ pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                         r.holds(false, || {
                             Witness::new(
                                 format!(
-                                    "(i,j,k)=({i},{j},{k}): x = {} ∈ φ_{j}{i}⁻¹(Ω_{j}{i} ∩ Ω_{j}{k}) but x ∉ Ω_{i}{k} (domain inclusion fails)",
+                                    "(i,j,k)=({i},{j},{k}): x = {} ∈ φ_({j},{i})⁻¹(Ω_({j},{i}) ∩ Ω_({j},{k})) but x ∉ Ω_({i},{k}) (domain inclusion fails)",
                                     fmt_point(x)
                                 ),
                                 json!({"kind": "inclusion", "i": i, "j": j, "k": k, "x": point_json(x), "y": point_json(&y)}),
@@ -181,7 +181,7 @@ pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                         // x ∈ Ω_ik and φ_ji(x) ∈ Ω_jk: both sides are claimed defined.
                         r.error(OnError::Offence, UNDEFINED, || {
                             Witness::new(
-                                format!("(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) or φ_{k}{j}(φ_{j}{i}(x)) undefined", fmt_point(x)),
+                                format!("(i,j,k)=({i},{j},{k}): φ_({k},{i})({}) or φ_({k},{j})(φ_({j},{i})(x)) undefined", fmt_point(x)),
                                 json!({"kind": "undefined", "i": i, "j": j, "k": k, "x": point_json(x)}),
                             )
                         });
@@ -192,7 +192,7 @@ pub fn check_3c<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> 
                     r.deviation_within(d, t, || {
                         Witness::new(
                             format!(
-                                "(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}(φ_{j}{i}(x)) = {}",
+                                "(i,j,k)=({i},{j},{k}): φ_({k},{i})({}) = {} ≠ φ_({k},{j})(φ_({j},{i})(x)) = {}",
                                 fmt_point(x), fmt_point(&z1), fmt_point(&z2)
                             ),
                             json!({"kind": "equation", "i": i, "j": j, "k": k, "x": point_json(x), "lhs": point_json(&z1), "rhs": point_json(&z2), "deviation": d}),
@@ -250,7 +250,7 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
                     let Some(y) = g.phi(j, i, x) else {
                         r.error(rhs_rule, UNDEFINED, || {
                             Witness::new(
-                                format!("(i,j,k)=({i},{j},{k}): φ_{j}{i}({}) undefined though x ∈ Ω_{i}{j}", fmt_point(x)),
+                                format!("(i,j,k)=({i},{j},{k}): φ_({j},{i})({}) undefined though x ∈ Ω_({i},{j})", fmt_point(x)),
                                 json!({"kind": "undefined", "i": i, "j": j, "k": k, "x": point_json(x)}),
                             )
                         });
@@ -260,7 +260,7 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
                     if rhs.is_none() && g.in_gluing_domain(j, k, &y) {
                         r.error(rhs_rule, UNDEFINED, || {
                             Witness::new(
-                                format!("(i,j,k)=({i},{j},{k}): φ_{k}{j}({}) undefined though φ_{j}{i}(x) ∈ Ω_{j}{k} (x = {})", fmt_point(&y), fmt_point(x)),
+                                format!("(i,j,k)=({i},{j},{k}): φ_({k},{j})({}) undefined though φ_({j},{i})(x) ∈ Ω_({j},{k}) (x = {})", fmt_point(&y), fmt_point(x)),
                                 json!({"kind": "undefined", "i": i, "j": j, "k": k, "x": point_json(x), "y": point_json(&y)}),
                             )
                         });
@@ -272,14 +272,14 @@ pub fn check_grimm_hughes<G: GluingData<N>, const N: usize>(
                             let t = tol::<G::S>(norm(&z1).max(norm(x))) * g.amplification();
                             r.deviation_within(d, t, || {
                                 Witness::new(
-                                    format!("(i,j,k)=({i},{j},{k}): φ_{k}{i}({}) = {} ≠ φ_{k}{j}∘φ_{j}{i}(x) = {}", fmt_point(x), fmt_point(&z1), fmt_point(&z2)),
+                                    format!("(i,j,k)=({i},{j},{k}): φ_({k},{i})({}) = {} ≠ φ_({k},{j})∘φ_({j},{i})(x) = {}", fmt_point(x), fmt_point(&z1), fmt_point(&z2)),
                                     json!({"kind": "equation", "i": i, "j": j, "k": k, "x": point_json(x), "deviation": d}),
                                 )
                             });
                         }
                         (_, None) if strict => r.holds(false, || {
                             Witness::new(
-                                format!("(i,j,k)=({i},{j},{k}): x = {} ∈ Ω_{i}{j} ∩ Ω_{i}{k} but φ_{k}{j}∘φ_{j}{i}(x) undefined (φ_{j}{i}(x) ∉ Ω_{j}{k})", fmt_point(x)),
+                                format!("(i,j,k)=({i},{j},{k}): x = {} ∈ Ω_({i},{j}) ∩ Ω_({i},{k}) but φ_({k},{j})∘φ_({j},{i})(x) undefined (φ_({j},{i})(x) ∉ Ω_({j},{k}))", fmt_point(x)),
                                 json!({"kind": "rhs_undefined", "i": i, "j": j, "k": k, "x": point_json(x)}),
                             )
                         }),

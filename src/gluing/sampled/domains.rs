@@ -1,7 +1,7 @@
 //! Sampled checks of Def. 3.4.1(1) (p-domains) and (2) (gluing domains).
 
 use super::SampleConfig;
-use crate::gluing::data::{fmt_point, norm, point_json, GluingData, Point};
+use crate::gluing::data::{fmt_point, norm, point_json, GluingData, Idx, Point};
 use crate::report::{Check, CheckResult, Witness};
 use num_traits::Float;
 use serde_json::json;
@@ -107,7 +107,7 @@ pub fn check_2<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> C
             if !g.in_gluing_domain(i, i, &p) {
                 r.offend(|| {
                     Witness::new(
-                        format!("{} ∈ Ω_{i} but ∉ Ω_{i}{i}: Ω_ii ≠ Ω_i", fmt_point(&p)),
+                        format!("{} ∈ Ω_{i} but ∉ Ω_({i},{i}): Ω_ii ≠ Ω_i", fmt_point(&p)),
                         json!({"kind": "diag", "i": i, "p": point_json(&p)}),
                     )
                 });
@@ -117,17 +117,24 @@ pub fn check_2<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> C
             let s = g.sample_gluing_domain(i, j, &mut rng, cfg.n);
             let back = g.sample_gluing_domain(j, i, &mut rng, 1);
             r.examined += 1;
-            if s.is_empty() != back.is_empty() {
+            // A sampler can miss a sliver of a gluing domain (a few ulps wide near a lens
+            // corner); a point of the other domain carried over by φ and found inside by the
+            // membership test is a witness of non-emptiness too, so a miss is not reported as
+            // a broken K.
+            let carried = |from: &[Point<G::S, N>], a: Idx, b: Idx| {
+                from.iter()
+                    .any(|p| g.phi(b, a, p).is_some_and(|y| g.in_gluing_domain(b, a, &y)))
+            };
+            let ij = !s.is_empty() || carried(&back, j, i);
+            let ji = !back.is_empty() || carried(&s, i, j);
+            if ij != ji {
+                let word = |e: bool| if e { "non-empty" } else { "empty" };
                 r.offend(|| {
                     Witness::new(
                         format!(
-                            "Ω_{i}{j} is {} but Ω_{j}{i} is {}",
-                            if s.is_empty() { "empty" } else { "non-empty" },
-                            if back.is_empty() {
-                                "empty"
-                            } else {
-                                "non-empty"
-                            }
+                            "Ω_({i},{j}) is {} but Ω_({j},{i}) is {} (sampled, and carried over by φ)",
+                            word(ij),
+                            word(ji)
                         ),
                         json!({"kind": "asymmetric_k", "i": i, "j": j}),
                     )
@@ -138,21 +145,21 @@ pub fn check_2<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> C
                 if !g.in_gluing_domain(i, j, p) {
                     r.offend(|| {
                         Witness::new(
-                            format!("sampler of Ω_{i}{j} returned {} ∉ Ω_{i}{j}", fmt_point(p)),
+                            format!("sampler of Ω_({i},{j}) returned {} ∉ Ω_({i},{j})", fmt_point(p)),
                             json!({"kind": "sampler", "i": i, "j": j, "p": point_json(p)}),
                         )
                     });
                 } else if !g.in_p_domain(i, p) {
                     r.offend(|| {
                         Witness::new(
-                            format!("{} ∈ Ω_{i}{j} but ∉ Ω_{i}", fmt_point(p)),
+                            format!("{} ∈ Ω_({i},{j}) but ∉ Ω_{i}", fmt_point(p)),
                             json!({"kind": "not_subset", "i": i, "j": j, "p": point_json(p)}),
                         )
                     });
                 } else if !open_at(p, g.scale().max(norm(p)), |q| g.in_gluing_domain(i, j, q)) {
                     r.offend(|| {
                         Witness::new(
-                            format!("Ω_{i}{j} not open at {}", fmt_point(p)),
+                            format!("Ω_({i},{j}) not open at {}", fmt_point(p)),
                             json!({"kind": "not_open", "i": i, "j": j, "p": point_json(p)}),
                         )
                     });

@@ -188,7 +188,7 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
                 r.holds(false, || {
                     Witness::new(
                         format!(
-                            "(i,j)=({i},{j}): φ_{j}{i} near x = {} is not finite: {}",
+                            "(i,j)=({i},{j}): φ_({j},{i}) near x = {} is not finite: {}",
                             fmt_point(x),
                             fmt_point(z)
                         ),
@@ -218,7 +218,7 @@ pub fn check_4_with_radii<G: GluingData<N>, const N: usize>(
                     r.offend(|| {
                         Witness::new(
                             format!(
-                                "(i,j)=({i},{j}): x = {} ∈ ∂Ω_{i}{j} ∩ Ω_{i}, y = {} ∈ ∂Ω_{j}{i} ∩ Ω_{j}: images of V_x ∩ Ω_{i}{j} come within {last:.3e} of y at radius {r_last:.3e}",
+                                "(i,j)=({i},{j}): x = {} ∈ ∂Ω_({i},{j}) ∩ Ω_{i}, y = {} ∈ ∂Ω_({j},{i}) ∩ Ω_{j}: images of V_x ∩ Ω_({i},{j}) come within {last:.3e} of y at radius {r_last:.3e}",
                                 fmt_point(x), fmt_point(y)
                             ),
                             json!({"kind": "not_separated", "i": i, "j": j, "x": point_json(x), "y": point_json(y), "gap": last}),
