@@ -390,6 +390,34 @@ fn sv_d13_sv_h_empty_sample_is_skipped() {
     assert_eq!(r.examined, 0);
 }
 
+/// SPEC `SV-D13`: a point of an edge one or two ulps from its midpoint lies outside the chart
+/// rule's circle about the opposite corner (tangent there) but its rounded distance said
+/// inside; eval refused it with NotInOmega. Every face, every edge, of meshes with degrees
+/// 4 to 8.
+#[test]
+fn sv_d13_edge_midpoint_ulps_evaluate() {
+    let below = |x: f64, k: u64| f64::from_bits(x.to_bits() - k);
+    let mut examined = 0u64;
+    for k in [bipyramid(7), bipyramid(8), surface(&torus(8, 6))] {
+        let pps = build(&k);
+        for fi in 0..k.num_faces() {
+            for z in 0..3 {
+                for t in [below(0.5, 1), below(0.5, 2), 1.0 - below(0.5, 2)] {
+                    let mut b = [0.0; 3];
+                    b[(z + 1) % 3] = t;
+                    b[(z + 2) % 3] = 1.0 - t;
+                    let x = pps
+                        .eval_f64(FaceId(fi as u32), b)
+                        .unwrap_or_else(|e| panic!("face {fi} bary {b:?}: {e}"));
+                    assert!(x.iter().all(|v| v.is_finite()), "face {fi} bary {b:?}");
+                    examined += 1;
+                }
+            }
+        }
+    }
+    assert!(examined > 0);
+}
+
 #[test]
 fn sv_d13_sv_count_sv_bench_eval_and_sample_watertight() {
     use pseudomanifold::surface::output::edge_use_counts;

@@ -306,9 +306,20 @@ pub fn check_eval(pps: &SigmaVPps, max_faces: usize, seed: u64) -> CheckResult {
             [1.0, 0.0, 0.0],
             [0.0, 1.0, 0.0],
             [0.0, 0.0, 1.0],
-            [0.5, 0.5, 0.0],
             [1.0 / 3.0; 3],
         ];
+        // The edge midpoints and their neighbours one and two ulps away: there the chart
+        // rule's circle (radius √3/2 about the opposite corner) is tangent to the edge and
+        // the rounded distance can pick a chart whose p-domain excludes the point.
+        let below = |x: f64, k: u64| f64::from_bits(x.to_bits() - k);
+        for z in 0..3 {
+            for t in [0.5, below(0.5, 1), below(0.5, 2), 1.0 - below(0.5, 2)] {
+                let mut b = [0.0; 3];
+                b[(z + 1) % 3] = t;
+                b[(z + 2) % 3] = 1.0 - t;
+                pts.push(b);
+            }
+        }
         for _ in 0..8 {
             pts.push(crate::report::uniform_in_triangle(&mut rng));
         }

@@ -389,21 +389,43 @@ impl SigmaVPps {
         let qp = canonical_point(bary, &c.eval);
         let one = S::from_i64(1, c.wedges.prec);
         let h = |p: &P2<S>| P2::new(one.sub(&p.x), p.y.neg());
-        // (corner vertex, label of the face's half-edge, rotation label, chart point z)
-        let (v, k, rot, z) = match choose_chart(Profile::Paper, &qp, &c.eval) {
-            Chart::U => (u, lab(u, w)?, lab(u, x)?, qp),
-            Chart::X => (x, lab(x, u)?, lab(x, u)?, h(&qp)),
-            Chart::W => (w, lab(w, x)?, lab(w, u)?, h(&rotate_frac(&qp, 1, 6))),
+        let place = |chart: Chart| -> Result<(Corner, P2<S>), SigmaVError> {
+            // (corner vertex, label of the face's half-edge, rotation label, chart point z)
+            let (v, k, rot, z) = match chart {
+                Chart::U => (u, lab(u, w)?, lab(u, x)?, qp.clone()),
+                Chart::X => (x, lab(x, u)?, lab(x, u)?, h(&qp)),
+                Chart::W => (w, lab(w, x)?, lab(w, u)?, h(&rotate_frac(&qp, 1, 6))),
+            };
+            let m = g.degree(v);
+            let is_zero =
+                z.x.sign() == Some(Ordering::Equal) && z.y.sign() == Some(Ordering::Equal);
+            let q = if is_zero {
+                z
+            } else {
+                let a = g_v_inv(m, &z).map_err(|_| SigmaVError::BadBarycentric(b))?;
+                rotate_frac(&a, rot as i64, m as i64)
+            };
+            Ok((Corner { v, k }, q))
         };
-        let m = g.degree(v);
-        let is_zero = z.x.sign() == Some(Ordering::Equal) && z.y.sign() == Some(Ordering::Equal);
-        let q = if is_zero {
-            z
-        } else {
-            let a = g_v_inv(m, &z).map_err(|_| SigmaVError::BadBarycentric(b))?;
-            rotate_frac(&a, rot as i64, m as i64)
-        };
-        Ok((Corner { v, k }, q))
+        let first = choose_chart(Profile::Paper, &qp, &c.eval);
+        let chosen = place(first)?;
+        if g.in_wedge(&c.wedges, chosen.0, &chosen.1) {
+            return Ok(chosen);
+        }
+        // The rule's circle about a corner (radius √3/2) is tangent to the opposite edge at
+        // its midpoint, whose image is on ∂W of that corner: a point of the edge an ulp from
+        // the midpoint is outside the circle, but its rounded distance can say inside. Then
+        // the next chart of the rule that holds the point is taken (SPEC `SV-D13`); if none
+        // does, the rule's corner is returned and θ refuses the point.
+        for next in [Chart::U, Chart::X, Chart::W] {
+            if next != first {
+                let other = place(next)?;
+                if g.in_wedge(&c.wedges, other.0, &other.1) {
+                    return Ok(other);
+                }
+            }
+        }
+        Ok(chosen)
     }
 
     /// eval in f64.
