@@ -115,6 +115,36 @@ impl Pps {
         }
     }
 
+    /// The chart of [`Self::choose_chart`] and its point, unless Ω_v of that chart refuses
+    /// the point: the paper's circle about a corner (radius √3/2) is tangent to the opposite
+    /// edge at its midpoint, whose image is on ∂Ω_v, so for a point of the edge an ulp or two
+    /// from the midpoint the rounded distance can pick a corner the point is outside of. Then
+    /// the next chart, in the rule's order, whose Ω_v holds the point is taken (SPEC
+    /// `D6.1.4-eval`); if none does, the rule's chart is returned and θ refuses the point.
+    pub fn chart_holding<S: SurfaceScalar>(
+        &self,
+        f: FaceId,
+        qp: &P2<S>,
+        c: &Consts<S>,
+    ) -> Result<(Chart, VertexId, P2<S>), SurfaceError> {
+        let first = self.choose_chart(qp, c);
+        let (v, q) = self.chart_point(f, first, qp, c)?;
+        if self.in_omega(v, &q, c)? {
+            return Ok((first, v, q));
+        }
+        for next in [Chart::U, Chart::X, Chart::W] {
+            if next == first {
+                continue;
+            }
+            if let Ok((w, p)) = self.chart_point(f, next, qp, c) {
+                if self.in_omega(w, &p, c)? {
+                    return Ok((next, w, p));
+                }
+            }
+        }
+        Ok((first, v, q))
+    }
+
     /// The chart eval chooses for q′ (depends on the profile).
     pub fn choose_chart<S: SurfaceScalar>(&self, qp: &P2<S>, c: &Consts<S>) -> Chart {
         let one = S::from_i64(1, c.prec);
@@ -160,8 +190,7 @@ impl Pps {
         check_barycentric(bary.clone().map(|x| x.to_f64()))?;
         self.face(f)?;
         let qp = canonical_point(bary, c);
-        let chart = self.choose_chart(&qp, c);
-        let (vertex, q) = self.chart_point(f, chart, &qp, c)?;
+        let (chart, vertex, q) = self.chart_holding(f, &qp, c)?;
         let only = self.blend_only(f, chart)?;
         let point = self.theta_visiting(vertex, &q, c, only, visit)?;
         Ok(EvalPoint {

@@ -128,8 +128,7 @@ impl Pps {
         super::eval::check_barycentric(bary)?;
         let cf = self.consts_f64();
         let qp = super::eval::canonical_point(&bary, cf);
-        let chart = self.choose_chart(&qp, cf);
-        let (v, q) = self.chart_point(f, chart, &qp, cf)?;
+        let (chart, v, q) = self.chart_holding(f, &qp, cf)?;
         let only = match self.options.profile {
             super::Profile::Paper => None,
             super::Profile::AuthorsCode => {

@@ -539,6 +539,38 @@ fn d6_1_4_eval_lambda_mu_nu_are_real_barycentric() {
     ));
 }
 
+/// SPEC `D6.1.4-eval`: the rule's circle about a corner (radius √3/2) is tangent to the
+/// opposite edge at its midpoint; a point of the edge one or two ulps from the midpoint lies
+/// outside it, but its rounded distance said inside, and θ refused the chart point (p ∉ Ω_v).
+/// Positions and the curvature path, every face and edge, degrees 5 and 6.
+#[test]
+fn d6_1_4_eval_edge_midpoint_ulps_evaluate() {
+    let below = |x: f64, k: u64| f64::from_bits(x.to_bits() - k);
+    let mut examined = 0u64;
+    for k in [surface(&icosahedron()), surface(&torus(8, 6))] {
+        let pps = build(&k, Profile::Paper);
+        let cj = pps.consts::<pseudomanifold::surface::jet::Jet<f64>>(53);
+        for fi in 0..k.num_faces() {
+            let f = FaceId(fi as u32);
+            for z in 0..3 {
+                for t in [below(0.5, 1), below(0.5, 2), 1.0 - below(0.5, 2)] {
+                    let mut b = [0.0; 3];
+                    b[(z + 1) % 3] = t;
+                    b[(z + 2) % 3] = 1.0 - t;
+                    let x = pps
+                        .eval_f64(f, b)
+                        .unwrap_or_else(|e| panic!("face {fi} bary {b:?}: {e}"));
+                    assert!(x.iter().all(|v| v.is_finite()), "face {fi} bary {b:?}");
+                    pps.eval_geometry(f, b, &cj)
+                        .unwrap_or_else(|e| panic!("geometry, face {fi} bary {b:?}: {e}"));
+                    examined += 1;
+                }
+            }
+        }
+    }
+    assert!(examined > 0);
+}
+
 // ------------------------------------------------------------------ Sec. 3.5 / 3.6, output
 
 #[test]

@@ -419,9 +419,10 @@ impl SigmaVPps {
         // does, the rule's corner is returned and θ refuses the point.
         for next in [Chart::U, Chart::X, Chart::W] {
             if next != first {
-                let other = place(next)?;
-                if g.in_wedge(&c.wedges, other.0, &other.1) {
-                    return Ok(other);
+                if let Ok(other) = place(next) {
+                    if g.in_wedge(&c.wedges, other.0, &other.1) {
+                        return Ok(other);
+                    }
                 }
             }
         }
