@@ -246,6 +246,8 @@ fn d4_1_4_random_surfaces_quickcheck_labels_are_star_isomorphisms() {
     quickcheck::QuickCheck::new()
         .tests(40)
         .quickcheck(prop as fn(u8, Vec<(u8, u16)>) -> bool);
+    // quickcheck panics on a counterexample: reaching here, 40 surfaces held.
+    crate::common::verdicts::record("D4.1.4-random", crate::common::verdicts::Seen::Holds, 40);
 }
 
 /// Degrees from 3 to 20+ are reached: raising vertex 0 of each base 24 times gives degree ≥ 20
