@@ -348,7 +348,7 @@ fn sd_l146_4_d_fixed_non_solitary_maps_on_the_4_simplex_are_certified_exactly() 
             r.verdict().label(),
             r.note
         );
-        assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
+        crate::common::assert_holds(&r);
         assert_eq!(s.certified, samples);
         assert_eq!(s.closed_form_mismatches, 0);
     }
@@ -363,7 +363,7 @@ fn sd_l146_4_d_fixed_non_solitary_maps_on_the_4_simplex_are_certified_exactly() 
             r.verdict().label(),
             r.note
         );
-        assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
+        crate::common::assert_holds(&r);
     }
 }
 
@@ -463,7 +463,7 @@ fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1(
         r.verdict().label(),
         r.note
     );
-    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
+    crate::common::assert_holds(&r);
     assert!(opt.objective < opt.start);
     // The one-edge scan of SD-L268(restricted) (λ on (0, 2) only, j/16): the full optimiser
     // is at least as good (it contains that family).
@@ -544,7 +544,7 @@ fn sd_l146_4_d_every_vertex_configuration_of_degree_4_is_certified() {
         r.verdict().label(),
         r.note
     );
-    assert_eq!(r.verdict(), Verdict::Holds, "{r:?}");
+    crate::common::assert_holds(&r);
 }
 
 fn report_of<'a>(
@@ -602,7 +602,7 @@ fn sd_l314_sd_l314_distance_sd_l316_local_optimiser_during_refinement_vs_closed_
         // The refinement is driven by err with X = id: the same triangulation either way.
         assert_eq!(closed.mesh.faces, opt.mesh.faces);
         let l314 = report_of(&opt.report, "SD-L314");
-        assert_eq!(l314.verdict(), Verdict::Holds, "{}", l314.note);
+        crate::common::assert_holds(&l314);
         assert!(l314.examined > 0);
         assert!(!run.lambdas.is_empty());
         // Every accepted result is certified on its star, so the whole X_1 is a diffeomorphism.
