@@ -121,13 +121,19 @@ pub fn validate(raw: &RawMesh) -> Validation {
     let first_pass = Incidence::build(raw, active.clone());
     let dup = basic::duplicate_faces(raw, &first_pass);
     classes.extend(basic::classes_of(&dup));
-    let mut active = active;
-    for group in first_pass.duplicate_groups() {
-        for &g in group.iter().skip(1) {
-            active[g as usize] = false;
+    let groups = first_pass.duplicate_groups();
+    // Without duplicates the second pass would rebuild the same tables.
+    let inc = if groups.is_empty() {
+        first_pass
+    } else {
+        let mut active = active;
+        for group in groups {
+            for &g in group.iter().skip(1) {
+                active[g as usize] = false;
+            }
         }
-    }
-    let inc = Incidence::build(raw, active);
+        Incidence::build(raw, active)
+    };
     let mut referenced = vec![false; nv];
     for t in raw.faces.iter().filter(|t| in_range(t)) {
         for &i in t {
