@@ -156,7 +156,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
     r.examined(full.len() as u64);
     // Stars of high-degree vertices first (see `fans`): their pairs are decided there, and
     // their corners are cut from the boxes of the general search.
-    let fans = fans(raw, eligible, &RTree::bulk_load(full));
+    let fans = fans(raw, eligible, full);
     let mut hits: Vec<(u32, u32)> = Vec::new();
     let mut tested = 0u64;
     for (v, star) in fans.star.iter().enumerate() {
