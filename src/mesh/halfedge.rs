@@ -85,7 +85,8 @@ impl SimplicialSurface {
         for (f, t) in faces.iter().enumerate() {
             for k in 0..3 {
                 let (a, b) = (t[k].0, t[(k + 1) % 3].0);
-                let leaving_b = &from[from_start[b as usize] as usize..from_start[b as usize + 1] as usize];
+                let leaving_b =
+                    &from[from_start[b as usize] as usize..from_start[b as usize + 1] as usize];
                 let mut found = leaving_b.iter().filter(|&&g| dest(g) == a);
                 // Exactly one b → a on a validated surface (each edge in two consistently
                 // oriented faces).

@@ -9,11 +9,11 @@
 //! condition (C) (the point does not depend on the triangle used, up to rounding).
 
 use super::consts::Consts;
+use super::fit_linear::WordHash;
 use super::jet::{Jet1, Jet2};
 use super::pps::{Pps, SurfaceError};
 use crate::mesh::FaceId;
 use rayon::prelude::*;
-use super::fit_linear::WordHash;
 use std::collections::HashMap;
 use std::hash::BuildHasherDefault;
 use std::io::Write;

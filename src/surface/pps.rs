@@ -212,9 +212,9 @@ impl Pps {
                         .map(|(&m, batches)| {
                             let f = factor_degree(m, options.profile);
                             let major = lin.is_some().then(|| SectorMajor::new(&f));
-                            batches.into_par_iter().for_each(|mut vs| {
-                                fit_batch(k, target, &f, offset_ref, &mut vs)
-                            });
+                            batches
+                                .into_par_iter()
+                                .for_each(|mut vs| fit_batch(k, target, &f, offset_ref, &mut vs));
                             (f, major)
                         })
                         .unzip()

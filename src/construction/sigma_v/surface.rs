@@ -21,7 +21,7 @@ use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::surface::eval::{canonical_point, choose_chart, Chart};
 use crate::surface::geometry::{from_jet, SurfacePoint};
 use crate::surface::jet::Jet;
-use crate::surface::output::{sample_pattern_faces, Attributes, SampledMesh, SamplePoint};
+use crate::surface::output::{sample_pattern_faces, Attributes, SamplePoint, SampledMesh};
 use crate::surface::target::TargetSurface;
 use crate::surface::{Consts, Profile, SurfaceScalar};
 use rayon::prelude::*;

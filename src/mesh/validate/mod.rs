@@ -163,19 +163,18 @@ pub fn validate(raw: &RawMesh) -> Validation {
         classes.push(ErrorClass::CoincidentVertices);
     }
     // The geometric search and the combinatorial checks are independent: side by side.
-    let (crossing, ((edges, c_edges), (links, c_links), (orientation, orient_check))) =
-        rayon::join(
-            || intersect::triangles_meet_properly(raw, &nondegenerate),
-            || {
-                (
-                    surface::edges_in_two_triangles(raw, &inc),
-                    surface::links_are_cycles(raw, &inc),
-                    // Holds exactly when a consistent orientation was found (topology::orient
-                    // offends only on an edge that cannot be oriented).
-                    topology::orient(raw, &inc),
-                )
-            },
-        );
+    let (crossing, ((edges, c_edges), (links, c_links), (orientation, orient_check))) = rayon::join(
+        || intersect::triangles_meet_properly(raw, &nondegenerate),
+        || {
+            (
+                surface::edges_in_two_triangles(raw, &inc),
+                surface::links_are_cycles(raw, &inc),
+                // Holds exactly when a consistent orientation was found (topology::orient
+                // offends only on an edge that cannot be oriented).
+                topology::orient(raw, &inc),
+            )
+        },
+    );
     if crossing.failed() {
         classes.push(ErrorClass::SelfIntersection);
     }
