@@ -532,6 +532,50 @@ fn fit_vertices(
     vs: &mut [(VertexId, &mut [[f64; 3]])],
     ncp: usize,
 ) {
+    pulp::Arch::new().dispatch(FitVertices {
+        g,
+        target,
+        fit,
+        vs,
+        ncp,
+    });
+}
+
+/// [`fit_vertices`] as a [`pulp::WithSimd`] operation: its loops (inlined into `with_simd`)
+/// are compiled for the CPU's vector extensions. Products and sums stay separate operations
+/// (Rust does not contract them into fused multiply-adds), so the bits do not depend on the
+/// CPU.
+struct FitVertices<'a, 'b> {
+    g: &'a SigmaV,
+    target: &'a dyn TargetSurface,
+    fit: &'a TriFit,
+    vs: &'a mut [(VertexId, &'b mut [[f64; 3]])],
+    ncp: usize,
+}
+
+impl pulp::WithSimd for FitVertices<'_, '_> {
+    type Output = ();
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) {
+        let FitVertices {
+            g,
+            target,
+            fit,
+            vs,
+            ncp,
+        } = self;
+        fit_vertices_body(g, target, fit, vs, ncp);
+    }
+}
+
+#[inline(always)]
+fn fit_vertices_body(
+    g: &SigmaV,
+    target: &dyn TargetSurface,
+    fit: &TriFit,
+    vs: &mut [(VertexId, &mut [[f64; 3]])],
+    ncp: usize,
+) {
     let m = fit.info.m;
     let cols = 10 * fit.sectors.len();
     let sector = |v: VertexId, s: u32| -> (FaceId, [VertexId; 3]) {
