@@ -463,7 +463,15 @@ where
                 &attributes,
                 quiet,
             ),
-            "sigma-v" => sigma_v::run_sample(&file, level, &output, kappa, patch_degree, quiet),
+            "sigma-v" => sigma_v::run_sample(
+                &file,
+                level,
+                &output,
+                kappa,
+                patch_degree,
+                &attributes,
+                quiet,
+            ),
             other => {
                 eprintln!("error: --construction {other}: expected vertex or sigma-v");
                 ExitCode::from(2)

@@ -5,6 +5,7 @@ use super::load::surface as load;
 use crate::construction::sigma_v::checks::{run_sigma_v_checks, sv_erratum, SvCheckOptions};
 use crate::construction::sigma_v::SigmaVPps;
 use crate::report::render_text;
+use crate::surface::output::Attributes;
 use crate::surface::PnTriangles;
 use std::path::Path;
 use std::process::ExitCode;
@@ -76,8 +77,13 @@ pub fn run_sample(
     out: &Path,
     kappa: f64,
     degree: usize,
+    attributes: &str,
     quiet: bool,
 ) -> ExitCode {
+    let Some(attrs) = Attributes::parse(attributes) else {
+        eprintln!("error: unknown --attributes {attributes:?} (positions | normals | curvature)");
+        return ExitCode::from(2);
+    };
     let t0 = Instant::now();
     let k = match load(file) {
         Ok(k) => k,
@@ -105,7 +111,7 @@ pub fn run_sample(
             );
         }
     }
-    let m = match pps.sample_surface(level) {
+    let m = match pps.sample_surface_with(level, attrs) {
         Ok(m) => m,
         Err(e) => {
             eprintln!("error: {e}");

@@ -61,23 +61,40 @@ impl SimplicialSurface {
             })
             .collect();
         let nh = 3 * nf;
-        // Twins by sorting directed half-edges (origin, dest).
-        let mut directed: Vec<(u32, u32, u32)> = Vec::with_capacity(nh);
-        for (f, t) in faces.iter().enumerate() {
-            for k in 0..3 {
-                directed.push((t[k].0, t[(k + 1) % 3].0, (3 * f + k) as u32));
+        // Twins through the half-edges grouped by origin (a counting sort, no comparisons): the
+        // twin of a → b is the half-edge b → a, found among the few leaving b.
+        let mut from_start = vec![0u32; nv + 1];
+        for t in &faces {
+            for v in t {
+                from_start[v.idx() + 1] += 1;
             }
         }
-        directed.sort_unstable();
-        let find = |a: u32, b: u32| -> Option<u32> {
-            directed
-                .binary_search_by(|x| (x.0, x.1).cmp(&(a, b)))
-                .ok()
-                .map(|i| directed[i].2)
-        };
+        for v in 0..nv {
+            from_start[v + 1] += from_start[v];
+        }
+        let mut fill = from_start.clone();
+        let mut from = vec![0u32; nh];
+        for (f, t) in faces.iter().enumerate() {
+            for (k, v) in t.iter().enumerate() {
+                from[fill[v.idx()] as usize] = (3 * f + k) as u32;
+                fill[v.idx()] += 1;
+            }
+        }
+        let dest = |h: u32| faces[h as usize / 3][(h as usize + 1) % 3].0;
         let mut twin = vec![HalfedgeId(0); nh];
-        for &(a, b, h) in &directed {
-            twin[h as usize] = HalfedgeId(find(b, a)?);
+        for (f, t) in faces.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = (t[k].0, t[(k + 1) % 3].0);
+                let leaving_b =
+                    &from[from_start[b as usize] as usize..from_start[b as usize + 1] as usize];
+                let mut found = leaving_b.iter().filter(|&&g| dest(g) == a);
+                // Exactly one b → a on a validated surface (each edge in two consistently
+                // oriented faces).
+                let (Some(&g), None) = (found.next(), found.next()) else {
+                    return None;
+                };
+                twin[3 * f + k] = HalfedgeId(g);
+            }
         }
         // Outgoing half-edges per vertex, ordered by rotation rot h = twin(prev h).
         let mut degree = vec![0u32; nv];

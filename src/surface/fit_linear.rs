@@ -25,7 +25,7 @@ use std::hash::{BuildHasherDefault, Hasher};
 /// derived from K) and then a byte-at-a-time FNV-1a showed in profiles; no non-cryptographic
 /// hasher crate is among the dependencies, and this is a few lines.
 #[derive(Default)]
-struct WordHash(u64);
+pub(crate) struct WordHash(u64);
 
 impl WordHash {
     fn mix(&mut self, x: u64) {

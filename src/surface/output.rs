@@ -9,11 +9,13 @@
 //! condition (C) (the point does not depend on the triangle used, up to rounding).
 
 use super::consts::Consts;
+use super::fit_linear::WordHash;
 use super::jet::{Jet1, Jet2};
 use super::pps::{Pps, SurfaceError};
 use crate::mesh::FaceId;
 use rayon::prelude::*;
 use std::collections::HashMap;
+use std::hash::BuildHasherDefault;
 use std::io::Write;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -109,7 +111,9 @@ pub fn sample_pattern_faces(
     }
     let n = 1u32 << level;
     let nf = faces.len();
-    let mut index: HashMap<Key, u32> = HashMap::new();
+    // Lookups only (never iterated), so the hasher does not change the output; keys derived
+    // from K need no DoS-resistant SipHash.
+    let mut index: HashMap<Key, u32, BuildHasherDefault<WordHash>> = HashMap::default();
     let mut out = SamplePattern {
         points: Vec::new(),
         faces: Vec::with_capacity(nf * (n * n) as usize),

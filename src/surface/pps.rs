@@ -193,13 +193,28 @@ impl Pps {
                 .collect(),
             None => Vec::new(),
         };
+        // Cubic-net targets with the paper's fit: each degree's batches are fitted as soon as
+        // that degree is factored, so the small degrees' fits run beside the largest degree's
+        // factorisation (the longest single task) instead of after it.
+        let pipelined = lin.is_none() && !stages.normal_equations;
+        let mut per_degree: Vec<Vec<Batch>> = (0..degs.len()).map(|_| Vec::new()).collect();
+        if pipelined {
+            for (fi, vs) in tasks.drain(..) {
+                per_degree[fi].push(vs);
+            }
+        }
+        let offset_ref = &offset;
         let ((factored, major), plan): ((Vec<DegreeFit>, Vec<Option<SectorMajor>>), _) =
             rayon::join(
                 || {
                     degs.par_iter()
-                        .map(|&m| {
+                        .zip(per_degree.into_par_iter())
+                        .map(|(&m, batches)| {
                             let f = factor_degree(m, options.profile);
                             let major = lin.is_some().then(|| SectorMajor::new(&f));
+                            batches
+                                .into_par_iter()
+                                .for_each(|mut vs| fit_batch(k, target, &f, offset_ref, &mut vs));
                             (f, major)
                         })
                         .unzip()

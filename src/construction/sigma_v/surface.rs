@@ -19,9 +19,9 @@ use super::weight::{gamma_local, WeightConsts};
 use crate::construction::maps::{g_v_inv, rotate_frac, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::surface::eval::{canonical_point, choose_chart, Chart};
-use crate::surface::geometry::from_jet;
+use crate::surface::geometry::{from_jet, SurfacePoint};
 use crate::surface::jet::Jet;
-use crate::surface::output::{sample_pattern_faces, SampledMesh};
+use crate::surface::output::{sample_pattern_faces, Attributes, SamplePoint, SampledMesh};
 use crate::surface::target::TargetSurface;
 use crate::surface::{Consts, Profile, SurfaceScalar};
 use rayon::prelude::*;
@@ -118,25 +118,45 @@ impl SigmaVPps {
             .par_iter()
             .map(|&m| factor(pps.consts.wedge(m), pps.degree))
             .collect();
-        // Work items: (fit, vertices of its degree), chunked.
-        let mut tasks: Vec<(&TriFit, Vec<VertexId>)> = Vec::new();
+        // The control points of the corners at v are one block (corner ids are offset_v + k):
+        // each vertex's block is handed to the task that fits it and written in place.
+        let mut slot: Vec<Option<&mut [[f64; 3]]>> = (0..k.vertex_slots()).map(|_| None).collect();
+        {
+            let mut order: Vec<VertexId> = k.vertices().collect();
+            order.sort_by_key(|&v| g.id(Corner { v, k: 0 }).0);
+            let mut rest: &mut [[f64; 3]] = &mut pps.cps;
+            let mut at = 0usize;
+            for v in order {
+                let start = g.id(Corner { v, k: 0 }).0 as usize * ncp;
+                let len = g.degree(v) as usize * ncp;
+                let (_, r) = std::mem::take(&mut rest).split_at_mut(start - at);
+                let (a, b) = r.split_at_mut(len);
+                slot[v.idx()] = Some(a);
+                rest = b;
+                at = start + len;
+            }
+        }
+        // Work items: (fit, vertices of its degree with their blocks), chunked.
+        type Block<'a> = (VertexId, &'a mut [[f64; 3]]);
+        let mut tasks: Vec<(&TriFit, Vec<Block>)> = Vec::new();
         for f in &fits {
-            let vs: Vec<VertexId> = k.vertices().filter(|&v| k.degree(v) == f.info.m).collect();
             let per = (BATCH / f.info.m as usize).max(1);
-            for ch in vs.chunks(per) {
-                tasks.push((f, ch.to_vec()));
+            let mut cur: Vec<Block> = Vec::with_capacity(per);
+            for v in k.vertices().filter(|&v| k.degree(v) == f.info.m) {
+                if let Some(out) = slot[v.idx()].take() {
+                    cur.push((v, out));
+                }
+                if cur.len() == per {
+                    tasks.push((f, std::mem::take(&mut cur)));
+                }
+            }
+            if !cur.is_empty() {
+                tasks.push((f, cur));
             }
         }
-        let results: Vec<Vec<(u32, Vec<[f64; 3]>)>> = tasks
-            .par_iter()
-            .map(|(fit, vs)| fit_vertices(g, target, fit, vs, ncp))
-            .collect();
-        for batch in results {
-            for (c, pts) in batch {
-                let s = c as usize * ncp;
-                pps.cps[s..s + ncp].copy_from_slice(&pts);
-            }
-        }
+        tasks
+            .into_par_iter()
+            .for_each(|(fit, mut vs)| fit_vertices(g, target, fit, &mut vs, ncp));
         pps.fits = fits.into_iter().map(|f| f.info).collect();
         Ok(pps)
     }
@@ -437,6 +457,18 @@ impl SigmaVPps {
     /// Sample M by midpoint subdivision through eval (the Sec. 6.2 pattern of
     /// `surface::output`, shared), with normals and curvatures from the jets of θ.
     pub fn sample_surface(&self, level: u32) -> Result<SampledMesh, SigmaVError> {
+        self.sample_surface_with(level, Attributes::Curvature)
+    }
+
+    /// [`Self::sample_surface`] computing only `attrs` (the other arrays stay empty):
+    /// positions by θ in f64, normals from order-1 jets, curvatures from order-2 jets (the
+    /// truncated jets' coefficients are those of the higher orders: the products sum the same
+    /// terms in the same order).
+    pub fn sample_surface_with(
+        &self,
+        level: u32,
+        attrs: Attributes,
+    ) -> Result<SampledMesh, SigmaVError> {
         let faces: Vec<_> = (0..self.gluing.num_faces())
             .map(|f| self.gluing.face_corners(FaceId(f as u32)))
             .collect::<Result<_, _>>()?;
@@ -446,30 +478,59 @@ impl SigmaVPps {
             }
             _ => SigmaVError::LevelTooLarge(level),
         })?;
-        let cj = self.consts::<Jet<f64>>(53);
-        let res: Vec<Result<_, SigmaVError>> = pat
-            .points
-            .par_iter()
-            .map(|s| {
-                let (corner, q) = self.eval_chart(s.face, &s.bary, &self.consts)?;
-                let (x, y) = Jet::variables(q.x, q.y);
-                let t = self.theta_plane(corner, &P2::new(x, y), &cj)?;
-                Ok(from_jet(&t))
-            })
-            .collect();
         let mut out = SampledMesh {
             faces: pat.faces,
             title: "ppm sample: C-infinity PPS surface, (sigma, v)-indexed construction (tutorial, Part IV)",
             ..SampledMesh::default()
         };
-        for r in res {
-            let g = r?;
-            out.positions.push(g.point);
-            out.normals.push(g.normal);
-            out.gaussian.push(g.gaussian);
-            out.mean.push(g.mean);
+        match attrs {
+            Attributes::Positions => {
+                let res: Vec<Result<_, SigmaVError>> = pat
+                    .points
+                    .par_iter()
+                    .map(|s| Ok(self.eval(s.face, &s.bary, &self.consts)?.2))
+                    .collect();
+                // The first error in point order, on every run.
+                out.positions = res.into_iter().collect::<Result<_, _>>()?;
+            }
+            Attributes::Normals => {
+                for g in self.geometry::<3>(&pat.points)? {
+                    out.positions.push(g.point);
+                    out.normals.push(g.normal);
+                }
+            }
+            Attributes::Curvature => {
+                for g in self.geometry::<6>(&pat.points)? {
+                    out.positions.push(g.point);
+                    out.normals.push(g.normal);
+                    out.gaussian.push(g.gaussian);
+                    out.mean.push(g.mean);
+                }
+            }
         }
         Ok(out)
+    }
+
+    /// Point, normal and curvatures at each sample from jets of θ of `L` coefficients.
+    fn geometry<const L: usize>(
+        &self,
+        points: &[SamplePoint],
+    ) -> Result<Vec<SurfacePoint>, SigmaVError>
+    where
+        Jet<f64, L>: SurfaceScalar,
+    {
+        let cj = self.consts::<Jet<f64, L>>(53);
+        let res: Vec<Result<_, SigmaVError>> = points
+            .par_iter()
+            .map(|s| {
+                let (corner, q) = self.eval_chart(s.face, &s.bary, &self.consts)?;
+                let (x, y) = Jet::<f64, L>::variables(q.x, q.y);
+                let t = self.theta_plane(corner, &P2::new(x, y), &cj)?;
+                Ok(from_jet(&t))
+            })
+            .collect();
+        // The first error in point order, on every run.
+        res.into_iter().collect()
     }
 
     /// eval of many points in parallel; `out[i]` for `points[i]`.
@@ -485,46 +546,104 @@ impl SigmaVPps {
 }
 
 /// Fit the corners of the vertices `vs` (all of degree fit.info.m). Cubic-net targets: one
-/// product with A⁺W per batch; others: A⁺ times S′ sampled at the fit's samples.
+/// product with A⁺W per batch; others: A⁺ times S′ sampled at the fit's samples. Each vertex's
+/// block holds its corners' control points, `ncp` per corner, corner k at k·ncp.
 fn fit_vertices(
     g: &SigmaV,
     target: &dyn TargetSurface,
     fit: &TriFit,
-    vs: &[VertexId],
+    vs: &mut [(VertexId, &mut [[f64; 3]])],
     ncp: usize,
-) -> Vec<(u32, Vec<[f64; 3]>)> {
+) {
+    pulp::Arch::new().dispatch(FitVertices {
+        g,
+        target,
+        fit,
+        vs,
+        ncp,
+    });
+}
+
+/// [`fit_vertices`] as a [`pulp::WithSimd`] operation: its loops (inlined into `with_simd`)
+/// are compiled for the CPU's vector extensions. Products and sums stay separate operations
+/// (Rust does not contract them into fused multiply-adds), so the bits do not depend on the
+/// CPU.
+struct FitVertices<'a, 'b> {
+    g: &'a SigmaV,
+    target: &'a dyn TargetSurface,
+    fit: &'a TriFit,
+    vs: &'a mut [(VertexId, &'b mut [[f64; 3]])],
+    ncp: usize,
+}
+
+impl pulp::WithSimd for FitVertices<'_, '_> {
+    type Output = ();
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) {
+        let FitVertices {
+            g,
+            target,
+            fit,
+            vs,
+            ncp,
+        } = self;
+        fit_vertices_body(g, target, fit, vs, ncp);
+    }
+}
+
+#[inline(always)]
+fn fit_vertices_body(
+    g: &SigmaV,
+    target: &dyn TargetSurface,
+    fit: &TriFit,
+    vs: &mut [(VertexId, &mut [[f64; 3]])],
+    ncp: usize,
+) {
     let m = fit.info.m;
     let cols = 10 * fit.sectors.len();
-    let mut out = Vec::with_capacity(vs.len() * m as usize);
     let sector = |v: VertexId, s: u32| -> (FaceId, [VertexId; 3]) {
         let c = Corner { v, k: s % m };
         (g.face_of(c), [v, g.link(v, s % m), g.link(v, (s + 1) % m)])
     };
-    for &v in vs {
+    // A⁺W transposed (column j of A⁺W contiguous): the products below run over all control
+    // points at once, each control point's sum still taken term by term in the column order
+    // (the same additions in the same order as row by row, so the same bits).
+    let mut net_t = vec![0.0; cols * ncp];
+    for c in 0..ncp {
+        for j in 0..cols {
+            net_t[j * ncp + c] = fit.net_map[c * cols + j];
+        }
+    }
+    let mut acc = vec![[0.0f64; 3]; ncp];
+    let (mut ax, mut ay, mut az) = (vec![0.0; ncp], vec![0.0; ncp], vec![0.0; ncp]);
+    for (v, block) in vs.iter_mut() {
+        let v = *v;
         let nets: Option<Vec<[[f64; 3]; 10]>> = (0..m)
             .map(|s| {
                 let (f, c) = sector(v, s);
                 target.cubic_net(f, c)
             })
             .collect();
-        for kk in 0..m {
-            let id = g.id(Corner { v, k: kk }).0;
-            let mut cp = vec![[0.0; 3]; ncp];
+        for (kk, out) in (0..m).zip(block.chunks_exact_mut(ncp)) {
             match &nets {
                 Some(nets) => {
-                    for (c, o) in cp.iter_mut().enumerate() {
-                        let row = &fit.net_map[c * cols..(c + 1) * cols];
-                        let mut acc = [0.0; 3];
-                        for (t, &srel) in fit.sectors.iter().enumerate() {
-                            let net = &nets[((kk + srel) % m) as usize];
-                            for (q, p) in net.iter().enumerate() {
-                                let wgt = row[10 * t + q];
-                                acc[0] += wgt * p[0];
-                                acc[1] += wgt * p[1];
-                                acc[2] += wgt * p[2];
+                    ax.fill(0.0);
+                    ay.fill(0.0);
+                    az.fill(0.0);
+                    for (t, &srel) in fit.sectors.iter().enumerate() {
+                        let net = &nets[((kk + srel) % m) as usize];
+                        for (q, p) in net.iter().enumerate() {
+                            let w = &net_t[(10 * t + q) * ncp..(10 * t + q + 1) * ncp];
+                            let lanes = ax.iter_mut().zip(ay.iter_mut()).zip(az.iter_mut());
+                            for (((x, y), z), &wc) in lanes.zip(w) {
+                                *x += wc * p[0];
+                                *y += wc * p[1];
+                                *z += wc * p[2];
                             }
                         }
-                        *o = acc;
+                    }
+                    for (((o, x), y), z) in acc.iter_mut().zip(&ax).zip(&ay).zip(&az) {
+                        *o = [*x, *y, *z];
                     }
                 }
                 None => {
@@ -537,20 +656,19 @@ fn fit_vertices(
                             target.eval(f, c, s.bary)
                         })
                         .collect();
-                    for (c, o) in cp.iter_mut().enumerate() {
+                    for (c, o) in acc.iter_mut().enumerate() {
                         let row = &fit.pinv[c * rows..(c + 1) * rows];
-                        let mut acc = [0.0; 3];
+                        let mut a = [0.0; 3];
                         for (wgt, p) in row.iter().zip(&d) {
-                            acc[0] += wgt * p[0];
-                            acc[1] += wgt * p[1];
-                            acc[2] += wgt * p[2];
+                            a[0] += wgt * p[0];
+                            a[1] += wgt * p[1];
+                            a[2] += wgt * p[2];
                         }
-                        *o = acc;
+                        *o = a;
                     }
                 }
             }
-            out.push((id, cp));
+            out.copy_from_slice(&acc);
         }
     }
-    out
 }

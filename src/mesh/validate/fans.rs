@@ -22,6 +22,8 @@ use rstar::{PointDistance, RTree, RTreeObject, AABB};
 
 /// Vertices with at least this many eligible incident triangles get the star treatment.
 pub const HIGH_DEGREE: usize = 16;
+/// Up to this many stars, the nearest non-incident box is found by a scan (no tree to build).
+const FEW_STARS: usize = 8;
 
 /// A triangle's box in an R*-tree.
 #[derive(Clone)]
@@ -75,7 +77,7 @@ pub(super) fn face_box(raw: &RawMesh, t: [u32; 3]) -> AABB<[f64; 3]> {
 }
 
 /// Find the high-degree vertices among the eligible faces and their trimming radii.
-pub(super) fn fans(raw: &RawMesh, eligible: &[bool], full: &RTree<FaceBox>) -> Fans {
+pub(super) fn fans(raw: &RawMesh, eligible: &[bool], full: Vec<FaceBox>) -> Fans {
     let n = raw.positions.len();
     let mut count = vec![0usize; n];
     let faces = || {
@@ -97,6 +99,24 @@ pub(super) fn fans(raw: &RawMesh, eligible: &[bool], full: &RTree<FaceBox>) -> F
             }
         }
     }
+    // The nearest box of a triangle not incident to v (boxes are below triangles): a scan of
+    // the boxes for a few stars, an R*-tree for many (the same minimum either way).
+    let highs = star.iter().filter(|s| !s.is_empty()).count();
+    let tree = (highs > FEW_STARS).then(|| RTree::bulk_load(full.clone()));
+    let nearest = |v: usize, p: &[f64; 3]| -> f64 {
+        let incident = |fb: &FaceBox| raw.faces[fb.face as usize].contains(&(v as u32));
+        match &tree {
+            Some(tree) => tree
+                .nearest_neighbor_iter_with_distance_2(p)
+                .find(|(fb, _)| !incident(fb))
+                .map_or(f64::INFINITY, |(_, d2)| d2),
+            None => full
+                .par_iter()
+                .filter(|fb| !incident(fb))
+                .map(|fb| fb.env.distance_2(p))
+                .reduce(|| f64::INFINITY, f64::min),
+        }
+    };
     let cut: Vec<f64> = (0..n)
         .into_par_iter()
         .map(|v| {
@@ -104,11 +124,7 @@ pub(super) fn fans(raw: &RawMesh, eligible: &[bool], full: &RTree<FaceBox>) -> F
                 return 0.0;
             }
             let p = raw.positions[v];
-            // The nearest box of a triangle not incident to v (boxes are below triangles).
-            let d2 = full
-                .nearest_neighbor_iter_with_distance_2(&p)
-                .find(|(fb, _)| !raw.faces[fb.face as usize].contains(&(v as u32)))
-                .map_or(f64::INFINITY, |(_, d2)| d2);
+            let d2 = nearest(v, &p);
             // r_v = √d2/2 (shrunk for rounding); cut at r_v/2.
             let r = 0.5 * d2.sqrt() * (1.0 - 1e-6);
             if r.is_finite() {
@@ -273,11 +289,14 @@ pub(super) fn star_pairs(raw: &RawMesh, v: u32, star: &[u32]) -> (Vec<(u32, u32)
     (found.into_iter().flat_map(|x| x.0).collect(), tested)
 }
 
-/// Whether every vertex of `t2` lies strictly on one side of the plane of `t1` (or vice versa),
-/// decided in f64 with a certified error bound: the sign of n·(q − a) is trusted only beyond
-/// 32ε·|b − a|·|c − a|·|q − a|, above the rounding of the two differences, the cross product and
-/// the dot product. Strictly separated triangles do not meet, so the exact predicates are
-/// skipped for them; anything undecided goes to the exact test.
+/// Whether the vertices of `t2` not in `t1` lie strictly on one side of the plane of `t1` (or
+/// vice versa), decided in f64 with a certified error bound: the sign of n·(q − a) is trusted
+/// only beyond 32ε·|b − a|·|c − a|·|q − a|, above the rounding of the two differences, the cross
+/// product and the dot product (a, b, c the corners of the plane's triangle, any one as a).
+/// Then the two triangles meet at most in their shared vertices, which span a common face (the
+/// shared corner or edge, or nothing), so the pair meets properly and the exact predicates are
+/// skipped for it; anything undecided goes to the exact test. Neighbouring triangles of a
+/// smooth mesh share a vertex or an edge and are almost all decided here.
 pub(super) fn separated(pos: &[[f64; 3]], t1: [u32; 3], t2: [u32; 3]) -> bool {
     side_of_plane(pos, t1, t2) || side_of_plane(pos, t2, t1)
 }
@@ -286,9 +305,11 @@ fn side_of_plane(pos: &[[f64; 3]], t: [u32; 3], o: [u32; 3]) -> bool {
     let p = |i: u32| pos[i as usize];
     let sub = |x: [f64; 3], y: [f64; 3]| [x[0] - y[0], x[1] - y[1], x[2] - y[2]];
     let norm = |x: [f64; 3]| (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]).sqrt();
-    let a = p(t[0]);
-    let e1 = sub(p(t[1]), a);
-    let e2 = sub(p(t[2]), a);
+    // A shared corner as the base point a (it lies on the plane and is skipped below).
+    let base = (0..3).find(|&k| o.contains(&t[k])).unwrap_or(0);
+    let a = p(t[base]);
+    let e1 = sub(p(t[(base + 1) % 3]), a);
+    let e2 = sub(p(t[(base + 2) % 3]), a);
     let n = [
         e1[1] * e2[2] - e1[2] * e2[1],
         e1[2] * e2[0] - e1[0] * e2[2],
@@ -296,7 +317,7 @@ fn side_of_plane(pos: &[[f64; 3]], t: [u32; 3], o: [u32; 3]) -> bool {
     ];
     let scale = 32.0 * f64::EPSILON * norm(e1) * norm(e2);
     let mut sign = 0i8;
-    for &q in &o {
+    for &q in o.iter().filter(|q| !t.contains(q)) {
         let d = sub(p(q), a);
         let s = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
         let err = scale * norm(d);
@@ -312,5 +333,49 @@ fn side_of_plane(pos: &[[f64; 3]], t: [u32; 3], o: [u32; 3]) -> bool {
         }
         sign = here;
     }
-    true
+    // Nothing left off the plane: identical vertex sets (reported as duplicates elsewhere).
+    sign != 0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::separated;
+    use crate::mesh::validate::intersect::triangles_meet_improperly;
+
+    /// D3.1.3(ii): the f64 filter may only skip pairs that meet properly. Pairs sharing a
+    /// corner or an edge: skipped exactly when the other corners lie clearly on one side;
+    /// crossing, coplanar-overlapping and nearly coplanar pairs go to the exact test.
+    #[test]
+    fn d3_1_3_ii_filter_skips_only_proper_pairs_sharing_a_corner_or_an_edge() {
+        let pos = [
+            [0.0, 0.0, 0.0],   // 0: shared corner
+            [1.0, 0.0, 0.0],   // 1
+            [0.0, 1.0, 0.0],   // 2
+            [0.3, 0.3, 1.0],   // 3: above the plane z = 0
+            [0.3, 0.3, -1.0],  // 4: below
+            [0.2, 0.2, 0.0],   // 5: in the plane, inside the corner at 0
+            [0.5, 0.5, 1e-30], // 6: above, within rounding of the plane
+            [-1.0, 0.5, 1.0],  // 7: above
+        ];
+        let t1 = [0, 1, 2];
+        let cases: [([u32; 3], bool); 6] = [
+            ([0, 3, 7], true),  // corner shared, others above: proper
+            ([0, 4, 3], false), // corner shared, crosses the plane through t1
+            ([0, 5, 3], false), // corner shared, an edge inside t1's corner
+            ([0, 1, 3], true),  // edge shared, opposite corner above: proper
+            ([0, 1, 5], false), // edge shared, folded onto t1
+            ([0, 1, 6], false), // edge shared, nearly coplanar: left to the exact test
+        ];
+        for (t2, skip) in cases {
+            assert_eq!(separated(&pos, t1, t2), skip, "{t2:?}");
+            assert_eq!(separated(&pos, t2, t1), skip, "{t2:?} (swapped)");
+            if skip {
+                assert!(!triangles_meet_improperly(&pos, t1, t2), "{t2:?}");
+            }
+        }
+        assert!(triangles_meet_improperly(&pos, t1, [0, 4, 3]));
+        assert!(triangles_meet_improperly(&pos, t1, [0, 5, 3]));
+        assert!(triangles_meet_improperly(&pos, t1, [0, 1, 5]));
+        assert!(!triangles_meet_improperly(&pos, t1, [0, 1, 6]));
+    }
 }

@@ -21,13 +21,16 @@ pub struct Incidence {
     pub vertex_faces: Vec<u32>,
     /// Faces sorted by their sorted vertex triple (for duplicate detection).
     sorted_keys: Vec<([u32; 3], u32)>,
+    /// `face_edges[f][k]`: index into `edges` of the edge from corner k to corner k + 1 of an
+    /// active face f (u32::MAX for the others), so walks across edges need no search.
+    face_edges: Vec<[u32; 3]>,
 }
 
 impl Incidence {
     /// Builds the tables from the faces with `active[f]` set.
     pub fn build(raw: &RawMesh, active: Vec<bool>) -> Incidence {
         let nv = raw.positions.len();
-        let mut half: Vec<(u32, u32, u32)> = Vec::with_capacity(raw.faces.len() * 3);
+        let mut half: Vec<(u32, u32, u32, u8)> = Vec::with_capacity(raw.faces.len() * 3);
         let mut deg = vec![0u32; nv + 1];
         let mut sorted_keys = Vec::with_capacity(raw.faces.len());
         for (f, t) in raw.faces.iter().enumerate() {
@@ -37,7 +40,7 @@ impl Incidence {
             for k in 0..3 {
                 let a = t[k];
                 let b = t[(k + 1) % 3];
-                half.push((a.min(b), a.max(b), f as u32));
+                half.push((a.min(b), a.max(b), f as u32, k as u8));
                 deg[a as usize] += 1;
             }
             let mut key = *t;
@@ -49,13 +52,16 @@ impl Incidence {
         let mut edges = Vec::new();
         let mut edge_start = Vec::new();
         let mut edge_faces = Vec::with_capacity(half.len());
+        let mut face_edges = vec![[u32::MAX; 3]; raw.faces.len()];
         let mut i = 0;
         while i < half.len() {
-            let (a, b, _) = half[i];
+            let (a, b, _, _) = half[i];
+            let e = edges.len() as u32;
             edges.push((a, b));
             edge_start.push(edge_faces.len() as u32);
             while i < half.len() && half[i].0 == a && half[i].1 == b {
                 edge_faces.push(half[i].2);
+                face_edges[half[i].2 as usize][half[i].3 as usize] = e;
                 i += 1;
             }
         }
@@ -85,6 +91,7 @@ impl Incidence {
             vertex_start,
             vertex_faces,
             sorted_keys,
+            face_edges,
         }
     }
 
@@ -101,9 +108,11 @@ impl Incidence {
         }
     }
 
-    /// Index of the undirected edge {a, b}, if present.
-    pub(crate) fn edge_index(&self, a: u32, b: u32) -> Option<usize> {
-        self.edges.binary_search(&(a.min(b), a.max(b))).ok()
+    /// Index of the edge from corner `k` to corner `k + 1` (mod 3) of face `f`, if `f` is
+    /// active.
+    pub(crate) fn face_edge(&self, f: usize, k: usize) -> Option<usize> {
+        let e = *self.face_edges.get(f)?.get(k)?;
+        (e != u32::MAX).then_some(e as usize)
     }
 
     /// Groups (of size ≥ 2) of faces with the same vertex set.

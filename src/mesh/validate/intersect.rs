@@ -53,7 +53,15 @@ pub fn coincident_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
 /// sets) contain a point that is not in a common face?
 pub fn triangles_meet_improperly(pos: &[P3], t1: [u32; 3], t2: [u32; 3]) -> bool {
     let p = |i: u32| &pos[i as usize];
-    let shared: Vec<u32> = t1.iter().copied().filter(|x| t2.contains(x)).collect();
+    let mut shared = [0u32; 3];
+    let mut n_shared = 0;
+    for &x in &t1 {
+        if t2.contains(&x) {
+            shared[n_shared] = x;
+            n_shared += 1;
+        }
+    }
+    let shared = &shared[..n_shared];
     match shared.len() {
         0 => {
             (0..3).any(|k| {
@@ -116,6 +124,8 @@ pub fn triangles_meet_improperly(pos: &[P3], t1: [u32; 3], t2: [u32; 3]) -> bool
 pub const MAX_COUNTED_INTERSECTIONS: usize = 1000;
 /// Faces whose candidate pairs are tested together before the cap is looked at.
 const INTERSECTION_CHUNK: usize = 16;
+/// Chunks evaluated in one parallel block, at most.
+const MAX_BLOCK: usize = 256;
 
 /// A face of the general search: its index, corners and search boxes.
 type SearchFace = (u32, [u32; 3], Vec<AABB<[f64; 3]>>);
@@ -146,7 +156,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
     r.examined(full.len() as u64);
     // Stars of high-degree vertices first (see `fans`): their pairs are decided there, and
     // their corners are cut from the boxes of the general search.
-    let fans = fans(raw, eligible, &RTree::bulk_load(full));
+    let fans = fans(raw, eligible, full);
     let mut hits: Vec<(u32, u32)> = Vec::new();
     let mut tested = 0u64;
     for (v, star) in fans.star.iter().enumerate() {
@@ -203,70 +213,85 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
         .collect();
     let shares_high =
         |t1: [u32; 3], t2: [u32; 3]| t1.iter().any(|&x| fans.is_high(x) && t2.contains(&x));
-    // Faces in index order, a chunk at a time (parallel inside a chunk), so that the search can
-    // stop after the chunk in which the cap is reached and still give the same answer on every
-    // run and thread count.
+    // Faces in index order, a chunk at a time, so that the search can stop after the chunk in
+    // which the cap is reached and still give the same answer on every run and thread count.
+    // The chunks are evaluated a block at a time (parallel inside a block), the blocks doubling
+    // up to MAX_BLOCK chunks: one fork-join per block instead of per chunk, and at most about
+    // twice the work of the chunks up to the cap when a tangled mesh stops the search early.
     let mut stopped_at = None;
     let counter = std::sync::atomic::AtomicU64::new(0);
     let counted = &counter;
     let star_capped = hits.len() >= MAX_COUNTED_INTERSECTIONS;
-    for chunk in faces.chunks(INTERSECTION_CHUNK) {
-        if star_capped {
-            break;
-        }
-        let mut found: Vec<(u32, u32)> = chunk
-            .par_iter()
-            .flat_map_iter(|(f1, t1, bs)| {
-                let (f1, t1) = (*f1, *t1);
-                let mut k1 = t1;
-                k1.sort_unstable();
-                let mut cand: Vec<u32> = Vec::new();
-                for env in bs {
+    let face_hits = |(f1, t1, bs): &SearchFace, cand: &mut Vec<u32>, out: &mut Vec<(u32, u32)>| {
+        let (f1, t1) = (*f1, *t1);
+        let mut k1 = t1;
+        k1.sort_unstable();
+        cand.clear();
+        for env in bs {
+            cand.extend(
+                plain_tree
+                    .locate_in_envelope_intersecting(env)
+                    .map(|o| o.face)
+                    .filter(|&g| g > f1),
+            );
+            for s in star_index.locate_in_envelope_intersecting(env) {
+                if t1.contains(&s.face) {
+                    continue;
+                }
+                if let Some(tr) = star_trees.get(&s.face) {
                     cand.extend(
-                        plain_tree
-                            .locate_in_envelope_intersecting(env)
+                        tr.locate_in_envelope_intersecting(env)
                             .map(|o| o.face)
                             .filter(|&g| g > f1),
                     );
-                    for s in star_index.locate_in_envelope_intersecting(env) {
-                        if t1.contains(&s.face) {
-                            continue;
-                        }
-                        if let Some(tr) = star_trees.get(&s.face) {
-                            cand.extend(
-                                tr.locate_in_envelope_intersecting(env)
-                                    .map(|o| o.face)
-                                    .filter(|&g| g > f1),
-                            );
-                        }
-                    }
                 }
-                cand.sort_unstable();
-                cand.dedup();
-                cand.into_iter()
-                    .filter_map(move |f2| {
-                        let t2 = raw.faces[f2 as usize];
-                        let mut k2 = t2;
-                        k2.sort_unstable();
-                        if k1 == k2 || shares_high(t1, t2) || separated(pos, t1, t2) {
-                            return None;
-                        }
-                        counted.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                        if triangles_meet_improperly(pos, t1, t2) {
-                            Some((f1, f2))
-                        } else {
-                            None
-                        }
-                    })
-                    .take(MAX_COUNTED_INTERSECTIONS)
+            }
+        }
+        cand.sort_unstable();
+        cand.dedup();
+        let mut found = 0;
+        for &f2 in cand.iter() {
+            let t2 = raw.faces[f2 as usize];
+            let mut k2 = t2;
+            k2.sort_unstable();
+            if k1 == k2 || shares_high(t1, t2) || separated(pos, t1, t2) {
+                continue;
+            }
+            counted.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            if triangles_meet_improperly(pos, t1, t2) {
+                out.push((f1, f2));
+                found += 1;
+                if found == MAX_COUNTED_INTERSECTIONS {
+                    break;
+                }
+            }
+        }
+    };
+    let chunks: Vec<&[SearchFace]> = faces.chunks(INTERSECTION_CHUNK).collect();
+    let mut start = 0;
+    let mut block = 1;
+    'blocks: while start < chunks.len() && !star_capped {
+        let end = (start + block).min(chunks.len());
+        let found: Vec<Vec<(u32, u32)>> = chunks[start..end]
+            .par_iter()
+            .map_init(Vec::new, |cand, chunk| {
+                let mut out = Vec::new();
+                for face in chunk.iter() {
+                    face_hits(face, cand, &mut out);
+                }
+                out
             })
             .collect();
-        found.sort_unstable();
-        hits.append(&mut found);
-        if hits.len() >= MAX_COUNTED_INTERSECTIONS {
-            stopped_at = chunk.last().map(|x| x.0);
-            break;
+        for (chunk, mut found) in chunks[start..end].iter().zip(found) {
+            found.sort_unstable();
+            hits.append(&mut found);
+            if hits.len() >= MAX_COUNTED_INTERSECTIONS {
+                stopped_at = chunk.last().map(|x| x.0);
+                break 'blocks;
+            }
         }
+        start = end;
+        block = (2 * block).min(MAX_BLOCK);
     }
     for (a, b) in hits {
         r.offend(|| {

@@ -121,13 +121,19 @@ pub fn validate(raw: &RawMesh) -> Validation {
     let first_pass = Incidence::build(raw, active.clone());
     let dup = basic::duplicate_faces(raw, &first_pass);
     classes.extend(basic::classes_of(&dup));
-    let mut active = active;
-    for group in first_pass.duplicate_groups() {
-        for &g in group.iter().skip(1) {
-            active[g as usize] = false;
+    let groups = first_pass.duplicate_groups();
+    // Without duplicates the second pass would rebuild the same tables.
+    let inc = if groups.is_empty() {
+        first_pass
+    } else {
+        let mut active = active;
+        for group in groups {
+            for &g in group.iter().skip(1) {
+                active[g as usize] = false;
+            }
         }
-    }
-    let inc = Incidence::build(raw, active);
+        Incidence::build(raw, active)
+    };
     let mut referenced = vec![false; nv];
     for t in raw.faces.iter().filter(|t| in_range(t)) {
         for &i in t {
@@ -156,19 +162,24 @@ pub fn validate(raw: &RawMesh) -> Validation {
     if coincident.failed() {
         classes.push(ErrorClass::CoincidentVertices);
     }
-    let crossing = intersect::triangles_meet_properly(raw, &nondegenerate);
+    // The geometric search and the combinatorial checks are independent: side by side.
+    let (crossing, ((edges, c_edges), (links, c_links), (orientation, orient_check))) = rayon::join(
+        || intersect::triangles_meet_properly(raw, &nondegenerate),
+        || {
+            (
+                surface::edges_in_two_triangles(raw, &inc),
+                surface::links_are_cycles(raw, &inc),
+                // Holds exactly when a consistent orientation was found (topology::orient
+                // offends only on an edge that cannot be oriented).
+                topology::orient(raw, &inc),
+            )
+        },
+    );
     if crossing.failed() {
         classes.push(ErrorClass::SelfIntersection);
     }
-
-    let (edges, c_edges) = surface::edges_in_two_triangles(raw, &inc);
     classes.extend(c_edges);
-    let (links, c_links) = surface::links_are_cycles(raw, &inc);
     classes.extend(c_links);
-
-    // Holds exactly when a consistent orientation was found (topology::orient offends only
-    // on an edge that cannot be oriented).
-    let (orientation, orient_check) = topology::orient(raw, &inc);
     if orient_check.failed() {
         classes.push(ErrorClass::NonOrientable);
     }

@@ -61,7 +61,7 @@ pub fn orient(raw: &RawMesh, inc: &Incidence) -> (Orientation, CheckResult) {
             let t = raw.faces[f];
             for k in 0..3 {
                 let (a, b) = (t[k], t[(k + 1) % 3]);
-                let e = match inc.edge_index(a, b) {
+                let e = match inc.face_edge(f, k) {
                     Some(e) => e,
                     None => continue,
                 };
