@@ -375,9 +375,8 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
         };
         let pt_in = |p: u32, set: &[u32]| g.faces(p).into_iter().any(|f| tri_in(f, set));
         let free = |p: u32| {
-            !used.contains(&p)
-                && !(p < g.n && base.is_base(p))
-                && (p < g.n || !g.faces(p).into_iter().all(reserved))
+            let closed = used.contains(&p) || (p < g.n && base.is_base(p));
+            !closed && (p < g.n || !g.faces(p).into_iter().all(reserved))
         };
         // The tries: (strictly inside the two faces' region, reserving), (touching it,
         // reserving), (touching it), (touching the faces around a and b), (all of S_T).

@@ -382,7 +382,7 @@ fn fit_once(
                 rounds: rounds.len() + 1,
                 offenders: offenders.len(),
                 worst: max_error,
-                folds: folds,
+                folds,
             });
         }
         let mut st = refine::RefineStats::default();
@@ -400,7 +400,7 @@ fn fit_once(
                 rounds: rounds.len(),
                 offenders: offenders.len(),
                 worst: max_error,
-                folds: folds,
+                folds,
             });
         }
     }
