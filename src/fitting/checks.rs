@@ -305,10 +305,29 @@ pub fn check_epsilon(
 
 /// Every check of a fit on S_T = `k`.
 pub fn run_fit_checks(k: &SimplicialSurface, fit: &Fit, seed: u64) -> Vec<CheckResult> {
-    vec![
+    let mut out = vec![
         check_base_vertices(k, &fit.surface.k, &fit.surface.fine_of),
         check_genus(k, &fit.surface.k),
-        check_param_orientation(k, &fit.base),
+        super::embed_checks::check_embedded(fit.embedded.as_ref().err()),
+    ];
+    match &fit.embedded {
+        // Floater's parameters: AF-param-bijective on the pieces, among the embedding's.
+        Ok(e) if fit.floater_params => {
+            out.extend(super::embed_checks::run(k, &fit.base, e));
+        }
+        // The simplification's parameters: their orientation in T_v, and the checks of the
+        // embedding that exists (its failure is why it was not used).
+        Ok(e) => {
+            out.extend(
+                super::embed_checks::run(k, &fit.base, e)
+                    .into_iter()
+                    .filter(|r| r.id != "AF-param-bijective"),
+            );
+            out.push(check_param_orientation(k, &fit.base));
+        }
+        Err(_) => out.push(check_param_orientation(k, &fit.base)),
+    }
+    out.extend([
         check_fit_rank(&fit.fitted.corners, fit.fitted.pps.degree),
         check_epsilon(
             &fit.fitted.pps,
@@ -317,5 +336,6 @@ pub fn run_fit_checks(k: &SimplicialSurface, fit: &Fit, seed: u64) -> Vec<CheckR
             fit.epsilon,
             seed,
         ),
-    ]
+    ]);
+    out
 }

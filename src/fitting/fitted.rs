@@ -107,18 +107,31 @@ impl BaseSurface {
         })
     }
 
-    /// The parameter of every vertex of S_T in this surface's ids.
+    /// The parameter of every vertex of S_T in this surface's ids (the simplification's).
     pub fn params(&self, base: &BaseMesh) -> Vec<SurfaceParam> {
+        self.params_of(base, base.params())
+    }
+
+    /// Parameters `ps` (base face slots) in this surface's ids.
+    pub fn params_of(&self, base: &BaseMesh, ps: &[Param]) -> Vec<SurfaceParam> {
         let mut base_id = vec![u32::MAX; base.positions().len()];
         for (i, &v) in self.fine_of.iter().enumerate() {
             base_id[v as usize] = i as u32;
         }
-        base.params()
-            .iter()
+        ps.iter()
             .enumerate()
             .map(|(x, p)| match *p {
                 Param::Face { f, b } => {
-                    let fid = FaceId(self.face_of_slot[f as usize]);
+                    // A slot that is no live face (a vertex no map reached): NaN, so the
+                    // fit and AF-epsilon fail on it.
+                    let Some(&id) = self
+                        .face_of_slot
+                        .get(f as usize)
+                        .filter(|&&i| i != u32::MAX)
+                    else {
+                        return (FaceId(0), [f64::NAN; 3]);
+                    };
+                    let fid = FaceId(id);
                     let order = self.k.face(fid).map(|v| self.fine_of[v.idx()]);
                     (fid, permute(base.face(f).unwrap_or(order), b, order))
                 }

@@ -6,19 +6,29 @@
 //! The pipeline, one module per stage:
 //! 1. [`simplify`]: stellar simplification ranked by quadric error, independent sets per level;
 //!    it carries the parametrization of S_T onto the base mesh ([`base`]).
-//! 2. [`fitted`]: the (σ, v) construction over the base mesh with ψ_(σ,v) fitted by least
-//!    squares to the vertices of S_T.
-//! 3. [`refine`]: where a vertex misses ε, the base mesh is refined locally (stellar face
-//!    split at the worst vertex, Lawson flips), and 2 is repeated.
+//! 2. [`embedded`]: every base edge embedded in |S_T| as a geodesic ([`geodesic`]: an
+//!    initial edge path, [`shorten`]: iterative shortening), S_T cut into curved triangles
+//!    ([`overlay`]), each mapped onto its base triangle by Floater's mean value
+//!    parametrization ([`floater`]); its parameters of the vertices of S_T are the fit's.
+//! 3. [`fitted`]: the (σ, v) construction over the base mesh with ψ_(σ,v) fitted by least
+//!    squares to the vertices of S_T at those parameters.
+//! 4. [`refine`]: where a vertex misses ε, the base mesh is refined locally (stellar face
+//!    split at the worst vertex, Lawson flips), and 2–3 are repeated (recomputed whole).
 //!
 //! Where the slides are silent, the choices are stated at each module and in SPEC.md
 //! (section "Adaptive fitting", rows `AF-…`).
 
 pub mod base;
 pub mod checks;
+pub mod embed_checks;
+pub mod embedded;
 pub mod fitted;
+pub mod floater;
 pub mod format;
+pub mod geodesic;
+pub mod overlay;
 pub mod refine;
+pub mod shorten;
 pub mod simplify;
 
 use base::{BaseMesh, RemovalLimits};
@@ -107,7 +117,7 @@ pub struct Round {
     pub p99_error: f64,
     /// Vertices beyond ε (error plus rounding bound).
     pub offenders: usize,
-    /// Triangles of S_T folded in T_v (`AF-param-bijective`), reported.
+    /// Pieces of triangles of S_T folded by Floater's maps (`AF-param-bijective`), reported.
     pub folds: usize,
     /// Refinement done after the round (None for the last).
     pub refine: Option<refine::RefineStats>,
@@ -123,8 +133,12 @@ pub struct Fit {
     pub base: BaseMesh,
     /// The base mesh as a validated surface.
     pub surface: BaseSurface,
-    /// Parameters of the vertices of S_T in the surface's ids.
+    /// Parameters of the vertices of S_T in the surface's ids (Floater's).
     pub params: Vec<SurfaceParam>,
+    /// The embedded base mesh and Floater's maps, or why there are none.
+    pub embedded: Result<embedded::Embedded, embedded::Failure>,
+    /// Whether `params` are Floater's (else the simplification's: the embedding failed).
+    pub floater_params: bool,
     /// The fitted PPS.
     pub fitted: Fitted,
     /// Error of every vertex of S_T.
@@ -244,51 +258,7 @@ fn fit_once(
                         classes: names.join(", "),
                     });
                 }
-                let mut st = refine::RefineStats::default();
-                for f in crossing {
-                    // The crossing face's own vertices of S_T, else those of the faces
-                    // around its corners (a face with none inside is refined beside it).
-                    let mut cand: Vec<u32> = base.members(f).to_vec();
-                    if cand.is_empty() {
-                        if let Some(c) = base.face(f) {
-                            for v in c {
-                                for &g in base.faces_around(v) {
-                                    cand.extend_from_slice(base.members(g));
-                                }
-                            }
-                        }
-                    }
-                    let worst = cand
-                        .into_iter()
-                        .max_by(|&a, &b| base.flat_deviation(a).total_cmp(&base.flat_deviation(b)));
-                    match worst {
-                        Some(x) if !base.is_base(x) => {
-                            refine::insert(&mut base, x, &mut st);
-                        }
-                        _ => {
-                            // No vertex of S_T near it: change the crossing face by a flip of
-                            // its longest flippable edge.
-                            if let Some(c) = base.face(f) {
-                                let mut edges: Vec<(f64, u32, u32)> = (0..3)
-                                    .map(|i| {
-                                        let (a, b) = (c[i], c[(i + 1) % 3]);
-                                        let (p, q) = (pos[a as usize], pos[b as usize]);
-                                        let l = crate::numeric::robust_norm(&[
-                                            p[0] - q[0],
-                                            p[1] - q[1],
-                                            p[2] - q[2],
-                                        ]);
-                                        (l, a, b)
-                                    })
-                                    .collect();
-                                edges.sort_by(|x, y| y.0.total_cmp(&x.0));
-                                if edges.iter().any(|&(_, a, b)| base.flip(a, b).is_ok()) {
-                                    st.flips += 1;
-                                }
-                            }
-                        }
-                    }
-                }
+                let st = repair(&mut base, &crossing, &pos);
                 progress(&format!(
                     "repair: base mesh refused ({}), {} vertices inserted, {} edges flipped",
                     names.join(", "),
@@ -305,7 +275,50 @@ fn fit_once(
             }
             Err(BaseSurfaceError::SigmaV(e)) => return Err(e.into()),
         };
-        let params = surface.params(&base);
+        // The embedding and Floater's parameters are used when every check of theirs
+        // holds; otherwise the simplification's parameters are, and the failure is reported
+        // (`AF-embedding`, and the checks of the embedding that exists), never passed on.
+        let emb = embedded::embed(k, &base);
+        let usable = match &emb {
+            Ok(e) => {
+                let checks = embed_checks::run(k, &base, e);
+                let bad: Vec<&str> = checks
+                    .iter()
+                    .filter(|r| r.failed())
+                    .map(|r| r.id.as_str())
+                    .collect();
+                progress(&format!(
+                    "embed: {} curves ({} in their faces' region, {} widened, {} on all of S_T), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
+                    e.emb.curves.len(),
+                    e.emb.stats.in_region,
+                    e.emb.stats.widened,
+                    e.emb.stats.unrestricted,
+                    e.emb.stats.initial_length,
+                    e.emb.stats.length,
+                    e.emb.stats.sweeps,
+                    e.emb.stats.moves,
+                    e.overlay.pieces.len(),
+                    if bad.is_empty() { "Floater's parameters used".to_string() } else { format!("failed: {}; the simplification's parameters used", bad.join(", ")) }
+                ));
+                !checks
+                    .iter()
+                    .any(|r| r.id == "AF-param-bijective" && r.failed())
+                    && !checks
+                        .iter()
+                        .any(|r| r.id == "AF-curved-disk" && r.failed())
+            }
+            Err(f) => {
+                progress(&format!(
+                    "embed: failed ({}); the simplification's parameters used",
+                    f.what
+                ));
+                false
+            }
+        };
+        let params = match &emb {
+            Ok(e) if usable => surface.params_of(&base, &e.params),
+            _ => surface.params(&base),
+        };
         let fitted = fitted::fit(&surface, &pos, &params, opts.kappa, opts.degree)?;
         let errors = vertex_errors(&fitted.pps, &pos, &params);
         let bound = rounding_bound(&fitted.pps);
@@ -315,10 +328,12 @@ fn fit_once(
             .filter(|(_, &e)| !(e + bound <= opts.epsilon))
             .map(|(i, _)| i as u32)
             .collect();
-        // Triangles of S_T folded in T_v are counted per round (SPEC `AF-param-bijective`);
-        // inserting their vertices does not remove them (measured), so they are reported by
-        // the check, not repaired here.
-        let folds = checks::orientations(k, &base).folded;
+        // Pieces folded by Floater's maps are counted per round (SPEC `AF-param-bijective`):
+        // reported by the check, never expected.
+        let folds = match &emb {
+            Ok(e) if usable => embed_checks::check_bijective(&e.overlay, &base, &e.maps).offenders,
+            _ => checks::orientations(k, &base).folded.len() as u64,
+        } as usize;
         let max_error = errors
             .iter()
             .copied()
@@ -340,9 +355,9 @@ fn fit_once(
             round.p99_error,
             round.offenders,
             opts.epsilon,
-            folds.len()
+            folds
         ));
-        round.folds = folds.len();
+        round.folds = folds;
         if offenders.is_empty() {
             round.seconds = tr.elapsed().as_secs_f64();
             rounds.push(round);
@@ -351,6 +366,8 @@ fn fit_once(
                 base,
                 surface,
                 params,
+                embedded: emb,
+                floater_params: usable,
                 fitted,
                 errors,
                 rounding_bound: bound,
@@ -365,7 +382,7 @@ fn fit_once(
                 rounds: rounds.len() + 1,
                 offenders: offenders.len(),
                 worst: max_error,
-                folds: folds.len(),
+                folds,
             });
         }
         let mut st = refine::RefineStats::default();
@@ -383,8 +400,51 @@ fn fit_once(
                 rounds: rounds.len(),
                 offenders: offenders.len(),
                 worst: max_error,
-                folds: folds.len(),
+                folds,
             });
         }
     }
+}
+
+/// Refine the base mesh at base face slots `faces` (a refused base mesh's crossing faces, or
+/// where the embedding failed): insert the vertex of S_T furthest from its flat base triangle
+/// among the face's own (else those of the faces around its corners); with none, flip the
+/// face's longest flippable edge.
+fn repair(base: &mut BaseMesh, faces: &[u32], pos: &[[f64; 3]]) -> refine::RefineStats {
+    let mut st = refine::RefineStats::default();
+    for &f in faces {
+        let mut cand: Vec<u32> = base.members(f).to_vec();
+        if cand.is_empty() {
+            if let Some(c) = base.face(f) {
+                for v in c {
+                    for &g in base.faces_around(v) {
+                        cand.extend_from_slice(base.members(g));
+                    }
+                }
+            }
+        }
+        let worst = cand
+            .into_iter()
+            .max_by(|&a, &b| base.flat_deviation(a).total_cmp(&base.flat_deviation(b)));
+        match worst {
+            Some(x) if !base.is_base(x) => {
+                refine::insert(base, x, &mut st);
+            }
+            _ => {
+                if let Some(c) = base.face(f) {
+                    let mut edges: Vec<(f64, u32, u32)> = (0..3)
+                        .map(|i| {
+                            let (a, b) = (c[i], c[(i + 1) % 3]);
+                            (geodesic::dist(pos[a as usize], pos[b as usize]), a, b)
+                        })
+                        .collect();
+                    edges.sort_by(|x, y| y.0.total_cmp(&x.0));
+                    if edges.iter().any(|&(_, a, b)| base.flip(a, b).is_ok()) {
+                        st.flips += 1;
+                    }
+                }
+            }
+        }
+    }
+    st
 }

@@ -1,0 +1,406 @@
+//! The checks of the embedding and of the parametrization (SPEC `AF-geodesic-on-surface`,
+//! `AF-geodesic-disjoint`, `AF-geodesic-shortest`, `AF-curved-disk`, `AF-param-bijective`).
+//! Each records through the harness: examined counts, NaN an offence, nothing examined
+//! skipped.
+
+use super::base::BaseMesh;
+use super::floater::RegionMap;
+use super::geodesic::{common_faces, Curve, Embedding, Node};
+use super::overlay::{disk_defects, orient, Overlay};
+use super::shorten;
+use crate::mesh::{FaceId, SimplicialSurface};
+use crate::report::harness::dev_max;
+use crate::report::{CheckResult, Witness};
+use serde_json::json;
+use std::collections::HashMap;
+
+/// Every curve runs from its first base vertex to its second, each node is on S_T (a vertex,
+/// or a point strictly inside an edge, t ∈ (0, 1)), and consecutive nodes lie on one closed
+/// triangle of S_T (so each segment is on the surface).
+pub fn check_on_surface(k: &SimplicialSurface, emb: &Embedding) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-geodesic-on-surface",
+        "every embedded base edge is a polyline on |S_T| joining its end vertices",
+    );
+    for (ci, c) in emb.curves.iter().enumerate() {
+        let ends = c.nodes.first() == Some(&Node::Vertex(c.a))
+            && c.nodes.last() == Some(&Node::Vertex(c.b));
+        r.examined += 1;
+        if !ends {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "curve {ci} ({}, {}) does not join its end vertices",
+                        c.a, c.b
+                    ),
+                    json!({"curve": ci}),
+                )
+            });
+        }
+        for (i, n) in c.nodes.iter().enumerate() {
+            r.examined += 1;
+            let ok = !n.faces(k).is_empty()
+                && n.point(k).is_some_and(|p| p.iter().all(|x| x.is_finite()));
+            let joined = i == 0 || !common_faces(k, &c.nodes[i - 1], n).is_empty();
+            if !ok || !joined {
+                r.offend(|| {
+                    Witness::new(
+                        format!(
+                            "curve {ci} ({}, {}), node {i} {n:?}: {}",
+                            c.a,
+                            c.b,
+                            if ok {
+                                "shares no triangle of S_T with the node before"
+                            } else {
+                                "not on S_T"
+                            }
+                        ),
+                        json!({"curve": ci, "node": i}),
+                    )
+                });
+            }
+        }
+    }
+    r
+}
+
+/// A segment in the reference frame of one triangle of S_T: curve, segment index, ends.
+type Seg = (usize, usize, [[f64; 2]; 2]);
+
+const REF: [[f64; 2]; 3] = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+
+pub(crate) fn local(k: &SimplicialSurface, f: FaceId, n: &Node) -> Option<[f64; 2]> {
+    let c = k.face(f).map(|v| v.0);
+    let at = |v: u32| c.iter().position(|&x| x == v).map(|i| REF[i]);
+    match *n {
+        Node::Vertex(v) => at(v),
+        Node::Edge { a, b, t } => {
+            let (p, q) = (at(a)?, at(b)?);
+            Some([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])])
+        }
+    }
+}
+
+/// Segments p and q sharing the end x meet only at x.
+pub(crate) fn only_at(p: [[f64; 2]; 2], q: [[f64; 2]; 2], x: [f64; 2]) -> bool {
+    if p[0] == p[1] || q[0] == q[1] {
+        return false;
+    }
+    let po = if p[0] == x { p[1] } else { p[0] };
+    let qo = if q[0] == x { q[1] } else { q[0] };
+    if orient(x, po, qo) != 0.0 {
+        return true;
+    }
+    // Collinear: opposite directions from x (signs of differences are exact).
+    (0..2).any(|i| {
+        (po[i] - x[i]).signum() * (qo[i] - x[i]).signum() < 0.0 && po[i] != x[i] && qo[i] != x[i]
+    })
+}
+
+/// Do the closed segments p and q meet (decided exactly on the f64 coordinates)?
+pub(crate) fn meet(p: [[f64; 2]; 2], q: [[f64; 2]; 2]) -> bool {
+    let (o1, o2) = (orient(p[0], p[1], q[0]), orient(p[0], p[1], q[1]));
+    let (o3, o4) = (orient(q[0], q[1], p[0]), orient(q[0], q[1], p[1]));
+    if o1 == 0.0 && o2 == 0.0 {
+        let ax = |i: usize| {
+            let (lo, hi) = (p[0][i].min(p[1][i]), p[0][i].max(p[1][i]));
+            let (ql, qh) = (q[0][i].min(q[1][i]), q[0][i].max(q[1][i]));
+            lo <= qh && ql <= hi
+        };
+        return ax(0) && ax(1);
+    }
+    o1 * o2 <= 0.0 && o3 * o4 <= 0.0
+}
+
+/// The embedded edges meet only at common end points: no vertex of S_T is a node of two
+/// curves unless it is an end of both, no base vertex is an inner node, and no two segments
+/// on one triangle of S_T meet (in its reference frame, exactly) except consecutive segments
+/// of one curve at their node and two curves at a common end.
+pub fn check_disjoint(k: &SimplicialSurface, base: &BaseMesh, emb: &Embedding) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-geodesic-disjoint",
+        "the embedded base edges meet only at common end points",
+    );
+    let mut owner: HashMap<u32, usize> = HashMap::new();
+    let mut by_face: HashMap<FaceId, Vec<Seg>> = HashMap::new();
+    for (ci, c) in emb.curves.iter().enumerate() {
+        let last = c.nodes.len().saturating_sub(1);
+        for (i, n) in c.nodes.iter().enumerate() {
+            let Node::Vertex(v) = *n else { continue };
+            if i == 0 || i == last {
+                continue;
+            }
+            r.examined += 1;
+            let prior = owner.insert(v, ci);
+            if prior.is_some_and(|o| o != ci) || base.is_base(v) {
+                r.offend(|| {
+                    Witness::new(
+                        format!("vertex {v} of S_T is an inner node of curve {ci} and lies on another curve or is a base vertex"),
+                        json!({"vertex": v, "curve": ci, "other": prior}),
+                    )
+                });
+            }
+        }
+        for (s, w) in c.nodes.windows(2).enumerate() {
+            for f in common_faces(k, &w[0], &w[1]) {
+                if let (Some(p), Some(q)) = (local(k, f, &w[0]), local(k, f, &w[1])) {
+                    by_face.entry(f).or_default().push((ci, s, [p, q]));
+                }
+            }
+        }
+    }
+    let curves = &emb.curves;
+    let ends = |c: &Curve| [c.a, c.b];
+    let mut faces: Vec<&FaceId> = by_face.keys().collect();
+    faces.sort();
+    for f in faces {
+        let segs = &by_face[f];
+        for (i, &(c1, s1, p)) in segs.iter().enumerate() {
+            for &(c2, s2, q) in &segs[i + 1..] {
+                r.examined += 1;
+                if !meet(p, q) {
+                    continue;
+                }
+                // The one point two segments may share: a node of both (consecutive
+                // segments of one curve, or a common end of two curves), met only there.
+                let x = [p[0], p[1]].into_iter().find(|x| *x == q[0] || *x == q[1]);
+                let allowed = x.is_some_and(|x| {
+                    let permitted = if c1 == c2 {
+                        s1.abs_diff(s2) == 1
+                    } else {
+                        let (e1, e2) = (ends(&curves[c1]), ends(&curves[c2]));
+                        e1.iter()
+                            .any(|&v| e2.contains(&v) && local(k, *f, &Node::Vertex(v)) == Some(x))
+                    };
+                    permitted && only_at(p, q, x)
+                });
+                if !allowed {
+                    r.offend(|| {
+                        Witness::new(
+                            format!("curves {c1} and {c2} (segments {s1}, {s2}) meet inside triangle {} of S_T", f.0),
+                            json!({"curves": [c1, c2], "segments": [s1, s2], "face": f.0}),
+                        )
+                    });
+                }
+            }
+        }
+    }
+    r
+}
+
+/// No node of a curve can be moved to shorten it by more than `shorten::TOLERANCE` of the
+/// length of its two segments (measured by the shortening's own local rules: an edge node
+/// along its edge in the unfolded pair of triangles, a vertex node off its vertex where the
+/// angle on one side is below π).
+pub fn check_shortest(k: &SimplicialSurface, emb: &Embedding) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-geodesic-shortest",
+        "no node of an embedded edge can move to shorten it beyond the stated tolerance",
+    );
+    let tol = shorten::TOLERANCE;
+    r.tolerance = Some(tol);
+    let mut worst = 0.0f64;
+    for (ci, c) in emb.curves.iter().enumerate() {
+        for i in 1..c.nodes.len().saturating_sub(1) {
+            r.examined += 1;
+            let g = shorten::relative_gain(k, &c.nodes, i);
+            worst = dev_max(worst, g);
+            if !(g <= tol) {
+                r.offend(|| {
+                    Witness::new(
+                        format!("curve {ci} ({}, {}), node {i} {:?}: a local move shortens it by {g:.3e} of its two segments", c.a, c.b, c.nodes[i]),
+                        json!({"curve": ci, "node": i, "gain": g}),
+                    )
+                });
+            }
+        }
+    }
+    r.worst_deviation = Some(worst);
+    r.note = format!(
+        "largest relative gain {worst:.3e}, tolerance {tol:.1e} (the shortening's stopping rule)"
+    );
+    r
+}
+
+/// Each base face's curved triangle is one region of S_T cut along the curves, a disk
+/// (V − E + F = 1) bounded by one cycle made of exactly the three curves of the face, every
+/// side of which names the face.
+pub fn check_curved_disk(ov: &Overlay, base: &BaseMesh, emb: &Embedding) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-curved-disk",
+        "each curved triangle is a disk bounded by the three embedded edges of its base face",
+    );
+    for (f, d) in disk_defects(ov, base, emb) {
+        r.examined += 1;
+        if !d.is_empty() {
+            r.offend(|| {
+                Witness::new(
+                    format!("base face {f}: {d:?}"),
+                    json!({"face": f, "defects": format!("{d:?}")}),
+                )
+            });
+        }
+    }
+    r
+}
+
+/// Floater's map is a bijection of each curved triangle onto its base triangle: every piece
+/// positively oriented (exact orient2d on the stored image coordinates), the boundary on the
+/// three sides in order, and the images' areas summing to the triangle's 1/2 (degree one)
+/// within the rounding bound (n + 6)·u·Σ|area|. Affine, orientation-preserving maps carry
+/// the orientation into every T_v (`floater` module doc).
+pub fn check_bijective(ov: &Overlay, base: &BaseMesh, maps: &[RegionMap]) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-param-bijective",
+        "every piece of a triangle of S_T maps to a positively oriented triangle of its base triangle (so of every T_v)",
+    );
+    let mut worst = 0.0f64;
+    let mapped: std::collections::HashSet<u32> = maps.iter().map(|m| m.face).collect();
+    for (f, _) in base.faces() {
+        if !mapped.contains(&f) {
+            r.examined += 1;
+            r.offend(|| Witness::new(format!("base face {f} has no map"), json!({"face": f})));
+        }
+    }
+    for m in maps {
+        let (mut sum, mut abs) = (0.0, 0.0);
+        for &pi in &m.pieces {
+            r.examined += 1;
+            let v = ov.pieces[pi].v;
+            let uv = v.map(|x| m.uv.get(&x).copied().unwrap_or([f64::NAN; 2]));
+            let o = orient(uv[0], uv[1], uv[2]);
+            sum += o / 2.0;
+            abs += o.abs() / 2.0;
+            if !(o > 0.0) {
+                r.offend(|| {
+                    Witness::new(
+                        format!("base face {}: piece {v:?} of triangle {} of S_T maps to signed area {:.3e}", m.face, ov.pieces[pi].fine.0, o / 2.0),
+                        json!({"face": m.face, "piece": v, "fine": ov.pieces[pi].fine.0, "area": o / 2.0}),
+                    )
+                });
+            }
+        }
+        let tol = (m.pieces.len() as f64 + 6.0) * f64::EPSILON * abs;
+        let dev = (sum - 0.5).abs();
+        worst = dev_max(worst, dev);
+        r.examined += 1;
+        if !(dev <= tol) {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "base face {}: the images cover area {sum:.17} ≠ 1/2 (tolerance {tol:.1e})",
+                        m.face
+                    ),
+                    json!({"face": m.face, "area": sum, "tolerance": tol}),
+                )
+            });
+        }
+    }
+    r.worst_deviation = Some(worst);
+    r.note = format!("orientation exact (Shewchuk orient2d); largest |Σ area − 1/2| {worst:.1e}");
+    r
+}
+
+/// Does a segment of `cand` (the nodes curve `ci` would get) in `span` meet a segment of
+/// another curve touching the same triangle of S_T (`near` lists them), or a segment of
+/// `cand` that is not next to it, anywhere but where `check_disjoint` allows? The shortening
+/// calls it before every move, so the curves stay disjoint.
+pub fn segments_meet_other(
+    k: &SimplicialSurface,
+    emb: &Embedding,
+    ci: usize,
+    cand: &[Node],
+    span: (usize, usize),
+    near: &HashMap<FaceId, Vec<usize>>,
+) -> bool {
+    let last = cand.len().saturating_sub(1);
+    let c = &emb.curves[ci];
+    for s in span.0.min(last)..span.1.min(last) {
+        let (x, y) = (&cand[s], &cand[s + 1]);
+        for f in common_faces(k, x, y) {
+            let (Some(p0), Some(p1)) = (local(k, f, x), local(k, f, y)) else {
+                return true;
+            };
+            let p = [p0, p1];
+            let mine = cand.windows(2).enumerate().filter(|(t, _)| *t != s);
+            for (t, w) in mine {
+                if !common_faces(k, &w[0], &w[1]).contains(&f) {
+                    continue;
+                }
+                let (Some(q0), Some(q1)) = (local(k, f, &w[0]), local(k, f, &w[1])) else {
+                    return true;
+                };
+                let q = [q0, q1];
+                if meet(p, q) {
+                    let shared = [p0, p1].into_iter().find(|z| *z == q0 || *z == q1);
+                    let ok = t.abs_diff(s) == 1 && shared.is_some_and(|z| only_at(p, q, z));
+                    if !ok {
+                        return true;
+                    }
+                }
+            }
+            for &cj in near.get(&f).map_or(&[][..], |v| v.as_slice()) {
+                if cj == ci {
+                    continue;
+                }
+                let d = &emb.curves[cj];
+                for w in d.nodes.windows(2) {
+                    if !common_faces(k, &w[0], &w[1]).contains(&f) {
+                        continue;
+                    }
+                    let (Some(q0), Some(q1)) = (local(k, f, &w[0]), local(k, f, &w[1])) else {
+                        return true;
+                    };
+                    let q = [q0, q1];
+                    if meet(p, q) {
+                        let shared = [p0, p1].into_iter().find(|z| *z == q0 || *z == q1);
+                        let common_end = [c.a, c.b].into_iter().find(|v| {
+                            (*v == d.a || *v == d.b)
+                                && shared.is_some()
+                                && local(k, f, &Node::Vertex(*v)) == shared
+                        });
+                        let ok = common_end.is_some() && shared.is_some_and(|z| only_at(p, q, z));
+                        if !ok {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    false
+}
+
+/// The checks of an embedding that exists (stage order).
+pub fn run(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    e: &super::embedded::Embedded,
+) -> Vec<CheckResult> {
+    vec![
+        check_on_surface(k, &e.emb),
+        check_disjoint(k, base, &e.emb),
+        check_shortest(k, &e.emb),
+        check_curved_disk(&e.overlay, base, &e.emb),
+        check_bijective(&e.overlay, base, &e.maps),
+    ]
+}
+
+/// The embedding exists: an offence naming the failure when it does not (the base mesh
+/// could not be embedded; the simplification's parameters were used instead).
+pub fn check_embedded(failure: Option<&super::embedded::Failure>) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-embedding",
+        "every base edge is embedded in S_T and the curved triangles are mapped",
+    );
+    r.examined = 1;
+    if let Some(f) = failure {
+        r.offend(|| {
+            Witness::new(
+                format!("no embedding: {} (base faces {:?})", f.what, f.faces),
+                json!({"what": f.what, "faces": f.faces}),
+            )
+        });
+    }
+    r
+}

@@ -1,0 +1,106 @@
+//! The embedding and the parametrization together (seed 002, Part II, "Embed S̃_T in |S_T|"
+//! then "Create S from S̃_T"): curves ([`geodesic`], [`shorten`]), curved triangles
+//! ([`overlay`]), Floater's maps ([`floater`]), and the parameters of the vertices of S_T
+//! they give. These parameters replace the simplification's for the fit; the
+//! simplification's stay in [`BaseMesh`], where they choose and refine the base mesh.
+//!
+//! A failure names the base faces where it happened; the pipeline reports it (SPEC
+//! `AF-embedding`) and fits with the simplification's parameters, never passing it on as
+//! Floater's. (Refining at those faces and embedding again was tried: on the corpus it did
+//! not converge in 60 rounds.)
+
+use super::base::{BaseMesh, Param};
+use super::floater::{self, RegionMap};
+use super::geodesic::{self, EmbedError, Embedding};
+use super::overlay::{self, Overlay};
+use super::shorten;
+use crate::mesh::SimplicialSurface;
+
+/// The embedded base mesh and its parametrization.
+#[derive(Debug, Clone)]
+pub struct Embedded {
+    /// The curves.
+    pub emb: Embedding,
+    /// S_T cut along them.
+    pub overlay: Overlay,
+    /// Floater's map of each curved triangle.
+    pub maps: Vec<RegionMap>,
+    /// Parameter of every vertex of S_T (base face slot, barycentric coordinates).
+    pub params: Vec<Param>,
+}
+
+/// Why the embedding failed, and where.
+#[derive(Debug, Clone)]
+pub struct Failure {
+    /// What went wrong.
+    pub what: String,
+    /// Base face slots to refine.
+    pub faces: Vec<u32>,
+}
+
+/// Embed, cut, map (module doc).
+pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure> {
+    let mut emb = geodesic::initial_curves(k, base).map_err(|e| {
+        let EmbedError::NoPath { a, b } = e;
+        Failure {
+            what: e.to_string(),
+            faces: [(a, b), (b, a)]
+                .iter()
+                .filter_map(|&(u, w)| base.face_of_edge(u, w))
+                .collect(),
+        }
+    })?;
+    shorten::shorten(k, base, &mut emb);
+    let ov = overlay::build(k, base, &emb).map_err(|e| {
+        let fine = match e {
+            overlay::OverlayError::OffSurface { curve, .. } => {
+                let c = &emb.curves[curve];
+                return Failure {
+                    what: e.to_string(),
+                    faces: [(c.a, c.b), (c.b, c.a)]
+                        .iter()
+                        .filter_map(|&(u, w)| base.face_of_edge(u, w))
+                        .collect(),
+                };
+            }
+            overlay::OverlayError::Crossing(f) | overlay::OverlayError::Degenerate(f) => f,
+        };
+        let faces = k
+            .face(crate::mesh::FaceId(fine))
+            .iter()
+            .filter_map(|v| match base.params().get(v.idx()) {
+                Some(Param::Face { f, .. }) => Some(*f),
+                _ => None,
+            })
+            .collect();
+        Failure {
+            what: e.to_string(),
+            faces,
+        }
+    })?;
+    let bad: Vec<u32> = overlay::disk_defects(&ov, base, &emb)
+        .into_iter()
+        .filter(|(_, d)| !d.is_empty())
+        .map(|(f, _)| f)
+        .collect();
+    if !bad.is_empty() {
+        return Err(Failure {
+            what: format!("{} curved triangles are not disks", bad.len()),
+            faces: bad,
+        });
+    }
+    let maps = floater::map_regions(&ov, base, &emb).map_err(|e| {
+        let floater::FloaterError::Solve { face, .. } = &e;
+        Failure {
+            what: e.to_string(),
+            faces: vec![*face],
+        }
+    })?;
+    let params = floater::params(&maps, base, &emb, base.positions().len());
+    Ok(Embedded {
+        emb,
+        overlay: ov,
+        maps,
+        params,
+    })
+}
