@@ -296,7 +296,10 @@ pub fn check_2(g: &Exact1d) -> CheckResult {
                 if let Some(x) = g.omega(i).subset_witness(&oij) {
                     r.offend(|| {
                         Witness::new(
-                            format!("Ω_({i},{i}) = {oij} ≠ Ω_{i}: {} ∈ Ω_{i} ∖ Ω_({i},{i})", fmt_q(&x)),
+                            format!(
+                                "Ω_({i},{i}) = {oij} ≠ Ω_{i}: {} ∈ Ω_{i} ∖ Ω_({i},{i})",
+                                fmt_q(&x)
+                            ),
                             json!({"kind": "diag", "i": i, "x": qs(&x)}),
                         )
                     });
@@ -481,7 +484,11 @@ pub fn check_3b(g: &Exact1d) -> CheckResult {
             dev(&mut r, &(&z - &x));
             r.offend(|| {
                 Witness::new(
-                    format!("φ_({i},{j})(φ_({j},{i})({})) = {} ≠ x", fmt_q(&x), fmt_q(&z)),
+                    format!(
+                        "φ_({i},{j})(φ_({j},{i})({})) = {} ≠ x",
+                        fmt_q(&x),
+                        fmt_q(&z)
+                    ),
                     json!({"kind": "not_inverse", "i": i, "j": j, "x": qs(&x), "back": qs(&z)}),
                 )
             });

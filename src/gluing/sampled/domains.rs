@@ -145,7 +145,10 @@ pub fn check_2<G: GluingData<N>, const N: usize>(g: &G, cfg: &SampleConfig) -> C
                 if !g.in_gluing_domain(i, j, p) {
                     r.offend(|| {
                         Witness::new(
-                            format!("sampler of Ω_({i},{j}) returned {} ∉ Ω_({i},{j})", fmt_point(p)),
+                            format!(
+                                "sampler of Ω_({i},{j}) returned {} ∉ Ω_({i},{j})",
+                                fmt_point(p)
+                            ),
                             json!({"kind": "sampler", "i": i, "j": j, "p": point_json(p)}),
                         )
                     });
