@@ -385,7 +385,7 @@ fn sd_l131_3_d_sd_d1_faces_3_d_sd_d1_inside_3_d_sd_l99_3_d_sd_l101_det_3_d_hold_
     }
     // Hypotheses of each family hold where they apply and are skipped elsewhere.
     let r = run("kuhn222.tets", "kuhn222_quadratic.toml");
-    crate::common::assert_holds(&by_id(&r, "SD-L137(adjusted,3-D)"));
+    crate::common::assert_holds(by_id(&r, "SD-L137(adjusted,3-D)"));
     assert!(matches!(
         by_id(&r, "SD-E9(hyp,3-D)").verdict(),
         Verdict::Skipped { .. }
@@ -395,7 +395,7 @@ fn sd_l131_3_d_sd_d1_faces_3_d_sd_d1_inside_3_d_sd_l99_3_d_sd_l101_det_3_d_hold_
         Verdict::Skipped { .. }
     ));
     let r = run("cube6.tets", "cube6_monotonic.toml");
-    crate::common::assert_holds(&by_id(&r, "SD-E9(hyp,3-D)"));
+    crate::common::assert_holds(by_id(&r, "SD-E9(hyp,3-D)"));
     assert!(matches!(
         by_id(&r, "SD-L137(adjusted,3-D)").verdict(),
         Verdict::Skipped { .. }
@@ -675,7 +675,7 @@ fn sd_l168_3_d_curved_isosurface_has_the_topology_of_the_linear_one() {
         let iso = isosurfaces(&k, &maps, &f, &c, 6).expect("iso");
         let r = &iso.report[0];
         println!("{mesh} + {params}: {} ({:?})", r.note, t0.elapsed());
-        crate::common::assert_holds(&r);
+        crate::common::assert_holds(r);
         assert_eq!(iso.linear_topology.euler, euler);
         assert_eq!(iso.linear_topology.components, 1);
         assert_eq!(iso.linear_topology.boundary_loops, loops);

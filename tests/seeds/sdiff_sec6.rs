@@ -602,7 +602,7 @@ fn sd_l314_sd_l314_distance_sd_l316_local_optimiser_during_refinement_vs_closed_
         // The refinement is driven by err with X = id: the same triangulation either way.
         assert_eq!(closed.mesh.faces, opt.mesh.faces);
         let l314 = report_of(&opt.report, "SD-L314");
-        crate::common::assert_holds(&l314);
+        crate::common::assert_holds(l314);
         assert!(l314.examined > 0);
         assert!(!run.lambdas.is_empty());
         // Every accepted result is certified on its star, so the whole X_1 is a diffeomorphism.

@@ -179,7 +179,7 @@ fn sd_d1_faces_sd_d1_inside_sd_l99_sd_l101_det_sd_l101_inverse_hold_for_the_bund
             "SD-L101(edges)",
             "SD-L131",
         ] {
-            crate::common::assert_holds(&by_id(&r, id));
+            crate::common::assert_holds(by_id(&r, id));
             assert!(by_id(&r, id).examined > 0);
             common::assert_holds_for(name, by_id(&r, id));
         }
@@ -484,7 +484,7 @@ fn sd_l168_curved_isocurve_has_the_topology_of_the_linear_one() {
         let (f, c) = spec.iso.clone().unwrap();
         let out = iso::isocurves(&k, &cm, &f, &c).unwrap();
         for r in &out.report {
-            crate::common::assert_holds(&r);
+            crate::common::assert_holds(r);
         }
         assert_eq!(out.linear.topology(), out.curved.topology());
         assert_eq!(out.linear.topology().0, 1);
@@ -622,7 +622,7 @@ fn sd_e12_sd_e12_n_square_system_solved_exactly_positive_weights_and_c1_verified
         crate::common::assert_holds(&rf);
         // Positive weights, fixed control points: a diffeomorphism (SD-L161), certified.
         let all = check_all(&k, &cm2, &Options::default());
-        crate::common::assert_holds(&by_id(&all, "SD-L101(det)"));
+        crate::common::assert_holds(by_id(&all, "SD-L101(det)"));
         // L203, the positive case: at 𝒪's crossing of the diagonal DX jumps and the normals
         // agree (to the level shift of the nearest rational point).
         let (_, pts) = normals::check_l203(&k, &cm2, &f, &q(0));
@@ -746,11 +746,11 @@ fn sd_l219_sd_l219_positive_crossed_edges_only_on_grids() {
             );
             if let Some(sol) = &run.solution {
                 for r in &run.report[2..] {
-                    crate::common::assert_holds(&r);
+                    crate::common::assert_holds(r);
                 }
                 let cm = sol.build(&k, Path::new("inline.toml")).unwrap();
                 let checks = check_all(&k, &cm, &Options::default());
-                crate::common::assert_holds(&by_id(&checks, "SD-L101(det)"));
+                crate::common::assert_holds(by_id(&checks, "SD-L101(det)"));
                 // The solved map reads back from its TOML.
                 let back = params::parse(&sol.to_toml(), Path::new("solved.toml")).unwrap();
                 assert_eq!(back.weights, sol.weights);
@@ -861,8 +861,8 @@ fn sd_6_2_distance_sd_6_2_topology_sd_l302_sd_l324_taubin_and_circle() {
                 r.witnesses.first().map(|w| &w.text)
             );
         }
-        crate::common::assert_holds(&by_id(&out.report, "SD-L101(det)"));
-        crate::common::assert_holds(&by_id(&out.report, "SD-L168"));
+        crate::common::assert_holds(by_id(&out.report, "SD-L101(det)"));
+        crate::common::assert_holds(by_id(&out.report, "SD-L168"));
         assert!(out.iso.curved.to_obj().contains("\nl "));
         assert!(polygonize::to_off(&out.mesh).starts_with("OFF\n"));
     }
