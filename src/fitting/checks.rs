@@ -125,7 +125,7 @@ impl StarLayout {
 /// star are not decided here (counted; the verdict is then restricted to the decided ones).
 pub fn check_param_orientation(k: &SimplicialSurface, base: &BaseMesh) -> CheckResult {
     let mut r = CheckResult::new(
-        "AF-param-bijective",
+        "AF-param-bijective(polar)",
         "every triangle of S_T maps to a positively oriented triangle of the base mesh",
     );
     let o = orientations(k, base);
