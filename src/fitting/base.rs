@@ -25,6 +25,7 @@
 //! error, never clamped.
 
 use crate::mesh::{SimplicialSurface, VertexId};
+use crate::numeric::vec3::{cross, dot, norm, sub};
 use std::collections::HashMap;
 
 /// Largest negative barycentric coordinate a re-located point may be snapped from.
@@ -107,22 +108,6 @@ pub struct BaseMesh {
 }
 
 type V3 = [f64; 3];
-fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-fn norm(a: V3) -> f64 {
-    dot(a, a).sqrt()
-}
 fn orient2(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
     (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 }

@@ -21,6 +21,7 @@ use super::base::BaseMesh;
 use super::embed_checks::segments_meet_other;
 use super::geodesic::{common_faces, dist, Embedding, Node};
 use crate::mesh::{SimplicialSurface, VertexId};
+use crate::numeric::vec3::{cross, dot, norm, sub};
 
 /// A node is moved only when it shortens its two segments by more than this fraction; the
 /// same number bounds what `AF-geodesic-shortest` accepts (the stopping rule, a choice).
@@ -376,22 +377,4 @@ fn drop_turns(
         }
     }
     dropped
-}
-
-type V3 = [f64; 3];
-fn sub(a: V3, b: V3) -> V3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn dot(a: V3, b: V3) -> f64 {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-fn cross(a: V3, b: V3) -> V3 {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-fn norm(a: V3) -> f64 {
-    dot(a, a).sqrt()
 }
