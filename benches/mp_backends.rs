@@ -8,10 +8,11 @@
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use pseudomanifold::conditions::chapter4::{run_chapter4, Ch4Options, Precision};
-use pseudomanifold::construction::{MpBackend, P2};
+use pseudomanifold::construction::P2;
 use pseudomanifold::mesh::generate::icosahedron;
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::SimplicialSurface;
+use pseudomanifold::numeric::MpBackend;
 use pseudomanifold::surface::{PnTriangles, Pps, PpsOptions, SurfaceScalar};
 use std::time::{Duration, Instant};
 
@@ -61,9 +62,9 @@ fn bench(c: &mut Criterion) {
         });
         let to = time(|| {
             let _ = match b {
-                MpBackend::PureRust => oracle_work::<pseudomanifold::construction::Mp>(&k, &pps),
+                MpBackend::PureRust => oracle_work::<pseudomanifold::numeric::Mp>(&k, &pps),
                 #[cfg(feature = "mpfr")]
-                MpBackend::Mpfr => oracle_work::<pseudomanifold::construction::MpMpfr>(&k, &pps),
+                MpBackend::Mpfr => oracle_work::<pseudomanifold::numeric::MpMpfr>(&k, &pps),
             };
         });
         eprintln!(
@@ -82,9 +83,9 @@ fn bench(c: &mut Criterion) {
         );
         g.bench_function(format!("oracle eval+theta 256 bits ({})", b.name()), |bb| {
             bb.iter(|| match b {
-                MpBackend::PureRust => oracle_work::<pseudomanifold::construction::Mp>(&k, &pps),
+                MpBackend::PureRust => oracle_work::<pseudomanifold::numeric::Mp>(&k, &pps),
                 #[cfg(feature = "mpfr")]
-                MpBackend::Mpfr => oracle_work::<pseudomanifold::construction::MpMpfr>(&k, &pps),
+                MpBackend::Mpfr => oracle_work::<pseudomanifold::numeric::MpMpfr>(&k, &pps),
             })
         });
     }

@@ -3,9 +3,10 @@
 //!
 //! Run: `cargo run --example oracle -- tests/data/icosahedron_binary_le.ply`
 
-use pseudomanifold::construction::{Mp, Paper, Ppm, PpmGluing, P2};
+use pseudomanifold::construction::{Paper, Ppm, PpmGluing, P2};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
+use pseudomanifold::numeric::Mp;
 use std::path::PathBuf;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

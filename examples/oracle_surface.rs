@@ -4,10 +4,11 @@
 //!
 //! Run: `cargo run --example oracle_surface -- tests/data/icosahedron_binary_le.ply`
 
-use pseudomanifold::construction::{Mp, Scalar, P2};
+use pseudomanifold::construction::P2;
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::FaceId;
+use pseudomanifold::numeric::{Mp, Scalar};
 use pseudomanifold::oracle::mp_distance;
 use pseudomanifold::surface::{Consts, Jet, PnTriangles, Pps, PpsOptions};
 use std::path::PathBuf;

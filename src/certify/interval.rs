@@ -17,8 +17,8 @@
 //! independent of m_w. The Sec. 6.1.3 lens test is the same without the winding condition
 //! (|b|² < 3/4 ⇔ r < cos(π/m_u)).
 
-use crate::construction::interval::Interval as I;
-use crate::construction::scalar::Trit;
+use crate::numeric::interval::Interval as I;
+use crate::numeric::Trit;
 
 /// The point interval `[x, x]`.
 pub fn c(x: f64) -> I {

@@ -15,11 +15,11 @@
 
 pub mod interval;
 
-use crate::construction::interval::Interval as I;
 use crate::construction::maps::{
     self, cos_pi_6, is_nonzero, Corner, EdgeConfig, Ppm, TriangleConfig, P2,
 };
-use crate::construction::scalar::{Iv, Mp, Scalar, Trit};
+use crate::numeric::interval::Interval as I;
+use crate::numeric::{Iv, Mp, Scalar, Trit};
 use crate::report::harness::enclosure_exceeds;
 use crate::report::{CheckResult, Verdict, Witness};
 use interval::{c, iv, member, member_any, phi_polar, two_pi_frac, Deg, Domain};

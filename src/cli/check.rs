@@ -63,7 +63,7 @@ impl Ch4Args {
             "f64" => Precision::F64,
             other => match other.strip_prefix("mp:").map(str::parse::<u32>) {
                 Some(Ok(b)) => Precision::Mp(
-                    crate::construction::check_prec_bits(b)
+                    crate::numeric::check_prec_bits(b)
                         .map_err(|e| format!("--precision {other}: {e}"))?,
                 ),
                 _ => return Err(format!("--precision {other}: expected f64 or mp:BITS")),
@@ -79,7 +79,7 @@ impl Ch4Args {
             seed: self.seed,
             samples: self.samples,
             precision,
-            mp_backend: crate::construction::MpBackend::parse(&self.mp_backend)?,
+            mp_backend: crate::numeric::MpBackend::parse(&self.mp_backend)?,
             max_edge_configs: self.max_configs,
             max_triangle_configs: self.max_configs,
             max_star_configs: self.max_configs,

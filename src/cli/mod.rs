@@ -219,9 +219,9 @@ enum Command {
 }
 
 /// Parser of a `--bits` argument: refuses precisions outside the one limit
-/// [`crate::construction::PREC_BITS`] (shared with `check`, the oracle and the scalar types).
+/// [`crate::numeric::PREC_BITS`] (shared with `check`, the oracle and the scalar types).
 fn prec_bits_parser() -> clap::builder::RangedI64ValueParser<u32> {
-    let r = &crate::construction::PREC_BITS;
+    let r = &crate::numeric::PREC_BITS;
     clap::value_parser!(u32).range(i64::from(*r.start())..=i64::from(*r.end()))
 }
 
@@ -346,7 +346,7 @@ where
                     matching: matching.unwrap_or_else(|| "order".into()),
                     profile,
                     tolerance,
-                    bits: bits.unwrap_or(crate::construction::DEFAULT_MP_PREC),
+                    bits: bits.unwrap_or(crate::numeric::DEFAULT_MP_PREC),
                     worst,
                     json,
                     sprime: sprime.unwrap_or_else(|| "pn".into()),
@@ -373,7 +373,7 @@ where
                 &mesh,
                 &table,
                 &oracle::TableArgs {
-                    bits: bits.unwrap_or(crate::construction::DEFAULT_MP_PREC),
+                    bits: bits.unwrap_or(crate::numeric::DEFAULT_MP_PREC),
                     tolerance: tolerance.unwrap_or(1e-12),
                     worst,
                     json,

@@ -14,10 +14,11 @@ use crate::construction::abstract_view::AbstractPpm;
 use crate::construction::checks::{
     check_star_overlaps, run_edge_checks_with, run_triangle_checks_with, StarConfig,
 };
-#[cfg(feature = "mpfr")]
-use crate::construction::MpMpfr;
-use crate::construction::{EdgeConfig, Mp, MpBackend, Paper, Ppm, PpmGluing, TriangleConfig};
+use crate::construction::{EdgeConfig, Paper, Ppm, PpmGluing, TriangleConfig};
 use crate::mesh::{SimplicialSurface, VertexId};
+#[cfg(feature = "mpfr")]
+use crate::numeric::MpMpfr;
+use crate::numeric::{Mp, MpBackend};
 use crate::report::{CheckResult, Witness};
 use rand::seq::SliceRandom;
 use rand::SeedableRng;

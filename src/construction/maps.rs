@@ -13,7 +13,7 @@
 pub use super::config::{
     ConfigError, Corner, EdgeConfig, FanOrientation, TriangleConfig, VertexPair, MIN_DEGREE,
 };
-use super::scalar::{Scalar, Trit};
+use crate::numeric::{Scalar, Trit};
 use std::cmp::Ordering;
 
 /// A point of R² (one copy of R² per vertex; the copy is implicit).
@@ -582,7 +582,7 @@ pub fn phi_wu_f64_vs_mp(
     p: [f64; 2],
     prec: u32,
 ) -> Result<([f64; 2], [f64; 2], f64), MapError> {
-    use super::scalar::Mp;
+    use crate::numeric::Mp;
     let pf = P2::<f64>::new(p[0], p[1]);
     let pm = P2::<Mp>::from_f64(p[0], p[1], prec);
     let a = phi_wu(pair, &pf)?;

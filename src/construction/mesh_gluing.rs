@@ -3,8 +3,8 @@
 //! configuration (degrees and half-edge labels, Sec. 6.1.3) of the pair involved.
 
 use super::maps::{ConfigError, EdgeConfig, MapError, Paper, Ppm, TriangleConfig, VertexPair, P2};
-use super::scalar::{Scalar, Trit};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::{Scalar, Trit};
 use thiserror::Error;
 
 /// Errors naming the mesh elements involved.

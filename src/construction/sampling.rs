@@ -5,7 +5,7 @@
 //! sampler returns [`Samples`], which counts points per [`Category`] for reports.
 
 use super::maps::{cos_pi_6, P2};
-use super::scalar::Scalar;
+use crate::numeric::Scalar;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::collections::BTreeMap;

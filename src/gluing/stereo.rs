@@ -4,7 +4,7 @@
 //! disjoint subsets of ℝⁿ, so chart i is centred at c_i = (∓3ρ, 0, …, 0).
 
 use super::data::{GluingData, Idx, Point};
-use crate::construction::Scalar;
+use crate::numeric::Scalar;
 use crate::report::{CheckResult, Witness};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;

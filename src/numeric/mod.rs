@@ -1,9 +1,26 @@
-//! The bottom floor: small numeric and combinatorial tools every layer uses, written once.
-//! (The scalar types of Chapter 4 still live in `construction`; see docs/architecture.md.)
+//! The bottom floor: the scalar types every layer computes with (the [`Scalar`] trait over
+//! `f64`, both multi-precision backends and intervals) and the small numeric and combinatorial
+//! tools every layer uses, written once.
 
+mod bigfloat;
+mod dd;
+pub mod interval;
+pub mod iv;
+pub mod mp;
+pub mod mp_backend;
+#[cfg(feature = "mpfr")]
+pub mod mp_mpfr;
+pub mod scalar;
 pub mod union_find;
 pub mod vec3;
 
+pub use interval::Interval;
+pub use iv::Iv;
+pub use mp::Mp;
+pub use mp_backend::MpBackend;
+#[cfg(feature = "mpfr")]
+pub use mp_mpfr::MpMpfr;
+pub use scalar::{check_prec_bits, Scalar, Trit, DEFAULT_MP_PREC, PREC_BITS};
 pub use union_find::UnionFind;
 
 /// Euclidean norm without overflow or underflow of the squares (scaled by the largest

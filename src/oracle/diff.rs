@@ -12,7 +12,7 @@
 //! refused as problems, not executed. A table with nothing compared is not a pass.
 
 use super::protocol::Session;
-use crate::construction::{Mp, Scalar};
+use crate::numeric::{Mp, Scalar};
 use serde::Serialize;
 use serde_json::Value;
 

@@ -4,8 +4,8 @@
 
 use super::protocol::OracleError;
 use crate::construction::sigma_v::{SigmaVError, SigmaVPps, SvConsts};
-use crate::construction::{Mp, Scalar};
 use crate::mesh::{FaceId, VertexId};
+use crate::numeric::{Mp, Scalar};
 use crate::surface::eval_bound::BoundedPoint;
 use crate::surface::{Consts, Pps};
 

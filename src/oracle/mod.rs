@@ -19,7 +19,7 @@ pub mod tsv_diff;
 
 pub use protocol::{OracleError, Request, Response, Session};
 
-use crate::construction::{Mp, Scalar};
+use crate::numeric::{Mp, Scalar};
 
 /// Read a text table, naming the line and byte of the first invalid UTF-8 sequence (the
 /// error does not repeat the path).

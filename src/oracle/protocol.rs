@@ -13,8 +13,9 @@
 
 use super::mp_decimal;
 use super::query::{add_info, both, both_or_note, mp_only, vertex, Env, Needs, Numeric, OnF64};
-use crate::construction::{GluingError, MapError, Mp, PpmGluing, Scalar, Trit, P2};
+use crate::construction::{GluingError, MapError, PpmGluing, P2};
 use crate::mesh::{load_surface, FaceId, LoadError, SimplicialSurface, VertexId};
+use crate::numeric::{Mp, Scalar, Trit};
 use crate::surface::jet::Jet;
 use crate::surface::{Consts, Pps, PpsOptions, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
@@ -23,8 +24,8 @@ use std::path::PathBuf;
 use thiserror::Error;
 
 /// Largest accepted MPFR precision (bounded time and memory per request): the end of the one
-/// precision limit [`crate::construction::PREC_BITS`].
-pub const MAX_BITS: u32 = *crate::construction::PREC_BITS.end();
+/// precision limit [`crate::numeric::PREC_BITS`].
+pub const MAX_BITS: u32 = *crate::numeric::PREC_BITS.end();
 
 /// Membership test for Ω_uw.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, Default)]
@@ -207,7 +208,7 @@ pub enum OracleError {
     #[error("point not in the domain: {0}")]
     NotInDomain(String),
     /// `set_precision` outside 2..=[`MAX_BITS`].
-    #[error("precision {0} bits out of range {min}..={MAX_BITS}", min = crate::construction::PREC_BITS.start())]
+    #[error("precision {0} bits out of range {min}..={MAX_BITS}", min = crate::numeric::PREC_BITS.start())]
     Precision(u32),
     /// NaN or ±∞ in the query.
     #[error("non-finite coordinate in the query point")]
@@ -362,7 +363,7 @@ impl Default for Session {
     fn default() -> Self {
         Session {
             surface: None,
-            bits: crate::construction::DEFAULT_MP_PREC,
+            bits: crate::numeric::DEFAULT_MP_PREC,
             profile: Profile::default(),
             sprime: crate::surface::SurfaceKind::default(),
             ch5: None,
@@ -516,7 +517,7 @@ impl Session {
                 Ok(Response::plain(out))
             }
             Request::SetPrecision { bits } => {
-                if !crate::construction::PREC_BITS.contains(bits) {
+                if !crate::numeric::PREC_BITS.contains(bits) {
                     return Err(OracleError::Precision(*bits));
                 }
                 self.bits = *bits;

@@ -6,8 +6,9 @@
 use super::protocol::{OracleError, Request};
 use super::{mp_decimal, mp_distance};
 use crate::construction::maps::{g_v, g_v_inv, h};
-use crate::construction::{Mp, Paper, Ppm, PpmGluing, Scalar, P2};
+use crate::construction::{Paper, Ppm, PpmGluing, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::{Mp, Scalar};
 use crate::surface::jet::{Jet, MONOMIALS};
 use crate::surface::loop_subdiv::{LoopError, LoopSurface};
 use crate::surface::target::{eval_cubic, eval_cubic_in};

@@ -3,8 +3,8 @@
 //! table can take either construction as the reference.
 
 use crate::construction::sigma_v::{SigmaVPps, SvConsts};
-use crate::construction::{Mp, Scalar};
 use crate::mesh::{FaceId, SimplicialSurface};
+use crate::numeric::{Mp, Scalar};
 use crate::surface::PnTriangles;
 use serde_json::{json, Value};
 

@@ -138,7 +138,7 @@ impl Default for SurfaceDiffOptions {
             matching: MatchMode::Order,
             worst: 10,
             spot_checks: 32,
-            bits: crate::construction::DEFAULT_MP_PREC,
+            bits: crate::numeric::DEFAULT_MP_PREC,
             planted_bound_factor: None,
         }
     }

@@ -98,7 +98,7 @@ fn pn_point(net: &[[f64; 3]; 10], s: f64, t: f64) -> SurfacePoint {
     let (x, y) = Jet2::<f64>::variables(s, t);
     let one = Jet2::<f64>::constant(1.0);
     let bary = [
-        crate::construction::Scalar::sub(&crate::construction::Scalar::sub(&one, &x), &y),
+        crate::numeric::Scalar::sub(&crate::numeric::Scalar::sub(&one, &x), &y),
         x,
         y,
     ];

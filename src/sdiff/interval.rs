@@ -1,12 +1,12 @@
 //! The second, independent route to det DX > 0: interval branch-and-bound in f64 with outward
-//! rounding (`construction::interval`), evaluated from the control points through the hodograph
+//! rounding (`numeric::interval`), evaluated from the control points through the hodograph
 //! ∂x/∂s = n Σ_{|J|=n−1} (b_{J+e1} − b_{J+e0}) B_J (and likewise for t), not from the exact
 //! polynomials of [`super::positivity`]. It can certify, or give up; it never refutes (a
 //! refutation needs an exact value).
 
 use super::maps::{Family, SimplexMap};
 use super::poly::{multi_indices, multinomial, to_f64, Q};
-use crate::construction::interval::Interval as I;
+use crate::numeric::interval::Interval as I;
 use num_traits::ToPrimitive;
 
 /// Outcome of the interval route.

@@ -1,6 +1,6 @@
 //! The second, independent route to det DX > 0 on a closed tetrahedron (SPEC
 //! `SD-L101(interval,3-D)`): interval branch-and-bound in f64 with outward rounding
-//! (`construction::interval`) over boxes of the chart (s, t, r) = (w_1, w_2, w_3), evaluated
+//! (`numeric::interval`) over boxes of the chart (s, t, r) = (w_1, w_2, w_3), evaluated
 //! from the parameters, not from the exact polynomials of `tet`:
 //!
 //! * Eqs. (10), (11): values Σ q_I b_I B_I and the hodograph
@@ -20,7 +20,7 @@ use super::params::FamilySpec;
 use super::poly::multinomial;
 use super::tet_maps::multi_indices4;
 use super::tet_params::TetMap;
-use crate::construction::interval::Interval as I;
+use crate::numeric::interval::Interval as I;
 use num_traits::ToPrimitive;
 use std::collections::HashMap;
 

@@ -1,5 +1,5 @@
 //! Per-degree constants of Chapters 4–5 in a scalar `S`, computed once at the precision in
-//! use (so an [`crate::construction::Mp`] evaluation uses 256-bit constants, not rounded f64).
+//! use (so an [`crate::numeric::Mp`] evaluation uses 256-bit constants, not rounded f64).
 
 use super::scalar_ext::SurfaceScalar;
 use super::weights::XiConsts;

@@ -11,7 +11,7 @@
 //! Every decision (sign, comparison) is taken on the value part.
 
 use super::scalar_ext::SurfaceScalar;
-use crate::construction::Scalar;
+use crate::numeric::Scalar;
 use std::cmp::Ordering;
 
 /// Number of monomials x^i y^j with i + j ≤ 3.

@@ -2,7 +2,7 @@
 //!
 //! θ_v(p) = Σ_u Γ_uv(p)·Ψ_uv(p) / Σ_u Γ_uv(p), with Γ_uv = γ_u∘φ_uv and Ψ_uv = ψ_u∘φ_uv on
 //! Ω_vu (0 elsewhere). Everything is generic over [`SurfaceScalar`]: `f64` (production),
-//! [`crate::construction::Mp`] (oracle), and [`super::jet::Jet`] (derivatives to order 3).
+//! [`crate::numeric::Mp`] (oracle), and [`super::jet::Jet`] (derivatives to order 3).
 //!
 //! Transition maps. θ_v needs φ_uv(p) for p ∈ Ω_vu. This module evaluates
 //! φ_uv = R_(u,v)⁻¹∘g_u⁻¹∘h∘g_v∘R_(v,u) (Def. 4.1.8) with per-degree constants, deciding

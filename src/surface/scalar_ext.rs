@@ -1,7 +1,7 @@
 //! The scalar types of Chapter 5: the Chapter 4 [`Scalar`] plus `exp`, which the weight
 //! function ξ of Def. 5.3.1 needs (1/(1 + e^{2s})).
 
-use crate::construction::{Mp, Scalar};
+use crate::numeric::{Mp, Scalar};
 
 /// A [`Scalar`] with the exponential: `f64`, [`Mp`], and the derivative jets
 /// [`super::jet::Jet`] over either.
@@ -44,8 +44,8 @@ impl SurfaceScalar for Mp {
 }
 
 #[cfg(feature = "mpfr")]
-impl SurfaceScalar for crate::construction::MpMpfr {
+impl SurfaceScalar for crate::numeric::MpMpfr {
     fn exp(&self) -> Self {
-        crate::construction::MpMpfr::exp(self)
+        crate::numeric::MpMpfr::exp(self)
     }
 }

@@ -10,9 +10,9 @@
 //! caller names them; b_σ does not depend on that order.
 
 use super::profile::{NormalRule, Profile};
-use crate::construction::Scalar;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::numeric::vec3::{cross, dot, norm, sub};
+use crate::numeric::Scalar;
 
 /// Order of the 10 control points of a cubic Bézier triangle: exponents (i, j, k), i + j + k
 /// = 3, of the Bernstein polynomial 3!/(i!j!k!) λ^i ν^j η^k for corners (c₀, c₁, c₂).
@@ -256,7 +256,7 @@ pub fn eval_cubic<S: Scalar>(net: &[[f64; 3]; 10], bary: [S; 3]) -> [S; 3] {
 
 /// [`eval_cubic`] in any scalar (the oracle's S′ in MPFR): the net's f64 control points are
 /// exact in `S`, so the difference from the f64 value is the rounding of the evaluation.
-pub fn eval_cubic_in<S: crate::construction::Scalar>(
+pub fn eval_cubic_in<S: crate::numeric::Scalar>(
     net: &[[f64; 3]; 10],
     bary: &[S; 3],
     prec: u32,

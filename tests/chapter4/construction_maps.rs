@@ -3,6 +3,7 @@ use crate::common;
 use pseudomanifold::construction::checks::*;
 use pseudomanifold::construction::maps::*;
 use pseudomanifold::construction::*;
+use pseudomanifold::numeric::{Mp, Scalar, Trit};
 use pseudomanifold::report::{CheckResult, Verdict};
 
 const SEED: u64 = 20240601;

@@ -6,12 +6,13 @@ use crate::common;
 
 use pseudomanifold::conditions::chapter4::{run_chapter4, Ch4Options, Precision};
 use pseudomanifold::construction::abstract_view::AbstractPpm;
-use pseudomanifold::construction::{GluingError, PpmGluing, Trit, P2};
+use pseudomanifold::construction::{GluingError, PpmGluing, P2};
 use pseudomanifold::gluing::sampled::{check_all, SampleConfig};
 use pseudomanifold::mesh::generate::{bipyramid, icosahedron, octahedron, tetrahedron, torus};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{RawMesh, SimplicialSurface, VertexId};
+use pseudomanifold::numeric::Trit;
 use pseudomanifold::report::Verdict;
 
 fn surface(m: &RawMesh) -> SimplicialSurface {

@@ -3,10 +3,11 @@
 //! conformance failure anywhere else.
 
 use pseudomanifold::conditions::chapter4::{run_chapter4, run_chapter4_model, Ch4Options};
-use pseudomanifold::construction::{EdgeConfig, Ppm, Scalar, Trit, P2};
+use pseudomanifold::construction::{EdgeConfig, Ppm, P2};
 use pseudomanifold::mesh::generate::bipyramid;
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::SimplicialSurface;
+use pseudomanifold::numeric::{Scalar, Trit};
 
 fn surface(n: u32) -> SimplicialSurface {
     validate(&bipyramid(n)).surface.expect("valid surface")

@@ -6,7 +6,7 @@
 
 #![cfg(feature = "inari")]
 
-use pseudomanifold::construction::interval::Interval;
+use pseudomanifold::numeric::interval::Interval;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 

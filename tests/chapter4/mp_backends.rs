@@ -18,10 +18,11 @@
 use crate::common;
 
 use pseudomanifold::construction::maps::{g_v, g_v_inv};
-use pseudomanifold::construction::{Mp, MpMpfr, PpmGluing, Scalar, Trit, P2};
+use pseudomanifold::construction::{PpmGluing, P2};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, SimplicialSurface, VertexId};
+use pseudomanifold::numeric::{Mp, MpMpfr, Scalar, Trit};
 use pseudomanifold::surface::fit::sample_set;
 use pseudomanifold::surface::jet::MONOMIALS;
 use pseudomanifold::surface::{

@@ -9,6 +9,7 @@ use pseudomanifold::gluing::sampled::{check_all, SampleConfig};
 use pseudomanifold::mesh::generate::icosahedron;
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::VertexId;
+use pseudomanifold::numeric::{Scalar, Trit};
 use pseudomanifold::report::{CheckResult, Verdict};
 use pseudomanifold::surface::checks::*;
 use pseudomanifold::surface::*;

@@ -2,10 +2,10 @@
 //! misbehaviour it pins (`x_adv_NN_…`), fails on the code before the fix, and asserts either the
 //! corrected answer or a typed refusal.
 
-use pseudomanifold::construction::{Mp, Scalar};
 use pseudomanifold::mesh::generate::{bipyramid, octahedron};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, SimplicialSurface};
+use pseudomanifold::numeric::{Mp, Scalar};
 use pseudomanifold::surface::output::sample_surface;
 use pseudomanifold::surface::weights::{xi, XiConsts};
 use pseudomanifold::surface::*;
@@ -68,7 +68,8 @@ fn x_adv_01_nan_normals_at_edge_midpoints_r_xi_finite() {
 /// precision.
 #[test]
 fn x_adv_02_precision_1024_breaks_membership_r_unit_roundoff() {
-    use pseudomanifold::construction::{in_omega_uw, EdgeConfig, Trit, P2};
+    use pseudomanifold::construction::{in_omega_uw, EdgeConfig, P2};
+    use pseudomanifold::numeric::Trit;
     assert_eq!(
         Mp::from_i64(1, 1024).epsilon(),
         0.5f64.powi(1000) * 0.5f64.powi(24)
@@ -437,7 +438,7 @@ fn x_adv_13_precision_below_2_refused_at_every_boundary() {
 /// at every boundary, and one bit past it is refused.
 #[test]
 fn x_adv_13_precision_above_the_one_limit_refused_at_every_boundary() {
-    let past = (pseudomanifold::construction::PREC_BITS.end() + 1).to_string();
+    let past = (pseudomanifold::numeric::PREC_BITS.end() + 1).to_string();
     let mp = format!("mp:{past}");
     for args in [
         &[

@@ -30,8 +30,6 @@ const FLOORS: &[(&str, u32)] = &[
 
 /// Upward imports not yet moved (from, to), with the move that removes each.
 const ALLOWED_UP: &[(&str, &str)] = &[
-    // The Chapter 4 scalar trait still lives in construction; it moves to numeric.
-    ("gluing", "construction"),
     // The tutorial's (σ, v) construction sits in construction/sigma_v and uses Chapter 5's
     // jets, weights and fit; it moves beside the vertex PPS under surface.
     ("construction", "surface"),

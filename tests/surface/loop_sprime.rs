@@ -4,11 +4,11 @@
 
 use crate::common;
 
-use pseudomanifold::construction::Mp;
 use pseudomanifold::mesh::generate;
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, RawMesh, SimplicialSurface, VertexId};
+use pseudomanifold::numeric::Mp;
 use pseudomanifold::report::dev_max;
 use pseudomanifold::report::CheckResult;
 use pseudomanifold::surface::loop_subdiv::checks::{
@@ -106,7 +106,7 @@ fn loop_mp_eval_f64_matches_mp256() {
                 let bm = bary.map(|x| Mp::new(256, x));
                 let pm = s.jet::<Mp>(f, c, &bm, false).expect("mp").p;
                 for d in 0..3 {
-                    use pseudomanifold::construction::Scalar;
+                    use pseudomanifold::numeric::Scalar;
                     let e = (pf[d] - pm[d].to_f64()).abs();
                     assert!(
                         e <= tol,

@@ -5,10 +5,11 @@
 use crate::common;
 
 use pseudomanifold::construction::maps::rotate_frac;
-use pseudomanifold::construction::{EdgeConfig, Paper, Ppm, PpmGluing, Scalar, P2};
+use pseudomanifold::construction::{EdgeConfig, Paper, Ppm, PpmGluing, P2};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::SimplicialSurface;
+use pseudomanifold::numeric::Scalar;
 use pseudomanifold::oracle::diff::diff_table;
 use pseudomanifold::oracle::Session;
 use std::io::{BufRead, BufReader, Write};
@@ -218,7 +219,7 @@ fn oracle_mp_values_agree_across_precisions() {
     let (u, w) = k.edges().next().expect("edge");
     let e = g.edge_config(u, w).expect("config");
     for p in domain_points(&e) {
-        use pseudomanifold::construction::Mp;
+        use pseudomanifold::numeric::Mp;
         let a = g
             .phi::<Mp>(w, u, &P2::<Mp>::from_f64(p.x, p.y, 256))
             .expect("φ 256");

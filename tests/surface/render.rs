@@ -4,11 +4,11 @@
 //! of K versus PN triangles (`C6.2-curvature-continuity`), byte-for-byte determinism
 //! (`R-deterministic`) and a planted sign error in the normal (`R-normal-sign`).
 
-use pseudomanifold::construction::Scalar;
 use pseudomanifold::gluing::stereo::{phi_north_inv, phi_south_inv};
 use pseudomanifold::mesh::generate::{icosahedron, torus};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, SimplicialSurface, VertexId};
+use pseudomanifold::numeric::Scalar;
 use pseudomanifold::render::camera::Camera;
 use pseudomanifold::render::orientation::check_orientation;
 use pseudomanifold::render::source::{mesh_scene, pps_scene, sprime_scene};

@@ -2,11 +2,12 @@
 //! planted fault. Corpus-wide runs use a subset of vertices (`max_vertices`) and few samples.
 use crate::common;
 
-use pseudomanifold::construction::{Mp, PpmGluing, Scalar, P2};
+use pseudomanifold::construction::{PpmGluing, P2};
 use pseudomanifold::mesh::generate::{self, icosahedron, octahedron, torus};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, RawMesh, SimplicialSurface, VertexId};
+use pseudomanifold::numeric::{Mp, Scalar};
 use pseudomanifold::report::dev_max;
 use pseudomanifold::report::{CheckResult, Verdict};
 use pseudomanifold::surface::checks::*;

@@ -13,7 +13,7 @@
 
 use super::maps::*;
 use super::sampling::*;
-use super::scalar::{Scalar, Trit};
+use crate::numeric::{Scalar, Trit};
 use crate::report::{dev_max, Check, CheckResult, OnError, Restricted, Verdict, Witness};
 use serde_json::json;
 

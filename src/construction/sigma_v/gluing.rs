@@ -19,8 +19,8 @@ use super::wedge::WedgeTable;
 use crate::construction::maps::{
     f_v, in_canonical_lens, polar, polar_inv, EdgeConfig, Paper, Ppm, P2,
 };
-use crate::construction::scalar::Scalar;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::Scalar;
 use serde::Serialize;
 
 /// A corner (σ, v) ∈ I: v and the label k of v's outgoing half-edge whose face is σ, so

@@ -15,7 +15,7 @@
 //! Ω_(σ,v) ∩ Ω_(τ,v) ≠ ∅", T 2092) and every wedge contain the centre.
 
 use crate::construction::maps::{omega_radius, P2};
-use crate::construction::scalar::Scalar;
+use crate::numeric::Scalar;
 
 /// Default κ of r_{v,σ} = −κ·cos(π/m_v)·b_{v,σ} (SPEC `SV-D3`).
 pub const DEFAULT_KAPPA: f64 = 0.25;

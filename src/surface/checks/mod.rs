@@ -15,8 +15,9 @@ use super::jet::{Jet, JET_LEN};
 use super::pps::{Pps, PpsOptions};
 use super::profile::Profile;
 use super::scalar_ext::SurfaceScalar;
-use crate::construction::{Mp, PpmGluing, Scalar, P2};
+use crate::construction::{PpmGluing, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::{Mp, Scalar};
 use crate::report::{dev_max, uniform_in_triangle, Check, CheckResult, OnError, Verdict, Witness};
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
@@ -63,7 +64,7 @@ impl Default for SurfaceCheckOptions {
             samples_per_vertex: 24,
             max_vertices: None,
             mp_vertices: 4,
-            mp_prec: crate::construction::DEFAULT_MP_PREC,
+            mp_prec: crate::numeric::DEFAULT_MP_PREC,
             profile: Profile::Paper,
             intersections: true,
             surface: super::target::SurfaceKind::Pn,

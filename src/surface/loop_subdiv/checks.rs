@@ -20,8 +20,8 @@ use super::eigen::EigenStructure;
 use super::rules::{cos_sin_2pi, limit_weights};
 use super::stam::{depth_cap, PatchJet};
 use super::surface::{LoopError, LoopSurface, MAX_VALENCE};
-use crate::construction::Mp;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::Mp;
 use crate::report::{dev_max, Check, CheckResult, OnError, Verdict, Witness};
 use rand::seq::SliceRandom;
 use rand::SeedableRng;
@@ -647,7 +647,7 @@ pub fn run_loop_checks(
     opts: &LoopCheckOptions,
 ) -> Vec<CheckResult> {
     let vals: Vec<u32> = s.stats.valences.keys().copied().collect();
-    let mut out = vec![check_eigen(&vals, crate::construction::DEFAULT_MP_PREC)];
+    let mut out = vec![check_eigen(&vals, crate::numeric::DEFAULT_MP_PREC)];
     out.extend(check_vertices(k, s, opts));
     out.push(check_normals(k, s, opts));
     out.extend(check_edges(k, s, opts));

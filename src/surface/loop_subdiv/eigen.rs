@@ -1,5 +1,5 @@
 //! The eigen-structure of Loop's subdivision matrix A for valence N, in closed form, generic
-//! over the scalar (f64, [`crate::construction::Mp`]).
+//! over the scalar (f64, [`crate::numeric::Mp`]).
 //!
 //! A = [[S₁₁, 0], [S₂₁, S₂₂]]: the centre and its ring (N + 1 points) do not see the five
 //! outer points. Each diagonal block is diagonalised exactly:
@@ -23,7 +23,7 @@
 
 use super::patch::{matmul, Mat, SubdivisionMatrices};
 use super::rules::{beta, cos_sin_2pi};
-use crate::construction::Scalar;
+use crate::numeric::Scalar;
 
 /// Eigenvalues of S₂₂ in the order of the columns of W.
 const MU: [(i64, i64); 5] = [(1, 8), (1, 8), (1, 8), (1, 16), (1, 16)];
@@ -384,7 +384,7 @@ impl<S: Scalar> EigenStructure<S> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::construction::Mp;
+    use crate::numeric::Mp;
 
     #[test]
     fn loop_eigen_reconstructs_powers_f64_valences_3_to_64() {

@@ -10,7 +10,7 @@
 use super::regular::REGULAR_NET;
 use super::rules::vertex_weights;
 use super::topology::{ring, LocalMesh, Topology};
-use crate::construction::Scalar;
+use crate::numeric::Scalar;
 
 /// A dense matrix as rows.
 pub type Mat<S> = Vec<Vec<S>>;

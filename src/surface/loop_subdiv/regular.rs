@@ -235,7 +235,7 @@ pub(crate) fn ratio_to_f64(q: &BigRational) -> f64 {
     q.to_f64().unwrap_or(f64::NAN)
 }
 
-/// (numerator, denominator) as i64 when they fit, to build a [`crate::construction::Scalar`]
+/// (numerator, denominator) as i64 when they fit, to build a [`crate::numeric::Scalar`]
 /// by `from_ratio` (correctly rounded at any precision).
 pub(crate) fn ratio_to_i64(q: &BigRational) -> Option<(i64, i64)> {
     use num_traits::ToPrimitive;

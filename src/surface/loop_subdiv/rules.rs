@@ -4,7 +4,7 @@
 //! β(n) = (5/8 − (3/8 + cos(2π/n)/4)²)/n. Edge rule: e′ = 3/8 (a + b) + 1/8 (c + d), c, d the
 //! vertices opposite the edge [a, b].
 
-use crate::construction::Scalar;
+use crate::numeric::Scalar;
 
 /// (cos 2πω/n, sin 2πω/n), exact (as rationals) where the angle is a multiple of 30° with a
 /// rational cosine or sine, so that exact identities of the eigen-structure (λ = 1/8 at

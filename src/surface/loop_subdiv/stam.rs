@@ -8,7 +8,7 @@
 
 use super::eigen::{powi, EigenStructure};
 use super::regular::{basis_exact, ratio_to_i64, MONOMIALS};
-use crate::construction::Scalar;
+use crate::numeric::Scalar;
 use std::cmp::Ordering;
 
 /// Position and (when defined) the derivatives ∂x, ∂y, ∂xx, ∂xy, ∂yy of a parametrized

@@ -18,8 +18,8 @@ use super::stam::{basis_in, extraordinary_jet_as, regular_jet, PatchJet};
 use super::topology::{
     gather_net, ring, BaseTopology, MissingTriangle, SubPoint, SubTopology, Topology,
 };
-use crate::construction::Scalar;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::Scalar;
 use rayon::prelude::*;
 use std::any::Any;
 use std::collections::{BTreeMap, HashMap};

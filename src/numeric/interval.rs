@@ -24,7 +24,7 @@
 //! * atan2 over a box that misses the origin and does not cross the cut of the principal
 //!   argument (−π, π] takes its extrema at the corners.
 
-use super::mp::{big_to_f64, with_consts};
+use super::bigfloat::{big_to_f64, with_consts};
 use astro_float::{BigFloat, Consts, RoundingMode};
 use std::ops::{Add, Div, Mul, Neg, Sub};
 

@@ -33,7 +33,7 @@
 //!   j = 0; π/2 − · and π − · add no cancellation, their results being ≥ π/4). Claimed:
 //!   E = 2⁻⁸⁵·|y|.
 
-use super::mp::{big_to_f64, with_consts};
+use super::bigfloat::{big_to_f64, with_consts};
 use astro_float::{BigFloat, RoundingMode};
 use std::sync::OnceLock;
 
