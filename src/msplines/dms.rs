@@ -14,25 +14,24 @@ use super::poly2::Poly2;
 use num_traits::{Num, One, Signed, Zero};
 use std::collections::{BTreeMap, HashMap};
 
-/// The scalars the recurrence runs in (BigRational, f64), with an exact orientation sign so
-/// the half-open decisions are exact for the stored values in both (f64: Shewchuk's
-/// adaptive predicate): a point on a knot line then belongs to one side only, consistently
-/// for every triangle having that line as an edge.
-pub trait Scalar: Clone + Num + Signed + PartialOrd + std::fmt::Debug {
-    /// The exact sign of det(b − a, c − a).
-    fn orient(a: &Pt<Self>, b: &Pt<Self>, c: &Pt<Self>) -> std::cmp::Ordering;
+/// The ordered fields the recurrence runs in (BigRational, f64), with an exact orientation sign
+/// so the half-open decisions are exact for the stored values in both
+/// ([`crate::numeric::predicates`]): a point on a knot line then belongs to one side only,
+/// consistently for every triangle having that line as an edge.
+pub trait KnotField: Clone + Num + Signed + PartialOrd + std::fmt::Debug {
+    /// The exact sign of det(b − a, c − a); `None` when it has none (a NaN coordinate).
+    fn orient(a: &Pt<Self>, b: &Pt<Self>, c: &Pt<Self>) -> Option<std::cmp::Ordering>;
 }
 
-impl Scalar for f64 {
-    fn orient(a: &Pt<f64>, b: &Pt<f64>, c: &Pt<f64>) -> std::cmp::Ordering {
-        let p = |x: &Pt<f64>| robust::Coord { x: x[0], y: x[1] };
-        robust::orient2d(p(a), p(b), p(c)).total_cmp(&0.0)
+impl KnotField for f64 {
+    fn orient(a: &Pt<f64>, b: &Pt<f64>, c: &Pt<f64>) -> Option<std::cmp::Ordering> {
+        crate::numeric::predicates::orient2(*a, *b, *c)
     }
 }
 
-impl Scalar for Q {
-    fn orient(a: &Pt<Q>, b: &Pt<Q>, c: &Pt<Q>) -> std::cmp::Ordering {
-        det(a, b, c).cmp(&Q::zero())
+impl KnotField for Q {
+    fn orient(a: &Pt<Q>, b: &Pt<Q>, c: &Pt<Q>) -> Option<std::cmp::Ordering> {
+        Some(det(a, b, c).cmp(&Q::zero()))
     }
 }
 
@@ -68,13 +67,12 @@ pub enum DmsError {
 }
 
 /// det(b − a, c − a).
-pub fn det<S: Scalar>(a: &Pt<S>, b: &Pt<S>, c: &Pt<S>) -> S {
-    (b[0].clone() - a[0].clone()) * (c[1].clone() - a[1].clone())
-        - (c[0].clone() - a[0].clone()) * (b[1].clone() - a[1].clone())
+pub fn det<S: KnotField>(a: &Pt<S>, b: &Pt<S>, c: &Pt<S>) -> S {
+    crate::numeric::predicates::det2(a, b, c)
 }
 
 /// Barycentric coordinates of u in [a, b, c] (det ≠ 0 assumed by the caller).
-fn bary<S: Scalar>(t: [&Pt<S>; 3], u: &Pt<S>, d: &S) -> [S; 3] {
+fn bary<S: KnotField>(t: [&Pt<S>; 3], u: &Pt<S>, d: &S) -> [S; 3] {
     [
         det(u, t[1], t[2]) / d.clone(),
         det(t[0], u, t[2]) / d.clone(),
@@ -85,9 +83,14 @@ fn bary<S: Scalar>(t: [&Pt<S>; 3], u: &Pt<S>, d: &S) -> [S; 3] {
 /// u ∈ [a, b, c) with the perturbation u + ε(1,0) + ε²(0,1) (lexicographic sign test on
 /// exact orientation signs; the perturbation's first-order terms are differences of
 /// coordinates, whose signs are exact in f64 too).
-pub fn half_open_inside<S: Scalar>(t: [&Pt<S>; 3], u: &Pt<S>) -> bool {
+///
+/// A NaN knot or point cannot be placed: it is reported inside, so the base value 1/|det| (or
+/// the λ_j of the recurrence) carries the NaN to the checks instead of a silent 0.
+pub fn half_open_inside<S: KnotField>(t: [&Pt<S>; 3], u: &Pt<S>) -> bool {
     use std::cmp::Ordering::{Equal, Greater, Less};
-    let o = S::orient(t[0], t[1], t[2]);
+    let Some(o) = S::orient(t[0], t[1], t[2]) else {
+        return true;
+    };
     if o == Equal {
         return false;
     }
@@ -95,7 +98,10 @@ pub fn half_open_inside<S: Scalar>(t: [&Pt<S>; 3], u: &Pt<S>) -> bool {
     (0..3).all(|i| {
         // λ_i ∝ det(u, t_{i+1}, t_{i+2}); its gradient in u is (y_{i+1} − y_{i+2}, x_{i+2} − x_{i+1}).
         let (b, c) = (t[(i + 1) % 3], t[(i + 2) % 3]);
-        let signs = [S::orient(u, b, c), cmp(&b[1], &c[1]), cmp(&c[0], &b[0])];
+        let Some(ou) = S::orient(u, b, c) else {
+            return true;
+        };
+        let signs = [ou, cmp(&b[1], &c[1]), cmp(&c[0], &b[0])];
         let first = signs.into_iter().find(|s| *s != Equal).unwrap_or(Equal);
         let first = if o == Less { first.reverse() } else { first };
         first == Greater
@@ -124,14 +130,16 @@ fn members(mask: u32) -> Vec<usize> {
     (0..32).filter(|i| mask & (1 << i) != 0).collect()
 }
 
-impl<S: Scalar> SimplexSpline<'_, S> {
+impl<S: KnotField> SimplexSpline<'_, S> {
     /// The first affinely independent triple of the subset (in index order).
     fn independent(&self, idx: &[usize]) -> Option<[usize; 3]> {
         let v = self.knots;
         for a in 0..idx.len() {
             for b in a + 1..idx.len() {
                 for c in b + 1..idx.len() {
-                    if S::orient(&v[idx[a]], &v[idx[b]], &v[idx[c]]) != std::cmp::Ordering::Equal {
+                    // A NaN triple is taken as independent so its NaN reaches the value.
+                    let o = S::orient(&v[idx[a]], &v[idx[b]], &v[idx[c]]);
+                    if o != Some(std::cmp::Ordering::Equal) {
                         return Some([idx[a], idx[b], idx[c]]);
                     }
                 }
@@ -264,7 +272,7 @@ fn collinear(triangle: usize, beta: &[usize; 3], knots: Vec<usize>) -> DmsError 
     }
 }
 
-impl<S: Scalar> Dms<S> {
+impl<S: KnotField> Dms<S> {
     /// The cloud triangle I sees at corner c.
     pub fn corner_cloud(&self, i: usize, c: usize) -> &[Pt<S>] {
         self.overrides

@@ -10,6 +10,7 @@ pub mod mp;
 pub mod mp_backend;
 #[cfg(feature = "mpfr")]
 pub mod mp_mpfr;
+pub mod predicates;
 pub mod scalar;
 pub mod union_find;
 pub mod vec3;

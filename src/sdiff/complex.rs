@@ -52,8 +52,9 @@ pub enum ComplexError {
     Invalid(Vec<CheckResult>),
 }
 
+/// det(b − a, c − a), exact.
 fn orient(a: &[Q; 2], b: &[Q; 2], c: &[Q; 2]) -> Q {
-    (&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])
+    crate::numeric::predicates::det2(a, b, c)
 }
 
 /// Validates `raw` as a planar simplicial complex with boundary; the report lists every check.

@@ -260,10 +260,7 @@ pub fn parse(text: &str, path: &Path) -> Result<RawTets, TetComplexError> {
 
 /// det\[b − a, c − a, d − a\] (six times the signed volume), exact.
 pub fn orient3(a: &[Q; 3], b: &[Q; 3], c: &[Q; 3], d: &[Q; 3]) -> Q {
-    let u: [Q; 3] = std::array::from_fn(|k| &b[k] - &a[k]);
-    let v: [Q; 3] = std::array::from_fn(|k| &c[k] - &a[k]);
-    let w: [Q; 3] = std::array::from_fn(|k| &d[k] - &a[k]);
-    dot(&cross(&u, &v), &w)
+    crate::numeric::predicates::det3(a, b, c, d)
 }
 
 fn cross(u: &[Q; 3], v: &[Q; 3]) -> [Q; 3] {

@@ -255,7 +255,8 @@ fn x_fuzz_validate_huge_coordinate_verdict_independent_of_face_order() {
 /// extreme inputs (overflow and underflow ranges) by exact rationals.
 #[test]
 fn x_fuzz_exact_orientation_fallback_agrees_with_adaptive_predicates() {
-    use pseudomanifold::mesh::validate::predicates::{orient3, orient3_exact};
+    use pseudomanifold::mesh::validate::predicates::orient3;
+    use pseudomanifold::numeric::predicates::orient3_exact;
     use rand::{Rng, SeedableRng};
     use std::cmp::Ordering;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(8);

@@ -1,110 +1,17 @@
-//! Exact geometric predicates on f64 coordinates. Every f64 is a rational number, so "exactly
-//! zero" is meaningful; `robust` (Shewchuk's adaptive-precision arithmetic) returns the sign of
-//! the exact determinant, which is all these tests use. Inputs must be finite.
-//!
-//! Shewchuk's arithmetic is exact only while no intermediate product overflows or underflows
-//! (SPEC `X-fuzz`: the `validate` fuzz target found a self-intersection verdict that depended on the
-//! face order for a vertex at z = −8.5e305). Outside [`SAFE_MIN`, `SAFE_MAX`] the sign is
-//! computed with exact rationals instead (every finite f64 is a dyadic rational, so exact big integers suffice).
+//! The validator's geometric predicates on f64 coordinates (projections, segment and triangle
+//! tests), built on the exact orientation signs of [`crate::numeric::predicates`]. Inputs must
+//! be finite (the validator checks finiteness first).
 
-use num_bigint::BigInt;
-use robust::{orient2d, orient3d, Coord, Coord3D};
+use crate::numeric::predicates::orient2;
+use robust::Coord;
 use std::cmp::Ordering;
 
 /// A point of R³.
 pub type P3 = [f64; 3];
 
-fn c3(p: &P3) -> Coord3D<f64> {
-    Coord3D {
-        x: p[0],
-        y: p[1],
-        z: p[2],
-    }
-}
-
-/// Nonzero magnitudes below this may underflow inside the adaptive predicates: their
-/// differences are multiples of 2^(e−52) and orient3d multiplies three of them together with
-/// their error tails (another 2^−53 each), which must stay above 2^−1022: e ≥ −200 keeps
-/// 3·(−200 − 105) = −915.
-pub const SAFE_MIN: f64 = 6.223015277861142e-61; // 2^-200
-/// Magnitudes above this may overflow inside the adaptive predicates (products of three
-/// differences of magnitude ≤ 2^301 stay below 2^903).
-pub const SAFE_MAX: f64 = 2.037035976334486e90; // 2^300
-
-fn safe(x: f64) -> bool {
-    let a = x.abs();
-    a == 0.0 || (SAFE_MIN..=SAFE_MAX).contains(&a)
-}
-
-/// Finite f64 values as integers over one common power of two: every finite f64 is
-/// ±m·2^e, so shifting all mantissas to the smallest exponent gives exact integers (at most
-/// ~2100 bits) whose determinant has the sign of the real one. Non-finite values (the validator
-/// checks finiteness first) are mapped to 0 rather than panicking.
-fn dyadic<const N: usize>(xs: [f64; N]) -> [BigInt; N] {
-    let dec = xs.map(|x| {
-        if x.is_finite() && x != 0.0 {
-            let (m, e, sgn) = num_traits::float::FloatCore::integer_decode(x);
-            (m, e, sgn)
-        } else {
-            (0, 0, 1)
-        }
-    });
-    let emin = dec
-        .iter()
-        .filter(|d| d.0 != 0)
-        .map(|d| d.1)
-        .min()
-        .unwrap_or(0);
-    dec.map(|(m, e, sgn)| {
-        let v = BigInt::from(m) << ((e - emin) as usize);
-        if sgn < 0 {
-            -v
-        } else {
-            v
-        }
-    })
-}
-
-/// det(a − d, b − d, c − d) exactly: the determinant `robust::orient3d` evaluates.
-pub fn orient3_exact(a: &P3, b: &P3, c: &P3, d: &P3) -> Ordering {
-    let v = dyadic([
-        a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2],
-    ]);
-    let r = |i: usize| -> [BigInt; 3] { [&v[i] - &v[9], &v[i + 1] - &v[10], &v[i + 2] - &v[11]] };
-    let (u, p, w) = (r(0), r(3), r(6));
-    let det = &u[0] * (&p[1] * &w[2] - &p[2] * &w[1])
-        + &p[0] * (&w[1] * &u[2] - &w[2] * &u[1])
-        + &w[0] * (&u[1] * &p[2] - &u[2] * &p[1]);
-    det.sign_ordering()
-}
-
-/// (a − c) × (b − c) exactly: the determinant `robust::orient2d` evaluates.
-pub(crate) fn orient2_exact(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Ordering {
-    let [ax, ay, bx, by, cx, cy] = dyadic([a[0], a[1], b[0], b[1], c[0], c[1]]);
-    let det = (&ax - &cx) * (&by - &cy) - (&ay - &cy) * (&bx - &cx);
-    det.sign_ordering()
-}
-
-trait SignOrdering {
-    fn sign_ordering(&self) -> Ordering;
-}
-impl SignOrdering for BigInt {
-    fn sign_ordering(&self) -> Ordering {
-        match self.sign() {
-            num_bigint::Sign::Minus => Ordering::Less,
-            num_bigint::Sign::NoSign => Ordering::Equal,
-            num_bigint::Sign::Plus => Ordering::Greater,
-        }
-    }
-}
-
-/// Sign of the exact orientation determinant of (a, b, c, d).
+/// Sign of the exact orientation determinant of (a, b, c, d) (finite points).
 pub fn orient3(a: &P3, b: &P3, c: &P3, d: &P3) -> Ordering {
-    if ![a, b, c, d].iter().all(|p| p.iter().all(|&x| safe(x))) {
-        return orient3_exact(a, b, c, d);
-    }
-    let v = orient3d(c3(a), c3(b), c3(c), c3(d));
-    v.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+    crate::numeric::predicates::orient3(a, b, c, d).unwrap_or(Ordering::Equal)
 }
 
 /// A projection R³ → R² that drops coordinate `drop`.
@@ -125,12 +32,11 @@ impl Proj {
     }
     /// Exact sign of the 2D orientation of the projected points a, b, c.
     pub fn orient(&self, a: &P3, b: &P3, c: &P3) -> Ordering {
-        let (a, b, c) = (self.apply(a), self.apply(b), self.apply(c));
-        if ![a, b, c].iter().all(|p| safe(p.x) && safe(p.y)) {
-            return orient2_exact([a.x, a.y], [b.x, b.y], [c.x, c.y]);
-        }
-        let v = orient2d(a, b, c);
-        v.partial_cmp(&0.0).unwrap_or(Ordering::Equal)
+        let p = |x: &P3| {
+            let c = self.apply(x);
+            [c.x, c.y]
+        };
+        orient2(p(a), p(b), p(c)).unwrap_or(Ordering::Equal)
     }
 }
 
