@@ -1,15 +1,13 @@
 //! `ppm check`: read, validate, report.
 
-use crate::conditions::chapter4::{
-    certificate_coverage, render as render_ch4, run_chapter4_with, Ch4Options, Ch4Report, Precision,
-};
+use crate::conditions::chapter4::{render as render_ch4, Ch4Options, Precision};
+pub use crate::conditions::spec::CheckReport;
+use crate::conditions::spec::{SpecOptions, SpecProgress};
 use crate::construction::{phi_wu_f64_vs_mp, PpmGluing};
 use crate::mesh::io::{read_mesh, ReadOptions};
-use crate::mesh::star::check_star_isomorphism;
-use crate::mesh::validate::{validate, ValidationReport};
+use crate::mesh::validate::ValidationReport;
 use crate::mesh::{RawMesh, VertexId};
 use crate::report::{render_text, CheckResult};
-use serde::Serialize;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -99,119 +97,59 @@ pub enum CheckError {
     Certificate(#[from] crate::certify::CertifyError),
 }
 
-/// The report of `ppm check [--labels] [--spec] --json`, as data: serialised with serde it is
-/// exactly the JSON the command prints (SPEC `PY-check-report`).
-#[derive(Debug, Serialize)]
-pub struct CheckReport {
-    /// Sec. 3.1: every check of the validator, components, degree histogram.
-    #[serde(flatten)]
-    pub validation: ValidationReport,
-    /// The s_v labelling check (Def. 4.1.4), with `--labels` or `--spec` on a valid surface.
-    pub extra_checks: Vec<CheckResult>,
-    /// Chapters 3.4–4 (with `--spec` on a valid surface).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub chapter4: Option<Ch4Report>,
-    /// Chapter 5 and Sec. 6.1.4 (with `--spec`, unless `--no-surface`).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub chapter5: Vec<CheckResult>,
-    /// Wall-clock seconds of the run.
-    pub seconds: f64,
-}
-
-impl CheckReport {
-    /// The IDs of the Chapter 5 checks that fail (Chapter 5 has no documented erratum, SPEC.md
-    /// "Errata found": each one fails the run).
-    pub fn chapter5_unexpected(&self) -> Vec<&str> {
-        self.chapter5
-            .iter()
-            .filter(|c| c.failed())
-            .map(|c| c.id.as_str())
-            .collect()
-    }
-
-    /// What `ppm check` exits with 0 for: a simplicial surface, no failing extra or Chapter 5
-    /// check, and a Chapter 4 run (if any) that passes.
-    pub fn passes(&self) -> bool {
-        self.validation.is_simplicial_surface
-            && self.chapter5_unexpected().is_empty()
-            && self.extra_checks.iter().all(|c| !c.failed())
-            && self.chapter4.as_ref().map_or(true, |r| r.passes())
+impl Ch4Args {
+    /// The options of [`crate::conditions::spec::check_report`], the certificate file read.
+    pub fn spec_options(&self) -> Result<SpecOptions, CheckError> {
+        let ch4 = self.options().map_err(CheckError::Usage)?;
+        let certificates = match &self.certificates {
+            Some(path) => Some((
+                path.display().to_string(),
+                crate::certify::read_certificate(path)?,
+            )),
+            None => None,
+        };
+        let surface = crate::surface::SurfaceKind::parse(&self.surface).unwrap_or_default();
+        Ok(SpecOptions {
+            ch4,
+            surface: (!self.no_surface).then_some(surface),
+            certificates,
+        })
     }
 }
 
-/// `ppm check` on a mesh already read: the library form of the command (the Python layer's
-/// `check()` calls it). `labels` is `--labels`; `spec` the options of `--spec` (see
-/// [`super::parse_check_spec_args`] for them parsed from flags exactly as `ppm` parses them);
-/// `progress` shows the progress lines on a terminal.
+/// `ppm check` on a mesh already read: [`crate::conditions::spec::check_report`] with the
+/// options parsed from flags exactly as `ppm` parses them (see
+/// [`super::parse_check_spec_args`]); `progress` shows the progress lines on a terminal. The
+/// Python layer's `check()` calls it.
 pub fn check_report(
     raw: &RawMesh,
     labels: bool,
     spec: Option<&Ch4Args>,
     progress: bool,
 ) -> Result<CheckReport, CheckError> {
-    let t0 = Instant::now();
+    let spec = spec.map(Ch4Args::spec_options).transpose()?;
     let big = progress && raw.faces.len() >= PROGRESS_FACES;
-    let v = validate(raw);
-    let mut extra = Vec::new();
-    let mut ch4 = None;
-    let mut ch5: Vec<CheckResult> = Vec::new();
-    if let Some(k) = &v.surface {
-        if labels || spec.is_some() {
-            extra.push(check_star_isomorphism(k, |a, b| k.s(a, b)));
+    let say = |phase: &'static str| {
+        if big {
+            eprintln!("ppm: running the {phase} checks ...");
         }
-        if let Some(a) = spec {
-            let opts = a.options().map_err(CheckError::Usage)?;
-            if big {
-                eprintln!("ppm: running the Chapter 4 checks ...");
-            }
-            let cert = match &a.certificates {
-                Some(path) => Some((
-                    path.display().to_string(),
-                    crate::certify::read_certificate(path)?,
-                )),
-                None => None,
-            };
-            let line = super::progress::Line::new("ppm check --spec", "configurations", progress);
-            let hook = line.hook();
-            let mut rep = run_chapter4_with(k, &opts, hook.as_ref().map(|h| h as _));
-            line.finish();
-            if let Some((file, c)) = &cert {
-                rep.certificates = Some(certificate_coverage(k, c, file));
-            }
-            ch4 = Some(rep);
-            if !a.no_surface {
-                if big {
-                    eprintln!("ppm: running the Chapter 5 checks ...");
-                }
-                let sopts = crate::surface::checks::SurfaceCheckOptions {
-                    seed: opts.seed,
-                    samples_per_vertex: opts.samples.max(1),
-                    max_vertices: opts.max_star_configs,
-                    surface: crate::surface::SurfaceKind::parse(&a.surface).unwrap_or_default(),
-                    ..Default::default()
-                };
-                let line = super::progress::Line::new(
-                    "ppm check --spec (Ch. 5)",
-                    "check families",
-                    progress,
-                );
-                let hook = line.hook();
-                ch5 = crate::surface::checks::run_surface_checks_with(
-                    k,
-                    &sopts,
-                    hook.as_ref().map(|h| h as _),
-                );
-                line.finish();
-            }
+    };
+    let l4 = super::progress::Line::new("ppm check --spec", "configurations", progress);
+    let l5 = super::progress::Line::new("ppm check --spec (Ch. 5)", "check families", progress);
+    let (h4, h5) = (l4.hook(), l5.hook());
+    let hooks = SpecProgress {
+        chapter4: h4.as_ref().map(|h| h as _),
+        chapter5: h5.as_ref().map(|h| h as _),
+        phase: Some(&say),
+    };
+    let rep = crate::conditions::spec::check_report(raw, labels, spec.as_ref(), hooks);
+    if spec.is_some() {
+        l4.finish();
+        if spec.as_ref().is_some_and(|s| s.surface.is_some()) {
+            l5.finish();
         }
     }
-    Ok(CheckReport {
-        validation: v.report,
-        extra_checks: extra,
-        chapter4: ch4,
-        chapter5: ch5,
-        seconds: t0.elapsed().as_secs_f64(),
-    })
+    Ok(rep)
 }
 
 /// `ppm check FILE [--json] [--triangulate] [--labels] [--spec ...]`: prints [`check_report`].

@@ -4,6 +4,7 @@
 
 pub mod chapter4;
 pub mod errata;
+pub mod spec;
 
 use crate::report::{CheckResult, Verdict, MAX_WITNESSES};
 
