@@ -5,11 +5,11 @@
 //! always a generated 20,000-triangle torus.
 
 use criterion::{Criterion, Throughput};
-use pseudomanifold::construction::sigma_v::{SigmaVPps, DEFAULT_KAPPA, DEFAULT_PATCH_DEGREE};
 use pseudomanifold::mesh::generate::torus;
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, SimplicialSurface};
+use pseudomanifold::surface::sigma_v::{SigmaVPps, DEFAULT_KAPPA, DEFAULT_PATCH_DEGREE};
 use pseudomanifold::surface::PnTriangles;
 use rayon::prelude::*;
 use std::path::Path;

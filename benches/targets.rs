@@ -11,12 +11,12 @@
 //! whole process (`ppm sample`, file writing included) is timed by hyperfine, see
 //! docs/performance.md.
 
-use pseudomanifold::construction::sigma_v::{SigmaVPps, DEFAULT_KAPPA, DEFAULT_PATCH_DEGREE};
 use pseudomanifold::mesh::generate::torus;
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{RawMesh, SimplicialSurface};
 use pseudomanifold::surface::output::{sample_surface_with, Attributes};
+use pseudomanifold::surface::sigma_v::{SigmaVPps, DEFAULT_KAPPA, DEFAULT_PATCH_DEGREE};
 use pseudomanifold::surface::{PnTriangles, Pps, PpsOptions};
 use std::path::Path;
 use std::time::Instant;

@@ -35,7 +35,7 @@ oracle|src/oracle/*.rs|surface
 report-harness|src/report/harness.rs src/report.rs|lib gluing
 conditions|src/conditions/*.rs|lib chapter4 mesh
 loop-subdiv|src/surface/loop_subdiv/*.rs|lib surface|corpus
-sigma-v|src/construction/sigma_v/*.rs|lib surface|corpus
+sigma-v|src/surface/sigma_v/*.rs|lib surface|corpus
 msplines|src/msplines/*.rs|lib seeds
 sdiff|src/sdiff/*.rs|lib seeds
 render|src/render/*.rs|lib surface

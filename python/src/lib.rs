@@ -13,13 +13,13 @@ use pseudomanifold::certify::{
     write_text, Certificate, CertifyError, Model, Settings,
 };
 use pseudomanifold::cli::check::{check_report, CheckError};
-use pseudomanifold::construction::sigma_v::SigmaVPps;
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, Location, MeshError, RawMesh, SimplicialSurface};
 use pseudomanifold::oracle::protocol::{Request, Response, Session};
 use pseudomanifold::surface::jet::Jet2;
 use pseudomanifold::surface::output::{sample_surface_with, Attributes, SampledMesh};
+use pseudomanifold::surface::sigma_v::SigmaVPps;
 use pseudomanifold::surface::{Consts, PnTriangles, Pps, PpsOptions, Profile, SPrime, SurfaceKind};
 use pyo3::prelude::*;
 use pyo3::IntoPyObjectExt;
@@ -64,7 +64,8 @@ fn err_simple(class: &'static str, msg: impl Into<String>) -> PyErr {
 
 /// A JSON value as Python data (through `json.loads`: the report's exact serde form).
 fn json_to_py(py: Python<'_>, v: &Value) -> PyResult<PyObject> {
-    let s = serde_json::to_string(v).map_err(|e| err_simple("PseudomanifoldError", e.to_string()))?;
+    let s =
+        serde_json::to_string(v).map_err(|e| err_simple("PseudomanifoldError", e.to_string()))?;
     Ok(py.import("json")?.call_method1("loads", (s,))?.unbind())
 }
 
@@ -207,8 +208,14 @@ impl Surface {
     #[getter]
     fn faces<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<i64>>> {
         let n = self.raw.faces.len();
-        let flat: Vec<i64> = self.raw.faces.iter().flat_map(|f| f.map(i64::from)).collect();
-        let a = Array2::from_shape_vec((n, 3), flat).map_err(|e| err_simple("PseudomanifoldError", e.to_string()))?;
+        let flat: Vec<i64> = self
+            .raw
+            .faces
+            .iter()
+            .flat_map(|f| f.map(i64::from))
+            .collect();
+        let a = Array2::from_shape_vec((n, 3), flat)
+            .map_err(|e| err_simple("PseudomanifoldError", e.to_string()))?;
         Ok(a.into_pyarray(py))
     }
 
@@ -251,7 +258,7 @@ fn check_raw(
 ) -> PyResult<(String, bool)> {
     let args = pseudomanifold::cli::parse_check_spec_args(flags)
         .map_err(|e| err_simple("UsageError", e))?;
-    if args.construction != "vertex" {
+    if args.construction != pseudomanifold::surface::Construction::Vertex {
         return Err(err_simple(
             "UsageError",
             "check(): only the vertex construction (ppm check --spec --construction sigma-v is CLI-only)",
@@ -376,10 +383,17 @@ impl PpsHandle {
     #[new]
     #[pyo3(signature = (surface, sprime="pn", profile="paper"))]
     fn new(py: Python<'_>, surface: &Surface, sprime: &str, profile: &str) -> PyResult<Self> {
-        let kind = SurfaceKind::parse(sprime)
-            .ok_or_else(|| err_simple("UsageError", format!("sprime {sprime:?}: expected pn or loop")))?;
+        let kind = SurfaceKind::parse(sprime).ok_or_else(|| {
+            err_simple(
+                "UsageError",
+                format!("sprime {sprime:?}: expected pn or loop"),
+            )
+        })?;
         let profile = Profile::parse(profile).ok_or_else(|| {
-            err_simple("UsageError", format!("profile {profile:?}: expected paper or authors-code"))
+            err_simple(
+                "UsageError",
+                format!("profile {profile:?}: expected paper or authors-code"),
+            )
         })?;
         let k = &surface.k;
         py.allow_threads(|| {
@@ -546,11 +560,15 @@ struct SigmaVHandle {
 impl SigmaVHandle {
     /// Build it with κ (SV-D3) and the patch degree (SV-D11).
     #[new]
-    #[pyo3(signature = (surface, kappa=pseudomanifold::construction::sigma_v::DEFAULT_KAPPA, patch_degree=pseudomanifold::construction::sigma_v::DEFAULT_PATCH_DEGREE))]
+    #[pyo3(signature = (surface, kappa=pseudomanifold::surface::sigma_v::DEFAULT_KAPPA, patch_degree=pseudomanifold::surface::sigma_v::DEFAULT_PATCH_DEGREE))]
     fn new(py: Python<'_>, surface: &Surface, kappa: f64, patch_degree: usize) -> PyResult<Self> {
         let k = &surface.k;
-        if !(1..=pseudomanifold::construction::sigma_v::patch::MAX_PATCH_DEGREE).contains(&patch_degree) {
-            return Err(err_simple("UsageError", format!("patch_degree {patch_degree}: expected 1..=15")));
+        if !(1..=pseudomanifold::surface::sigma_v::patch::MAX_PATCH_DEGREE).contains(&patch_degree)
+        {
+            return Err(err_simple(
+                "UsageError",
+                format!("patch_degree {patch_degree}: expected 1..=15"),
+            ));
         }
         py.allow_threads(|| {
             let pn = PnTriangles::new(k);
@@ -564,9 +582,11 @@ impl SigmaVHandle {
     /// AF-format-roundtrip): the (σ, v) PPS over its base mesh, read bit-exactly.
     #[staticmethod]
     fn from_fit(py: Python<'_>, path: std::path::PathBuf) -> PyResult<Self> {
-        py.allow_threads(|| pseudomanifold::fitting::format::read_fit(&path).map_err(|e| e.to_string()))
-            .map(|f| SigmaVHandle { pps: f.pps })
-            .map_err(|e| err_simple("MeshError", e))
+        py.allow_threads(|| {
+            pseudomanifold::fitting::format::read_fit(&path).map_err(|e| e.to_string())
+        })
+        .map(|f| SigmaVHandle { pps: f.pps })
+        .map_err(|e| err_simple("MeshError", e))
     }
 
     /// eval (SV-D13) in f64 at every point: positions (n, 3).
@@ -616,7 +636,14 @@ struct OracleHandle {
 }
 
 /// One row of a batched answer: ok, value (decimal strings), f64, difference, error, info.
-type Row = (bool, Vec<String>, Vec<Option<f64>>, Option<f64>, Option<(String, String)>, Option<String>);
+type Row = (
+    bool,
+    Vec<String>,
+    Vec<Option<f64>>,
+    Option<f64>,
+    Option<(String, String)>,
+    Option<String>,
+);
 
 fn as_strings(v: &Option<Value>) -> Vec<String> {
     match v {
@@ -657,11 +684,26 @@ fn row(r: Result<Response, String>) -> Row {
         ),
         Ok(r) => {
             let e = r.error.unwrap_or(Value::Null);
-            let kind = e.get("kind").and_then(Value::as_str).unwrap_or("error").to_string();
-            let msg = e.get("message").and_then(Value::as_str).unwrap_or("").to_string();
+            let kind = e
+                .get("kind")
+                .and_then(Value::as_str)
+                .unwrap_or("error")
+                .to_string();
+            let msg = e
+                .get("message")
+                .and_then(Value::as_str)
+                .unwrap_or("")
+                .to_string();
             (false, vec![], vec![], None, Some((kind, msg)), None)
         }
-        Err(m) => (false, vec![], vec![], None, Some(("malformed".into(), m)), None),
+        Err(m) => (
+            false,
+            vec![],
+            vec![],
+            None,
+            Some(("malformed".into(), m)),
+            None,
+        ),
     }
 }
 
@@ -692,7 +734,10 @@ impl OracleHandle {
     /// One protocol line, answered exactly as `ppm oracle` answers it.
     fn handle_line(&self, py: Python<'_>, line: String) -> PyResult<String> {
         let r = py.allow_threads(|| {
-            let mut s = self.session.lock().map_err(|_| "session poisoned".to_string())?;
+            let mut s = self
+                .session
+                .lock()
+                .map_err(|_| "session poisoned".to_string())?;
             let resp = s.handle_line(&line);
             serde_json::to_string(&resp).map_err(|e| e.to_string())
         });

@@ -44,13 +44,13 @@ pub struct Ch4Args {
     #[arg(long, default_value = "pn")]
     pub surface: String,
     /// vertex (the report's, Ch. 4–5) | sigma-v (the tutorial's (σ, v)-indexed PPS, SPEC SV-…).
-    #[arg(long, default_value = "vertex")]
-    pub construction: String,
+    #[arg(long, value_enum, default_value_t = crate::surface::Construction::Vertex)]
+    pub construction: crate::surface::Construction,
     /// sigma-v: κ of the overlapping point r_{v,σ} = −κ·cos(π/m_v)·b (SPEC SV-D3), in (0, 1).
-    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
+    #[arg(long, default_value_t = crate::surface::sigma_v::DEFAULT_KAPPA)]
     pub kappa: f64,
     /// sigma-v: degree of the triangular Bézier patches ψ_(σ,v) (SPEC SV-D11), 1..=15.
-    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+    #[arg(long, default_value_t = crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
           value_parser = super::patch_degree_parser)]
     pub patch_degree: usize,
 }

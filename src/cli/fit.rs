@@ -2,10 +2,10 @@
 //! "Adaptive Manifold Fitting", Parts I–II; SPEC rows `AF-…`).
 
 use super::load::surface as load;
-use crate::construction::sigma_v::checks::{check_built, sv_erratum, SvCheckOptions};
-use crate::construction::sigma_v::SigmaVPps;
 use crate::fitting::{fit_surface, FitOptions};
 use crate::report::{render_text, CheckResult};
+use crate::surface::sigma_v::checks::{check_built, sv_erratum, SvCheckOptions};
+use crate::surface::sigma_v::SigmaVPps;
 use clap::Args;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -28,10 +28,10 @@ pub struct FitArgs {
     #[arg(short, long)]
     pub output: Option<PathBuf>,
     /// κ of the (σ, v) construction (SPEC SV-D3).
-    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
+    #[arg(long, default_value_t = crate::surface::sigma_v::DEFAULT_KAPPA)]
     pub kappa: f64,
     /// Degree of the triangular patches ψ_(σ,v), 1..=15.
-    #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+    #[arg(long, default_value_t = crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
           value_parser = super::patch_degree_parser)]
     pub patch_degree: usize,
     /// How far (in ε) the simplification may leave S_T from the flat base triangles.

@@ -15,6 +15,7 @@ mod sd3;
 mod sigma_v;
 mod tsv_diff;
 
+use crate::surface::Construction;
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -110,8 +111,8 @@ enum Command {
         /// (the report's, Ch. 4–5) | sigma-v (the tutorial's (σ, v)-indexed PPS, SPEC SV-D13;
         /// a table's other ops keep the vertex construction; with --surface it has no f64 error
         /// analysis, so give --tolerance). Not for a TSV table.
-        #[arg(long, default_value = "vertex")]
-        construction: String,
+        #[arg(long, value_enum, default_value_t = Construction::Vertex)]
+        construction: Construction,
         /// sigma-v: κ of the overlapping point r_{v,σ} (SPEC SV-D3), in (0, 1); default 1/4.
         #[arg(long)]
         kappa: Option<f64>,
@@ -181,13 +182,13 @@ enum Command {
         #[arg(long)]
         quiet: bool,
         /// vertex (the report's) | sigma-v (the tutorial's (σ, v)-indexed PPS).
-        #[arg(long, default_value = "vertex")]
-        construction: String,
+        #[arg(long, value_enum, default_value_t = Construction::Vertex)]
+        construction: Construction,
         /// sigma-v: κ of r_{v,σ} (SPEC SV-D3).
-        #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_KAPPA)]
+        #[arg(long, default_value_t = crate::surface::sigma_v::DEFAULT_KAPPA)]
         kappa: f64,
         /// sigma-v: degree of the triangular patches (SPEC SV-D11), 1..=15.
-        #[arg(long, default_value_t = crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+        #[arg(long, default_value_t = crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
               value_parser = patch_degree_parser)]
         patch_degree: usize,
     },
@@ -228,7 +229,7 @@ fn prec_bits_parser() -> clap::builder::RangedI64ValueParser<u32> {
 /// Parser of `--patch-degree`: refuses degrees the (σ,v) patches do not support instead of
 /// letting the library round them into 1..=`MAX_PATCH_DEGREE` (SPEC SV-D11).
 fn patch_degree_parser(s: &str) -> Result<usize, String> {
-    let max = crate::construction::sigma_v::patch::MAX_PATCH_DEGREE;
+    let max = crate::surface::sigma_v::patch::MAX_PATCH_DEGREE;
     let d: usize = s.parse().map_err(|e| format!("{s:?}: {e}"))?;
     if (1..=max).contains(&d) {
         Ok(d)
@@ -283,15 +284,17 @@ where
             labels,
             spec,
             ch4,
-        } => match ch4.construction.as_str() {
+        } => match ch4.construction {
             _ if spec && crate::fitting::format::is_fit_file(&file) => {
                 fit::check_fit_file(&file, json, ch4.seed)
             }
-            "vertex" => check::run(&file, json, triangulate, labels, spec.then_some(&ch4)),
-            "sigma-v" if spec => sigma_v::run_check(
+            Construction::Vertex => {
+                check::run(&file, json, triangulate, labels, spec.then_some(&ch4))
+            }
+            Construction::SigmaV if spec => sigma_v::run_check(
                 &file,
                 json,
-                &crate::construction::sigma_v::checks::SvCheckOptions {
+                &crate::surface::sigma_v::checks::SvCheckOptions {
                     seed: ch4.seed,
                     samples: ch4.samples,
                     max_views: ch4.max_configs.unwrap_or(2),
@@ -300,8 +303,8 @@ where
                     ..Default::default()
                 },
             ),
-            other => {
-                eprintln!("error: --construction {other}: expected vertex, or sigma-v with --spec");
+            Construction::SigmaV => {
+                eprintln!("error: --construction sigma-v: runs with --spec only");
                 ExitCode::from(2)
             }
         },
@@ -332,7 +335,7 @@ where
                 ExitCode::from(2)
             }
             (t, None)
-                if (construction != "vertex" || kappa.is_some())
+                if (construction != Construction::Vertex || kappa.is_some())
                     && t.as_deref().is_some_and(tsv_diff::is_tsv) =>
             {
                 eprintln!("error: --construction and --kappa apply to a JSON-lines table (its eval lines) or --surface, not to a TSV table");
@@ -450,11 +453,11 @@ where
             construction,
             kappa,
             patch_degree,
-        } => match construction.as_str() {
+        } => match construction {
             _ if crate::fitting::format::is_fit_file(&file) => {
                 fit::sample_fit(&file, level, &output, quiet)
             }
-            "vertex" => sample::run_sample(
+            Construction::Vertex => sample::run_sample(
                 &file,
                 level,
                 &output,
@@ -463,7 +466,7 @@ where
                 &attributes,
                 quiet,
             ),
-            "sigma-v" => sigma_v::run_sample(
+            Construction::SigmaV => sigma_v::run_sample(
                 &file,
                 level,
                 &output,
@@ -472,10 +475,6 @@ where
                 &attributes,
                 quiet,
             ),
-            other => {
-                eprintln!("error: --construction {other}: expected vertex or sigma-v");
-                ExitCode::from(2)
-            }
         },
         Command::Msplines(c) => msplines::run_command(c),
         Command::Eval {

@@ -5,6 +5,7 @@ use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::oracle::diff::{diff_table, render};
 use crate::oracle::surface_diff::{diff_surface, render_surface, MatchMode, SurfaceDiffOptions};
 use crate::oracle::{OracleError, Request, Response, Session};
+use crate::surface::Construction;
 use std::io::{BufRead, Read, Write};
 use std::path::Path;
 use std::process::ExitCode;
@@ -35,17 +36,21 @@ fn session(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> Resul
 
 /// Sets the session's reference construction from `--construction` / `--kappa` (nothing to do
 /// for the default vertex construction): shared by `ppm diff` on a table and on a surface.
-fn set_construction(s: &mut Session, construction: &str, kappa: Option<f64>) -> Result<(), String> {
-    if construction == "vertex" && kappa.is_none() {
+fn set_construction(
+    s: &mut Session,
+    construction: Construction,
+    kappa: Option<f64>,
+) -> Result<(), String> {
+    if construction == Construction::Vertex && kappa.is_none() {
         return Ok(());
     }
     let req = crate::oracle::Request::SetConstruction {
-        construction: construction.to_string(),
+        construction: construction.name().to_string(),
         kappa,
     };
     s.handle(&req)
         .map(|_| ())
-        .map_err(|e| format!("--construction {construction}: {e}"))
+        .map_err(|e| format!("--construction {}: {e}", construction.name()))
 }
 
 /// `ppm oracle [--mesh M] [--bits B] [--profile P]`: answer one JSON request per stdin line
@@ -152,7 +157,7 @@ pub fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
     };
     // The reference construction is fixed here, on the command line: a table line cannot
     // change it (SPEC R-diff-two-sided).
-    if let Err(e) = set_construction(&mut s, &a.construction, a.kappa) {
+    if let Err(e) = set_construction(&mut s, a.construction, a.kappa) {
         eprintln!("error: {e}");
         return ExitCode::from(2);
     }
@@ -164,12 +169,11 @@ pub fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
         }
     };
     let r = diff_table(&mut s, &text, tolerance, worst);
-    if !json && a.construction != "vertex" {
+    if !json && a.construction != Construction::Vertex {
         println!(
             "reference construction of the eval lines: {} (SPEC SV-D13), κ = {}",
-            a.construction,
-            a.kappa
-                .unwrap_or(crate::construction::sigma_v::DEFAULT_KAPPA)
+            a.construction.name(),
+            a.kappa.unwrap_or(crate::surface::sigma_v::DEFAULT_KAPPA)
         );
     }
     if json {
@@ -202,7 +206,7 @@ pub struct TableArgs {
     /// S′ of the reference: `pn` | `loop`.
     pub sprime: String,
     /// Reference construction of the eval lines: `vertex` | `sigma-v`.
-    pub construction: String,
+    pub construction: Construction,
     /// κ of the (σ, v) construction (`None`: its default).
     pub kappa: Option<f64>,
 }
@@ -224,7 +228,7 @@ pub struct SurfaceArgs {
     /// JSON output.
     pub json: bool,
     /// Reference construction: `vertex` | `sigma-v`.
-    pub construction: String,
+    pub construction: Construction,
     /// κ of the (σ, v) construction (`None`: its default).
     pub kappa: Option<f64>,
     /// S′ of the reference: `pn` | `loop`.
@@ -248,18 +252,18 @@ pub(crate) fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> 
     if a.tolerance.is_some_and(|t| t.is_nan() || t < 0.0) {
         return fail("--tolerance must be a non-negative number".into());
     }
-    let sigma_v = a.construction != "vertex" || a.kappa.is_some();
+    let sigma_v = a.construction != Construction::Vertex || a.kappa.is_some();
     if sigma_v && (a.profile != "paper" || a.sprime != "pn") {
         return fail(format!(
             "--construction {}: its reference has S′ = PN triangles and no Chapter 5 profile; --profile {} / --sprime {} do not apply",
-            a.construction, a.profile, a.sprime
+            a.construction.name(), a.profile, a.sprime
         ));
     }
     let mut s = match session(Some(mesh), a.bits, &a.profile, &a.sprime) {
         Ok(s) => s,
         Err(e) => return fail(e),
     };
-    if let Err(e) = set_construction(&mut s, &a.construction, a.kappa) {
+    if let Err(e) = set_construction(&mut s, a.construction, a.kappa) {
         return fail(e);
     }
     let other = match read_mesh(surface, &ReadOptions::default()) {

@@ -2,10 +2,10 @@
 //! tutorial's (σ, v)-indexed construction (seed 002, Parts IV–V; SPEC rows `SV-…`).
 
 use super::load::surface as load;
-use crate::construction::sigma_v::checks::{run_sigma_v_checks, sv_erratum, SvCheckOptions};
-use crate::construction::sigma_v::SigmaVPps;
 use crate::report::render_text;
 use crate::surface::output::Attributes;
+use crate::surface::sigma_v::checks::{run_sigma_v_checks, sv_erratum, SvCheckOptions};
+use crate::surface::sigma_v::SigmaVPps;
 use crate::surface::PnTriangles;
 use std::path::Path;
 use std::process::ExitCode;

@@ -12,7 +12,6 @@ pub mod figure;
 pub mod maps;
 pub mod mesh_gluing;
 pub mod sampling;
-pub mod sigma_v;
 
 pub use maps::{
     g_uw, in_omega_uw, in_omega_uw_lens, phi_wu, phi_wu_f64_vs_mp, ConfigError, Corner, EdgeConfig,

@@ -4,12 +4,12 @@
 use super::base::{BaseMesh, Param};
 use super::fitted::CornerFit;
 use super::Fit;
-use crate::construction::sigma_v::patch::num_control_points;
-use crate::construction::sigma_v::SigmaVPps;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::numeric::{Mp, Scalar};
 use crate::report::harness::dev_max;
 use crate::report::{CheckResult, Witness};
+use crate::surface::sigma_v::patch::num_control_points;
+use crate::surface::sigma_v::SigmaVPps;
 use serde_json::json;
 
 /// Every base vertex is a vertex of S_T at the same position (Part II: "the vertices of S̃_T

@@ -15,13 +15,13 @@
 
 use super::base::{permute, BaseMesh, Param};
 use crate::construction::maps::P2;
-use crate::construction::sigma_v::patch::{
-    bernstein_tri, multinomials, num_control_points, tri_samples,
-};
-use crate::construction::sigma_v::{Corner, CornerId, SigmaVError, SigmaVPps};
 use crate::mesh::raw::RawMesh;
 use crate::mesh::validate::{validate, ErrorClass};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::surface::sigma_v::patch::{
+    bernstein_tri, multinomials, num_control_points, tri_samples,
+};
+use crate::surface::sigma_v::{Corner, CornerId, SigmaVError, SigmaVPps};
 use rayon::prelude::*;
 use serde::Serialize;
 

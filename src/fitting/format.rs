@@ -5,10 +5,10 @@
 
 use super::fitted::SurfaceParam;
 use super::Fit;
-use crate::construction::sigma_v::{Corner, CornerId, SigmaVPps};
 use crate::mesh::raw::RawMesh;
 use crate::mesh::validate::validate;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::surface::sigma_v::{Corner, CornerId, SigmaVPps};
 use std::fmt::Write as _;
 use std::io::{BufRead, BufReader, Write};
 use std::path::{Path, PathBuf};
@@ -169,7 +169,7 @@ pub fn read_fit(path: &Path) -> Result<FitFile, FitFormatError> {
     let kappa: f64 = num(&w, 1, l, path)?;
     let (l, w) = next("patch_degree")?;
     let degree: usize = num(&w, 1, l, path)?;
-    if !(1..=crate::construction::sigma_v::patch::MAX_PATCH_DEGREE).contains(&degree) {
+    if !(1..=crate::surface::sigma_v::patch::MAX_PATCH_DEGREE).contains(&degree) {
         return Err(perr(l, format!("patch degree {degree} outside 1..=15")));
     }
     let (l, w) = next("fine_vertices")?;

@@ -37,8 +37,8 @@ use rayon::prelude::*;
 use serde::Serialize;
 use simplify::{Hierarchy, SimplifyOptions};
 
-use crate::construction::sigma_v::{SigmaVError, SigmaVPps};
 use crate::mesh::SimplicialSurface;
+use crate::surface::sigma_v::{SigmaVError, SigmaVPps};
 
 /// Options of [`fit_surface`].
 #[derive(Debug, Clone, Copy)]
@@ -64,8 +64,8 @@ impl FitOptions {
         FitOptions {
             epsilon,
             deviation_ratio: 4.0,
-            kappa: crate::construction::sigma_v::DEFAULT_KAPPA,
-            degree: crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+            kappa: crate::surface::sigma_v::DEFAULT_KAPPA,
+            degree: crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
             max_degree: 12,
             max_rounds: 40,
         }

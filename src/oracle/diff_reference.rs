@@ -3,10 +3,10 @@
 //! `R-diff-f64-bound`), and the tutorial's (σ, v)-indexed PPS (SPEC `SV-D13`), which has none.
 
 use super::protocol::OracleError;
-use crate::construction::sigma_v::{SigmaVError, SigmaVPps, SvConsts};
 use crate::mesh::{FaceId, VertexId};
 use crate::numeric::{Mp, Scalar};
 use crate::surface::eval_bound::BoundedPoint;
+use crate::surface::sigma_v::{SigmaVError, SigmaVPps, SvConsts};
 use crate::surface::{Consts, Pps};
 
 /// What [`super::surface_diff::diff_surface`] needs of a reference construction.

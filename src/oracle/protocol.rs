@@ -414,7 +414,7 @@ impl Session {
     /// (`None` for the vertex construction), built on first use.
     pub fn sigma_v_pps(
         &mut self,
-    ) -> Result<Option<&crate::construction::sigma_v::SigmaVPps>, OracleError> {
+    ) -> Result<Option<&crate::surface::sigma_v::SigmaVPps>, OracleError> {
         let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
         match &mut self.sigma_v {
             None => Ok(None),
@@ -538,13 +538,13 @@ impl Session {
             Request::SetConstruction {
                 construction,
                 kappa,
-            } => match construction.as_str() {
-                "vertex" => {
+            } => match crate::surface::Construction::parse(construction) {
+                Some(crate::surface::Construction::Vertex) => {
                     self.sigma_v = None;
                     Ok(Response::plain(json!({"construction": "vertex"})))
                 }
-                "sigma-v" => {
-                    let kappa = kappa.unwrap_or(crate::construction::sigma_v::DEFAULT_KAPPA);
+                Some(crate::surface::Construction::SigmaV) => {
+                    let kappa = kappa.unwrap_or(crate::surface::sigma_v::DEFAULT_KAPPA);
                     if !(kappa > 0.0 && kappa < 1.0) {
                         return Err(OracleError::Malformed(format!(
                             "kappa {kappa} is not in (0, 1) (SPEC SV-D3)"
@@ -555,8 +555,8 @@ impl Session {
                         json!({"construction": "sigma-v", "kappa": kappa}),
                     ))
                 }
-                other => Err(OracleError::Malformed(format!(
-                    "unknown construction {other:?} (expected \"vertex\" or \"sigma-v\")"
+                None => Err(OracleError::Malformed(format!(
+                    "unknown construction {construction:?} (expected \"vertex\" or \"sigma-v\")"
                 ))),
             },
             Request::SetProfile { profile } => {

@@ -2,9 +2,9 @@
 //! with `"sigma-v"`): eval(σ, λ, μ, ν) in f64 and MPFR (SPEC `SV-D13`), so that `ppm diff` on a
 //! table can take either construction as the reference.
 
-use crate::construction::sigma_v::{SigmaVPps, SvConsts};
 use crate::mesh::{FaceId, SimplicialSurface};
 use crate::numeric::{Mp, Scalar};
+use crate::surface::sigma_v::{SigmaVPps, SvConsts};
 use crate::surface::PnTriangles;
 use serde_json::{json, Value};
 
@@ -41,7 +41,7 @@ impl SigmaVOracle {
                 k,
                 &pn,
                 self.kappa,
-                crate::construction::sigma_v::DEFAULT_PATCH_DEGREE,
+                crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
             )
             .map_err(|e| e.to_string())?;
             self.pps = Some(p);

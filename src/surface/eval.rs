@@ -239,7 +239,7 @@ impl Pps {
 }
 
 /// The chart eval chooses for q′ under `profile` (Sec. 6.1.4; shared by the (σ, v)-indexed
-/// construction of `construction::sigma_v`).
+/// construction of `surface::sigma_v`).
 pub fn choose_chart<S: SurfaceScalar>(profile: Profile, qp: &P2<S>, c: &Consts<S>) -> Chart {
     let one = S::from_i64(1, c.prec);
     let da = qp.norm2();

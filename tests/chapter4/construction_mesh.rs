@@ -496,8 +496,8 @@ fn d3_4_1_3b_transition_perturbed_by_1e_9_is_caught_on_a_mesh() {
 /// counting queries answer the empty star, and nothing panics on the way.
 #[test]
 fn api_ids_foreign_ids_get_typed_errors_and_counting_queries_are_total() {
-    use pseudomanifold::construction::sigma_v::{CornerId, SigmaV};
     use pseudomanifold::mesh::FaceId;
+    use pseudomanifold::surface::sigma_v::{CornerId, SigmaV};
     use pseudomanifold::surface::{PnTriangles, Pps, PpsOptions, SurfaceError};
     let k = surface(&icosahedron());
     let foreign = [VertexId(12), VertexId(u32::MAX)];

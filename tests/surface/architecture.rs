@@ -29,11 +29,7 @@ const FLOORS: &[(&str, u32)] = &[
 ];
 
 /// Upward imports not yet moved (from, to), with the move that removes each.
-const ALLOWED_UP: &[(&str, &str)] = &[
-    // The tutorial's (σ, v) construction sits in construction/sigma_v and uses Chapter 5's
-    // jets, weights and fit; it moves beside the vertex PPS under surface.
-    ("construction", "surface"),
-];
+const ALLOWED_UP: &[(&str, &str)] = &[];
 
 fn floor(m: &str) -> Option<u32> {
     FLOORS.iter().find(|(n, _)| *n == m).map(|(_, f)| *f)

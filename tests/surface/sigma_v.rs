@@ -4,16 +4,16 @@
 use crate::common;
 
 use pseudomanifold::construction::maps::{in_omega_uw, EdgeConfig, P2};
-use pseudomanifold::construction::sigma_v::checks::*;
-use pseudomanifold::construction::sigma_v::gluing::g_uw_on_domain;
-use pseudomanifold::construction::sigma_v::wedge::WedgeTable;
-use pseudomanifold::construction::sigma_v::*;
 use pseudomanifold::gluing::sampled::{check_1, check_all, SampleConfig};
 use pseudomanifold::mesh::generate::{self, icosahedron, octahedron, torus};
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{FaceId, RawMesh, SimplicialSurface, VertexId};
 use pseudomanifold::report::CheckResult;
+use pseudomanifold::surface::sigma_v::checks::*;
+use pseudomanifold::surface::sigma_v::gluing::g_uw_on_domain;
+use pseudomanifold::surface::sigma_v::wedge::WedgeTable;
+use pseudomanifold::surface::sigma_v::*;
 use pseudomanifold::surface::PnTriangles;
 
 fn surface(raw: &RawMesh) -> SimplicialSurface {
@@ -456,7 +456,7 @@ fn sv_d13_sv_count_sv_bench_eval_and_sample_watertight() {
 
 #[test]
 fn sv_e_gu_factor_sv_e_angle_range_sv_e_equilateral_errata() {
-    use pseudomanifold::construction::sigma_v::errata::*;
+    use pseudomanifold::surface::sigma_v::errata::*;
     let degs = [3u32, 4, 5, 6, 7, 9, 12];
     common::assert_fails_as_written(&check_gu_factor_as_written(&degs));
     holds(&check_gu_factor_corrected(&degs));
@@ -483,7 +483,7 @@ fn sv_psi_fit_rank_reported_per_degree() {
 
 #[test]
 fn sv_d1_sv_d5_sv_d8_run_sigma_v_checks_on_fixtures() {
-    use pseudomanifold::construction::sigma_v::checks::{
+    use pseudomanifold::surface::sigma_v::checks::{
         run_sigma_v_checks, sv_erratum, SvCheckOptions,
     };
     let mut paths = common::bundled_good();
@@ -533,7 +533,7 @@ fn sv_d1_sv_d5_sv_d8_run_sigma_v_checks_on_fixtures() {
 
 #[test]
 fn sv_compare_two_constructions_on_the_same_mesh() {
-    use pseudomanifold::construction::sigma_v::compare::compare;
+    use pseudomanifold::surface::sigma_v::compare::compare;
     for (name, k) in [
         ("icosahedron", surface(&icosahedron())),
         ("torus 8x6", surface(&torus(8, 6))),
