@@ -85,7 +85,7 @@ mod tests {
     fn decimal_text_is_debug_formatting() {
         let edges = [
             0.0,
-            -85113420695635.125,
+            f64::from_bits(0xc2d3_5a40_cd32_14c8), // -85113420695635.125, halfway
             0.5,
             1.5,
             2.5,
