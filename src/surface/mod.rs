@@ -18,6 +18,7 @@ pub mod authors_fit;
 pub mod bezier;
 pub mod checks;
 pub mod consts;
+mod decimal;
 pub mod error;
 pub mod eval;
 pub mod eval_bound;

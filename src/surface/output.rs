@@ -9,6 +9,7 @@
 //! condition (C) (the point does not depend on the triangle used, up to rounding).
 
 use super::consts::Consts;
+use super::decimal::{push_f64, push_f64x3, push_uint};
 use super::fit_linear::WordHash;
 use super::jet::{Jet1, Jet2};
 use super::pps::{Pps, SurfaceError};
@@ -420,6 +421,17 @@ fn write_lines(
     Ok(())
 }
 
+/// "3 a b c\n", as `writeln!(b, "3 {} {} {}", ..)` prints it (OFF and PLY faces).
+fn face_line(b: &mut Vec<u8>, f: [u32; 3]) -> std::io::Result<()> {
+    b.push(b'3');
+    for x in f {
+        b.push(b' ');
+        push_uint(b, x.into());
+    }
+    b.push(b'\n');
+    Ok(())
+}
+
 fn write_body(
     mut w: std::io::BufWriter<std::fs::File>,
     ext: &str,
@@ -435,18 +447,29 @@ fn write_body(
             };
             writeln!(w, "# {title}")?;
             write_lines(&mut w, ps.len(), |i, b| {
-                writeln!(b, "v {:?} {:?} {:?}", ps[i][0], ps[i][1], ps[i][2])
+                b.extend_from_slice(b"v ");
+                push_f64x3(b, ps[i]);
+                b.push(b'\n');
+                Ok(())
             })?;
             write_lines(&mut w, ns.len(), |i, b| {
-                writeln!(b, "vn {:?} {:?} {:?}", ns[i][0], ns[i][1], ns[i][2])
+                b.extend_from_slice(b"vn ");
+                push_f64x3(b, ns[i]);
+                b.push(b'\n');
+                Ok(())
             })?;
             write_lines(&mut w, fs.len(), |i, b| {
-                let [a, bb, c] = fs[i].map(|x| u64::from(x) + 1);
-                if ns.is_empty() {
-                    writeln!(b, "f {a} {bb} {c}")
-                } else {
-                    writeln!(b, "f {a}//{a} {bb}//{bb} {c}//{c}")
+                b.push(b'f');
+                for x in fs[i].map(|x| u64::from(x) + 1) {
+                    b.push(b' ');
+                    push_uint(b, x);
+                    if !ns.is_empty() {
+                        b.extend_from_slice(b"//");
+                        push_uint(b, x);
+                    }
                 }
+                b.push(b'\n');
+                Ok(())
             })?;
         }
         "off" => {
@@ -454,19 +477,15 @@ fn write_body(
             writeln!(w, "{}", if with_normals { "NOFF" } else { "OFF" })?;
             writeln!(w, "{} {} 0", ps.len(), fs.len())?;
             write_lines(&mut w, ps.len(), |i, b| {
-                let p = ps[i];
-                match ns.get(i) {
-                    Some(n) => writeln!(
-                        b,
-                        "{:?} {:?} {:?} {:?} {:?} {:?}",
-                        p[0], p[1], p[2], n[0], n[1], n[2]
-                    ),
-                    None => writeln!(b, "{:?} {:?} {:?}", p[0], p[1], p[2]),
+                push_f64x3(b, ps[i]);
+                if let Some(n) = ns.get(i) {
+                    b.push(b' ');
+                    push_f64x3(b, *n);
                 }
+                b.push(b'\n');
+                Ok(())
             })?;
-            write_lines(&mut w, fs.len(), |i, b| {
-                writeln!(b, "3 {} {} {}", fs[i][0], fs[i][1], fs[i][2])
-            })?;
+            write_lines(&mut w, fs.len(), |i, b| face_line(b, fs[i]))?;
         }
         _ => {
             let normals = ns.len() == ps.len() && !ps.is_empty();
@@ -499,25 +518,25 @@ fn write_body(
             writeln!(w, "element face {}", fs.len())?;
             writeln!(w, "property list uchar int vertex_indices\nend_header")?;
             write_lines(&mut w, ps.len(), |i, b| {
-                let p = ps[i];
-                write!(b, "{:?} {:?} {:?}", p[0], p[1], p[2])?;
+                push_f64x3(b, ps[i]);
                 if normals {
-                    let n = ns[i];
-                    write!(b, " {:?} {:?} {:?}", n[0], n[1], n[2])?;
+                    b.push(b' ');
+                    push_f64x3(b, ns[i]);
                 }
                 if curvature {
-                    let c = curvature_colour(m.mean[i], range);
-                    write!(
-                        b,
-                        " {} {} {} {:?} {:?}",
-                        c[0], c[1], c[2], m.gaussian[i], m.mean[i]
-                    )?;
+                    for c in curvature_colour(m.mean[i], range) {
+                        b.push(b' ');
+                        push_uint(b, c.into());
+                    }
+                    b.push(b' ');
+                    push_f64(b, m.gaussian[i]);
+                    b.push(b' ');
+                    push_f64(b, m.mean[i]);
                 }
-                writeln!(b)
+                b.push(b'\n');
+                Ok(())
             })?;
-            write_lines(&mut w, fs.len(), |i, b| {
-                writeln!(b, "3 {} {} {}", fs[i][0], fs[i][1], fs[i][2])
-            })?;
+            write_lines(&mut w, fs.len(), |i, b| face_line(b, fs[i]))?;
         }
     }
     w.into_inner().map_err(|e| e.into_error())?.sync_all()

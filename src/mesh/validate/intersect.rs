@@ -1,9 +1,11 @@
 //! Def. 3.1.3(ii): two simplices of K meet, if at all, in a common face. For a triangle list in
 //! R³ this means: no two vertices at the same point, and two triangles meet exactly in their
-//! shared vertex or edge (or not at all). Decided exactly (see [`super::predicates`]), with an
-//! R*-tree over the triangles' bounding boxes so only nearby pairs are tested.
+//! shared vertex or edge (or not at all). Decided exactly (see [`super::predicates`]), with a
+//! uniform grid (or, for inputs that do not suit one, an R*-tree) over the triangles' bounding
+//! boxes so only nearby pairs are tested ([`super::grid`]: the same candidates either way).
 
 use super::fans::{face_box, fans, search_boxes, separated, star_pairs, FaceBox, HIGH_DEGREE};
+use super::grid::BoxIndex;
 use super::predicates::{
     in_cone_at, nondegenerate_projection, orient3, segment_meets_triangle, P3,
 };
@@ -170,7 +172,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
     hits.sort_unstable();
     hits.dedup();
     hits.truncate(MAX_COUNTED_INTERSECTIONS);
-    // The general search: triangles with no high-degree corner in one tree; the triangles of
+    // The general search: triangles with no high-degree corner in one index; the triangles of
     // each star in a tree of their own, found through an index of the stars' boxes, so that a
     // star's own pairs (decided above) are never enumerated.
     let faces: Vec<SearchFace> = eligible_faces()
@@ -194,7 +196,11 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
             }
         }
     }
-    let plain_tree = RTree::bulk_load(plain);
+    let plain_index = BoxIndex::new(plain);
+    let broad = match plain_index {
+        BoxIndex::Grid(_) => "uniform-grid",
+        BoxIndex::Tree(_) => "R*-tree",
+    };
     let star_index = RTree::bulk_load(
         per_star
             .iter()
@@ -228,12 +234,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
         k1.sort_unstable();
         cand.clear();
         for env in bs {
-            cand.extend(
-                plain_tree
-                    .locate_in_envelope_intersecting(env)
-                    .map(|o| o.face)
-                    .filter(|&g| g > f1),
-            );
+            plain_index.each_intersecting_above(env, f1, |o| cand.push(o.face));
             for s in star_index.locate_in_envelope_intersecting(env) {
                 if t1.contains(&s.face) {
                     continue;
@@ -318,14 +319,14 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
     }
     if let Some(last) = stopped_at {
         r.note = format!(
-            "exact orientation predicates; R*-tree candidate pairs; search stopped after {} offending pairs (cap {MAX_COUNTED_INTERSECTIONS}, first faces up to {}): the count is a lower bound",
+            "exact orientation predicates; {broad} candidate pairs; search stopped after {} offending pairs (cap {MAX_COUNTED_INTERSECTIONS}, first faces up to {}): the count is a lower bound",
             r.offenders,
             raw.describe_face(last as usize)
         );
         return r.finish("");
     }
     r.note = format!(
-        "exact orientation predicates; R*-tree candidate pairs: {tested} decided exactly (after a certified f64 plane-separation filter; {high} stars of degree ≥ {HIGH_DEGREE} searched by corner directions)"
+        "exact orientation predicates; {broad} candidate pairs: {tested} decided exactly (after a certified f64 plane-separation filter; {high} stars of degree ≥ {HIGH_DEGREE} searched by corner directions)"
     );
     r.finish("")
 }

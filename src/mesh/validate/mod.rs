@@ -7,6 +7,7 @@
 pub mod affine;
 pub mod basic;
 mod fans;
+mod grid;
 pub mod incidence;
 pub mod intersect;
 pub mod predicates;
