@@ -268,7 +268,11 @@ fn au_unseen_authors_code_unseen_meshes_agree() {
         let r = diff_tsv_files(mesh, table, Profile::AuthorsCode, 1e-9, 3).expect("diff");
         assert_recorded(name, &r);
     }
-    common::verdicts::record("AU-unseen", common::verdicts::Seen::Holds, cases.len() as u64);
+    common::verdicts::record(
+        "AU-unseen",
+        common::verdicts::Seen::Holds,
+        cases.len() as u64,
+    );
 }
 
 /// Defect D1 of their code (docs/authors-code.md): `to_canonical_domain` takes the polar

@@ -543,8 +543,15 @@ fn loop_authors_sprime_and_loop_authors_pps_tables() {
         let w = &rows[ws];
         // The finding (SPEC `LOOP-authors-sprime`): their S′ is not the exact limit surface,
         // and the worst row is a corner (`LOOP-authors-D2`).
-        assert!(ms > 1e-6, "{name}: their S′ agrees with the exact limit ({ms:e})");
-        assert!(w.bary.contains(&1.0), "{name}: worst row not a corner: {:?}", w.bary);
+        assert!(
+            ms > 1e-6,
+            "{name}: their S′ agrees with the exact limit ({ms:e})"
+        );
+        assert!(
+            w.bary.contains(&1.0),
+            "{name}: worst row not a corner: {:?}",
+            w.bary
+        );
         eprintln!(
             "{name}: {} rows, R = {rad:.4}; S′ max {ms:.3e} p99 {ps:.3e} (worst face {} bary {:?}); PPS max {mp:.3e} p99 {pp:.3e} (worst face {})",
             rows.len(),
@@ -1099,7 +1106,9 @@ fn loop_linear_fit_equals_sampling_s_prime() {
 fn loop_regular_basis_exact_at_level3_partition_of_unity_and_limit_mask_recorded() {
     use num_rational::BigRational;
     use num_traits::{One, Zero};
-    use pseudomanifold::surface::loop_subdiv::regular::{basis_exact, limit_weights_exact, MONOMIALS};
+    use pseudomanifold::surface::loop_subdiv::regular::{
+        basis_exact, limit_weights_exact, MONOMIALS,
+    };
     let rat = |p: i64, q: i64| BigRational::new(p.into(), q.into());
     let b = basis_exact();
     assert_eq!(b.len(), 12);
@@ -1125,7 +1134,11 @@ fn loop_regular_basis_exact_at_level3_partition_of_unity_and_limit_mask_recorded
     assert_eq!(points, 45);
     for j in 0..MONOMIALS.len() {
         let s = b.iter().fold(BigRational::zero(), |a, r| a + &r[j]);
-        let want = if j == 0 { BigRational::one() } else { BigRational::zero() };
+        let want = if j == 0 {
+            BigRational::one()
+        } else {
+            BigRational::zero()
+        };
         assert_eq!(s, want, "monomial {j}");
     }
     assert_eq!(b[0][0], rat(1, 2));

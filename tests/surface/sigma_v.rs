@@ -574,11 +574,18 @@ fn sv_c_prime_measured_on_one_view() {
     };
     let rs = run_sigma_v_checks(&k, &PnTriangles::new(&k), &o);
     for id in ["SV-D3.5.1(C')", "SV-D3.5.1(C'')"] {
-        let r = rs
-            .iter()
-            .find(|r| r.id == id)
-            .unwrap_or_else(|| panic!("{id} not run: {:?}", rs.iter().map(|r| &r.id).collect::<Vec<_>>()));
-        eprintln!("{id}: {:?} examined {} smallest gap {:?}", r.verdict(), r.examined, r.worst_deviation);
+        let r = rs.iter().find(|r| r.id == id).unwrap_or_else(|| {
+            panic!(
+                "{id} not run: {:?}",
+                rs.iter().map(|r| &r.id).collect::<Vec<_>>()
+            )
+        });
+        eprintln!(
+            "{id}: {:?} examined {} smallest gap {:?}",
+            r.verdict(),
+            r.examined,
+            r.worst_deviation
+        );
         assert!(
             r.examined > 0 && r.worst_deviation.is_some_and(f64::is_finite),
             "{r:?}"
@@ -848,7 +855,11 @@ fn sv_diff_surface_takes_the_sigma_v_reference() {
         Some(1),
         "the vertex reference is another surface"
     );
-    common::verdicts::record("SV-diff", common::verdicts::Seen::Holds, ours.positions.len() as u64);
+    common::verdicts::record(
+        "SV-diff",
+        common::verdicts::Seen::Holds,
+        ours.positions.len() as u64,
+    );
 }
 
 /// SPEC `SV-D10` through the public API (the unit test in `weight.rs` cannot record): γ_(σ,v)

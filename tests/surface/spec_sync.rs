@@ -180,7 +180,11 @@ fn x_mutants_docs_show_every_campaign_and_its_survivors() {
     // the record: every module whose latest fresh campaign scored below 0.9, and every module
     // with no campaign at all, is a witness that it is not met.
     let mut latest: Vec<(String, f64)> = Vec::new();
-    for f in tsv.lines().skip(1).map(|l| l.split('\t').collect::<Vec<_>>()) {
+    for f in tsv
+        .lines()
+        .skip(1)
+        .map(|l| l.split('\t').collect::<Vec<_>>())
+    {
         if f.len() < 14 || f[2].ends_with("(again)") {
             continue;
         }
@@ -192,7 +196,7 @@ fn x_mutants_docs_show_every_campaign_and_its_survivors() {
     }
     let mut witnesses: Vec<String> = latest
         .iter()
-        .filter(|(_, s)| !(*s >= 0.9))
+        .filter(|(_, s)| s.is_nan() || *s < 0.9)
         .map(|(m, s)| format!("{m} {s:.3}"))
         .collect();
     for m in ["loop_subdiv", "sigma_v", "msplines", "sdiff", "render"] {
