@@ -36,6 +36,29 @@ fn l4_2_1_cert_docs_quote_the_summaries_configuration_counts() {
         let (m, n) = summary_header(&text).unwrap_or_else(|| panic!("{file}: header"));
         assert_eq!(cells[2], format!("3..={m}"), "{file}: degrees in README");
         assert_eq!(cells[3], n.to_string(), "{file}: configurations in README");
+        if m == 20 {
+            // SPEC `L4.2.1(cert)` and `L4.2.2(cert)`: every triangle configuration of the
+            // summary certified on the whole set (no δ), the count SPEC.md quotes.
+            for id in ["L4.2.1(cert)", "L4.2.2(cert)"] {
+                let row = text
+                    .lines()
+                    .find(|l| l.starts_with(&format!("| `{id}` |")))
+                    .unwrap_or_else(|| panic!("{file}: no {id} row"));
+                let c: Vec<&str> = row.split('|').map(str::trim).collect();
+                assert_eq!(c[2], c[3], "{file}: {id} not certified everywhere: {row}");
+                assert!(c[4..7].iter().all(|x| *x == "0"), "{file}: {row}");
+                if id == "L4.2.1(cert)" {
+                    assert!(
+                        spec.contains(&format!(
+                            "for all {} triangle configurations with degrees ≤ 20",
+                            c[2]
+                        )),
+                        "SPEC.md does not quote the summary's {} triangle configurations",
+                        c[2]
+                    );
+                }
+            }
+        }
         if m >= 16 {
             assert!(
                 spec.contains(&format!("(M = {m}: {n} configurations"))

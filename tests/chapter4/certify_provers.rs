@@ -80,6 +80,17 @@ fn c5_4_at_most_two_cert_and_c4_2_nonadjacent_disjoint_cert_literal_certified() 
 
 #[test]
 fn c5_4_at_most_two_sec6_1_3_cert_refuted_from_11() {
+    // Below 11 the lens domains keep the statement (certified outside δ-boxes at the lens
+    // corners, as the literal domains): the first half of the row's verdict.
+    for m in [3, 6, 10] {
+        let r = prove_star(m, true, false, &Model::paper(), &quick());
+        assert!(ok(r.outcome), "m = {m}: {r:?}");
+    }
+    crate::common::verdicts::record(
+        "C5.4-at-most-two[sec6.1.3](cert)",
+        crate::common::verdicts::Seen::Certified,
+        3,
+    );
     let r = prove_star(12, true, false, &Model::paper(), &quick());
     assert_eq!(r.outcome, Outcome::Refuted, "{r:?}");
     let w = r.witness.expect("witness");
@@ -227,6 +238,11 @@ fn l4_2_1_cert_exact_no_delta_every_orientation_including_m_x_3_tangency() {
             assert_eq!(rs[1].bound, Some(0.0), "{:?}", rs[1]);
             assert!(rs[1].centre_bound.expect("centre checks ran") < 1e-12);
         }
+    }
+    // Certified on the whole set (no δ), bound 0, on these 8 configurations; all 11664 up to
+    // degree 20 are the committed summary's (`l4_2_1_cert_docs_…`).
+    for id in ["L4.2.1(cert)", "L4.2.2(cert)"] {
+        crate::common::verdicts::record(id, crate::common::verdicts::Seen::Certified, 8);
     }
 }
 

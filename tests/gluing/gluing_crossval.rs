@@ -194,6 +194,12 @@ fn c3_4_1_3c_and_4_cross_validation_is_not_vacuous() {
         h_hold > 5 && h_fail > 5,
         "(4): {h_hold} hold, {h_fail} fail"
     );
+    // 3(c) failed exactly where transitivity failed, on all 80 seeds, both verdicts seen.
+    common::verdicts::record(
+        "C3.4.1-3c-iff-transitive",
+        common::verdicts::Seen::Holds,
+        c_hold + c_fail,
+    );
 }
 
 /// "Both conditions 3(a) and 3(b) follow from 3(c)" (running text after Def. 3.4.1), on random

@@ -141,6 +141,12 @@ fn ms_d8_ms_d9_ms_d10_ms_5_2_4_starstar_cauchy_riemann_defect_shrinks_under_refi
         "{}",
         fine.conjugate.star_star_defect
     );
+    // Restricted (discrete) verdicts of SPEC: Def. 10's ω_y = n × ω_x and ∗∗ = −1 hold only
+    // approximately, the defect measured on the two tori and shrinking under refinement.
+    assert!(cr(&fine).is_finite() && fine.conjugate.star_star_defect.is_finite());
+    for id in ["MS-D10", "MS-5.2(4)-starstar"] {
+        common::verdicts::record(id, common::verdicts::Seen::Restricted, 2);
+    }
 }
 
 #[test]
@@ -149,8 +155,7 @@ fn ms_d11_ms_c1_ms_gb_ms_5_3_torus_has_no_zero_every_winding_one() {
     let (rep, _, _) = run(&k, &Options::default()).expect("torus");
     assert!(rep.zeros.is_empty());
     for id in ["MS-C1", "MS-GB", "MS-5.3", "MS-T4(index)", "MS-T4(count)"] {
-        let r = find(&rep.checks, id);
-        assert!(holds(r), "{r:?}");
+        common::assert_holds_for("torus 12×8", find(&rep.checks, id));
     }
 }
 
@@ -285,6 +290,10 @@ fn ms_p3_ms_d1_ms_d12_ms_l1_1_1_ms_3_1_3_2_ms_3_1_3_3_ms_3_1_3_4_ms_3_1_3_5_pola
         for r in pc::check_all(k, seed) {
             common::assert_holds(&r);
             assert!(r.examined > 0, "{r:?}");
+            // Lemma 1.1(1) is decided by the same check as Sec. 3.1.3(4).
+            if r.id == "MS-3.1.3(4)" {
+                common::verdicts::record("MS-L1.1(1)", common::verdicts::Seen::Holds, r.examined);
+            }
         }
     }
 }
@@ -296,6 +305,8 @@ fn ms_l1_1_2_ms_t1_planted_non_affine_transition_gives_a_witness() {
     let r = pc::check_lemma_1_1_necessity(&kc, &pc::planted_non_affine, 3, 10);
     common::assert_holds(&r);
     assert!(r.note.contains("witness"), "{r:?}");
+    // Thm. 1 as far as it reduces to Lemma 1.1: (1) in the exact polar-form test, (2) here.
+    common::verdicts::record("MS-T1", common::verdicts::Seen::Holds, r.examined);
     // An affine φ admits no witness: the check reports failure (the lemma's premise is gone).
     let affine = |x: &pc_q2::Q2| [&x[0] * pc_q2::q(2, 1) + &x[1], x[1].clone()];
     let r = pc::check_lemma_1_1_necessity(&kc, &affine, 3, 5);
@@ -462,6 +473,13 @@ fn ms_3_1_3_1_local_support_exact_and_planted_wide_cloud_caught() {
     println!("{ls:?}");
     assert!(matches!(ls.verdict(), Verdict::Holds), "{ls:?}");
     assert!(ls.examined > 100);
+    // The paper states no condition; SPEC's verdict is restricted to small clouds (radius ≤ 1/8
+    // of the spacing), the domain of this grid.
+    common::verdicts::record(
+        "MS-3.1.3(1)",
+        common::verdicts::Seen::Restricted,
+        ls.examined,
+    );
     // Planted: clouds of radius 0.9 reach past the 1-ring.
     let (wide, interior) = dc::planar_grid(5, 2, q(3, 2), 31);
     let ls = dc::check_local_support(&wide, &interior, 31, 40);
@@ -685,6 +703,11 @@ fn ms_sample_torus_spline_surface_is_watertight_and_near_m() {
         .surface
         .expect("sampled spline surface is a closed surface without self-intersection");
     assert_eq!(s.num_faces(), m.faces.len());
+    common::verdicts::record(
+        "MS-sample",
+        common::verdicts::Seen::Holds,
+        m.faces.len() as u64,
+    );
     // genus 2: sampling is refused with the face where F is undefined.
     let e = eight();
     let (at, sp) = spline(&e, 0, 3, 2, 0x5eed).expect("spline builds");
@@ -878,8 +901,17 @@ fn assert_only_documented(name: &str, k: &SimplicialSurface) {
         "CA.2-GH-strict",
     ] {
         let r = find(&rep.checks, id);
-        assert!(holds(r) && r.examined > 0, "{name}: {r:?}");
+        if id == "MS-D4-corrected" {
+            // SPEC: restricted — the atlas covers M minus the removed stars (in the note).
+            assert!(holds(r) && r.examined > 0, "{name}: {r:?}");
+            common::verdicts::record(id, common::verdicts::Seen::Restricted, r.examined);
+        } else {
+            common::assert_holds_for(name, r);
+        }
     }
+    // The atlas as gluing data: every condition of Def. 3.4.1 above held (SPEC `MS-GD`).
+    let gd = find(&rep.checks, "D3.4.1(4)");
+    common::verdicts::record("MS-GD", common::verdicts::Seen::Holds, gd.examined);
     println!(
         "{name}: genus {}, {} charts; failing errata {:?}",
         rep.genus,
@@ -941,13 +973,13 @@ fn ms_d4_corrected_ms_t4_index_corrected_ms_3_4_3_corrected_planted_faults_are_c
         r.failed() && r.witnesses[0].text.contains("w_v = 0"),
         "{r:?}"
     );
-    assert!(holds(&claims::check_indices_corrected(&k, &z)));
+    common::assert_holds(&claims::check_indices_corrected(&k, &z));
     // A positive index dropped from the list: the count no longer balances.
     let mut planted = z.clone();
     planted.non_positive.pop();
     let r = claims::check_zero_count_corrected(&planted, 2);
     assert!(r.failed() && !r.witnesses.is_empty(), "{r:?}");
-    assert!(holds(&claims::check_zero_count_corrected(&z, 2)));
+    common::assert_holds(&claims::check_zero_count_corrected(&z, 2));
     // The exit status: an erratum is excused only by its corrected row holding.
     let (mut rep, _, _) = run(&k, &Options::default()).expect("eight runs");
     // `MsReport::failed`: the exit status, not a `CheckResult`.

@@ -492,7 +492,7 @@ fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1(
         rw.witnesses.first().map(|w| &w.text)
     );
     assert!(optw.objective <= opt.objective);
-    assert!(rw.failed(), "{rw:?}");
+    crate::common::assert_fails_as_written(&rw);
     // Restricted: the descent ends on the boundary of the closed range (the minimum over the
     // open adjusted range is not attained, as for the one-edge scan).
     assert_eq!(opt.at_bound, vec![[0, 2], [1, 2]]);
@@ -624,6 +624,22 @@ fn sd_l314_sd_l314_distance_sd_l316_local_optimiser_during_refinement_vs_closed_
             d(&opt.report)
         );
         assert!(d(&opt.report).is_finite());
+        if g.name == "circle" {
+            // SPEC `SD-L314(distance)` fails as written: cells L324 never lets be subdivided
+            // keep X = id, so 𝒪 is no nearer g⁻¹(0) than O (the closed form's is).
+            // (Asserted by hand: recorded under its own row, `SD-6.2(distance)` of the closed
+            // form holds.)
+            let dist = report_of(&opt.report, "SD-6.2(distance)");
+            assert!(
+                dist.failed() && !dist.witnesses.is_empty() && dist.examined > 0,
+                "{dist:?}"
+            );
+            crate::common::verdicts::record(
+                "SD-L314(distance)",
+                crate::common::verdicts::Seen::Fails,
+                dist.examined,
+            );
+        }
     }
 }
 

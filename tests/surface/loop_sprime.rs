@@ -246,6 +246,13 @@ fn loop_normal_mask_holds_on_the_good_corpus() {
         let s = LoopSurface::new(&k).expect("Loop surface");
         let r = check_normals(&k, &s, &LoopCheckOptions::default());
         common::assert_holds_for(&m.file, &r);
+        // SPEC: holds only on valences ≤ 37, the domain of every good corpus mesh.
+        assert!(m.max_degree <= 37, "{}: valence {}", m.file, m.max_degree);
+        common::verdicts::record(
+            "LOOP-normal-mask",
+            common::verdicts::Seen::Restricted,
+            r.examined,
+        );
     }
 }
 
@@ -534,6 +541,17 @@ fn loop_authors_sprime_and_loop_authors_pps_tables() {
         let (ms, ps, ws) = stats(ds);
         let (mp, pp, wp) = stats(dp);
         let w = &rows[ws];
+        // The finding (SPEC `LOOP-authors-sprime`): their S′ is not the exact limit surface,
+        // and the worst row is a corner (`LOOP-authors-D2`).
+        assert!(
+            ms > 1e-6,
+            "{name}: their S′ agrees with the exact limit ({ms:e})"
+        );
+        assert!(
+            w.bary.contains(&1.0),
+            "{name}: worst row not a corner: {:?}",
+            w.bary
+        );
         eprintln!(
             "{name}: {} rows, R = {rad:.4}; S′ max {ms:.3e} p99 {ps:.3e} (worst face {} bary {:?}); PPS max {mp:.3e} p99 {pp:.3e} (worst face {})",
             rows.len(),
@@ -542,6 +560,11 @@ fn loop_authors_sprime_and_loop_authors_pps_tables() {
             rows[wp].face
         );
         assert!(ms.is_finite() && mp.is_finite(), "{name}: NaN");
+        common::verdicts::record(
+            "LOOP-authors-sprime",
+            common::verdicts::Seen::Measured,
+            rows.len() as u64,
+        );
     }
 }
 
@@ -588,7 +611,14 @@ fn loop_pps_c_chapter5_rows_and_c6_2_mimics_with_loop_sprime() {
             "{m:?}"
         );
         eprintln!("{}", m.note);
+        common::verdicts::record("C6.2-mimics", common::verdicts::Seen::Measured, m.examined);
         assert!(lp.iter().any(|r| r.id == "LOOP-C2-edge"));
+        // Condition (C) holds on the PPS built on the Loop S′.
+        common::assert_holds_for(
+            "Loop S′",
+            lp.iter().find(|r| r.id == "T5.4.1").expect("condition (C)"),
+        );
+        common::verdicts::record("LOOP-pps-C", common::verdicts::Seen::Holds, lp.len() as u64);
     }
 }
 
@@ -646,7 +676,28 @@ fn loop_authors_d2_loop_authors_pps_their_tables_reproduced() {
         assert!(se >= 1e-6, "{name}: the defects should matter ({se:e})");
         assert!(sa <= 1e-10, "{name}: S′ with D2, D3 modelled: {sa:e}");
         assert!(pa <= 1e-10, "{name}: PPS with D2, D3 modelled: {pa:e}");
+        common::verdicts::record(
+            "LOOP-authors-pps",
+            common::verdicts::Seen::Holds,
+            theirs.rows as u64,
+        );
+        if name == "torus" {
+            // Every vertex of valence 6: D3 cannot act, the departure from the exact limit
+            // (`se` above) is D2's alone.
+            assert!(k_is_regular(&mesh), "{name}: valence ≠ 6");
+            common::verdicts::record(
+                "LOOP-authors-D2",
+                common::verdicts::Seen::Fails,
+                exact.rows as u64,
+            );
+        }
     }
+}
+
+fn k_is_regular(mesh: &Path) -> bool {
+    let k = load(mesh);
+    let irregular = k.vertices().filter(|&v| k.degree(v) != 6).count();
+    irregular == 0
 }
 
 /// Defect D3 of the authors' Loop evaluator: near a vertex of valence 3 their S′ (Stam's
@@ -709,6 +760,11 @@ fn loop_authors_d3_valence3_their_sprime_jumps_at_a_tile_boundary() {
     }
     assert_eq!(big.len(), 1, "exactly one boundary jumps: {big:?}");
     assert!((big[0] - 0.125).abs() < 1e-6, "at v + w = 1/4");
+    common::verdicts::record(
+        "LOOP-authors-D3",
+        common::verdicts::Seen::Fails,
+        (rows.len() / 2) as u64,
+    );
     for w in deviation.windows(2).skip(1).take(4) {
         println!("deviation {:.3e} → {:.3e}", w[0], w[1]);
         assert!(w[1] < w[0] / 10.0, "shrinks by ~16 per level");
@@ -969,6 +1025,11 @@ fn loop_linear_fit_weights_reproduce_s_prime_and_depend_on_the_key_only() {
             by_key.len()
         );
         assert!(count > 0 && planted > 0, "{name}: nothing examined");
+        common::verdicts::record(
+            "LOOP-linear-fit",
+            common::verdicts::Seen::Holds,
+            count as u64,
+        );
     }
 }
 
@@ -1036,4 +1097,52 @@ fn loop_linear_fit_equals_sampling_s_prime() {
         );
         assert!(n > 0, "{name}: nothing compared");
     }
+}
+
+/// `LOOP-regular-basis` through the public API (the unit tests of `regular.rs` cannot record):
+/// the 12 quartics reproduce the level-3 limit weights exactly at all 45 points (i/8, j/8),
+/// sum to 1 (partition of unity), and take the limit mask (1/2, 1/12, 0) at the corner.
+#[test]
+fn loop_regular_basis_exact_at_level3_partition_of_unity_and_limit_mask_recorded() {
+    use num_rational::BigRational;
+    use num_traits::{One, Zero};
+    use pseudomanifold::surface::loop_subdiv::regular::{
+        basis_exact, limit_weights_exact, MONOMIALS,
+    };
+    let rat = |p: i64, q: i64| BigRational::new(p.into(), q.into());
+    let b = basis_exact();
+    assert_eq!(b.len(), 12);
+    let eval = |k: usize, x: &BigRational, y: &BigRational| {
+        MONOMIALS
+            .iter()
+            .zip(&b[k])
+            .map(|(&(a, e), c)| {
+                c * num_traits::pow(x.clone(), a as usize) * num_traits::pow(y.clone(), e as usize)
+            })
+            .fold(BigRational::zero(), |s, t| s + t)
+    };
+    let mut points = 0u64;
+    for i in 0..=8i64 {
+        for j in 0..=(8 - i) {
+            let w = limit_weights_exact(3, (i, j)).expect("inside the net");
+            for (k, wk) in w.iter().enumerate() {
+                assert_eq!(eval(k, &rat(i, 8), &rat(j, 8)), *wk, "k={k} at ({i},{j})/8");
+            }
+            points += 1;
+        }
+    }
+    assert_eq!(points, 45);
+    for j in 0..MONOMIALS.len() {
+        let s = b.iter().fold(BigRational::zero(), |a, r| a + &r[j]);
+        let want = if j == 0 {
+            BigRational::one()
+        } else {
+            BigRational::zero()
+        };
+        assert_eq!(s, want, "monomial {j}");
+    }
+    assert_eq!(b[0][0], rat(1, 2));
+    assert!(b[1..7].iter().all(|r| r[0] == rat(1, 12)));
+    assert!(b[7..].iter().all(|r| r[0].is_zero()));
+    common::verdicts::record("LOOP-regular-basis", common::verdicts::Seen::Holds, points);
 }

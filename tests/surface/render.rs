@@ -306,6 +306,17 @@ fn r_normal_sign_planted_flip_darkens_the_shading_and_is_reported() {
     let ok = check_orientation(&scene);
     assert_eq!(bad_corners, 0);
     assert!(!ok.flipped());
+    assert!(
+        ok.checked > 0 && ok.disagreeing == 0,
+        "{} of {} corners disagree",
+        ok.disagreeing,
+        ok.checked
+    );
+    crate::common::verdicts::record(
+        "R-normal-sign",
+        crate::common::verdicts::Seen::Holds,
+        ok.checked as u64,
+    );
     let mut flipped = scene.clone();
     for n in &mut flipped.normals {
         *n = n.map(|x| -x);
