@@ -28,8 +28,10 @@ pub mod format;
 pub mod geodesic;
 pub mod overlay;
 pub mod refine;
+pub mod route;
 pub mod shorten;
 pub mod simplify;
+pub mod straighten;
 
 use base::{BaseMesh, RemovalLimits};
 use fitted::{BaseSurface, BaseSurfaceError, Fitted, SurfaceParam};
@@ -287,25 +289,28 @@ fn fit_once(
                     .filter(|r| r.failed())
                     .map(|r| r.id.as_str())
                     .collect();
+                let usable = !checks.iter().any(|r| {
+                    (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
+                });
                 progress(&format!(
-                    "embed: {} curves ({} in their faces' region, {} widened, {} on all of S_T), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
+                    "embed: {} curves ({} in their faces' region, {} widened, {} on all of S_T, {} taken up and traced again), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
                     e.emb.curves.len(),
                     e.emb.stats.in_region,
                     e.emb.stats.widened,
                     e.emb.stats.unrestricted,
+                    e.emb.stats.ripped,
                     e.emb.stats.initial_length,
                     e.emb.stats.length,
                     e.emb.stats.sweeps,
                     e.emb.stats.moves,
                     e.overlay.pieces.len(),
-                    if bad.is_empty() { "Floater's parameters used".to_string() } else { format!("failed: {}; the simplification's parameters used", bad.join(", ")) }
+                    match (bad.is_empty(), usable) {
+                        (true, _) => "Floater's parameters used".to_string(),
+                        (false, true) => format!("failed: {}; Floater's parameters used", bad.join(", ")),
+                        (false, false) => format!("failed: {}; the simplification's parameters used", bad.join(", ")),
+                    }
                 ));
-                !checks
-                    .iter()
-                    .any(|r| r.id == "AF-param-bijective" && r.failed())
-                    && !checks
-                        .iter()
-                        .any(|r| r.id == "AF-curved-disk" && r.failed())
+                usable
             }
             Err(f) => {
                 progress(&format!(
