@@ -7,11 +7,14 @@
 //! it is allowed. Then the edge is traced once more with the earlier curves made passable at
 //! a price (each point of another curve on the path, and each step meeting another curve's
 //! segment, costs [`PENALTY`] diagonals of S_T, times one plus the number of times that curve
-//! was taken up already, so two curves do not take each other up forever); the curves it
-//! passes are taken up, the edge is kept, and they are traced again right after it (in the
-//! order of the base edges). At most [`RIP_ROUNDS`] take-ups per base edge in all; then the
-//! edge is reported untraceable (`EmbedError::NoPath`). Deterministic: the order of the
-//! queue, the costs and Dijkstra's ties are fixed.
+//! was taken up already); the curves it passes are taken up, the edge is kept, and they are
+//! traced again right after it (in the order of the base edges). A curve is taken up at most
+//! [`RIP_ROUNDS`] times, then fixed; the take-ups in all are at most the number of base
+//! edges; an edge taken up twice goes wider before passing curves in its region again. An
+//! edge that cannot be traced in its region (not even through other curves) is put back at
+//! the end of the queue once, so it goes around the others rather than through them. An
+//! edge with no path then is reported (`EmbedError::NoPath`). Deterministic: the order of
+//! the queue, the costs and Dijkstra's ties are fixed.
 
 use super::base::{BaseMesh, Param};
 use super::embed_checks::{local, meet, only_at};
@@ -21,8 +24,8 @@ use super::geodesic::{
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use std::collections::{HashMap, VecDeque};
 
-/// Take-ups allowed per base edge (the budget is this times the number of base edges).
-pub const RIP_ROUNDS: usize = 4;
+/// Times a curve may be taken up; the budget of take-ups is the number of base edges.
+pub const RIP_ROUNDS: usize = 2;
 
 /// The price of passing another curve, in diagonals of S_T's bounding box.
 pub const PENALTY: f64 = 1.0;
@@ -40,6 +43,8 @@ struct Traced {
     paths: Vec<Option<(usize, Vec<u32>)>>,
     /// How often each base edge was taken up.
     ripped: Vec<usize>,
+    /// Edges put back at the end of the queue.
+    deferred: Vec<bool>,
 }
 
 impl Traced {
@@ -202,7 +207,13 @@ impl<'a> Edge<'a> {
     /// The shortest path at `tier`; with `price`, through other curves at that price each
     /// (module doc), else around them.
     fn trace(&self, t: &Traced, tier: usize, price: Option<f64>) -> Option<Vec<u32>> {
-        let cost = |c: usize| price.map(|p| p * (1 + t.ripped[c]) as f64);
+        // A curve taken up RIP_ROUNDS times is fixed: two edges that each need the other's
+        // place cannot alternate without end.
+        let cost = |c: usize| {
+            price
+                .filter(|_| t.ripped[c] < RIP_ROUNDS)
+                .map(|p| p * (1 + t.ripped[c]) as f64)
+        };
         dijkstra(
             self.g,
             self.a,
@@ -251,16 +262,24 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
         segs: HashMap::new(),
         paths: vec![None; edges.len()],
         ripped: vec![0; edges.len()],
+        deferred: vec![false; edges.len()],
     };
-    let mut budget = RIP_ROUNDS * edges.len();
+    let mut budget = edges.len();
     let mut stats = EmbedStats::default();
     let mut queue: VecDeque<usize> = (0..edges.len()).collect();
-    while let Some(e) = queue.pop_front() {
+    'edges: while let Some(e) = queue.pop_front() {
         let (a, b) = edges[e];
         let ed = Edge::new(k, base, &g, a, b);
         // Around the other curves in the region, through them there, then the same wider.
         let mut found = None;
         'tries: for tiers in [0..3, 3..5] {
+            // An edge that cannot be traced in its region waits until every other edge is
+            // (once), so that it goes around them rather than through them.
+            if tiers.start > 0 && !t.deferred[e] && !queue.is_empty() {
+                t.deferred[e] = true;
+                queue.push_back(e);
+                continue 'edges;
+            }
             for price in [None, Some(PENALTY * diag)] {
                 // An edge taken up twice already goes wider before it passes curves in its
                 // region again (two edges that each need the other's place would alternate).
