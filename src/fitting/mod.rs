@@ -247,6 +247,7 @@ fn fit_once(
     let pos = base.positions().to_vec();
     let mut rounds: Vec<Round> = Vec::new();
     let mut repairs = 0;
+    let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
     loop {
         let tr = std::time::Instant::now();
         let surface = match BaseSurface::new(&base) {
@@ -280,7 +281,24 @@ fn fit_once(
         // The embedding and Floater's parameters are used when every check of theirs
         // holds; otherwise the simplification's parameters are, and the failure is reported
         // (`AF-embedding`, and the checks of the embedding that exists), never passed on.
-        let emb = embedded::embed(k, &base);
+        // A base mesh whose embedding failed is not embedded again (the failure is kept).
+        let key: Vec<[u32; 3]> = {
+            let mut f: Vec<[u32; 3]> = base.faces().map(|(_, c)| c).collect();
+            f.sort_unstable();
+            f
+        };
+        let emb = match failed_at.iter().find(|(x, _)| *x == key) {
+            Some((_, f)) => {
+                progress("embed: failed at this base mesh before, not tried again");
+                Err(f.clone())
+            }
+            None => embedded::embed(k, &base),
+        };
+        if let Err(f) = &emb {
+            if !failed_at.iter().any(|(x, _)| *x == key) {
+                failed_at.push((key, f.clone()));
+            }
+        }
         let usable = match &emb {
             Ok(e) => {
                 let checks = embed_checks::run(k, &base, e);
