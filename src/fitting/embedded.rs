@@ -11,8 +11,9 @@
 
 use super::base::{BaseMesh, Param};
 use super::floater::{self, RegionMap};
-use super::geodesic::{self, EmbedError, Embedding};
+use super::geodesic::{EmbedError, Embedding};
 use super::overlay::{self, Overlay};
+use super::route;
 use super::shorten;
 use crate::mesh::SimplicialSurface;
 
@@ -40,7 +41,7 @@ pub struct Failure {
 
 /// Embed, cut, map (module doc).
 pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure> {
-    let mut emb = geodesic::initial_curves(k, base).map_err(|e| {
+    let mut emb = route::initial_curves(k, base).map_err(|e| {
         let EmbedError::NoPath { a, b } = e;
         Failure {
             what: e.to_string(),

@@ -23,11 +23,9 @@
 //! **Step 2, shortening** ([`super::shorten`]): edge nodes and vertex nodes move by distinct
 //! rules without crossing another curve.
 
-use super::base::{BaseMesh, Param};
-use super::embed_checks::{local, meet, only_at};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use serde::Serialize;
-use std::collections::{BinaryHeap, HashMap, HashSet};
+use std::collections::{BinaryHeap, HashMap};
 
 /// A node of an embedded edge.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -114,6 +112,8 @@ pub struct EmbedStats {
     pub widened: usize,
     /// Curves traced on all of S_T.
     pub unrestricted: usize,
+    /// Curves taken up again because they walled off a later one ([`super::route`]).
+    pub ripped: usize,
     /// Total length of the initial curves.
     pub initial_length: f64,
     /// Total length after shortening.
@@ -183,15 +183,15 @@ pub const EDGE_POINTS: u32 = 3;
 /// triangle (a chord). A point used by one curve is closed to the later ones, and a step
 /// whose segment meets a segment of an earlier curve (exactly, in the triangle's reference
 /// frame) is refused, so the curves are disjoint but for common ends.
-struct Graph<'a> {
+pub(super) struct Graph<'a> {
     k: &'a SimplicialSurface,
-    n: u32,
+    pub(super) n: u32,
     edge_id: HashMap<(u32, u32), u32>,
     edges: Vec<(u32, u32)>,
 }
 
 impl<'a> Graph<'a> {
-    fn new(k: &'a SimplicialSurface) -> Self {
+    pub(super) fn new(k: &'a SimplicialSurface) -> Self {
         let edges: Vec<(u32, u32)> = k.edges().map(|(a, b)| (a.0, b.0)).collect();
         let edge_id = edges
             .iter()
@@ -217,7 +217,7 @@ impl<'a> Graph<'a> {
         out.push(w);
         out
     }
-    fn node(&self, p: u32) -> Node {
+    pub(super) fn node(&self, p: u32) -> Node {
         if p < self.n {
             Node::Vertex(p)
         } else {
@@ -234,7 +234,7 @@ impl<'a> Graph<'a> {
         self.node(p).point(self.k).unwrap_or([f64::NAN; 3])
     }
     /// The triangles a point lies on.
-    fn faces(&self, p: u32) -> Vec<FaceId> {
+    pub(super) fn faces(&self, p: u32) -> Vec<FaceId> {
         self.node(p).faces(self.k)
     }
     /// Steps from p: the next point and the triangles the step's segment lies on.
@@ -273,13 +273,14 @@ impl<'a> Graph<'a> {
     }
 }
 
-/// Shortest path a → b in the graph through points and steps `ok` accepts.
-fn dijkstra(
+/// Shortest path a → b in the graph: a step costs its length plus what `point` charges for
+/// its end (b excepted) and `step` for itself; None refuses the point or the step.
+pub(super) fn dijkstra(
     g: &Graph,
     a: u32,
     b: u32,
-    ok_point: impl Fn(u32) -> bool,
-    ok_step: impl Fn(u32, u32, &[FaceId]) -> bool,
+    point: impl Fn(u32) -> Option<f64>,
+    step: impl Fn(u32, u32, &[FaceId]) -> Option<f64>,
 ) -> Option<Vec<u32>> {
     let mut d: HashMap<u32, (f64, u32)> = HashMap::new();
     let mut heap = BinaryHeap::new();
@@ -301,10 +302,11 @@ fn dijkstra(
         }
         let pu = g.point(u);
         for (w, fs) in g.steps(u) {
-            if (w != b && !ok_point(w)) || !ok_step(u, w, &fs) {
+            let pc = if w == b { Some(0.0) } else { point(w) };
+            let (Some(pc), Some(sc)) = (pc, step(u, w, &fs)) else {
                 continue;
-            }
-            let nd = du + dist(pu, g.point(w));
+            };
+            let nd = du + dist(pu, g.point(w)) + pc + sc;
             if d.get(&w).map_or(true, |&(x, _)| nd < x) {
                 d.insert(w, (nd, u));
                 heap.push(Item(nd, w));
@@ -312,157 +314,4 @@ fn dijkstra(
         }
     }
     None
-}
-
-/// The base edges {a, b}, a < b, shortest (in R³) first.
-fn base_edges(base: &BaseMesh) -> Vec<(u32, u32)> {
-    let pos = base.positions();
-    let mut e: Vec<(u32, u32)> = base
-        .faces()
-        .flat_map(|(_, c)| (0..3).map(move |i| (c[i], c[(i + 1) % 3])))
-        .filter(|&(a, b)| a < b)
-        .collect();
-    e.sort_by(|x, y| {
-        let l = |(a, b): (u32, u32)| dist(pos[a as usize], pos[b as usize]);
-        l(*x).total_cmp(&l(*y)).then(x.cmp(y))
-    });
-    e
-}
-
-/// Step 1 (module doc): the initial curves.
-pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedding, EmbedError> {
-    let g = Graph::new(k);
-    let mut used: HashSet<u32> = HashSet::new();
-    let mut segs: HashMap<FaceId, Vec<[[f64; 2]; 2]>> = HashMap::new();
-    let region = |x: u32| match base.params().get(x as usize) {
-        Some(Param::Face { f, .. }) => Some(*f),
-        _ => None,
-    };
-    let mut stats = EmbedStats::default();
-    let mut curves = Vec::new();
-    let mut index = HashMap::new();
-    for (a, b) in base_edges(base) {
-        let faces: Vec<u32> = [(a, b), (b, a)]
-            .iter()
-            .filter_map(|&(u, w)| base.face_of_edge(u, w))
-            .collect();
-        let around: Vec<u32> = [a, b]
-            .iter()
-            .flat_map(|&v| base.faces_around(v).iter().copied())
-            .collect();
-        // A triangle of S_T is in a set of base faces when one of its corners is (a base
-        // vertex of the edge counts); a point when one of its triangles is.
-        let mine = |v: VertexId, set: &[u32]| {
-            v.0 == a || v.0 == b || region(v.0).is_some_and(|r| set.contains(&r))
-        };
-        let strict = std::cell::Cell::new(true);
-        let keep = std::cell::Cell::new(true);
-        let tri_in = |f: FaceId, set: &[u32]| {
-            let c = k.face(f);
-            if strict.get() {
-                c.iter().all(|&v| mine(v, set))
-            } else {
-                c.iter().any(|&v| mine(v, set))
-            }
-        };
-        // The triangles at a base vertex are kept for that vertex's own curves (and those of
-        // curves from a or b), so no curve closes a base vertex off from its other edges.
-        let reserved = |f: FaceId| {
-            let c = k.face(f);
-            keep.get()
-                && !c.iter().any(|v| v.0 == a || v.0 == b)
-                && c.iter().any(|v| base.is_base(v.0))
-        };
-        let pt_in = |p: u32, set: &[u32]| g.faces(p).into_iter().any(|f| tri_in(f, set));
-        let free = |p: u32| {
-            let closed = used.contains(&p) || (p < g.n && base.is_base(p));
-            !closed && (p < g.n || !g.faces(p).into_iter().all(reserved))
-        };
-        // The tries: (strictly inside the two faces' region, reserving), (touching it,
-        // reserving), (touching it), (touching the faces around a and b), (all of S_T).
-        let set_of = |i: usize| match i {
-            0..=2 => Some(faces.as_slice()),
-            3 => Some(around.as_slice()),
-            _ => None,
-        };
-
-        let ends: Vec<(FaceId, [f64; 2])> = [a, b]
-            .iter()
-            .flat_map(|&v| {
-                k.faces_around(VertexId(v))
-                    .iter()
-                    .filter_map(move |&f| Some((f, local(k, f, &Node::Vertex(v))?)))
-            })
-            .collect();
-        // The step's segment meets no earlier segment but at a common end.
-        let clear = |u: u32, w: u32, fs: &[FaceId]| {
-            fs.iter().all(|&f| {
-                let (Some(p), Some(q)) = (local(k, f, &g.node(u)), local(k, f, &g.node(w))) else {
-                    return false;
-                };
-                let s = [p, q];
-                segs.get(&f).map_or(true, |l| {
-                    l.iter().all(|&t| {
-                        !meet(s, t)
-                            || ends.iter().any(|&(e, x)| {
-                                e == f
-                                    && (x == p || x == q)
-                                    && (x == t[0] || x == t[1])
-                                    && only_at(s, t, x)
-                            })
-                    })
-                })
-            })
-        };
-        let mut found = None;
-        for i in 0..5 {
-            let set = set_of(i);
-            strict.set(i == 0);
-            keep.set(i < 2);
-            let p = dijkstra(
-                &g,
-                a,
-                b,
-                |p| free(p) && set.map_or(true, |s| pt_in(p, s)),
-                |u, w, fs| {
-                    fs.iter()
-                        .all(|&f| !reserved(f) && set.map_or(true, |s| tri_in(f, s)))
-                        && clear(u, w, fs)
-                },
-            );
-            if let Some(p) = p {
-                found = Some((i, p));
-                break;
-            }
-        }
-        let (i, path) = found.ok_or(EmbedError::NoPath { a, b })?;
-        match i {
-            0..=2 => stats.in_region += 1,
-            3 => stats.widened += 1,
-            _ => stats.unrestricted += 1,
-        }
-        used.extend(path[1..path.len() - 1].iter().copied());
-        for w in path.windows(2) {
-            let (u, v) = (g.node(w[0]), g.node(w[1]));
-            for f in common_faces(k, &u, &v) {
-                if let (Some(p), Some(q)) = (local(k, f, &u), local(k, f, &v)) {
-                    segs.entry(f).or_default().push([p, q]);
-                }
-            }
-        }
-        index.insert((a, b), curves.len());
-        curves.push(Curve {
-            a,
-            b,
-            nodes: path.into_iter().map(|p| g.node(p)).collect(),
-        });
-    }
-    let mut e = Embedding {
-        curves,
-        index,
-        stats,
-    };
-    e.stats.initial_length = e.curves.iter().map(|c| c.length(k)).sum();
-    e.stats.length = e.stats.initial_length;
-    Ok(e)
 }

@@ -28,8 +28,10 @@ pub mod format;
 pub mod geodesic;
 pub mod overlay;
 pub mod refine;
+pub mod route;
 pub mod shorten;
 pub mod simplify;
+pub mod straighten;
 
 use base::{BaseMesh, RemovalLimits};
 use fitted::{BaseSurface, BaseSurfaceError, Fitted, SurfaceParam};
@@ -245,6 +247,7 @@ fn fit_once(
     let pos = base.positions().to_vec();
     let mut rounds: Vec<Round> = Vec::new();
     let mut repairs = 0;
+    let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
     loop {
         let tr = std::time::Instant::now();
         let surface = match BaseSurface::new(&base) {
@@ -278,7 +281,24 @@ fn fit_once(
         // The embedding and Floater's parameters are used when every check of theirs
         // holds; otherwise the simplification's parameters are, and the failure is reported
         // (`AF-embedding`, and the checks of the embedding that exists), never passed on.
-        let emb = embedded::embed(k, &base);
+        // A base mesh whose embedding failed is not embedded again (the failure is kept).
+        let key: Vec<[u32; 3]> = {
+            let mut f: Vec<[u32; 3]> = base.faces().map(|(_, c)| c).collect();
+            f.sort_unstable();
+            f
+        };
+        let emb = match failed_at.iter().find(|(x, _)| *x == key) {
+            Some((_, f)) => {
+                progress("embed: failed at this base mesh before, not tried again");
+                Err(f.clone())
+            }
+            None => embedded::embed(k, &base),
+        };
+        if let Err(f) = &emb {
+            if !failed_at.iter().any(|(x, _)| *x == key) {
+                failed_at.push((key, f.clone()));
+            }
+        }
         let usable = match &emb {
             Ok(e) => {
                 let checks = embed_checks::run(k, &base, e);
@@ -287,25 +307,28 @@ fn fit_once(
                     .filter(|r| r.failed())
                     .map(|r| r.id.as_str())
                     .collect();
+                let usable = !checks.iter().any(|r| {
+                    (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
+                });
                 progress(&format!(
-                    "embed: {} curves ({} in their faces' region, {} widened, {} on all of S_T), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
+                    "embed: {} curves ({} in their faces' region, {} widened, {} on all of S_T, {} taken up and traced again), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
                     e.emb.curves.len(),
                     e.emb.stats.in_region,
                     e.emb.stats.widened,
                     e.emb.stats.unrestricted,
+                    e.emb.stats.ripped,
                     e.emb.stats.initial_length,
                     e.emb.stats.length,
                     e.emb.stats.sweeps,
                     e.emb.stats.moves,
                     e.overlay.pieces.len(),
-                    if bad.is_empty() { "Floater's parameters used".to_string() } else { format!("failed: {}; the simplification's parameters used", bad.join(", ")) }
+                    match (bad.is_empty(), usable) {
+                        (true, _) => "Floater's parameters used".to_string(),
+                        (false, true) => format!("failed: {}; Floater's parameters used", bad.join(", ")),
+                        (false, false) => format!("failed: {}; the simplification's parameters used", bad.join(", ")),
+                    }
                 ));
-                !checks
-                    .iter()
-                    .any(|r| r.id == "AF-param-bijective" && r.failed())
-                    && !checks
-                        .iter()
-                        .any(|r| r.id == "AF-curved-disk" && r.failed())
+                usable
             }
             Err(f) => {
                 progress(&format!(

@@ -12,7 +12,8 @@
 //!   straight segment P–N, and v is replaced by the points where it crosses the spokes of
 //!   that side (edge nodes, or the spoke's far vertex where the segment passes beyond it).
 //!
-//! A move is made only when it gains more than [`TOLERANCE`] of the two segments' length and
+//! A move is made only when it gains more than the rounding bound of its gain
+//! ([`gain_bound`]) and
 //! the new segments meet no other curve and no other segment of the same curve (decided
 //! exactly, `embed_checks`), and no new vertex node is a base vertex or a node of another
 //! curve: the curves stay disjoint. Sweeps repeat until no move is made or [`MAX_SWEEPS`].
@@ -23,9 +24,40 @@ use super::geodesic::{common_faces, dist, Embedding, Node};
 use crate::mesh::{SimplicialSurface, VertexId};
 use crate::numeric::vec3::{cross, dot, norm, sub};
 
-/// A node is moved only when it shortens its two segments by more than this fraction; the
-/// same number bounds what `AF-geodesic-shortest` accepts (the stopping rule, a choice).
-pub const TOLERANCE: f64 = 1e-6;
+/// Units of roundoff per operation chain in [`gain_bound`]: the gain of a move is a
+/// difference of lengths computed through a node's position (a + t(b − a)), an unfolding
+/// (dot, cross, norm, a division) and a planar length, each a chain of at most ~16
+/// operations on quantities bounded by the points' norms and the edge lengths; 64 covers four
+/// such chains (an operation count, not a proof).
+pub const ROUNDING_ULPS: f64 = 64.0;
+
+/// The rounding bound of node i's relative gain (SPEC `AF-geodesic-shortest`):
+/// `ROUNDING_ULPS`·u·(‖P‖ + ‖X‖ + ‖N‖ + Λ)·m / (|PX| + |XN|), Λ the total length of the
+/// edges of S_T the move unfolds (the two triangles of an edge node's edge; the spokes and
+/// rim of a vertex node's fan), m = 1 for an edge node and the fan's size for a vertex node
+/// (its angles are summed). NaN when a node is not on S_T. The shortening moves a node only
+/// beyond it and `AF-geodesic-shortest` accepts nothing beyond it: both derived from the
+/// precision, not chosen to pass.
+pub fn gain_bound(k: &SimplicialSurface, nodes: &[Node], i: usize) -> f64 {
+    let pts = [i.wrapping_sub(1), i, i + 1].map(|j| nodes.get(j).and_then(|q| q.point(k)));
+    let (Some(p), Some(x), Some(n)) = (pts[0], pts[1], pts[2]) else {
+        return f64::NAN;
+    };
+    let now = dist(p, x) + dist(x, n);
+    let pos = |v: u32| k.position(VertexId(v));
+    let tri = |f: crate::mesh::FaceId| {
+        let c = k.face(f).map(|v| pos(v.0));
+        dist(c[0], c[1]) + dist(c[1], c[2]) + dist(c[2], c[0])
+    };
+    let (lambda, m) = match nodes[i] {
+        Node::Edge { .. } => (nodes[i].faces(k).into_iter().map(tri).sum::<f64>(), 1.0),
+        Node::Vertex(v) => {
+            let fan = k.faces_around(VertexId(v));
+            (fan.iter().map(|&f| tri(f)).sum::<f64>(), fan.len() as f64)
+        }
+    };
+    ROUNDING_ULPS * f64::EPSILON * (norm(p) + norm(x) + norm(n) + lambda) * m / now
+}
 
 /// Sweeps over all curves at most.
 pub const MAX_SWEEPS: usize = 200;
@@ -299,7 +331,7 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
                     }
                     Node::Edge { .. } => false,
                 });
-                if !(gain > TOLERANCE * now) || blocked {
+                if !(gain > gain_bound(k, nodes, i) * now) || blocked {
                     i += 1;
                     continue;
                 }
@@ -333,6 +365,7 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
             }
         }
         moved += drop_turns(k, emb, &mut owner, &near);
+        moved += straighten_runs(k, base, emb, &mut owner, &mut near);
         emb.stats.moves += moved;
         emb.stats.sweeps = sweep + 1;
         if moved == 0 {
@@ -377,4 +410,88 @@ fn drop_turns(
         }
     }
     dropped
+}
+
+/// Length of a polyline of nodes (NaN when a node is not on S_T).
+fn polyline(k: &SimplicialSurface, nodes: &[Node]) -> f64 {
+    nodes
+        .windows(2)
+        .map(|w| match (w[0].point(k), w[1].point(k)) {
+            (Some(p), Some(q)) => dist(p, q),
+            _ => f64::NAN,
+        })
+        .sum()
+}
+
+/// Replace every run of edge nodes between two vertex nodes by its straightened run
+/// ([`straighten`]) where that is shorter by more than the rounding of the lengths
+/// (16 u of the run's length) and keeps the curves disjoint (the rules of a node move).
+fn straighten_runs(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    emb: &mut Embedding,
+    owner: &mut std::collections::HashMap<u32, usize>,
+    near: &mut Near,
+) -> usize {
+    let mut moved = 0;
+    for ci in 0..emb.curves.len() {
+        let mut i = 0;
+        while i + 1 < emb.curves[ci].nodes.len() {
+            let nodes = &emb.curves[ci].nodes;
+            let Some(j) = (i + 1..nodes.len()).find(|&j| matches!(nodes[j], Node::Vertex(_)))
+            else {
+                break;
+            };
+            let next = j;
+            if j < i + 2 {
+                i = next;
+                continue;
+            }
+            let Some(new) = super::straighten::straighten_run(k, &nodes[i..=j]) else {
+                i = next;
+                continue;
+            };
+            let mut run = vec![nodes[i]];
+            run.extend_from_slice(&new);
+            run.push(nodes[j]);
+            let (old, now) = (polyline(k, &nodes[i..=j]), polyline(k, &run));
+            let (ca, cb) = (emb.curves[ci].a, emb.curves[ci].b);
+            let blocked = new.iter().any(|q| match *q {
+                Node::Vertex(u) => {
+                    (base.is_base(u) && u != ca && u != cb)
+                        || owner.get(&u).is_some_and(|&o| o != ci)
+                }
+                Node::Edge { .. } => false,
+            });
+            if !(now < old - 16.0 * f64::EPSILON * old) || blocked {
+                i = next;
+                continue;
+            }
+            let mut cand = nodes[..i].to_vec();
+            cand.extend_from_slice(&run);
+            cand.extend_from_slice(&nodes[j + 1..]);
+            let span = (i, i + new.len() + 1);
+            if segments_meet_other(k, emb, ci, &cand, span, near) {
+                i = next;
+                continue;
+            }
+            for q in &new {
+                if let Node::Vertex(u) = *q {
+                    owner.insert(u, ci);
+                }
+            }
+            for w in cand[span.0..=span.1].windows(2) {
+                for f in common_faces(k, &w[0], &w[1]) {
+                    let l = near.entry(f).or_default();
+                    if !l.contains(&ci) {
+                        l.push(ci);
+                    }
+                }
+            }
+            emb.curves[ci].nodes = cand;
+            moved += 1;
+            i = span.1;
+        }
+    }
+    moved
 }

@@ -1,0 +1,204 @@
+//! Whole-run straightening for the shortening (seed 002, Part II, "Discrete Geodesics",
+//! step 2; a choice that speeds up its node-by-node rules). A run of edge nodes between two
+//! anchors (vertex nodes or nodes not strictly crossing their edge) crosses a sequence of
+//! edges of S_T — a sleeve of triangles. The sleeve is unfolded into the plane and the
+//! shortest path in it found by the funnel algorithm (Lee–Preparata; "simple stupid funnel"):
+//! straight between the sleeve's corners it wraps around. The node rules move one node at a
+//! time and converge linearly along a long run (or around a vertex the curve wraps closely);
+//! the funnel gives their fixed point on the sleeve in one step. Vertex nodes it creates are
+//! then moved off by the vertex rule where one side's angle is below π, which changes the
+//! sleeve; the shortening alternates both until nothing moves. SPEC `AF-geodesic-shortest`.
+
+use super::geodesic::{common_faces, Node};
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::vec3::{norm, sub};
+
+type P2 = [f64; 2];
+
+fn cross(o: P2, a: P2, b: P2) -> f64 {
+    (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+}
+
+/// The corner of `f` that is neither u nor w.
+fn third(k: &SimplicialSurface, f: FaceId, u: u32, w: u32) -> Option<u32> {
+    k.face(f).iter().map(|v| v.0).find(|&v| v != u && v != w)
+}
+
+/// c placed in the plane at its 3-D distances from p and q, on the side of line p → q
+/// opposite to `away`.
+fn place(k: &SimplicialSurface, ids: [u32; 3], p: P2, q: P2, away: P2) -> Option<P2> {
+    let x = |v: u32| k.position(VertexId(v));
+    let (dp, dq) = (
+        norm(sub(x(ids[2]), x(ids[0]))),
+        norm(sub(x(ids[2]), x(ids[1]))),
+    );
+    let l = (q[0] - p[0]).hypot(q[1] - p[1]);
+    if !(l > 0.0) {
+        return None;
+    }
+    let u = [(q[0] - p[0]) / l, (q[1] - p[1]) / l];
+    let along = (dp * dp - dq * dq + l * l) / (2.0 * l);
+    let h = (dp * dp - along * along).max(0.0).sqrt();
+    let s = if cross(p, q, away) > 0.0 { -1.0 } else { 1.0 };
+    Some([
+        p[0] + along * u[0] - s * h * u[1],
+        p[1] + along * u[1] + s * h * u[0],
+    ])
+}
+
+/// A node's planar position from the positions of its face's corners.
+fn at(n: &Node, corners: &[(u32, P2)]) -> Option<P2> {
+    let pos = |v: u32| corners.iter().find(|c| c.0 == v).map(|c| c.1);
+    match *n {
+        Node::Vertex(v) => pos(v),
+        Node::Edge { a, b, t } => {
+            let (p, q) = (pos(a)?, pos(b)?);
+            Some([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])])
+        }
+    }
+}
+
+/// A portal: an edge of S_T the run crosses, its (left, right) ends as seen travelling along
+/// the run, with planar positions.
+type Portal = [(u32, P2); 2];
+
+/// The unfolded sleeve of `run` (anchor, edge nodes, anchor): start, portals, end. None when
+/// the run is not a strict sleeve (two nodes on one edge, a segment along an edge, a
+/// triangle visited twice in a row).
+fn sleeve(k: &SimplicialSurface, run: &[Node]) -> Option<(P2, Vec<Portal>, P2)> {
+    let m = run.len().checked_sub(2).filter(|&m| m >= 1)?;
+    let edge = |n: &Node| match *n {
+        Node::Edge { a, b, .. } => Some((a, b)),
+        Node::Vertex(_) => None,
+    };
+    // The triangle of each segment.
+    let mut tri = Vec::with_capacity(m + 1);
+    for w in run.windows(2) {
+        let cf = common_faces(k, &w[0], &w[1]);
+        if cf.len() != 1 {
+            return None;
+        }
+        tri.push(cf[0]);
+    }
+    if tri.windows(2).any(|w| w[0] == w[1]) {
+        return None;
+    }
+    let (a, b) = edge(&run[1])?;
+    let (pa, pb) = (k.position(VertexId(a)), k.position(VertexId(b)));
+    let mut corners: Vec<(u32, P2)> = vec![(a, [0.0, 0.0]), (b, [norm(sub(pb, pa)), 0.0])];
+    let c0 = third(k, tri[0], a, b)?;
+    let pc0 = place(k, [a, b, c0], corners[0].1, corners[1].1, [0.0, -1.0])?;
+    corners.push((c0, pc0));
+    let start = at(&run[0], &corners)?;
+    let mut portals = Vec::with_capacity(m);
+    for s in 1..=m {
+        let (a, b) = edge(&run[s])?;
+        // The corner of the triangle before the portal that is not on it.
+        let behind = corners.iter().find(|x| x.0 != a && x.0 != b)?.1;
+        let (pa, pb) = (
+            at(&Node::Vertex(a), &corners)?,
+            at(&Node::Vertex(b), &corners)?,
+        );
+        portals.push(if cross(behind, pa, pb) > 0.0 {
+            [(b, pb), (a, pa)]
+        } else {
+            [(a, pa), (b, pb)]
+        });
+        // Unfold the triangle after the portal across it.
+        let c = third(k, tri[s], a, b)?;
+        let pc = place(k, [a, b, c], pa, pb, behind)?;
+        corners = vec![(a, pa), (b, pb), (c, pc)];
+    }
+    let end = at(&run[m + 1], &corners)?;
+    Some((start, portals, end))
+}
+
+/// The funnel's path: the portal indices (1-based; 0 start, n + 1 end) of its corners.
+fn funnel(start: P2, portals: &[Portal], end: P2) -> Vec<(usize, Option<u32>, P2)> {
+    let n = portals.len();
+    let gate = |i: usize| -> [(Option<u32>, P2); 2] {
+        if i == 0 {
+            [(None, start), (None, start)]
+        } else if i == n + 1 {
+            [(None, end), (None, end)]
+        } else {
+            let [l, r] = portals[i - 1];
+            [(Some(l.0), l.1), (Some(r.0), r.1)]
+        }
+    };
+    let mut out = vec![(0, None, start)];
+    let mut apex = start;
+    let (mut left, mut li) = (start, 0);
+    let (mut right, mut ri) = (start, 0);
+    let mut i = 1;
+    // Each restart moves the apex forward, so the loop ends (at most n + 2 restarts).
+    while i <= n + 1 {
+        let [(_, l), (_, r)] = gate(i);
+        if cross(apex, right, r) >= 0.0 {
+            if apex == right || cross(apex, left, r) < 0.0 {
+                right = r;
+                ri = i;
+            } else {
+                let id = gate(li)[0].0;
+                out.push((li, id, left));
+                apex = left;
+                right = apex;
+                ri = li;
+                i = li + 1;
+                continue;
+            }
+        }
+        if cross(apex, left, l) <= 0.0 {
+            if apex == left || cross(apex, right, l) > 0.0 {
+                left = l;
+                li = i;
+            } else {
+                let id = gate(ri)[1].0;
+                out.push((ri, id, right));
+                apex = right;
+                left = apex;
+                li = ri;
+                i = ri + 1;
+                continue;
+            }
+        }
+        i += 1;
+    }
+    out.push((n + 1, None, end));
+    out
+}
+
+/// The straightened run (anchors excluded): the nodes where the funnel's path crosses the
+/// portals, vertex nodes at the corners it wraps. None when the run is no sleeve.
+pub fn straighten_run(k: &SimplicialSurface, run: &[Node]) -> Option<Vec<Node>> {
+    let (start, portals, end) = sleeve(k, run)?;
+    let path = funnel(start, &portals, end);
+    let mut out: Vec<Node> = Vec::new();
+    for w in path.windows(2) {
+        let ((i0, v0, p), (i1, v1, q)) = (w[0], w[1]);
+        if let Some(v) = v0 {
+            if out.last() != Some(&Node::Vertex(v)) {
+                out.push(Node::Vertex(v));
+            }
+        }
+        for s in i0 + 1..i1 {
+            let [(l, pl), (r, pr)] = portals[s - 1];
+            // A portal at a corner of the path is passed at that corner.
+            if [v0, v1].iter().any(|&v| v == Some(l) || v == Some(r)) {
+                continue;
+            }
+            // Where p → q crosses the portal l → r.
+            let d = [q[0] - p[0], q[1] - p[1]];
+            let den = (pr[0] - pl[0]) * d[1] - (pr[1] - pl[1]) * d[0];
+            let num = (p[0] - pl[0]) * d[1] - (p[1] - pl[1]) * d[0];
+            let tl = num / den;
+            if !tl.is_finite() {
+                return None;
+            }
+            let tl = tl.clamp(f64::MIN_POSITIVE, 1.0 - f64::EPSILON);
+            let (a, b, t) = if l < r { (l, r, tl) } else { (r, l, 1.0 - tl) };
+            out.push(Node::Edge { a, b, t });
+        }
+    }
+    Some(out)
+}
