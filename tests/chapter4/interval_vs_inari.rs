@@ -1,4 +1,4 @@
-//! The crate's own interval arithmetic (`construction::interval::Interval`, used by the
+//! The crate's own interval arithmetic (`numeric::interval::Interval`, used by the
 //! certified provers) against MPFR-backed `inari` (IEEE 1788), feature `inari`: for seeded
 //! random intervals, every result must contain inari's tightest-possible enclosure's points
 //! that we sample (soundness, checked against MPFR point values at 256 bits) and be at most a

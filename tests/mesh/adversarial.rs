@@ -434,7 +434,7 @@ fn x_adv_13_precision_below_2_refused_at_every_boundary() {
 }
 
 /// `check --precision` accepted up to 10⁶ bits while the oracle stopped at 65536 and the scalar
-/// type rounded silently into its own range: one limit (`construction::PREC_BITS`) now holds
+/// type rounded silently into its own range: one limit (`numeric::PREC_BITS`) now holds
 /// at every boundary, and one bit past it is refused.
 #[test]
 fn x_adv_13_precision_above_the_one_limit_refused_at_every_boundary() {
