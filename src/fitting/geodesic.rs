@@ -15,13 +15,16 @@
 //! of the two faces joins a and b on the right side of the other base vertices; a
 //! fast-marching distance on all of |S_T| does not know that topology and can go around a
 //! handle or past another base vertex. Paths are traced one after another (shortest base edge
-//! first) and a vertex used by a traced path is blocked for the later ones, so two curves meet
-//! only at common end points (`AF-geodesic-disjoint`, checked independently). Where the region
-//! holds no free path, the faces around a and b are allowed too, then all of S_T (counted in
-//! [`EmbedStats`]); a topology these fallbacks get wrong is caught by `AF-curved-disk`.
+//! first, [`super::route`]) and a point used by a traced path is blocked for the later ones, so
+//! two curves meet only at common end points (`AF-geodesic-disjoint`, checked independently);
+//! an edge walled off by earlier curves is traced through them and they are traced again
+//! (rip-up, [`super::route`]). Where the region holds no free path, the faces around a and b
+//! are allowed too, then all of S_T (counted in [`EmbedStats`]); a topology these fallbacks
+//! get wrong is caught by `AF-curved-disk`.
 //!
-//! **Step 2, shortening** ([`super::shorten`]): edge nodes and vertex nodes move by distinct
-//! rules without crossing another curve.
+//! **Step 2, shortening** ([`super::shorten`], [`super::straighten`]): edge nodes and vertex
+//! nodes move by distinct rules, runs of edge nodes are straightened in their unfolded sleeve,
+//! without crossing another curve.
 
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use serde::Serialize;
