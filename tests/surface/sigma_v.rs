@@ -564,7 +564,7 @@ fn sv_compare_two_constructions_on_the_same_mesh() {
 /// icosahedron with few samples, which must examine something and report a finite gap.
 #[test]
 fn sv_c_prime_measured_on_one_view() {
-    use pseudomanifold::construction::sigma_v::checks::{run_sigma_v_checks, SvCheckOptions};
+    use pseudomanifold::surface::sigma_v::checks::{run_sigma_v_checks, SvCheckOptions};
     let k = surface(&icosahedron());
     let o = SvCheckOptions {
         samples: 4,
@@ -867,8 +867,8 @@ fn sv_diff_surface_takes_the_sigma_v_reference() {
 /// at its ends, so within ~1e-6 of ∂W it underflows to 0 in f64), on a 60² grid, m = 3, 4, 6, 9.
 #[test]
 fn sv_d10_gamma_positive_exactly_on_the_wedge_recorded() {
-    use pseudomanifold::construction::sigma_v::wedge::WedgeConsts;
-    use pseudomanifold::construction::sigma_v::weight::{gamma_local, WeightConsts};
+    use pseudomanifold::surface::sigma_v::wedge::WedgeConsts;
+    use pseudomanifold::surface::sigma_v::weight::{gamma_local, WeightConsts};
     let mut examined = 0u64;
     for m in [3u32, 4, 6, 9] {
         let w = WedgeConsts::<f64>::new(m, 0.25, 53);
