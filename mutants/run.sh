@@ -119,11 +119,11 @@ secs=$(($(date +%s) - start))
 
 # Score = caught / (caught + missed); a timeout counts as caught (the mutant changed behaviour
 # enough to hang a test), as cargo-mutants itself reports it. 95 % Wilson interval for a sample.
-read -r score lo hi < <(awk -v c="$((caught + timeout))" -v n="$((caught + timeout + missed))" 'BEGIN {
+read -r score lo hi < <(awk -v c="$((caught + timeout))" -v n="$((caught + timeout + missed))" \
+    -f "$here/mutants/wilson.awk" -f <(echo 'BEGIN {
     if (n == 0) { print "NA NA NA"; exit }
-    p = c / n; z = 1.96; d = 1 + z*z/n
-    m = (p + z*z/(2*n)) / d; h = z * sqrt(p*(1-p)/n + z*z/(4*n*n)) / d
-    printf "%.3f %.3f %.3f\n", p, (m - h < 0 ? 0 : m - h), (m + h > 1 ? 1 : m + h) }')
+    wilson_interval(c, n)
+    printf "%.3f %.3f %.3f\n", WILSON_P, WILSON_LO, WILSON_HI }'))
 
 [[ -f "$results" ]] || printf 'date\tcommit\tmodule\tdenom\tgenerated\ttested\tcaught\tmissed\ttimeout\tunviable\tscore\tci95_lo\tci95_hi\tseconds\n' >"$results"
 printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' \

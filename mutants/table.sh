@@ -4,13 +4,12 @@
 # rows), the score after them.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-awk -F'\t' '
-function wilson(c, n, sampled,    p, z, d, m, h) {
+awk -F'\t' -f "$here/wilson.awk" -f <(cat <<'AWK'
+function wilson(c, n, sampled) {
     if (n == 0) return "—"
-    p = c / n; z = 1.96; d = 1 + z*z/n
-    if (!sampled) return sprintf("%.0f %%", 100 * p)
-    m = (p + z*z/(2*n)) / d; h = z * sqrt(p*(1-p)/n + z*z/(4*n*n)) / d
-    return sprintf("%.0f %% [%.0f %%, %.0f %%]", 100 * p, 100 * (m - h < 0 ? 0 : m - h), 100 * (m + h > 1 ? 1 : m + h))
+    if (!sampled) return sprintf("%.0f %%", 100 * c / n)
+    wilson_interval(c, n)
+    return sprintf("%.0f %% [%.0f %%, %.0f %%]", 100 * WILSON_P, 100 * WILSON_LO, 100 * WILSON_HI)
 }
 NR > 1 {
     m = $3
@@ -33,4 +32,6 @@ END {
         printf "| `%s` | %s | %s | %d | %d | %d | %d | %d | %d | %s | %s | %d min |\n",
             m, f[2], sample, f[5], f[6], f[7], f[8], f[9], f[10], wilson(caught, viable, f[4] != 1), after, int((f[14] + 59) / 60)
     }
-}' "$here/results.tsv"
+}
+AWK
+) "$here/results.tsv"
