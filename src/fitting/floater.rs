@@ -24,7 +24,7 @@ use super::overlay::Overlay;
 use faer::sparse::linalg::solvers::SpSolver;
 use faer::sparse::SparseColMat;
 use faer::Mat;
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 /// One curved triangle mapped onto its base triangle.
 #[derive(Debug, Clone)]
@@ -117,7 +117,10 @@ pub fn map_regions(
         let pieces = pieces_of[r].clone();
         // Interior vertices and their weights.
         let mut row: HashMap<u32, usize> = HashMap::new();
-        let mut w: HashMap<(usize, u32), f64> = HashMap::new();
+        // Ordered: the sums into the diagonal and the right-hand side, and the triplets' order,
+        // must not follow a hash map's per-process random order (the fit would differ in its
+        // last bits from run to run).
+        let mut w: BTreeMap<(usize, u32), f64> = BTreeMap::new();
         for &pi in &pieces {
             let v = ov.pieces[pi].v;
             for j in 0..3 {
