@@ -27,8 +27,10 @@
 //! without crossing another curve.
 
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use rustc_hash::FxHashMap;
 use serde::Serialize;
 use std::collections::{BinaryHeap, HashMap};
+use std::ops::Deref;
 
 /// A node of an embedded edge.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -61,25 +63,93 @@ impl Node {
     /// The closed triangles of S_T holding the node (empty when it is not on S_T: an edge
     /// node on a pair that is no edge, or t outside (0, 1)).
     pub fn faces(&self, k: &SimplicialSurface) -> Vec<FaceId> {
+        self.face_set(k).to_vec()
+    }
+    /// [`Node::faces`] without allocating (the routing asks it millions of times).
+    pub fn face_set<'k>(&self, k: &'k SimplicialSurface) -> NodeFaces<'k> {
         match *self {
             Node::Vertex(v) if (v as usize) < k.vertex_slots() => {
-                k.faces_around(VertexId(v)).to_vec()
+                NodeFaces::Star(k.faces_around(VertexId(v)))
             }
             Node::Edge { a, b, t } if t > 0.0 && t < 1.0 && a < b => {
                 match k.halfedge(VertexId(a), VertexId(b)) {
-                    Some(h) => vec![k.face_of(h), k.face_of(k.twin(h))],
-                    None => Vec::new(),
+                    Some(h) => NodeFaces::Pair([k.face_of(h), k.face_of(k.twin(h))]),
+                    None => NodeFaces::Empty,
                 }
             }
-            _ => Vec::new(),
+            _ => NodeFaces::Empty,
+        }
+    }
+}
+
+/// The triangles holding a node: a vertex's star (a slice of the mesh) or an edge node's two
+/// triangles, held inline.
+pub enum NodeFaces<'k> {
+    /// The triangles around a vertex of S_T.
+    Star(&'k [FaceId]),
+    /// The two triangles of an edge of S_T.
+    Pair([FaceId; 2]),
+    /// Not on S_T.
+    Empty,
+}
+
+impl Deref for NodeFaces<'_> {
+    type Target = [FaceId];
+    fn deref(&self) -> &[FaceId] {
+        match self {
+            NodeFaces::Star(s) => s,
+            NodeFaces::Pair(p) => p,
+            NodeFaces::Empty => &[],
         }
     }
 }
 
 /// The faces of S_T holding both nodes.
 pub fn common_faces(k: &SimplicialSurface, p: &Node, q: &Node) -> Vec<FaceId> {
-    let fq = q.faces(k);
-    p.faces(k).into_iter().filter(|f| fq.contains(f)).collect()
+    let fq = q.face_set(k);
+    p.face_set(k)
+        .iter()
+        .copied()
+        .filter(|f| fq.contains(f))
+        .collect()
+}
+
+/// The triangles of one step of the graph: two distinct points of a side share its (at most)
+/// two triangles, a chord lies in one; held inline.
+#[derive(Clone, Copy)]
+pub(super) struct StepFaces {
+    f: [FaceId; 2],
+    n: u8,
+}
+
+impl StepFaces {
+    fn one(f: FaceId) -> Self {
+        StepFaces { f: [f, f], n: 1 }
+    }
+    /// The common triangles of two distinct points on one side, in p's order (as
+    /// [`common_faces`]).
+    fn common(k: &SimplicialSurface, p: &Node, q: &Node) -> Self {
+        let fq = q.face_set(k);
+        let mut out = StepFaces {
+            f: [FaceId(0); 2],
+            n: 0,
+        };
+        for &f in p.face_set(k).iter().filter(|f| fq.contains(f)) {
+            // Two distinct points of one edge of S_T share at most its two triangles.
+            if (out.n as usize) < 2 {
+                out.f[out.n as usize] = f;
+                out.n += 1;
+            }
+        }
+        out
+    }
+}
+
+impl Deref for StepFaces {
+    type Target = [FaceId];
+    fn deref(&self) -> &[FaceId] {
+        &self.f[..self.n as usize]
+    }
 }
 
 /// One embedded base edge: nodes from `a` to `b` (a < b).
@@ -189,7 +259,7 @@ pub const EDGE_POINTS: u32 = 3;
 pub(super) struct Graph<'a> {
     k: &'a SimplicialSurface,
     pub(super) n: u32,
-    edge_id: HashMap<(u32, u32), u32>,
+    edge_id: FxHashMap<(u32, u32), u32>,
     edges: Vec<(u32, u32)>,
 }
 
@@ -209,16 +279,14 @@ impl<'a> Graph<'a> {
         }
     }
     /// The points of edge {u, w} from u to w, ends included.
-    fn along(&self, u: u32, w: u32) -> Vec<u32> {
+    fn along(&self, u: u32, w: u32) -> [u32; EDGE_POINTS as usize + 2] {
         let base = self.n + EDGE_POINTS * self.edge_id[&(u.min(w), u.max(w))];
-        let mut inner: Vec<u32> = (0..EDGE_POINTS).map(|j| base + j).collect();
-        if u > w {
-            inner.reverse();
-        }
-        let mut out = vec![u];
-        out.extend(inner);
-        out.push(w);
-        out
+        std::array::from_fn(|i| match i as u32 {
+            0 => u,
+            j if j == EDGE_POINTS + 1 => w,
+            j if u < w => base + j - 1,
+            j => base + EDGE_POINTS - j,
+        })
     }
     pub(super) fn node(&self, p: u32) -> Node {
         if p < self.n {
@@ -237,22 +305,23 @@ impl<'a> Graph<'a> {
         self.node(p).point(self.k).unwrap_or([f64::NAN; 3])
     }
     /// The triangles a point lies on.
-    pub(super) fn faces(&self, p: u32) -> Vec<FaceId> {
-        self.node(p).faces(self.k)
+    pub(super) fn faces(&self, p: u32) -> NodeFaces<'a> {
+        self.node(p).face_set(self.k)
     }
-    /// Steps from p: the next point and the triangles the step's segment lies on.
-    fn steps(&self, p: u32) -> Vec<(u32, Vec<FaceId>)> {
-        let mut out = Vec::new();
-        for f in self.faces(p) {
+    /// Steps from p into `out` (cleared first): the next point and the triangles the step's
+    /// segment lies on.
+    fn steps(&self, p: u32, out: &mut Vec<(u32, StepFaces)>) {
+        out.clear();
+        for &f in self.faces(p).iter() {
             let c = self.k.face(f).map(|v| v.0);
-            let sides: Vec<Vec<u32>> = (0..3).map(|i| self.along(c[i], c[(i + 1) % 3])).collect();
+            let sides: [_; 3] = std::array::from_fn(|i| self.along(c[i], c[(i + 1) % 3]));
             for (i, side) in sides.iter().enumerate() {
                 match side.iter().position(|&x| x == p) {
                     // p on this side: its neighbours along it.
                     Some(j) => {
                         for q in [j.wrapping_sub(1), j + 1] {
                             if let Some(&q) = side.get(q) {
-                                let cf = common_faces(self.k, &self.node(p), &self.node(q));
+                                let cf = StepFaces::common(self.k, &self.node(p), &self.node(q));
                                 if !out.iter().any(|(x, _)| *x == q) {
                                     out.push((q, cf));
                                 }
@@ -262,17 +331,16 @@ impl<'a> Graph<'a> {
                     // Chords to the inner points of a side p is not on.
                     None => {
                         for &q in &side[1..side.len() - 1] {
-                            out.push((q, vec![f]));
+                            out.push((q, StepFaces::one(f)));
                         }
                     }
                 }
                 // An inner point of side i: the chord to the opposite corner.
                 if p >= self.n && side.contains(&p) {
-                    out.push((c[(i + 2) % 3], vec![f]));
+                    out.push((c[(i + 2) % 3], StepFaces::one(f)));
                 }
             }
         }
-        out
     }
 }
 
@@ -285,7 +353,8 @@ pub(super) fn dijkstra(
     point: impl Fn(u32) -> Option<f64>,
     step: impl Fn(u32, u32, &[FaceId]) -> Option<f64>,
 ) -> Option<Vec<u32>> {
-    let mut d: HashMap<u32, (f64, u32)> = HashMap::new();
+    let mut d: FxHashMap<u32, (f64, u32)> = FxHashMap::default();
+    let mut steps = Vec::new();
     let mut heap = BinaryHeap::new();
     d.insert(a, (0.0, a));
     heap.push(Item(0.0, a));
@@ -304,9 +373,10 @@ pub(super) fn dijkstra(
             continue;
         }
         let pu = g.point(u);
-        for (w, fs) in g.steps(u) {
+        g.steps(u, &mut steps);
+        for &(w, fs) in &steps {
             let pc = if w == b { Some(0.0) } else { point(w) };
-            let (Some(pc), Some(sc)) = (pc, step(u, w, &fs)) else {
+            let (Some(pc), Some(sc)) = (pc, step(u, w, &fs[..])) else {
                 continue;
             };
             let nd = du + dist(pu, g.point(w)) + pc + sc;

@@ -22,6 +22,7 @@ use super::geodesic::{
     common_faces, dijkstra, dist, Curve, EmbedError, EmbedStats, Embedding, Graph,
 };
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use rustc_hash::FxHashMap;
 use std::collections::{HashMap, VecDeque};
 
 /// Times a curve may be taken up; the budget of take-ups is the number of base edges.
@@ -36,9 +37,9 @@ type Seg = (usize, [[f64; 2]; 2]);
 /// The traced curves so far.
 struct Traced {
     /// Owner (base edge index) of each closed point.
-    used: HashMap<u32, usize>,
+    used: FxHashMap<u32, usize>,
     /// Segments per triangle of S_T.
-    segs: HashMap<FaceId, Vec<Seg>>,
+    segs: FxHashMap<FaceId, Vec<Seg>>,
     /// Path and tier of each traced base edge.
     paths: Vec<Option<(usize, Vec<u32>)>>,
     /// How often each base edge was taken up.
@@ -62,12 +63,23 @@ impl Traced {
         }
         self.paths[e] = Some((tier, path));
     }
-    fn take_up(&mut self, e: usize) {
-        self.used.retain(|_, o| *o != e);
-        for l in self.segs.values_mut() {
-            l.retain(|s| s.0 != e);
+    /// Undo [`Traced::commit`] of e: only the points and triangles of e's own path are
+    /// visited (a take-up used to sweep every closed point and triangle of S_T).
+    fn take_up(&mut self, g: &Graph, k: &SimplicialSurface, e: usize) {
+        if let Some((_, path)) = self.paths[e].take() {
+            for p in &path[1..path.len() - 1] {
+                if self.used.get(p) == Some(&e) {
+                    self.used.remove(p);
+                }
+            }
+            for w in path.windows(2) {
+                for f in common_faces(k, &g.node(w[0]), &g.node(w[1])) {
+                    if let Some(l) = self.segs.get_mut(&f) {
+                        l.retain(|s| s.0 != e);
+                    }
+                }
+            }
         }
-        self.paths[e] = None;
         self.ripped[e] += 1;
     }
 }
@@ -258,8 +270,8 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
     let edges = base_edges(base);
     let diag = diagonal(base.positions());
     let mut t = Traced {
-        used: HashMap::new(),
-        segs: HashMap::new(),
+        used: FxHashMap::default(),
+        segs: FxHashMap::default(),
         paths: vec![None; edges.len()],
         ripped: vec![0; edges.len()],
         deferred: vec![false; edges.len()],
@@ -298,7 +310,7 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
         let (tier, path) = found.ok_or(EmbedError::NoPath { a, b })?;
         let blockers = ed.blockers(&t, &path);
         for &c in blockers.iter().rev() {
-            t.take_up(c);
+            t.take_up(&g, k, c);
             queue.push_front(c);
         }
         budget = budget.saturating_sub(blockers.len());
