@@ -10,7 +10,7 @@
 //! * [`tsv_diff`] compares a TSV table of eval and S′ points (`ppm diff MESH TABLE.tsv`).
 
 pub mod diff;
-pub mod diff_reference;
+pub mod reference;
 pub mod protocol;
 mod query;
 pub mod sigma_v;

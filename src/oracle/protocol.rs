@@ -17,6 +17,7 @@ use crate::construction::{GluingError, MapError, PpmGluing, P2};
 use crate::mesh::{load_surface, FaceId, LoadError, SimplicialSurface, VertexId};
 use crate::numeric::{Mp, Scalar, Trit};
 use crate::surface::jet::Jet;
+use crate::surface::smooth::SmoothSurface;
 use crate::surface::{Consts, Pps, PpsOptions, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
@@ -419,6 +420,18 @@ impl Session {
         match &mut self.sigma_v {
             None => Ok(None),
             Some(sv) => sv.pps(k).map(Some).map_err(OracleError::Refused),
+        }
+    }
+
+    /// The session's reference construction (`set_construction`; the vertex PPS by default)
+    /// as a [`SmoothSurface`], built on first use: what `ppm diff --surface` compares against.
+    pub fn reference(&mut self) -> Result<&dyn SmoothSurface, OracleError> {
+        if self.sigma_v.is_some() {
+            let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
+            let sv = self.sigma_v.as_mut().ok_or(OracleError::NoMesh)?;
+            Ok(sv.pps(k).map_err(OracleError::Refused)?)
+        } else {
+            Ok(&self.ch5()?.pps)
         }
     }
 

@@ -34,6 +34,7 @@ pub mod pps;
 pub mod profile;
 pub mod scalar_ext;
 pub mod sigma_v;
+pub mod smooth;
 mod storage;
 pub mod target;
 pub mod weights;
