@@ -3,12 +3,14 @@
 use super::load::surface as load;
 use super::progress::Line;
 use crate::mesh::{FaceId, SimplicialSurface};
-use crate::surface::output::{edge_use_counts, write_mesh_with_attributes, Attributes, SampledMesh};
+use crate::surface::output::{
+    edge_use_counts, write_mesh_with_attributes, Attributes, SampledMesh,
+};
 use crate::surface::pps::{Pps, PpsOptions};
-use crate::surface::smooth::SmoothSurface;
-use crate::surface::Construction;
 use crate::surface::profile::Profile;
+use crate::surface::smooth::SmoothSurface;
 use crate::surface::target::{SPrime, SurfaceKind};
+use crate::surface::Construction;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -94,9 +96,8 @@ pub(crate) fn run_sample(a: &SampleArgs) -> ExitCode {
     };
     let built: Result<Box<dyn SmoothSurface>, ExitCode> = match a.construction {
         Construction::Vertex => build_vertex(&k, a, t0).map(|p| Box::new(p) as _),
-        Construction::SigmaV => {
-            super::sigma_v::build(&k, a.kappa, a.patch_degree, a.quiet, t0).map(|p| Box::new(p) as _)
-        }
+        Construction::SigmaV => super::sigma_v::build(&k, a.kappa, a.patch_degree, a.quiet, t0)
+            .map(|p| Box::new(p) as _),
     };
     let surface = match built {
         Ok(s) => s,

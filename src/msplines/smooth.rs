@@ -50,7 +50,9 @@ impl SmoothSurface for SplineSurface<'_> {
 
     fn eval_f64(&self, f: FaceId, bary: [f64; 3]) -> Result<[f64; 3], SmoothError> {
         if f.idx() >= self.k.num_faces() {
-            return Err(SmoothError::Vertex(crate::surface::SurfaceError::NoSuchFace(f)));
+            return Err(SmoothError::Vertex(
+                crate::surface::SurfaceError::NoSuchFace(f),
+            ));
         }
         let p = MeshPoint { face: f, bary };
         self.spline

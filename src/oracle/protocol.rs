@@ -407,20 +407,8 @@ impl Session {
 
     /// The parametric pseudo-surface of the loaded mesh (Chapter 5), built on first use with
     /// the session's profile and S′ = PN triangles (Sec. 5.1).
-    pub fn pps(&mut self) -> Result<&Pps, OracleError> {
+    pub(crate) fn pps(&mut self) -> Result<&Pps, OracleError> {
         Ok(&self.ch5()?.pps)
-    }
-
-    /// The (σ, v)-indexed PPS of the loaded mesh when the session's construction is `sigma-v`
-    /// (`None` for the vertex construction), built on first use.
-    pub fn sigma_v_pps(
-        &mut self,
-    ) -> Result<Option<&crate::surface::sigma_v::SigmaVPps>, OracleError> {
-        let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
-        match &mut self.sigma_v {
-            None => Ok(None),
-            Some(sv) => sv.pps(k).map(Some).map_err(OracleError::Refused),
-        }
     }
 
     /// The session's reference construction (`set_construction`; the vertex PPS by default)

@@ -71,10 +71,7 @@ pub use crate::surface::output::{SamplePattern, SamplePoint};
 
 /// The Sec. 6.2 sampling pattern at `level` (the vertex order and triangles of
 /// [`crate::surface::output::sample_surface`], which evaluates this same pattern).
-pub fn sample_points(
-    r: &dyn SmoothSurface,
-    level: u32,
-) -> Result<SamplePattern, OracleError> {
+pub fn sample_points(r: &dyn SmoothSurface, level: u32) -> Result<SamplePattern, OracleError> {
     if level > MAX_LEVEL {
         return Err(OracleError::Malformed(format!(
             "level {level} > {MAX_LEVEL}"

@@ -67,10 +67,6 @@ impl SmoothSurface for SigmaVPps {
         ids: Vec<Idx>,
     ) -> Result<GluingView<'a>, SmoothError> {
         let ids = ids.into_iter().map(CornerId).collect();
-        Ok(Box::new(SigmaVView::new(
-            &self.gluing,
-            ids,
-            Version::Fixed,
-        )))
+        Ok(Box::new(SigmaVView::new(&self.gluing, ids, Version::Fixed)))
     }
 }

@@ -52,7 +52,9 @@ fn the_vertex_pps_through_the_trait() {
         pps.eval_f64(f, b).ok()
     );
     agrees(&pps, &k);
-    let other = validate(&generate::octahedron()).surface.expect("octahedron");
+    let other = validate(&generate::octahedron())
+        .surface
+        .expect("octahedron");
     assert!(matches!(
         pps.gluing_view(&other, vec![0]),
         Err(SmoothError::Unsupported { .. })
@@ -80,7 +82,11 @@ fn the_manifold_spline_through_the_trait() {
     let f: &dyn SmoothSurface = &s;
     let p = f.eval_f64(FaceId(3), [0.2, 0.3, 0.5]).expect("eval");
     assert!(p.iter().all(|x| x.is_finite()));
-    assert!(f.eval_bounded(FaceId(3), [0.2, 0.3, 0.5]).expect("eval").1.is_none());
+    assert!(f
+        .eval_bounded(FaceId(3), [0.2, 0.3, 0.5])
+        .expect("eval")
+        .1
+        .is_none());
     let m = f.sample(1, Attributes::Positions, None).expect("sample");
     assert_eq!(m.faces.len(), 4 * k.num_faces());
     assert!(m.normals.is_empty());

@@ -73,7 +73,8 @@ impl SmoothSurface for Pps {
         ids: Vec<Idx>,
     ) -> Result<GluingView<'a>, SmoothError> {
         let same = k.num_faces() == self.num_faces()
-            && k.faces().all(|f| self.face(f).is_ok_and(|c| c == k.face(f)));
+            && k.faces()
+                .all(|f| self.face(f).is_ok_and(|c| c == k.face(f)));
         if !same {
             return Err(SmoothError::Unsupported {
                 surface: "the vertex-indexed PPS",
