@@ -405,14 +405,10 @@ impl Session {
         self.profile
     }
 
-    /// The parametric pseudo-surface of the loaded mesh (Chapter 5), built on first use with
-    /// the session's profile and S′ = PN triangles (Sec. 5.1).
-    pub(crate) fn pps(&mut self) -> Result<&Pps, OracleError> {
-        Ok(&self.ch5()?.pps)
-    }
-
-    /// The session's reference construction (`set_construction`; the vertex PPS by default)
-    /// as a [`SmoothSurface`], built on first use: what `ppm diff --surface` compares against.
+    /// The session's reference construction as a [`SmoothSurface`], built on first use: the
+    /// vertex PPS (Chapter 5) with the session's profile and S′ (Sec. 5.1) by default, the
+    /// (σ, v) PPS after `set_construction` `"sigma-v"`. What `ppm diff --surface` compares
+    /// against.
     pub fn reference(&mut self) -> Result<&dyn SmoothSurface, OracleError> {
         if self.sigma_v.is_some() {
             let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
