@@ -12,7 +12,7 @@
 pub mod diff;
 pub mod protocol;
 mod query;
-pub mod reference;
+mod reference;
 pub(crate) mod sigma_v;
 pub mod surface_diff;
 pub mod tsv_diff;
