@@ -453,29 +453,24 @@ where
             construction,
             kappa,
             patch_degree,
-        } => match construction {
-            _ if crate::fitting::format::is_fit_file(&file) => {
+        } => {
+            if crate::fitting::format::is_fit_file(&file) {
                 fit::sample_fit(&file, level, &output, quiet)
+            } else {
+                sample::run_sample(&sample::SampleArgs {
+                    file: &file,
+                    level,
+                    out: &output,
+                    profile: &profile,
+                    surface: &surface,
+                    attributes: &attributes,
+                    quiet,
+                    construction,
+                    kappa,
+                    patch_degree,
+                })
             }
-            Construction::Vertex => sample::run_sample(
-                &file,
-                level,
-                &output,
-                &profile,
-                &surface,
-                &attributes,
-                quiet,
-            ),
-            Construction::SigmaV => sigma_v::run_sample(
-                &file,
-                level,
-                &output,
-                kappa,
-                patch_degree,
-                &attributes,
-                quiet,
-            ),
-        },
+        }
         Command::Msplines(c) => msplines::run_command(c),
         Command::Eval {
             file,

@@ -5,9 +5,11 @@
 
 use crate::gluing::sampled::SampleConfig;
 use crate::msplines::pipeline::{spline, spline_checks};
-use crate::msplines::spline_sample::sample as sample_spline;
+use crate::msplines::smooth::SplineSurface;
 use crate::msplines::{run, Options};
 use crate::report::render_text;
+use crate::surface::output::Attributes;
+use crate::surface::smooth::SmoothSurface;
 use clap::{Args, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -98,7 +100,12 @@ fn sample(a: &MsSampleArgs) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    match sample_spline(&k, &at, &sp, a.level) {
+    let f = SplineSurface {
+        k: &k,
+        atlas: &at,
+        spline: &sp,
+    };
+    match f.sample(a.level, Attributes::Positions, None) {
         Ok(m) => super::sample::write_sampled("ppm msplines sample", &a.out, &m, a.quiet, t0),
         Err(e) => {
             eprintln!("error: {}: {e}", a.file.display());

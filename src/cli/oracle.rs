@@ -278,19 +278,11 @@ pub(crate) fn run_diff_surface(mesh: &Path, surface: &Path, a: &SurfaceArgs) -> 
         bits: a.bits,
         ..SurfaceDiffOptions::default()
     };
-    let r = if sigma_v {
-        match s.sigma_v_pps() {
-            Ok(Some(p)) => diff_surface(p, &other.positions, Some(&other.faces), &opts),
-            Ok(None) => return fail("no (σ, v) surface".into()),
-            Err(e) => return fail(e.to_string()),
-        }
-    } else {
-        match s.pps() {
-            Ok(p) => diff_surface(p, &other.positions, Some(&other.faces), &opts),
-            Err(e) => return fail(e.to_string()),
-        }
+    let reference = match s.reference() {
+        Ok(p) => p,
+        Err(e) => return fail(e.to_string()),
     };
-    let r = match r {
+    let r = match diff_surface(reference, &other.positions, Some(&other.faces), &opts) {
         Ok(r) => r,
         Err(e) => return fail(e.to_string()),
     };

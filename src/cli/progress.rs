@@ -2,6 +2,7 @@
 //! terminal, nothing when stderr is a file or a pipe (a log would fill with one long line).
 
 use std::io::IsTerminal;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// A progress line `"{label}: done/total {unit} (p%)"`, shown only when stderr is a terminal
 /// and `wanted`. Call [`Line::finish`] after the work to end the line.
@@ -9,6 +10,9 @@ pub(super) struct Line {
     label: &'static str,
     unit: &'static str,
     shown: bool,
+    /// Whether the hook was called (a construction that reports no progress leaves no line
+    /// to end).
+    updated: AtomicBool,
 }
 
 impl Line {
@@ -18,12 +22,14 @@ impl Line {
             label,
             unit,
             shown: wanted && std::io::stderr().is_terminal(),
+            updated: AtomicBool::new(false),
         }
     }
 
     /// The hook to pass to the library (`None` when hidden).
     pub(crate) fn hook(&self) -> Option<impl Fn(usize, usize) + Sync + '_> {
         self.shown.then_some(move |d: usize, total: usize| {
+            self.updated.store(true, Ordering::Relaxed);
             eprint!(
                 "\r{}: {d}/{total} {} ({:.0}%)",
                 self.label,
@@ -33,9 +39,9 @@ impl Line {
         })
     }
 
-    /// End the line (a newline after the last update, when shown).
+    /// End the line (a newline after the last update, when one was shown).
     pub fn finish(&self) {
-        if self.shown {
+        if self.updated.load(Ordering::Relaxed) {
             eprintln!();
         }
     }

@@ -4,11 +4,13 @@ use super::load::surface as load;
 use super::progress::Line;
 use crate::mesh::{FaceId, SimplicialSurface};
 use crate::surface::output::{
-    edge_use_counts, sample_surface_with, write_mesh_with_attributes, Attributes, SampledMesh,
+    edge_use_counts, write_mesh_with_attributes, Attributes, SampledMesh,
 };
 use crate::surface::pps::{Pps, PpsOptions};
 use crate::surface::profile::Profile;
+use crate::surface::smooth::SmoothSurface;
 use crate::surface::target::{SPrime, SurfaceKind};
+use crate::surface::Construction;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
@@ -52,32 +54,74 @@ fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, Exi
     })
 }
 
+/// The options of `ppm sample` (see `crate::cli`).
+pub(crate) struct SampleArgs<'a> {
+    /// The mesh K.
+    pub file: &'a Path,
+    /// Subdivision level (Sec. 6.2).
+    pub level: u32,
+    /// Output mesh (.obj, .off or .ply).
+    pub out: &'a Path,
+    /// Chapter 5 profile of the vertex construction.
+    pub profile: &'a str,
+    /// S′ of the vertex construction: `pn` | `loop`.
+    pub surface: &'a str,
+    /// `positions` | `normals` | `curvature`.
+    pub attributes: &'a str,
+    /// No summary lines.
+    pub quiet: bool,
+    /// Which PPS.
+    pub construction: Construction,
+    /// κ of the (σ, v) construction.
+    pub kappa: f64,
+    /// Patch degree of the (σ, v) construction.
+    pub patch_degree: usize,
+}
+
 /// `ppm sample FILE --level N -o OUT`: sample M by midpoint subdivision through eval (Sec. 6.2)
-/// and write it with normals and curvatures.
-pub fn run_sample(
-    file: &Path,
-    level: u32,
-    out: &Path,
-    profile: &str,
-    surface: &str,
-    attributes: &str,
-    quiet: bool,
-) -> ExitCode {
-    let Some(attrs) = Attributes::parse(attributes) else {
-        eprintln!("error: unknown --attributes {attributes:?} (positions | normals | curvature)");
+/// and write it with normals and curvatures. The construction is chosen once, here; the
+/// sampling and the writing go through [`SmoothSurface`].
+pub(crate) fn run_sample(a: &SampleArgs) -> ExitCode {
+    let Some(attrs) = Attributes::parse(a.attributes) else {
+        eprintln!(
+            "error: unknown --attributes {:?} (positions | normals | curvature)",
+            a.attributes
+        );
         return ExitCode::from(2);
     };
     let t0 = Instant::now();
-    let k = match load(file) {
+    let k = match load(a.file) {
         Ok(k) => k,
         Err(c) => return c,
     };
-    let pps = match build(&k, profile, surface) {
-        Ok(p) => p,
+    let built: Result<Box<dyn SmoothSurface>, ExitCode> = match a.construction {
+        Construction::Vertex => build_vertex(&k, a, t0).map(|p| Box::new(p) as _),
+        Construction::SigmaV => super::sigma_v::build(&k, a.kappa, a.patch_degree, a.quiet, t0)
+            .map(|p| Box::new(p) as _),
+    };
+    let surface = match built {
+        Ok(s) => s,
         Err(c) => return c,
     };
+    let line = Line::new("ppm sample", "points", !a.quiet);
+    let hook = line.hook();
+    let sampled = surface.sample(a.level, attrs, hook.as_ref().map(|h| h as _));
+    line.finish();
+    let m = match sampled {
+        Ok(m) => m,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::from(1);
+        }
+    };
+    write_sampled("ppm sample", a.out, &m, a.quiet, t0)
+}
+
+/// The vertex PPS of `ppm sample`, with its summary (fit per degree, Sec. 5.2).
+fn build_vertex(k: &SimplicialSurface, a: &SampleArgs, t0: Instant) -> Result<Pps, ExitCode> {
+    let pps = build(k, a.profile, a.surface)?;
     let t_build = t0.elapsed().as_secs_f64();
-    if !quiet {
+    if !a.quiet {
         eprintln!(
             "ppm sample: {} vertices, {} faces; PPS ({}, S′ = {}) built in {t_build:.2} s",
             k.num_vertices(),
@@ -92,18 +136,7 @@ pub fn run_sample(
             );
         }
     }
-    let line = Line::new("ppm sample", "points", !quiet);
-    let hook = line.hook();
-    let sampled = sample_surface_with(&pps, level, attrs, hook.as_ref().map(|h| h as _));
-    line.finish();
-    let m = match sampled {
-        Ok(m) => m,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(1);
-        }
-    };
-    write_sampled("ppm sample", out, &m, quiet, t0)
+    Ok(pps)
 }
 
 /// Writes a sampled surface (atomically, see `write_mesh_with_attributes`) and reports its

@@ -1,9 +1,10 @@
-//! `ppm check --spec --construction sigma-v` and `ppm sample --construction sigma-v`: the
-//! tutorial's (σ, v)-indexed construction (seed 002, Parts IV–V; SPEC rows `SV-…`).
+//! `ppm check --spec --construction sigma-v`, and the surface of `ppm sample --construction
+//! sigma-v`: the tutorial's (σ, v)-indexed construction (seed 002, Parts IV–V; SPEC rows
+//! `SV-…`).
 
 use super::load::surface as load;
+use crate::mesh::SimplicialSurface;
 use crate::report::render_text;
-use crate::surface::output::Attributes;
 use crate::surface::sigma_v::checks::{run_sigma_v_checks, sv_erratum, SvCheckOptions};
 use crate::surface::sigma_v::SigmaVPps;
 use crate::surface::PnTriangles;
@@ -70,31 +71,21 @@ pub fn run_check(file: &Path, json: bool, o: &SvCheckOptions) -> ExitCode {
     }
 }
 
-/// `ppm sample --construction sigma-v FILE --level N -o OUT`.
-pub fn run_sample(
-    file: &Path,
-    level: u32,
-    out: &Path,
+/// The (σ, v) PPS of `ppm sample --construction sigma-v` (S′ = PN triangles), with its
+/// summary (fit per degree, SPEC `SV-D11`).
+pub(crate) fn build(
+    k: &SimplicialSurface,
     kappa: f64,
     degree: usize,
-    attributes: &str,
     quiet: bool,
-) -> ExitCode {
-    let Some(attrs) = Attributes::parse(attributes) else {
-        eprintln!("error: unknown --attributes {attributes:?} (positions | normals | curvature)");
-        return ExitCode::from(2);
-    };
-    let t0 = Instant::now();
-    let k = match load(file) {
-        Ok(k) => k,
-        Err(c) => return c,
-    };
-    let pn = PnTriangles::new(&k);
-    let pps = match SigmaVPps::build(&k, &pn, kappa, degree) {
+    t0: Instant,
+) -> Result<SigmaVPps, ExitCode> {
+    let pn = PnTriangles::new(k);
+    let pps = match SigmaVPps::build(k, &pn, kappa, degree) {
         Ok(p) => p,
         Err(e) => {
             eprintln!("error: {e}");
-            return ExitCode::from(2);
+            return Err(ExitCode::from(2));
         }
     };
     if !quiet {
@@ -111,12 +102,5 @@ pub fn run_sample(
             );
         }
     }
-    let m = match pps.sample_surface_with(level, attrs) {
-        Ok(m) => m,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(1);
-        }
-    };
-    super::sample::write_sampled("ppm sample", out, &m, quiet, t0)
+    Ok(pps)
 }

@@ -72,6 +72,52 @@ pub trait GluingData<const N: usize> {
     }
 }
 
+/// Boxed gluing data (a construction's view chosen at run time, as
+/// `surface::smooth::SmoothSurface::gluing_view` returns it) are gluing data: every method
+/// forwards, so the sampled checkers take the box as they take the view.
+impl<G: GluingData<N> + ?Sized, const N: usize> GluingData<N> for Box<G> {
+    type S = G::S;
+    fn indices(&self) -> Vec<Idx> {
+        (**self).indices()
+    }
+    fn in_p_domain(&self, i: Idx, p: &Point<Self::S, N>) -> bool {
+        (**self).in_p_domain(i, p)
+    }
+    fn in_gluing_domain(&self, i: Idx, j: Idx, p: &Point<Self::S, N>) -> bool {
+        (**self).in_gluing_domain(i, j, p)
+    }
+    fn phi(&self, j: Idx, i: Idx, p: &Point<Self::S, N>) -> Option<Point<Self::S, N>> {
+        (**self).phi(j, i, p)
+    }
+    fn sample_p_domain(&self, i: Idx, rng: &mut ChaCha8Rng, n: usize) -> Vec<Point<Self::S, N>> {
+        (**self).sample_p_domain(i, rng, n)
+    }
+    fn sample_gluing_domain(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<Self::S, N>> {
+        (**self).sample_gluing_domain(i, j, rng, n)
+    }
+    fn gluing_boundary_points(
+        &self,
+        i: Idx,
+        j: Idx,
+        rng: &mut ChaCha8Rng,
+        n: usize,
+    ) -> Vec<Point<Self::S, N>> {
+        (**self).gluing_boundary_points(i, j, rng, n)
+    }
+    fn scale(&self) -> f64 {
+        (**self).scale()
+    }
+    fn amplification(&self) -> f64 {
+        (**self).amplification()
+    }
+}
+
 /// Euclidean distance, in f64.
 pub fn dist<S: num_traits::Float, const N: usize>(a: &Point<S, N>, b: &Point<S, N>) -> f64 {
     a.iter()

@@ -26,6 +26,7 @@ pub mod pipeline;
 pub mod polar;
 pub mod polar_checks;
 pub mod poly2;
+pub mod smooth;
 pub mod spline_sample;
 pub mod view;
 pub mod zeros;

@@ -10,10 +10,10 @@
 //! * [`tsv_diff`] compares a TSV table of eval and S′ points (`ppm diff MESH TABLE.tsv`).
 
 pub mod diff;
-pub mod diff_reference;
 pub mod protocol;
 mod query;
-pub mod sigma_v;
+mod reference;
+pub(crate) mod sigma_v;
 pub mod surface_diff;
 pub mod tsv_diff;
 

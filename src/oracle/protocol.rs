@@ -17,6 +17,7 @@ use crate::construction::{GluingError, MapError, PpmGluing, P2};
 use crate::mesh::{load_surface, FaceId, LoadError, SimplicialSurface, VertexId};
 use crate::numeric::{Mp, Scalar, Trit};
 use crate::surface::jet::Jet;
+use crate::surface::smooth::SmoothSurface;
 use crate::surface::{Consts, Pps, PpsOptions, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
@@ -404,21 +405,17 @@ impl Session {
         self.profile
     }
 
-    /// The parametric pseudo-surface of the loaded mesh (Chapter 5), built on first use with
-    /// the session's profile and S′ = PN triangles (Sec. 5.1).
-    pub fn pps(&mut self) -> Result<&Pps, OracleError> {
-        Ok(&self.ch5()?.pps)
-    }
-
-    /// The (σ, v)-indexed PPS of the loaded mesh when the session's construction is `sigma-v`
-    /// (`None` for the vertex construction), built on first use.
-    pub fn sigma_v_pps(
-        &mut self,
-    ) -> Result<Option<&crate::surface::sigma_v::SigmaVPps>, OracleError> {
-        let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
-        match &mut self.sigma_v {
-            None => Ok(None),
-            Some(sv) => sv.pps(k).map(Some).map_err(OracleError::Refused),
+    /// The session's reference construction as a [`SmoothSurface`], built on first use: the
+    /// vertex PPS (Chapter 5) with the session's profile and S′ (Sec. 5.1) by default, the
+    /// (σ, v) PPS after `set_construction` `"sigma-v"`. What `ppm diff --surface` compares
+    /// against.
+    pub fn reference(&mut self) -> Result<&dyn SmoothSurface, OracleError> {
+        if self.sigma_v.is_some() {
+            let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
+            let sv = self.sigma_v.as_mut().ok_or(OracleError::NoMesh)?;
+            Ok(sv.pps(k).map_err(OracleError::Refused)?)
+        } else {
+            Ok(&self.ch5()?.pps)
         }
     }
 

@@ -18,18 +18,18 @@
 //! others, are re-evaluated in MPFR (spot checks): each then shows its distance to the MPFR
 //! value and the f64 reference's own error |f64 − MPFR|.
 //!
-//! The reference is any [`DiffReference`]: the report's vertex-indexed PPS (Ch. 4–5), whose
+//! The reference is any [`SmoothSurface`]: the report's vertex-indexed PPS (Ch. 4–5), whose
 //! f64 eval carries an error bound (SPEC `R-diff-f64-bound`, the default tolerance), or the
 //! tutorial's (σ, v)-indexed PPS (SPEC `SV-D13`), which has no such analysis: it needs an
 //! explicit tolerance, and its spot checks report its own f64 error without judging it.
 
 use super::diff::Stats;
-pub use super::diff_reference::DiffReference;
 use super::mp_distance;
 use super::protocol::OracleError;
 use crate::mesh::FaceId;
 use crate::report::harness::dev_max;
 use crate::surface::eval_bound::BoundedPoint;
+use crate::surface::smooth::SmoothSurface;
 use rayon::prelude::*;
 use rstar::primitives::GeomWithData;
 use rstar::RTree;
@@ -71,10 +71,7 @@ pub use crate::surface::output::{SamplePattern, SamplePoint};
 
 /// The Sec. 6.2 sampling pattern at `level` (the vertex order and triangles of
 /// [`crate::surface::output::sample_surface`], which evaluates this same pattern).
-pub fn sample_points<R: DiffReference + ?Sized>(
-    r: &R,
-    level: u32,
-) -> Result<SamplePattern, OracleError> {
+pub fn sample_points(r: &dyn SmoothSurface, level: u32) -> Result<SamplePattern, OracleError> {
     if level > MAX_LEVEL {
         return Err(OracleError::Malformed(format!(
             "level {level} > {MAX_LEVEL}"
@@ -94,7 +91,7 @@ pub fn sample_count(v: u64, e: u64, f: u64, level: u32) -> u64 {
 }
 
 /// The level whose sampling has exactly `count` vertices, if any.
-pub(crate) fn infer_level<R: DiffReference + ?Sized>(r: &R, count: usize) -> Option<u32> {
+pub(crate) fn infer_level(r: &dyn SmoothSurface, count: usize) -> Option<u32> {
     let faces = r.face_corners().ok()?;
     let nf = faces.len() as u64;
     let mut edges = HashSet::new();
@@ -184,7 +181,7 @@ pub struct SurfaceItem {
 /// The report of [`diff_surface`].
 #[derive(Debug, Clone, Serialize)]
 pub struct SurfaceDiffReport {
-    /// The reference construction ([`DiffReference::name`]).
+    /// The reference construction ([`SmoothSurface::name`]).
     pub reference: String,
     /// Subdivision level of the reference sampling.
     pub level: u32,
@@ -282,8 +279,8 @@ fn tree(points: &[[f64; 3]]) -> Tree {
 
 /// Compare `theirs` (the other implementation's vertex positions, in its file order, and its
 /// triangles if known) against the reference sampling of `pps`.
-pub fn diff_surface<R: DiffReference + ?Sized>(
-    pps: &R,
+pub fn diff_surface(
+    pps: &dyn SmoothSurface,
     theirs: &[[f64; 3]],
     their_faces: Option<&[[u32; 3]]>,
     opts: &SurfaceDiffOptions,
@@ -469,13 +466,13 @@ pub fn diff_surface<R: DiffReference + ?Sized>(
         chosen.sort_unstable();
         chosen.dedup();
     }
-    let cm = pps.mp_consts(opts.bits);
+    let eval_mp = pps.mp_eval(opts.bits)?;
     let checks: Vec<(usize, Result<MpCheck, OracleError>)> = chosen
         .par_iter()
         .map(|&k| {
             let it = &items[k];
-            let r = pps
-                .eval_mp(&cm, FaceId(it.face), it.bary, opts.bits)
+            let r = eval_mp(FaceId(it.face), it.bary)
+                .map_err(OracleError::from)
                 .map(|e| MpCheck {
                     deviation: if it.theirs.iter().all(|c| c.is_finite()) {
                         mp_distance(&it.theirs, &e)

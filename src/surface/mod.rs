@@ -8,7 +8,9 @@
 //! * [`eval`] — Sec. 6.1.4: eval(σ, λ, μ, ν).
 //! * [`jet`] — order-3 derivative jets (normals, curvature, smoothness checks).
 //! * [`geometry`] — normals and curvatures from the jets of θ.
-//! * [`output`] — Sec. 6.2: sampling by midpoint subdivision and writing meshes.
+//! * [`output`] — Sec. 6.2: sampling by midpoint subdivision (written by `mesh::io`'s writers).
+//! * [`smooth`] — [`smooth::SmoothSurface`], the one interface of the vertex PPS, the (σ, v)
+//!   PPS and the manifold spline (eval, jets, sampling, the Def. 3.4.1 view).
 //! * [`checks`] — condition (C) and the other Chapter 5 / Sec. 6.1.4 checks.
 //!
 //! See `SPEC.md` for statement-by-statement verdicts.
@@ -18,7 +20,6 @@ pub mod authors_fit;
 pub mod bezier;
 pub mod checks;
 pub mod consts;
-mod decimal;
 pub mod error;
 pub mod eval;
 pub mod eval_bound;
@@ -34,6 +35,7 @@ pub mod pps;
 pub mod profile;
 pub mod scalar_ext;
 pub mod sigma_v;
+pub mod smooth;
 mod storage;
 pub mod target;
 pub mod weights;

@@ -1,6 +1,6 @@
 //! Sec. 6.2: sampling M "in a triangle midpoint subdivision manner" through eval, and writing
-//! the result with per-vertex normals and curvatures (OBJ, OFF, PLY; curvature also as vertex
-//! colours in PLY).
+//! the result with per-vertex normals and curvatures by `mesh::io`'s writers (OBJ, OFF, PLY;
+//! curvature also as vertex colours in PLY).
 //!
 //! Level N subdivides every triangle of K N times at edge midpoints, i.e. samples the
 //! barycentric grid (i, j, k)/2^N. Points on an edge of K, and the corners, are shared by the
@@ -9,15 +9,14 @@
 //! condition (C) (the point does not depend on the triangle used, up to rounding).
 
 use super::consts::Consts;
-use super::decimal::{push_f64, push_f64x3, push_uint};
 use super::fit_linear::WordHash;
 use super::jet::{Jet1, Jet2};
 use super::pps::{Pps, SurfaceError};
-use crate::mesh::FaceId;
+use crate::mesh::io::{output_format, write_mesh_file, MeshOut, PlyIndex};
+use crate::mesh::{FaceId, MeshFormat};
 use rayon::prelude::*;
 use std::collections::HashMap;
 use std::hash::BuildHasherDefault;
-use std::io::Write;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -327,244 +326,29 @@ pub fn edge_use_counts(faces: &[[u32; 3]]) -> (usize, usize) {
     (two, edges - two)
 }
 
-/// Diverging colour map for a curvature value, clipped at ±`range`: blue (negative), white,
-/// red (positive).
-pub(crate) fn curvature_colour(x: f64, range: f64) -> [u8; 3] {
-    if !x.is_finite() || range <= 0.0 {
-        return [128, 128, 128];
-    }
-    let t = (x / range).clamp(-1.0, 1.0);
-    let a = (255.0 * (1.0 - t.abs())) as u8;
-    if t >= 0.0 {
-        [255, a, a]
-    } else {
-        [a, a, 255]
-    }
-}
-
-/// 98th percentile of |x| (the colour range).
-pub(crate) fn robust_range(xs: &[f64]) -> f64 {
-    let mut v: Vec<f64> = xs
-        .iter()
-        .filter(|x| x.is_finite())
-        .map(|x| x.abs())
-        .collect();
-    if v.is_empty() {
-        return 1.0;
-    }
-    v.sort_by(|a, b| a.total_cmp(b));
-    v[((v.len() - 1) as f64 * 0.98) as usize].max(f64::MIN_POSITIVE)
-}
-
-/// Write the sampled mesh: `.obj` (v, vn, f a//a), `.off` (NOFF: positions and normals),
-/// `.ply` (ascii: x y z nx ny nz red green blue gaussian_curvature mean_curvature; colours
-/// from the mean curvature, clipped at its 98th percentile). Attributes that were not
-/// computed ([`Attributes`]) are left out. Any other extension is refused (`InvalidInput`).
-/// The file is written next to `path` under a temporary name and renamed into place, so a
-/// failed write never leaves a truncated `path`.
+/// Write the sampled mesh by `mesh::io`'s writer of the format of `path`'s extension: `.obj`
+/// (# title, v, vn, f a//a), `.off` (NOFF: positions and normals), `.ply` (ascii: x y z nx ny
+/// nz red green blue gaussian_curvature mean_curvature; colours from the mean curvature,
+/// clipped at its 98th percentile). Attributes that were not computed ([`Attributes`]) are
+/// left out. Any other extension is refused (`InvalidInput`). The file is written next to
+/// `path` under a temporary name and renamed into place, so a failed write never leaves a
+/// truncated `path`.
 pub fn write_mesh_with_attributes(path: &Path, m: &SampledMesh) -> std::io::Result<()> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    if !matches!(ext.as_str(), "obj" | "off" | "ply") {
-        return Err(std::io::Error::new(
-            std::io::ErrorKind::InvalidInput,
-            format!(
-                "unknown output format {:?} for {}: use .obj, .off or .ply",
-                ext,
-                path.display()
-            ),
-        ));
-    }
-    let mut tmp_name = path.file_name().unwrap_or_default().to_os_string();
-    tmp_name.push(format!(".{}.partial", std::process::id()));
-    let tmp = path.with_file_name(tmp_name);
-    let written = std::fs::File::create(&tmp)
-        .and_then(|file| write_body(std::io::BufWriter::new(file), &ext, m))
-        .and_then(|()| std::fs::rename(&tmp, path));
-    if written.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    written
-}
-
-/// Writes `n` lines, line i formatted by `line(i, buf)`, in parallel batches written in order:
-/// the same bytes as a sequential loop. Formatting floats was most of `ppm sample`'s serial
-/// time (a level-2 koala writes 800k vertex and 1.6M face lines); the batches bound memory.
-fn write_lines(
-    w: &mut impl Write,
-    n: usize,
-    line: impl Fn(usize, &mut Vec<u8>) -> std::io::Result<()> + Sync,
-) -> std::io::Result<()> {
-    const CHUNK: usize = 4096;
-    const BATCH: usize = 64 * CHUNK;
-    for start in (0..n).step_by(BATCH) {
-        let end = (start + BATCH).min(n);
-        let bufs = (start..end)
-            .step_by(CHUNK)
-            .collect::<Vec<_>>()
-            .into_par_iter()
-            .map(|s| {
-                let mut b = Vec::with_capacity(CHUNK * 48);
-                for i in s..(s + CHUNK).min(end) {
-                    line(i, &mut b)?;
-                }
-                Ok(b)
-            })
-            .collect::<std::io::Result<Vec<Vec<u8>>>>()?;
-        for b in bufs {
-            w.write_all(&b)?;
-        }
-    }
-    Ok(())
-}
-
-/// "3 a b c\n", as `writeln!(b, "3 {} {} {}", ..)` prints it (OFF and PLY faces).
-fn face_line(b: &mut Vec<u8>, f: [u32; 3]) -> std::io::Result<()> {
-    b.push(b'3');
-    for x in f {
-        b.push(b' ');
-        push_uint(b, x.into());
-    }
-    b.push(b'\n');
-    Ok(())
-}
-
-fn write_body(
-    mut w: std::io::BufWriter<std::fs::File>,
-    ext: &str,
-    m: &SampledMesh,
-) -> std::io::Result<()> {
-    let (ps, ns, fs) = (&m.positions, &m.normals, &m.faces);
-    match ext {
-        "obj" => {
-            let title = if m.title.is_empty() {
-                "ppm sample: C-infinity PPS surface (Siqueira-Xu-Gallier)"
-            } else {
-                m.title
-            };
-            writeln!(w, "# {title}")?;
-            write_lines(&mut w, ps.len(), |i, b| {
-                b.extend_from_slice(b"v ");
-                push_f64x3(b, ps[i]);
-                b.push(b'\n');
-                Ok(())
-            })?;
-            write_lines(&mut w, ns.len(), |i, b| {
-                b.extend_from_slice(b"vn ");
-                push_f64x3(b, ns[i]);
-                b.push(b'\n');
-                Ok(())
-            })?;
-            write_lines(&mut w, fs.len(), |i, b| {
-                b.push(b'f');
-                for x in fs[i].map(|x| u64::from(x) + 1) {
-                    b.push(b' ');
-                    push_uint(b, x);
-                    if !ns.is_empty() {
-                        b.extend_from_slice(b"//");
-                        push_uint(b, x);
-                    }
-                }
-                b.push(b'\n');
-                Ok(())
-            })?;
-        }
-        "off" => {
-            let with_normals = !ns.is_empty();
-            writeln!(w, "{}", if with_normals { "NOFF" } else { "OFF" })?;
-            writeln!(w, "{} {} 0", ps.len(), fs.len())?;
-            write_lines(&mut w, ps.len(), |i, b| {
-                push_f64x3(b, ps[i]);
-                if let Some(n) = ns.get(i) {
-                    b.push(b' ');
-                    push_f64x3(b, *n);
-                }
-                b.push(b'\n');
-                Ok(())
-            })?;
-            write_lines(&mut w, fs.len(), |i, b| face_line(b, fs[i]))?;
-        }
-        _ => {
-            let normals = ns.len() == ps.len() && !ps.is_empty();
-            let curvature = normals && m.mean.len() == ps.len();
-            let range = robust_range(&m.mean);
-            writeln!(w, "ply\nformat ascii 1.0")?;
-            if curvature {
-                writeln!(
-                    w,
-                    "comment ppm sample: colours = mean curvature clipped at ±{range:e}"
-                )?;
-            }
-            writeln!(w, "element vertex {}", ps.len())?;
-            let mut props = vec!["x", "y", "z"];
-            if normals {
-                props.extend(["nx", "ny", "nz"]);
-            }
-            for p in props {
-                writeln!(w, "property double {p}")?;
-            }
-            if curvature {
-                for p in ["red", "green", "blue"] {
-                    writeln!(w, "property uchar {p}")?;
-                }
-                writeln!(
-                    w,
-                    "property double gaussian_curvature\nproperty double mean_curvature"
-                )?;
-            }
-            writeln!(w, "element face {}", fs.len())?;
-            writeln!(w, "property list uchar int vertex_indices\nend_header")?;
-            write_lines(&mut w, ps.len(), |i, b| {
-                push_f64x3(b, ps[i]);
-                if normals {
-                    b.push(b' ');
-                    push_f64x3(b, ns[i]);
-                }
-                if curvature {
-                    for c in curvature_colour(m.mean[i], range) {
-                        b.push(b' ');
-                        push_uint(b, c.into());
-                    }
-                    b.push(b' ');
-                    push_f64(b, m.gaussian[i]);
-                    b.push(b' ');
-                    push_f64(b, m.mean[i]);
-                }
-                b.push(b'\n');
-                Ok(())
-            })?;
-            write_lines(&mut w, fs.len(), |i, b| face_line(b, fs[i]))?;
-        }
-    }
-    w.into_inner().map_err(|e| e.into_error())?.sync_all()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The parallel writer gives the bytes of a sequential loop, across chunk and batch
-    /// boundaries, and passes a line's error on.
-    #[test]
-    fn write_lines_is_the_sequential_text() {
-        let n = 2 * 64 * 4096 + 4097;
-        let mut par = Vec::new();
-        write_lines(&mut par, n, |i, b| writeln!(b, "{i} {:?}", i as f64 / 7.0)).expect("vec");
-        let mut seq = Vec::new();
-        for i in 0..n {
-            writeln!(seq, "{i} {:?}", i as f64 / 7.0).expect("vec");
-        }
-        assert!(par == seq);
-        let err = write_lines(&mut Vec::new(), n, |i, b| {
-            if i == n - 1 {
-                Err(std::io::Error::other("line"))
-            } else {
-                writeln!(b, "{i}")
-            }
-        });
-        assert!(err.is_err());
-    }
+    let format = output_format(path)?;
+    let title = if m.title.is_empty() {
+        "ppm sample: C-infinity PPS surface (Siqueira-Xu-Gallier)"
+    } else {
+        m.title
+    };
+    let out = MeshOut {
+        positions: &m.positions,
+        normals: &m.normals,
+        gaussian: &m.gaussian,
+        mean: &m.mean,
+        faces: &m.faces,
+        // The title heads an OBJ file only (the PLY header names the colours instead).
+        comment: (format == MeshFormat::Obj).then_some(title),
+        ply_index: PlyIndex::Int,
+    };
+    write_mesh_file(path, &out, format)
 }

@@ -1,5 +1,6 @@
 //! Mesh readers and writers: OFF, OBJ and PLY (ascii, binary little- and big-endian).
-//! Sec. 3.1: triangle meshes in, simplicial surfaces out.
+//! Sec. 3.1: triangle meshes in, simplicial surfaces out; the one writer per format
+//! ([`write_out`]) writes both meshes as read and the sampled surfaces of Sec. 6.2.
 //!
 //! The readers produce a [`RawMesh`] exactly as stored: no welding, no reordering, no removal
 //! of anything. Out-of-range vertex indices are *not* a reader error (the validator lists all
@@ -16,6 +17,7 @@
 //! every `Vec::with_capacity` is capped by the number of elements the remaining bytes could
 //! possibly encode and by [`Limits`]. All arithmetic on input-derived values is checked.
 
+pub(crate) mod decimal;
 mod limits;
 mod obj;
 mod off;
@@ -27,7 +29,9 @@ mod write;
 use std::path::{Path, PathBuf};
 
 pub use limits::Limits;
-pub use write::{write_mesh, write_mesh_to};
+pub use write::{
+    output_format, write_mesh, write_mesh_file, write_mesh_to, write_out, MeshOut, PlyIndex,
+};
 
 use super::error::{Location, MeshError};
 use super::raw::{MeshFormat, RawMesh};

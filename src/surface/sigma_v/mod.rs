@@ -21,6 +21,7 @@ pub mod compare;
 pub mod errata;
 pub mod gluing;
 pub mod patch;
+mod smooth;
 pub mod surface;
 pub mod view;
 pub mod wedge;

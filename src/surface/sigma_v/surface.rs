@@ -223,7 +223,7 @@ impl SigmaVPps {
     }
 
     /// ψ_j at a local point.
-    pub fn psi_local<S: SurfaceScalar>(
+    pub(crate) fn psi_local<S: SurfaceScalar>(
         &self,
         j: CornerId,
         w: &WedgeConsts<S>,

@@ -1,6 +1,7 @@
-//! Decimal text of the sampled meshes (Sec. 6.2 output), byte for byte what `{:?}` prints for an
-//! f64 and `{}` for an integer, but without the formatting machinery: a level-2 sample with
-//! curvatures writes ~6.4M numbers, and `write!` spent most of the output's time in it.
+//! Decimal text of the mesh writers, byte for byte what `{:?}` prints for an f64 (the shortest
+//! text that reads back to the same f64) and `{}` for an integer, but without the formatting
+//! machinery: a level-2 sample of Sec. 6.2 with curvatures writes ~6.4M numbers, and `write!`
+//! spent most of the output's time in it.
 //!
 //! `{:?}` prints the shortest decimal that reads back to the same f64 (the nearest such if there
 //! are two), in positional notation when 1e-4 ≤ |x| < 1e16 or x = 0 ("0.001234", "12.0",

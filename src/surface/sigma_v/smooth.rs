@@ -1,0 +1,72 @@
+//! The tutorial's (σ, v)-indexed PPS (Part V, SPEC `SV-D12`, eval `SV-D13`) as a
+//! [`SmoothSurface`].
+
+use super::gluing::CornerId;
+use super::surface::{SigmaVPps, SvConsts};
+use super::view::{SigmaVView, Version};
+use crate::construction::P2;
+use crate::gluing::data::Idx;
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::{Mp, Scalar};
+use crate::report::Progress;
+use crate::surface::geometry::{from_jet, SurfacePoint};
+use crate::surface::jet::Jet;
+use crate::surface::output::{Attributes, SampledMesh};
+use crate::surface::smooth::{GluingView, MpEval, SmoothError, SmoothSurface};
+
+impl SmoothSurface for SigmaVPps {
+    fn name(&self) -> String {
+        format!(
+            "the (σ, v)-indexed PPS of the tutorial (SPEC SV-D13; κ = {}, S′ = {})",
+            self.gluing.kappa,
+            self.target_name()
+        )
+    }
+
+    fn face_corners(&self) -> Result<Vec<[VertexId; 3]>, SmoothError> {
+        Ok((0..self.gluing.num_faces())
+            .map(|f| self.gluing.face_corners(FaceId(f as u32)))
+            .collect::<Result<_, _>>()?)
+    }
+
+    fn eval_f64(&self, f: FaceId, bary: [f64; 3]) -> Result<[f64; 3], SmoothError> {
+        Ok(SigmaVPps::eval_f64(self, f, bary)?)
+    }
+
+    fn mp_eval(&self, bits: u32) -> Result<MpEval<'_>, SmoothError> {
+        let c: SvConsts<Mp> = self.consts(bits);
+        Ok(Box::new(move |f, bary| {
+            let bm = bary.map(|x| Mp::from_f64(x, bits));
+            Ok(self.eval(f, &bm, &c)?.2)
+        }))
+    }
+
+    /// θ_(σ,c*) as an order-3 jet at q = f_(σ,c*)(p), in the corner eval chose (`SV-D13`).
+    fn eval_geometry(&self, f: FaceId, bary: [f64; 3]) -> Result<SurfacePoint, SmoothError> {
+        let cj: SvConsts<Jet<f64>> = self.consts(53);
+        let (corner, q) = self.eval_chart(f, &bary, self.consts_f64())?;
+        let (x, y) = Jet::<f64>::variables(q.x, q.y);
+        Ok(from_jet(&self.theta_plane(corner, &P2::new(x, y), &cj)?))
+    }
+
+    /// The sampling reports no progress (`progress` is not called).
+    fn sample(
+        &self,
+        level: u32,
+        attrs: Attributes,
+        _progress: Progress,
+    ) -> Result<SampledMesh, SmoothError> {
+        Ok(self.sample_surface_with(level, attrs)?)
+    }
+
+    /// The fixed version of the tutorial's gluing data (T 2112–2120, [`Version::Fixed`]): I is
+    /// the set of corners (σ, v); `k` is not needed (the gluing data are kept).
+    fn gluing_view<'a>(
+        &'a self,
+        _k: &'a SimplicialSurface,
+        ids: Vec<Idx>,
+    ) -> Result<GluingView<'a>, SmoothError> {
+        let ids = ids.into_iter().map(CornerId).collect();
+        Ok(Box::new(SigmaVView::new(&self.gluing, ids, Version::Fixed)))
+    }
+}

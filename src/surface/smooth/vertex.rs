@@ -1,0 +1,88 @@
+//! The report's vertex-indexed PPS (Defs. 5.4.1–5.4.2, eval of Sec. 6.1.4) as a
+//! [`SmoothSurface`].
+
+use super::{GluingView, MpEval, SmoothError, SmoothSurface};
+use crate::construction::abstract_view::AbstractPpm;
+use crate::construction::PpmGluing;
+use crate::gluing::data::Idx;
+use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::{Mp, Scalar};
+use crate::report::Progress;
+use crate::surface::eval_bound::BoundedPoint;
+use crate::surface::geometry::SurfacePoint;
+use crate::surface::jet::Jet;
+use crate::surface::output::{sample_surface_with, Attributes, SampledMesh};
+use crate::surface::{Consts, Pps};
+
+impl SmoothSurface for Pps {
+    fn name(&self) -> String {
+        format!(
+            "the vertex-indexed PPS (Ch. 4–5; profile {}, S′ = {})",
+            self.options.profile.name(),
+            self.target_name()
+        )
+    }
+
+    fn face_corners(&self) -> Result<Vec<[VertexId; 3]>, SmoothError> {
+        Ok((0..self.num_faces())
+            .map(|f| self.face(FaceId(f as u32)))
+            .collect::<Result<_, _>>()?)
+    }
+
+    fn eval_f64(&self, f: FaceId, bary: [f64; 3]) -> Result<[f64; 3], SmoothError> {
+        Ok(Pps::eval_f64(self, f, bary)?)
+    }
+
+    /// The bound of `surface::eval_bound` (SPEC `R-diff-f64-bound`).
+    fn eval_bounded(
+        &self,
+        f: FaceId,
+        bary: [f64; 3],
+    ) -> Result<([f64; 3], Option<BoundedPoint>), SmoothError> {
+        let b = self.eval_f64_bounded(f, bary)?;
+        Ok((b.point, Some(b)))
+    }
+
+    fn mp_eval(&self, bits: u32) -> Result<MpEval<'_>, SmoothError> {
+        let c: Consts<Mp> = self.consts(bits);
+        Ok(Box::new(move |f, bary| {
+            let bm = bary.map(|x| Mp::from_f64(x, bits));
+            Ok(self.eval(f, &bm, &c)?.point)
+        }))
+    }
+
+    fn eval_geometry(&self, f: FaceId, bary: [f64; 3]) -> Result<SurfacePoint, SmoothError> {
+        let cj: Consts<Jet<f64>> = self.consts(53);
+        Ok(Pps::eval_geometry(self, f, bary, &cj)?.2)
+    }
+
+    fn sample(
+        &self,
+        level: u32,
+        attrs: Attributes,
+        progress: Progress,
+    ) -> Result<SampledMesh, SmoothError> {
+        Ok(sample_surface_with(self, level, attrs, progress)?)
+    }
+
+    /// Ch. 4's gluing data on K (Defs. 4.1.1, 4.1.9, 4.1.10; membership as Def. 4.1.9 states
+    /// it), through `construction::abstract_view`: I is the set of vertices of K.
+    fn gluing_view<'a>(
+        &'a self,
+        k: &'a SimplicialSurface,
+        ids: Vec<Idx>,
+    ) -> Result<GluingView<'a>, SmoothError> {
+        let same = k.num_faces() == self.num_faces()
+            && k.faces()
+                .all(|f| self.face(f).is_ok_and(|c| c == k.face(f)));
+        if !same {
+            return Err(SmoothError::Unsupported {
+                surface: "the vertex-indexed PPS",
+                what: "the Def. 3.4.1 view",
+                why: "the mesh given is not the K the surface was built from",
+            });
+        }
+        let ids = ids.into_iter().map(VertexId).collect();
+        Ok(Box::new(AbstractPpm::new(PpmGluing::new(k), ids)))
+    }
+}
