@@ -7,7 +7,10 @@ use super::*;
 // ---------------------------------------------------------------------------------------------
 
 /// D4.1.9-lens(cert): for every point p of Ω_u, the Sec. 6.1.3 lens test agrees with the
-/// literal Def. 4.1.9 (for every m_w: the closed form does not depend on it).
+/// literal Def. 4.1.9 (for every m_w: the closed form does not depend on it). With the
+/// paper's radius a box is proven by intervals, or else by the exact sheet bound of
+/// `sector` (Lemma B: for m_u ≤ 10 a lens point has |α| < π/3, hence winding 0), which
+/// decides the tangency of the cut ray at m_u = 10 with no δ.
 pub fn prove_lens_agreement(m: u32, model: &Model, s: &Settings) -> PropertyResult {
     let t0 = Instant::now();
     let d = Deg::new(m);
