@@ -179,9 +179,13 @@ impl Default for Settings {
     }
 }
 
+/// The whole chart: θ ∈ [−π⁺, π⁺] with π⁺ = the f64 above π (`f64::consts::PI` is below π,
+/// so a box up to it would miss the ray θ = π, the negative x-axis, where the cut of Π lies),
+/// r ∈ [0, r_m].
 pub(super) fn disk_box(m: u32) -> PBox {
+    let pi_up = I::PI.sup();
     PBox {
-        th: (-std::f64::consts::PI, std::f64::consts::PI),
+        th: (-pi_up, pi_up),
         r: (0.0, Deg::new(m).rm.sup()),
     }
 }

@@ -22,7 +22,7 @@ use crate::numeric::interval::Interval as I;
 use crate::numeric::{Iv, Mp, Scalar, Trit};
 use crate::report::harness::enclosure_exceeds;
 use crate::report::{CheckResult, Verdict, Witness};
-use interval::{c, iv, member, member_any, phi_polar, two_pi_frac, Deg, Domain};
+use interval::{c, iv, member, member_any, phi_polar, ratio, two_pi_frac, Deg, Domain};
 use serde::{Deserialize, Serialize};
 use std::time::Instant;
 
@@ -34,6 +34,7 @@ mod model;
 mod prove_edge;
 mod prove_triangle;
 mod prove_vertex;
+pub mod sector;
 
 pub use bnb::*;
 pub use certificate::*;

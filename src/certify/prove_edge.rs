@@ -212,41 +212,67 @@ pub fn prove_inverse(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Propert
 
 /// L4.2.3(cert), Hausdorff condition (4): the inner boundary arc of Ω_uw (the arc of ∂Ω_uw
 /// inside Ω_u, i.e. b = g_u∘R_(u,w)(p) on ∂D ∩ int C, c = h(b) = (√3/2)(cos t, sin t),
-/// cos t > 1/√3) is mapped by g_(u,w) onto ∂Ω_w. Proven on t-intervals covering
-/// |t| ≤ acos(1/√3) − δ: the branch conditions hold (c_x > 0, |6t/m_w| < π, |b| < √3/2
-/// with a certified margin), so |g_(u,w)(p)| = (√3/2)/k_w = cos(π/m_w) exactly; `bound` is the
-/// interval enclosure of ||g_(u,w)(p)| − r_w| at the t-box centres via the generic maps, and the
-/// separation distance is the certified margin min(√3/2 − |b|) (the arc stays that far inside
-/// Ω_u's image), which gives the ball radii of the proof of L4.2.3.
+/// cos t > 1/√3) is mapped by g_(u,w) onto ∂Ω_w. Proven on 256 t-intervals covering the whole
+/// open arc |t| < T, T = acos(1/√3), up to its ends (no δ): on every interval the branch
+/// conditions c_x > 0 and |6t/m_w| < π hold with a margin (c_x ≥ 1/2 on the arc), so
+/// |g_(u,w)(p)| = (√3/2)/k_w = cos(π/m_w) exactly. That the arc lies in Ω_u (|b| < √3/2) is
+/// certified by intervals with a margin away from the ends; on the two end intervals, where
+/// the margin tends to 0 at the lens corners b = 1/2 ± i/√2, it is the exact identity
+/// |b|² = |1 − c|² = 7/4 − √3 cos t, < 3/4 ⇔ cos t > 1/√3 ⇔ |t| < T (points of an end interval
+/// with |t| ≥ T are not on the arc). The intervals reach the ends: |b|² ≥ 3/4 is certified at
+/// the last endpoint t_end = T⁺ + `end_offset` (T⁺ the upper bound of T's enclosure), i.e.
+/// t_end ≥ T; if not (a planted negative offset), the gap is reported as δ. `bound` is the
+/// interval enclosure of ||g_(u,w)(p)| − r_w| at the t-box centres via the generic maps, and
+/// the separation is the certified margin min(√3/2 − |b|) over the interior intervals.
 pub fn prove_hausdorff(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> PropertyResult {
+    prove_hausdorff_with(m_u, m_w, model, s, 1e-12)
+}
+
+/// [`prove_hausdorff`] with the end of the covered t-range moved by `end_offset` from the
+/// arc end (the paper's run: 1e−12 beyond it; a negative offset leaves a gap, never certified).
+pub fn prove_hausdorff_with(
+    m_u: u32,
+    m_w: u32,
+    model: &Model,
+    s: &Settings,
+    end_offset: f64,
+) -> PropertyResult {
     let t0 = Instant::now();
     let dw = Deg::new(m_w);
     let e = canon_edge(m_u, m_w);
     let s3h = c(3.0).sqrt() / c(2.0);
-    let tmax = (c(1.0) / c(3.0).sqrt()).acos().inf();
-    let delta = 1e-9;
+    let tarc = (c(1.0) / c(3.0).sqrt()).acos();
+    let t_end = tarc.sup() + end_offset;
+    // |b|² = 7/4 − √3 cos t at t_end: ≥ 3/4 certifies t_end ≥ T (|b|² increases with |t|).
+    let b2_end = ratio(7, 4) - c(3.0).sqrt() * c(t_end).cos();
+    let reaches_end = b2_end.inf() >= 0.75;
     let n = 256usize;
     let mut st = Stats::default();
     let mut sep = f64::INFINITY;
     let mut worst: f64 = 0.0;
-    let lo = -tmax + delta;
-    let h = 2.0 * (tmax - delta) / n as f64;
+    let lo = -t_end;
+    let h = 2.0 * t_end / n as f64;
     let mut refuted = None;
     for k in 0..n {
         st.boxes += 1;
-        let t = iv(lo + h * k as f64, lo + h * (k + 1) as f64);
+        let t = iv(lo + h * k as f64, (lo + h * (k + 1) as f64).min(t_end));
         let cx = s3h * t.cos();
         let cy = s3h * t.sin();
         let bx = c(1.0) - cx;
         let by = -cy;
         let bnorm = (bx.sqr() + by.sqr()).sqrt();
         let margin = (s3h - bnorm).inf();
-        let branch = cx.inf() > 0.0 && (dw.six_m * t).abs().sup() < I::PI.inf() && margin > 0.0;
+        // An end interval reaches |t| ≥ T⁻: b ∈ C there by the exact identity of the doc.
+        let end_box = t.abs().sup() >= tarc.inf();
+        let branch =
+            cx.inf() > 0.0 && (dw.six_m * t).abs().sup() < I::PI.inf() && (margin > 0.0 || end_box);
         if !branch {
             st.unresolved += 1;
             continue;
         }
-        sep = sep.min(margin);
+        if !end_box {
+            sep = sep.min(margin);
+        }
         // Centre point p = (g_u∘R)⁻¹(b) via the generic stated inverse, then g_(u,w).
         let tm = t.mid();
         let bpt = P2::<Iv>::new(Iv(c(1.0) - s3h * c(tm).cos()), Iv(-(s3h * c(tm).sin())));
@@ -282,7 +308,7 @@ pub fn prove_hausdorff(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Prope
     }
     st.bound = Some(worst);
     st.centre = if sep.is_finite() { Some(sep) } else { None };
-    st.delta = delta;
+    let gap = (tarc - c(t_end)).sup();
     let witness = refuted.map(|(pf, txt)| {
         let chk = |v: f64| !((v - dw.rm.mid()).abs() <= s.fail_tol);
         let f = model
@@ -304,13 +330,14 @@ pub fn prove_hausdorff(m_u: u32, m_w: u32, model: &Model, s: &Settings) -> Prope
     let mut r = finish(
         ConfigKey::Edge { m_u, m_w },
         "L4.2.3(cert)",
-        format!("g_(u,w) maps the inner arc of ∂Ω_uw (|t| ≤ acos(1/√3) − {delta:e}) onto ∂Ω_w; `bound` = max enclosure of ||g_(u,w)(p)| − r_w| at {n} arc points; `centre_bound` = separation: the arc lies ≥ this inside Ω_u's canonical image (|b| ≤ √3/2 − sep)"),
+        format!("g_(u,w) maps the whole open inner arc of ∂Ω_uw (|t| < acos(1/√3), up to the lens corners: exact identity |b|² = 7/4 − √3 cos t on the end intervals) onto ∂Ω_w; `bound` = max enclosure of ||g_(u,w)(p)| − r_w| at {n} arc points; `centre_bound` = separation: the arc away from its two end intervals lies ≥ this inside Ω_u's canonical image (|b| ≤ √3/2 − sep)"),
         st,
         witness,
         t0,
     );
-    if r.outcome != Outcome::Refuted && r.unresolved == 0 {
-        r.delta = Some(delta);
+    if r.outcome != Outcome::Refuted && r.unresolved == 0 && !reaches_end {
+        // The t-intervals stop short of the arc ends: proven outside that gap only.
+        r.delta = Some(gap.max(f64::MIN_POSITIVE));
         r.outcome = Outcome::CertifiedOutsideDelta;
     }
     r

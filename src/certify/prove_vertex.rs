@@ -7,7 +7,10 @@ use super::*;
 // ---------------------------------------------------------------------------------------------
 
 /// D4.1.9-lens(cert): for every point p of Ω_u, the Sec. 6.1.3 lens test agrees with the
-/// literal Def. 4.1.9 (for every m_w: the closed form does not depend on it).
+/// literal Def. 4.1.9 (for every m_w: the closed form does not depend on it). With the
+/// paper's radius a box is proven by intervals, or else by the exact sheet bound of
+/// `sector` (Lemma B: for m_u ≤ 10 a lens point has |α| < π/3, hence winding 0), which
+/// decides the tangency of the cut ray at m_u = 10 with no δ.
 pub fn prove_lens_agreement(m: u32, model: &Model, s: &Settings) -> PropertyResult {
     let t0 = Instant::now();
     let d = Deg::new(m);
@@ -33,6 +36,11 @@ pub fn prove_lens_agreement(m: u32, model: &Model, s: &Settings) -> PropertyResu
             }
             if l.is_true() && w.is_false() {
                 return Leaf::Refuted("lens test True, literal Def. 4.1.9 False".into());
+            }
+            // Where intervals cannot separate the lens from the winding cut (m_u = 10: the
+            // ray θ = π is tangent to D), the exact sector argument decides (`sector`).
+            if sector::lens_winding0_exact(&d, th, r) {
+                return Leaf::Proven(None, None);
             }
             return Leaf::Split;
         }
@@ -80,12 +88,35 @@ pub fn prove_lens_agreement(m: u32, model: &Model, s: &Settings) -> PropertyResu
 
 /// C5.4-at-most-two(cert) / C4.2-nonadjacent-disjoint(cert) and their Sec. 6.1.3 variants:
 /// for every p ∈ Ω_x (degree m), with Ω_xk the gluing domain of the neighbour at label k.
+/// A box is proven by interval membership, or else by the exact sector argument with the
+/// sharp bound π/3 (module `sector`: it decides the tangencies of non-adjacent lenses, where
+/// bisection alone left δ-boxes).
 pub fn prove_star(
     m: u32,
     use_lens: bool,
     nonadjacent: bool,
     model: &Model,
     s: &Settings,
+) -> PropertyResult {
+    prove_star_with(
+        m,
+        use_lens,
+        nonadjacent,
+        model,
+        s,
+        sector::SectorBound::paper(),
+    )
+}
+
+/// [`prove_star`] with the sector bound of the exact argument given (a wrong bound is a
+/// planted fault: its premise must be refused, `sector::SectorBound::premise`).
+pub fn prove_star_with(
+    m: u32,
+    use_lens: bool,
+    nonadjacent: bool,
+    model: &Model,
+    s: &Settings,
+    bound: sector::SectorBound,
 ) -> PropertyResult {
     let t0 = Instant::now();
     let d = Deg::new(m);
@@ -123,15 +154,17 @@ pub fn prove_star(
                     }
                 }
             }
-            Leaf::Split
         } else if maybe.len() <= 2 {
-            Leaf::Proven(None, None)
+            return Leaf::Proven(None, None);
         } else if sure.len() >= 3 {
-            Leaf::Refuted(format!(
+            return Leaf::Refuted(format!(
                 "p lies in {} gluing domains, labels {:?}",
                 sure.len(),
                 sure
-            ))
+            ));
+        }
+        if sector::star_exact(&d, th, r, dom, bound, nonadjacent) {
+            Leaf::Proven(None, None)
         } else {
             Leaf::Split
         }

@@ -80,8 +80,8 @@ fn c5_4_at_most_two_cert_and_c4_2_nonadjacent_disjoint_cert_literal_certified() 
 
 #[test]
 fn c5_4_at_most_two_sec6_1_3_cert_refuted_from_11() {
-    // Below 11 the lens domains keep the statement (certified outside δ-boxes at the lens
-    // corners, as the literal domains): the first half of the row's verdict.
+    // Below 11 the lens domains keep the statement (certified on the whole star, as the
+    // literal domains; `cert_exact.rs` asserts no δ): the first half of the row's verdict.
     for m in [3, 6, 10] {
         let r = prove_star(m, true, false, &Model::paper(), &quick());
         assert!(ok(r.outcome), "m = {m}: {r:?}");
@@ -173,11 +173,12 @@ fn l4_2_3_cert_hausdorff_arc_certified() {
         .expect("hausdorff");
     assert!(ok(h.outcome), "{h:?}");
     assert!(h.bound.expect("bound") < 1e-12);
-    // The whole arc |t| ≤ acos(1/√3) − δ, δ = 1e-9 (reported): all 256 t-boxes in the branch,
-    // none left over, and a positive separation (the arc inside Ω_u's canonical image).
+    // The whole open arc |t| < acos(1/√3), up to its ends (no δ): all 256 t-boxes in the
+    // branch, none left over, and a positive separation away from the two end intervals
+    // (the arc inside Ω_u's canonical image; at the ends the exact identity of the prover).
     assert_eq!(
-        (h.boxes, h.unresolved, h.delta),
-        (256, 0, Some(1e-9)),
+        (h.outcome, h.boxes, h.unresolved, h.delta),
+        (Outcome::Certified, 256, 0, None),
         "{h:?}"
     );
     assert!(h.centre_bound.expect("separation") > 0.0, "{h:?}");

@@ -5,6 +5,7 @@
 mod common;
 
 mod cert_docs;
+mod cert_exact;
 mod certify_provers;
 mod construction_explore;
 mod construction_maps;
