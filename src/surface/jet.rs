@@ -200,6 +200,12 @@ impl<S: Scalar, const L: usize> Jet<S, L> {
     /// f(a + h) = f₀ + f₁h + f₂/2 h² + f₃/6 h³ for a univariate f with derivatives `d` at
     /// the value a, h the nilpotent part (h⁴ = 0).
     fn compose(&self, d: [S; 4]) -> Self {
+        if let (Some(a), Some(d64)) = (coefs_f64(self), (&d as &dyn Any).downcast_ref::<[f64; 4]>())
+        {
+            if let Some(r) = from_coefs_f64(super::jet_f64::compose(a, *d64)) {
+                return r;
+            }
+        }
         let prec = self.c[0].precision_bits();
         let h = self.nil();
         let h2 = h.mul(&h);
@@ -249,9 +255,15 @@ impl<S: Scalar, const L: usize> Scalar for Jet<S, L> {
         self.zip(o, |a, b| a.sub(b))
     }
     fn mul(&self, o: &Self) -> Self {
-        // No f64 shortcut here: the product is inlined everywhere, where a test of its
-        // factors costs more than the terms it could skip (the Bézier sums, which know their
+        // f64: the table written out (`jet_f64::mul_table`, the same terms in the same order).
+        // No test for constant factors here: the product is inlined everywhere, where such a
+        // test costs more than the terms it could skip (the Bézier sums, which know their
         // constant factors, take `jet_f64`'s shortcuts).
+        if let (Some(a), Some(b)) = (coefs_f64(self), coefs_f64(o)) {
+            if let Some(r) = from_coefs_f64(super::jet_f64::mul_table(a, b)) {
+                return r;
+            }
+        }
         self.mul_generic(o)
     }
     fn div(&self, o: &Self) -> Self {

@@ -49,9 +49,33 @@ impl<const L: usize> Table<L> {
     const T: ([(u8, u8, u8); 35], usize) = table::<L>();
 }
 
-/// The generic product: the table's terms summed in order from +0.
+/// The generic product: the table's terms summed in order from +0. Orders 1 and 2 are
+/// written out term by term in the table's order (no index loads, no bounds checks; the
+/// `0.0 + ` keeps the table loop's +0 for a product −0).
 #[inline(always)]
 pub(crate) fn mul_table<const L: usize>(a: &[f64; L], b: &[f64; L]) -> [f64; L] {
+    let mut c = [0.0f64; L];
+    if L == 6 {
+        c[0] = 0.0 + a[0] * b[0];
+        c[1] = (0.0 + a[0] * b[1]) + a[1] * b[0];
+        c[2] = (0.0 + a[0] * b[2]) + a[2] * b[0];
+        c[3] = ((0.0 + a[0] * b[3]) + a[1] * b[1]) + a[3] * b[0];
+        c[4] = (((0.0 + a[0] * b[4]) + a[1] * b[2]) + a[2] * b[1]) + a[4] * b[0];
+        c[5] = ((0.0 + a[0] * b[5]) + a[2] * b[2]) + a[5] * b[0];
+        return c;
+    }
+    if L == 3 {
+        c[0] = 0.0 + a[0] * b[0];
+        c[1] = (0.0 + a[0] * b[1]) + a[1] * b[0];
+        c[2] = (0.0 + a[0] * b[2]) + a[2] * b[0];
+        return c;
+    }
+    mul_by_table(a, b)
+}
+
+/// The table loop itself (orders 0 and 3, and the reference of the tests).
+#[inline(always)]
+fn mul_by_table<const L: usize>(a: &[f64; L], b: &[f64; L]) -> [f64; L] {
     let mut c = [0.0f64; L];
     let (t, n) = &Table::<L>::T;
     for &(x, y, r) in &t[..*n] {
@@ -98,20 +122,46 @@ fn mul_constant<const L: usize>(a: &[f64; L], k: f64) -> [f64; L] {
     }
 }
 
+/// The jet's `compose` of [`super::jet`]: f(a + h) = d₀ + d₁h + d₂/2 h² + d₃/6 h³, h the
+/// nilpotent part of `a`, bit for bit. For orders ≤ 2 the table product h²·h has no term of
+/// non-zero factors (h has no value, h² no terms below degree 2), so when h and h² are finite
+/// it is +0 everywhere and is not formed.
+#[inline]
+pub(crate) fn compose<const L: usize>(a: &[f64; L], d: [f64; 4]) -> [f64; L] {
+    let mut h = *a;
+    h[0] = 0.0;
+    let h2 = mul_table(&h, &h);
+    let h3 = if L <= 6 && all_finite(&h) && all_finite(&h2) {
+        [0.0; L]
+    } else {
+        mul_table(&h2, &h)
+    };
+    let (d2h, d3s) = (d[2] * 0.5, d[3] * (1.0 / 6.0));
+    let mut r: [f64; L] = std::array::from_fn(|i| (h[i] * d[1] + h2[i] * d2h) + h3[i] * d3s);
+    r[0] = d[0];
+    r
+}
+
+/// [`compose`] with h²·h always formed (the reference of the tests).
+#[cfg(test)]
+fn compose_literal<const L: usize>(a: &[f64; L], d: [f64; 4]) -> [f64; L] {
+    let mut h = *a;
+    h[0] = 0.0;
+    let h2 = mul_table(&h, &h);
+    let h3 = mul_table(&h2, &h);
+    let (d2h, d3s) = (d[2] * 0.5, d[3] * (1.0 / 6.0));
+    let mut r: [f64; L] = std::array::from_fn(|i| (h[i] * d[1] + h2[i] * d2h) + h3[i] * d3s);
+    r[0] = d[0];
+    r
+}
+
 /// The literal jet quotient of [`super::jet`]: a · compose(b, [1/b₀, −1/b₀², 2/b₀³, −6/b₀⁴]).
 pub(crate) fn div_literal<const L: usize>(a: &[f64; L], b: &[f64; L]) -> [f64; L] {
     let r = 1.0 / b[0];
     let r2 = r * r;
     let r3 = r2 * r;
     let r4 = r3 * r;
-    let (d1, d2, d3) = (-r2, r3 * 2.0, r4 * -6.0);
-    let mut h = *b;
-    h[0] = 0.0;
-    let h2 = mul_table(&h, &h);
-    let h3 = mul_table(&h2, &h);
-    let (d2h, d3s) = (d2 * 0.5, d3 * (1.0 / 6.0));
-    let mut inv: [f64; L] = std::array::from_fn(|i| (h[i] * d1 + h2[i] * d2h) + h3[i] * d3s);
-    inv[0] = r;
+    let inv = compose(b, [r, -r2, r3 * 2.0, r4 * -6.0]);
     mul_table(a, &inv)
 }
 
@@ -214,14 +264,60 @@ pub(crate) fn eval_patch<const L: usize>(
     Some(out)
 }
 
+/// Largest degree d of the triangular patches the jet evaluator takes (the (σ, v)
+/// construction's [`crate::surface::sigma_v::patch::MAX_PATCH_DEGREE`]).
+const TRI_D: usize = 15;
+
+/// `eval_tri` of the (σ, v) construction (a triangular Bézier patch at barycentric jets λ) on
+/// f64 jets (d ≤ 15), bit for bit the generic evaluator: the powers λ_t^e as running products
+/// from 1, each Bernstein jet ((λ₀^a λ₁^b) λ₂^c) · coef, each coordinate summed from +0.
+pub(crate) fn eval_tri<const L: usize>(
+    d: usize,
+    cps: &[[f64; 3]],
+    coef: &[f64],
+    l: &[[f64; L]; 3],
+) -> Option<[[f64; L]; 3]> {
+    let n = (d + 1) * (d + 2) / 2;
+    if d > TRI_D || cps.len() < n || coef.len() < n {
+        return None;
+    }
+    let mut pw = [[[0.0; L]; TRI_D + 1]; 3];
+    for t in 0..3 {
+        pw[t][0] = constant(1.0);
+        for e in 1..=d {
+            pw[t][e] = mul_table(&pw[t][e - 1], &l[t]);
+        }
+    }
+    let mut acc = [[0.0; L]; 3];
+    let mut i = 0;
+    for a in 0..=d {
+        for b in 0..=d - a {
+            let p = mul_table(&mul_table(&pw[0][a], &pw[1][b]), &pw[2][d - a - b]);
+            let bern: [f64; L] = std::array::from_fn(|k| p[k] * coef[i]);
+            for (t, slot) in acc.iter_mut().enumerate() {
+                let c = cps[i][t];
+                for k in 0..L {
+                    slot[k] += bern[k] * c;
+                }
+            }
+            i += 1;
+        }
+    }
+    Some(acc)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::surface::jet::Jet;
     use rand::{Rng, SeedableRng};
 
+    /// The same bits, or both NaN: Rust leaves a NaN's sign and payload unspecified (the
+    /// optimiser may swap the operands of a sum), and the output text of a NaN has neither.
     fn same<const L: usize>(a: &[f64; L], b: &[f64; L]) -> bool {
-        a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+        a.iter()
+            .zip(b)
+            .all(|(x, y)| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()))
     }
 
     /// Coefficients mixing ordinary values, ±0, huge, tiny and non-finite values.
@@ -259,6 +355,10 @@ mod tests {
         let mut r = rand_chacha::ChaCha8Rng::seed_from_u64(7 + L as u64);
         for _ in 0..200_000 {
             let (a, b) = (jet::<L>(&mut r), jet::<L>(&mut r));
+            assert!(
+                same(&mul_table(&a, &b), &mul_by_table(&a, &b)),
+                "{a:?} · {b:?}"
+            );
             assert!(same(&mul(&a, &b), &mul_table(&a, &b)), "{a:?} · {b:?}");
             let k = b[0];
             assert!(
@@ -266,6 +366,11 @@ mod tests {
                 "{a:?} · {k}"
             );
             assert!(same(&div(&a, &b), &div_literal(&a, &b)), "{a:?} / {b:?}");
+            let d = [coef(&mut r), coef(&mut r), coef(&mut r), coef(&mut r)];
+            assert!(
+                same(&compose(&a, d), &compose_literal(&a, d)),
+                "{a:?} ∘ {d:?}"
+            );
         }
     }
 
@@ -321,6 +426,35 @@ mod tests {
                 let f = eval_patch(&cp, l, half, &x, &y).expect("l ≤ 16");
                 for d in 0..3 {
                     assert!(same(&g[d].c, &f[d]), "l {l} d {d}");
+                }
+            }
+        }
+    }
+
+    /// The (σ, v) triangular patch on jets: the allocation-free evaluator gives the generic
+    /// one's bits (degrees 1, 5, 7, 15; jets of order 1 and 2).
+    #[test]
+    fn sv_jet_triangular_patch_is_bit_identical_to_the_generic_evaluator() {
+        use crate::surface::sigma_v::patch::{eval_tri as generic, multinomials};
+        let mut r = rand_chacha::ChaCha8Rng::seed_from_u64(9);
+        for d in [1usize, 5, 7, 15] {
+            let coef = multinomials(d);
+            for _ in 0..100 {
+                let cps: Vec<[f64; 3]> = (0..coef.len())
+                    .map(|_| std::array::from_fn(|_| r.gen_range(-3.0..3.0)))
+                    .collect();
+                let l6: [[f64; 6]; 3] =
+                    std::array::from_fn(|_| std::array::from_fn(|_| r.gen_range(-0.2..1.0)));
+                let g = generic(d, &cps, &coef, &l6.map(|c| Jet { c }));
+                let f = eval_tri(d, &cps, &coef, &l6).expect("d ≤ 15");
+                for t in 0..3 {
+                    assert!(same(&g[t].c, &f[t]), "d {d} t {t}");
+                }
+                let l3: [[f64; 3]; 3] = l6.map(|c| [c[0], c[1], c[2]]);
+                let g = generic(d, &cps, &coef, &l3.map(|c| Jet { c }));
+                let f = eval_tri(d, &cps, &coef, &l3).expect("d ≤ 15");
+                for t in 0..3 {
+                    assert!(same(&g[t].c, &f[t]), "d {d} t {t}");
                 }
             }
         }
