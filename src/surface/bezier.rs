@@ -20,7 +20,7 @@ pub fn binomial(n: usize, k: usize) -> f64 {
 
 /// Row l of Pascal's triangle as [`binomial`] computes it, for l ≤ [`MAX_FAST_L`] (computed
 /// once: the evaluators of Def. 5.2.1 need it at every point).
-pub(crate) fn binomial_row(l: usize) -> Option<&'static [f64]> {
+fn binomial_row(l: usize) -> Option<&'static [f64]> {
     static TABLE: std::sync::OnceLock<Vec<Vec<f64>>> = std::sync::OnceLock::new();
     TABLE
         .get_or_init(|| {

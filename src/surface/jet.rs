@@ -12,22 +12,7 @@
 
 use super::scalar_ext::SurfaceScalar;
 use crate::numeric::Scalar;
-use std::any::Any;
 use std::cmp::Ordering;
-
-/// The coefficients of a jet over f64 (`None` for any other scalar): the f64 jets take the
-/// allocation-free kernels of [`super::jet_f64`], which give the generic code's bits.
-#[inline(always)]
-fn coefs_f64<S: Scalar, const L: usize>(j: &Jet<S, L>) -> Option<&[f64; L]> {
-    (j as &dyn Any).downcast_ref::<Jet<f64, L>>().map(|j| &j.c)
-}
-
-/// The jet over S with the f64 coefficients `c`, when S is f64.
-#[inline(always)]
-fn from_coefs_f64<S: Scalar, const L: usize>(c: [f64; L]) -> Option<Jet<S, L>> {
-    let j = Jet::<f64, L> { c };
-    (&j as &dyn Any).downcast_ref::<Jet<S, L>>().cloned()
-}
 
 /// Number of monomials x^i y^j with i + j ≤ 3.
 pub const JET_LEN: usize = 10;
@@ -149,35 +134,6 @@ impl<S: Scalar, const L: usize> Jet<S, L> {
         let k = S::from_i64(f(i) * f(j), prec);
         self.c[idx(i, j)].mul(&k)
     }
-    /// The product as the table of [`MUL`] defines it: every term summed in order from 0.
-    #[inline(always)]
-    pub(crate) fn mul_generic(&self, o: &Self) -> Self {
-        let z = self.zero_like();
-        let mut c: [S; L] = std::array::from_fn(|_| z.clone());
-        let (table, n) = &MUL[Self::ORDER];
-        for &(a, b, r) in &table[..*n] {
-            let t = self.c[a as usize].mul(&o.c[b as usize]);
-            c[r as usize] = c[r as usize].add(&t);
-        }
-        Jet { c }
-    }
-    /// The quotient self · (1/o), 1/o composed from the derivatives of 1/t at o's value.
-    pub(crate) fn div_generic(&self, o: &Self) -> Self {
-        let prec = o.c[0].precision_bits();
-        let a = &o.c[0];
-        let one = S::from_i64(1, prec);
-        let r = one.div(a);
-        let r2 = r.mul(&r);
-        let r3 = r2.mul(&r);
-        let r4 = r3.mul(&r);
-        let inv = o.compose([
-            r,
-            r2.neg(),
-            r3.mul(&S::from_i64(2, prec)),
-            r4.mul(&S::from_i64(-6, prec)),
-        ]);
-        self.mul_generic(&inv)
-    }
     fn zero_like(&self) -> S {
         S::from_i64(0, self.c[0].precision_bits())
     }
@@ -200,12 +156,6 @@ impl<S: Scalar, const L: usize> Jet<S, L> {
     /// f(a + h) = f₀ + f₁h + f₂/2 h² + f₃/6 h³ for a univariate f with derivatives `d` at
     /// the value a, h the nilpotent part (h⁴ = 0).
     fn compose(&self, d: [S; 4]) -> Self {
-        if let (Some(a), Some(d64)) = (coefs_f64(self), (&d as &dyn Any).downcast_ref::<[f64; 4]>())
-        {
-            if let Some(r) = from_coefs_f64(super::jet_f64::compose(a, *d64)) {
-                return r;
-            }
-        }
         let prec = self.c[0].precision_bits();
         let h = self.nil();
         let h2 = h.mul(&h);
@@ -255,24 +205,30 @@ impl<S: Scalar, const L: usize> Scalar for Jet<S, L> {
         self.zip(o, |a, b| a.sub(b))
     }
     fn mul(&self, o: &Self) -> Self {
-        // f64: the table written out (`jet_f64::mul_table`, the same terms in the same order).
-        // No test for constant factors here: the product is inlined everywhere, where such a
-        // test costs more than the terms it could skip (the Bézier sums, which know their
-        // constant factors, take `jet_f64`'s shortcuts).
-        if let (Some(a), Some(b)) = (coefs_f64(self), coefs_f64(o)) {
-            if let Some(r) = from_coefs_f64(super::jet_f64::mul_table(a, b)) {
-                return r;
-            }
+        let z = self.zero_like();
+        let mut c: [S; L] = std::array::from_fn(|_| z.clone());
+        let (table, n) = &MUL[Self::ORDER];
+        for &(a, b, r) in &table[..*n] {
+            let t = self.c[a as usize].mul(&o.c[b as usize]);
+            c[r as usize] = c[r as usize].add(&t);
         }
-        self.mul_generic(o)
+        Jet { c }
     }
     fn div(&self, o: &Self) -> Self {
-        if let (Some(a), Some(b)) = (coefs_f64(self), coefs_f64(o)) {
-            if let Some(r) = from_coefs_f64(super::jet_f64::div(a, b)) {
-                return r;
-            }
-        }
-        self.div_generic(o)
+        let prec = o.c[0].precision_bits();
+        let a = &o.c[0];
+        let one = S::from_i64(1, prec);
+        let r = one.div(a);
+        let r2 = r.mul(&r);
+        let r3 = r2.mul(&r);
+        let r4 = r3.mul(&r);
+        let inv = o.compose([
+            r,
+            r2.neg(),
+            r3.mul(&S::from_i64(2, prec)),
+            r4.mul(&S::from_i64(-6, prec)),
+        ]);
+        self.mul(&inv)
     }
     fn neg(&self) -> Self {
         self.map(|a| a.neg())
@@ -328,18 +284,5 @@ impl<S: SurfaceScalar, const L: usize> SurfaceScalar for Jet<S, L> {
         Jet {
             c: std::array::from_fn(|i| self.c[i].scale_f64(k)),
         }
-    }
-    /// f64 jets: the allocation-free evaluator of [`super::jet_f64`] (the same bits).
-    fn patch(cp: &[[f64; 3]], l: usize, half: f64, x: &Self, y: &Self) -> [Self; 3] {
-        if let (Some(xf), Some(yf)) = (coefs_f64(x), coefs_f64(y)) {
-            if let Some([a, b, c]) = super::jet_f64::eval_patch(cp, l, half, xf, yf) {
-                if let (Some(a), Some(b), Some(c)) =
-                    (from_coefs_f64(a), from_coefs_f64(b), from_coefs_f64(c))
-                {
-                    return [a, b, c];
-                }
-            }
-        }
-        super::bezier::eval_patch(cp, l, half, x, y)
     }
 }

@@ -26,7 +26,6 @@ pub mod fit;
 mod fit_linear;
 pub mod geometry;
 pub mod jet;
-pub(crate) mod jet_f64;
 pub mod kind;
 pub mod loop_subdiv;
 pub mod options;

@@ -237,14 +237,6 @@ impl SigmaVPps {
                 return out.clone();
             }
         }
-        // f64 jets of order 1 (normals) and 2 (curvatures): the allocation-free evaluator,
-        // same bits.
-        if let Some(out) = tri_on_jets::<S, 3>(self.degree, cp, &self.coef, &l) {
-            return out;
-        }
-        if let Some(out) = tri_on_jets::<S, 6>(self.degree, cp, &self.coef, &l) {
-            return out;
-        }
         eval_tri(self.degree, cp, &self.coef, &l)
     }
 
@@ -551,21 +543,6 @@ impl SigmaVPps {
             .map(|&(f, b)| self.eval_f64(f, b))
             .collect()
     }
-}
-
-/// [`eval_tri`] through `jet_f64` when S is the f64 jet of `L` coefficients.
-fn tri_on_jets<S: SurfaceScalar, const L: usize>(
-    d: usize,
-    cp: &[[f64; 3]],
-    coef: &[f64],
-    l: &[S; 3],
-) -> Option<[S; 3]> {
-    use std::any::Any;
-    let lj = (l as &dyn Any).downcast_ref::<[Jet<f64, L>; 3]>()?;
-    let r = crate::surface::jet_f64::eval_tri(d, cp, coef, &lj.clone().map(|j| j.c))?;
-    (&r.map(|c| Jet { c }) as &dyn Any)
-        .downcast_ref::<[S; 3]>()
-        .cloned()
 }
 
 /// Fit the corners of the vertices `vs` (all of degree fit.info.m). Cubic-net targets: one
