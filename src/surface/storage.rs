@@ -25,19 +25,56 @@ pub(crate) fn map_in_key_order<T: Send>(
     keys: &[u32],
     f: impl Fn(usize) -> T + Sync + Send,
 ) -> Vec<T> {
-    let mut order: Vec<(u32, u32)> = keys
-        .iter()
-        .enumerate()
-        .map(|(i, &k)| (k, i as u32))
-        .collect();
-    order.par_sort_unstable();
-    let done: Vec<T> = order.par_iter().map(|&(_, i)| f(i as usize)).collect();
-    let mut slots: Vec<Option<T>> = (0..keys.len()).map(|_| None).collect();
-    for (&(_, i), r) in order.iter().zip(done) {
-        slots[i as usize] = Some(r);
+    let order = key_order(keys);
+    let mut done: Vec<Option<T>> = order.par_iter().map(|&i| Some(f(i as usize))).collect();
+    // pos[i]: where the result of i is in `done`.
+    let mut pos = vec![0u32; keys.len()];
+    for (p, &i) in order.iter().enumerate() {
+        pos[i as usize] = p as u32;
     }
-    // `order` is a permutation of 0..keys.len(): every slot is filled.
-    slots.into_iter().flatten().collect()
+    // `order` is a permutation of 0..keys.len(): every result is taken once.
+    pos.iter()
+        .filter_map(|&p| done[p as usize].take())
+        .collect()
+}
+
+/// The indices 0..keys.len() by increasing (key, index). The keys are storage ranks (below the
+/// number of vertex slots) or `u32::MAX` (an unknown face, last): a counting sort, stable in
+/// the index, gives the order of sorting the pairs (key, index) in O(n) (the comparison sort
+/// of 800k pairs was a few per cent of a level-2 sampling); keys spread far beyond the number
+/// of points are sorted.
+fn key_order(keys: &[u32]) -> Vec<u32> {
+    let top = keys
+        .iter()
+        .copied()
+        .filter(|&k| k != u32::MAX)
+        .max()
+        .map_or(0, |k| k as usize + 1);
+    if top > 4 * keys.len() + 1024 {
+        let mut order: Vec<(u32, u32)> = keys
+            .iter()
+            .enumerate()
+            .map(|(i, &k)| (k, i as u32))
+            .collect();
+        order.par_sort_unstable();
+        return order.into_iter().map(|(_, i)| i).collect();
+    }
+    // start[k]: where the indices of key k begin; the last bucket holds u32::MAX.
+    let bucket = |k: u32| if k == u32::MAX { top } else { k as usize };
+    let mut start = vec![0u32; top + 2];
+    for &k in keys {
+        start[bucket(k) + 1] += 1;
+    }
+    for b in 1..start.len() {
+        start[b] += start[b - 1];
+    }
+    let mut order = vec![0u32; keys.len()];
+    for (i, &k) in keys.iter().enumerate() {
+        let at = &mut start[bucket(k)];
+        order[*at as usize] = i as u32;
+        *at += 1;
+    }
+    order
 }
 
 /// The vertices of degree ≥ 3 in breadth-first order over the links (component by component,
@@ -70,4 +107,45 @@ pub(super) fn bfs_order(degree: &[u32], nbr_start: &[usize], nbr: &[VertexId]) -
         }
     }
     order
+}
+
+#[cfg(test)]
+mod tests {
+    use super::key_order;
+
+    /// The counting sort gives the order of sorting the pairs (key, index), unknown faces
+    /// (`u32::MAX`) last, on dense keys and on keys that take the comparison sort.
+    #[test]
+    fn key_order_is_the_sorted_pairs_order() {
+        let mut x = 12345u64;
+        for (n, spread) in [
+            (0usize, 1u32),
+            (1, 1),
+            (1000, 50),
+            (5000, 2000),
+            (300, u32::MAX - 1),
+        ] {
+            let keys: Vec<u32> = (0..n)
+                .map(|_| {
+                    x = x
+                        .wrapping_mul(6364136223846793005)
+                        .wrapping_add(1442695040888963407);
+                    let r = (x >> 33) as u32;
+                    if r % 17 == 0 {
+                        u32::MAX
+                    } else {
+                        r % spread
+                    }
+                })
+                .collect();
+            let mut want: Vec<(u32, u32)> = keys
+                .iter()
+                .enumerate()
+                .map(|(i, &k)| (k, i as u32))
+                .collect();
+            want.sort_unstable();
+            let want: Vec<u32> = want.into_iter().map(|(_, i)| i).collect();
+            assert_eq!(key_order(&keys), want, "n {n}, spread {spread}");
+        }
+    }
 }
