@@ -96,11 +96,11 @@ fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
+/// Positions and faces of a triangle mesh.
+type Mesh = (Vec<[f64; 3]>, Vec<[u32; 3]>);
+
 /// One Loop step of a closed triangle mesh (every edge in exactly two faces, checked).
-fn loop_step(
-    pos: &[[f64; 3]],
-    faces: &[[u32; 3]],
-) -> Result<(Vec<[f64; 3]>, Vec<[u32; 3]>), String> {
+fn loop_step(pos: &[[f64; 3]], faces: &[[u32; 3]]) -> Result<Mesh, String> {
     // The opposite corners of each undirected edge, and each vertex's ring.
     let mut opposite: HashMap<(u32, u32), Vec<u32>> = HashMap::with_capacity(faces.len() * 3 / 2);
     let mut ring: Vec<Vec<u32>> = vec![Vec::new(); pos.len()];

@@ -14,7 +14,6 @@ use super::jet::{Jet1, Jet2};
 use super::pps::{Pps, SurfaceError};
 use crate::mesh::io::{output_format, write_mesh_file, MeshOut, PlyIndex};
 use crate::mesh::{FaceId, MeshFormat};
-use rayon::prelude::*;
 use std::collections::HashMap;
 use std::hash::BuildHasherDefault;
 use std::path::Path;

@@ -232,7 +232,11 @@ mod tests {
             [f64::NAN, f64::INFINITY, f64::NEG_INFINITY],
             [1e-300, 5e-324, 1e16],
             // -85113420695635.125: halfway between two shortest decimals (`decimal`).
-            [f64::from_bits(0xc2d3_5a40_cd32_14c8), 0.1 + 0.2, 123456.789e-7],
+            [
+                f64::from_bits(0xc2d3_5a40_cd32_14c8),
+                0.1 + 0.2,
+                123456.789e-7,
+            ],
         ];
         let fs = [[0, 1, 2], [1, 3, 2]];
         let mut off = String::from("OFF\n4 2 0\n");
