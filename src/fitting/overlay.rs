@@ -12,6 +12,7 @@
 use super::base::BaseMesh;
 use super::geodesic::{common_faces, Embedding, Node};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::UnionFind;
 use robust::{orient2d, Coord};
 use std::collections::{HashMap, HashSet};
 
@@ -224,27 +225,21 @@ fn group(pieces: &[Piece], curve_ids: &[Vec<u32>]) -> (Vec<u32>, usize) {
             by_edge.entry((a.min(b), a.max(b))).or_default().push(i);
         }
     }
-    let mut parent: Vec<usize> = (0..pieces.len()).collect();
-    fn root(p: &mut [usize], mut x: usize) -> usize {
-        while p[x] != x {
-            p[x] = p[p[x]];
-            x = p[x];
-        }
-        x
-    }
+    let mut classes = UnionFind::new(pieces.len());
     for (e, ps) in &by_edge {
         if cut.contains(e) {
             continue;
         }
         for w in ps.windows(2) {
-            let (a, b) = (root(&mut parent, w[0]), root(&mut parent, w[1]));
-            parent[a.max(b)] = a.min(b);
+            classes.union(w[0], w[1]);
         }
     }
+    // Regions are numbered by their first piece, so the numbering depends only on the
+    // partition (not on the hash map's order of the unions, nor on which piece is a root).
     let mut id: HashMap<usize, u32> = HashMap::new();
     let region = (0..pieces.len())
         .map(|i| {
-            let r = root(&mut parent, i);
+            let r = classes.find(i);
             let next = id.len() as u32;
             *id.entry(r).or_insert(next)
         })
