@@ -35,6 +35,24 @@ fn pipeline_input(data: &[u8]) -> (MeshFormat, &[u8]) {
     (f, body)
 }
 
+/// pipeline timeout (> 1 s, 2.0 s alone in the fuzz build): a 20-face icosahedron whose
+/// mutated coordinates make one triangle's box span most of the uniform grid of
+/// Def. 3.1.3(ii)'s broad phase, whose cell size the tiny boxes set; the query walked every
+/// cell of its range. Fixed in `mesh::validate::grid`: a query spanning more cells than there
+/// are boxes tests every box instead (the same closed-box test, so the same candidates).
+#[test]
+fn x_fuzz_pipeline_timeout_huge_triangle_grid_walk_is_validated_quickly() {
+    let data = regression("pipeline-timeout-huge-triangle-grid-walk.bin");
+    let (f, body) = pipeline_input(&data);
+    let raw = read_mesh_from_bytes(body, f, "fuzz", &ReadOptions::default()).expect("reads");
+    assert_eq!(raw.faces.len(), 20);
+    let t = Instant::now();
+    let v = validate(&raw);
+    let took = t.elapsed();
+    assert!(took < Duration::from_secs(1), "validation took {took:?}");
+    assert!(!v.report.checks.is_empty());
+}
+
 /// pipeline timeout (> 1 s): bob_small.ply with flipped bits — 2 out-of-range indices, 2
 /// duplicate faces and 6877 crossing triangle pairs. Not a library bug: the exact test of
 /// Def. 3.1.3(ii) takes ~0.1 s here (it is quadratic in the number of crossing pairs); the
