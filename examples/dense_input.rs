@@ -12,6 +12,7 @@
 
 use pseudomanifold::mesh::io::write_mesh;
 use pseudomanifold::mesh::{load_surface, MeshFormat};
+use pseudomanifold::numeric::vec3::{cross, norm, sub};
 use pseudomanifold::surface::loop_subdiv::rules::vertex_weights;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -92,10 +93,6 @@ fn parse<T: std::str::FromStr>(v: Option<&String>, flag: &str) -> Result<T, Stri
         .ok_or_else(|| format!("{flag} needs a number"))
 }
 
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
 /// Positions and faces of a triangle mesh.
 type Mesh = (Vec<[f64; 3]>, Vec<[u32; 3]>);
 
@@ -157,7 +154,7 @@ fn mean_edge_length(pos: &[[f64; 3]], faces: &[[u32; 3]]) -> f64 {
         let c = f.map(|v| pos[v as usize]);
         for i in 0..3 {
             let d = sub(c[(i + 1) % 3], c[i]);
-            sum += (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+            sum += norm(d);
             n += 1;
         }
     }
@@ -176,11 +173,7 @@ fn vertex_normals(pos: &[[f64; 3]], faces: &[[u32; 3]]) -> Vec<[f64; 3]> {
     for &c in faces {
         let p = c.map(|v| pos[v as usize]);
         let (u, w) = (sub(p[1], p[0]), sub(p[2], p[0]));
-        let x = [
-            u[1] * w[2] - u[2] * w[1],
-            u[2] * w[0] - u[0] * w[2],
-            u[0] * w[1] - u[1] * w[0],
-        ];
+        let x = cross(u, w);
         for v in c {
             for (a, b) in n[v as usize].iter_mut().zip(x) {
                 *a += b;
@@ -188,7 +181,7 @@ fn vertex_normals(pos: &[[f64; 3]], faces: &[[u32; 3]]) -> Vec<[f64; 3]> {
         }
     }
     for v in &mut n {
-        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        let l = norm(*v);
         if l > 0.0 {
             *v = v.map(|c| c / l);
         }
