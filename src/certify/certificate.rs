@@ -63,6 +63,15 @@ pub struct PropertyResult {
 }
 
 impl PropertyResult {
+    /// δ where it qualifies what was proven: a result certified outside δ, or an inconclusive
+    /// one; `None` for a whole-set certificate and for a refutation (decided by its witness).
+    pub fn delta_of_partial_proof(&self) -> Option<f64> {
+        match self.outcome {
+            Outcome::CertifiedOutsideDelta | Outcome::Inconclusive => self.delta,
+            Outcome::Certified | Outcome::Refuted => None,
+        }
+    }
+
     /// As a report row.
     pub fn to_check_result(&self) -> CheckResult {
         let verdict = match self.outcome {

@@ -218,7 +218,7 @@ pub fn summary_table(cert: &Certificate) -> String {
         cert.jobs
     ));
     s.push_str(&format!(
-        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json --summary CERTIFICATE_SUMMARY_M{}.md` (release build). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements).\n\n",
+        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json --summary CERTIFICATE_SUMMARY_M{}.md` (release build). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements); `max δ` = the largest δ of the results certified outside δ (a refuted result is decided by its witness and has no δ).\n\n",
         cert.max_degree, cert.jobs, cert.max_degree, cert.max_degree
     ));
     s.push_str("| property | configurations | certified | certified outside δ | refuted | inconclusive | max bound | max centre bound | max δ | boxes | max depth | time (s, sum) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -243,7 +243,7 @@ pub fn summary_table(cert: &Certificate) -> String {
             cnt(Outcome::Inconclusive),
             fmt(mx(&|r| r.bound)),
             fmt(mx(&|r| r.centre_bound)),
-            fmt(mx(&|r| r.delta)),
+            fmt(mx(&|r| r.delta_of_partial_proof())),
             rs.iter().map(|r| r.boxes).sum::<u64>(),
             rs.iter().map(|r| r.max_depth).max().unwrap_or(0),
             rs.iter().map(|r| r.millis).sum::<u64>() as f64 / 1000.0,
@@ -262,7 +262,7 @@ pub fn summary_table(cert: &Certificate) -> String {
             r.property,
             r.outcome,
             fmt(r.bound),
-            fmt(r.delta),
+            fmt(r.delta_of_partial_proof()),
             r.boxes,
             r.millis,
             r.witness
@@ -275,11 +275,13 @@ pub fn summary_table(cert: &Certificate) -> String {
         ));
     }
     s.push_str("\n## Statements\n\n");
-    let mut seen = std::collections::BTreeSet::new();
+    // In property order, so a merge (which sorts the results) writes the same summary.
+    let mut statements: BTreeMap<&str, &str> = BTreeMap::new();
     for r in &cert.results {
-        if seen.insert(r.property.clone()) {
-            s.push_str(&format!("* `{}`: {}\n", r.property, r.statement));
-        }
+        statements.entry(r.property.as_str()).or_insert(r.statement.as_str());
+    }
+    for (p, st) in statements {
+        s.push_str(&format!("* `{p}`: {st}\n"));
     }
     s
 }
