@@ -278,7 +278,9 @@ pub fn summary_table(cert: &Certificate) -> String {
     // In property order, so a merge (which sorts the results) writes the same summary.
     let mut statements: BTreeMap<&str, &str> = BTreeMap::new();
     for r in &cert.results {
-        statements.entry(r.property.as_str()).or_insert(r.statement.as_str());
+        statements
+            .entry(r.property.as_str())
+            .or_insert(r.statement.as_str());
     }
     for (p, st) in statements {
         s.push_str(&format!("* `{p}`: {st}\n"));

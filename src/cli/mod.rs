@@ -8,7 +8,7 @@ mod load;
 mod msplines;
 mod oracle;
 mod progress;
-pub mod render;
+pub(crate) mod render;
 mod sample;
 mod sd;
 mod sd3;

@@ -13,7 +13,7 @@ use std::process::ExitCode;
 
 /// `ppm sd` arguments.
 #[derive(Args, Debug)]
-pub struct SdArgs {
+pub(super) struct SdArgs {
     #[command(subcommand)]
     cmd: SdCommand,
 }
@@ -198,7 +198,7 @@ pub(super) fn emit(results: &[CheckResult], json: bool) -> ExitCode {
 }
 
 /// Runs `ppm sd …`.
-pub fn run(a: SdArgs) -> ExitCode {
+pub(super) fn run(a: SdArgs) -> ExitCode {
     match a.cmd {
         SdCommand::Check {
             mesh,

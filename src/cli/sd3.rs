@@ -16,7 +16,7 @@ use std::process::ExitCode;
 
 /// The 3-D subcommands of `ppm sd`.
 #[derive(Subcommand, Debug)]
-pub enum Sd3Command {
+pub(super) enum Sd3Command {
     /// Validate the tetrahedral complex (exact) and check the map of PARAMS on it: Eq. (1),
     /// Def. 1 (faces, inside), agreement on shared triangles, the family's hypotheses, det DX > 0
     /// on every closed tetrahedron (exact, and by intervals with the agreement check).
@@ -82,7 +82,7 @@ fn load3(
 }
 
 /// Runs one 3-D subcommand.
-pub fn run(c: Sd3Command) -> ExitCode {
+pub(super) fn run(c: Sd3Command) -> ExitCode {
     match c {
         Sd3Command::Check3 {
             complex,
