@@ -63,7 +63,10 @@ fn l4_2_1_cert_docs_quote_the_summaries_configuration_counts() {
         // stated set or refuted by a witness (no result certified only outside δ, none
         // inconclusive), so its `max δ` cell is empty.
         let mut props = 0;
-        for row in text.lines().filter(|l| l.starts_with("| `") && l.contains("(cert)")) {
+        for row in text
+            .lines()
+            .filter(|l| l.starts_with("| `") && l.contains("(cert)"))
+        {
             let c: Vec<&str> = row.split('|').map(str::trim).collect();
             if c.len() < 13 {
                 continue; // the per-configuration table has fewer columns
