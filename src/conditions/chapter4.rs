@@ -635,6 +635,10 @@ mod tests {
         let some = subset(all.clone(), Some(5), 7);
         assert_eq!(some.len(), 5);
         assert_eq!(some, subset(all.clone(), Some(5), 7), "seeded");
-        assert_ne!(some, all[..5].to_vec(), "a seeded shuffle, not the first five");
+        assert_ne!(
+            some,
+            all[..5].to_vec(),
+            "a seeded shuffle, not the first five"
+        );
     }
 }

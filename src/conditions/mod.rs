@@ -120,7 +120,10 @@ mod tests {
 
     #[test]
     fn aggregate_passes_a_nan_deviation_on_as_a_failure() {
-        for parts in [[part(0.5, 0), part(f64::NAN, 0)], [part(f64::NAN, 0), part(0.5, 0)]] {
+        for parts in [
+            [part(0.5, 0), part(f64::NAN, 0)],
+            [part(f64::NAN, 0), part(0.5, 0)],
+        ] {
             let out = aggregate(parts);
             assert!(out[0].worst_deviation.is_some_and(f64::is_nan));
             assert_eq!(out[0].verdict(), Verdict::Fails);
