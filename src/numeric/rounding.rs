@@ -32,7 +32,7 @@ use std::marker::PhantomData;
 pub const UNIT_ROUNDOFF: f64 = 1.0 / 9_007_199_254_740_992.0;
 /// 2⁻¹⁰⁷⁴: the smallest subnormal, an upper bound of the absolute error that gradual
 /// underflow adds to one correctly rounded operation.
-const ETA: f64 = 4.9406564584124654e-324;
+const ETA: f64 = 5e-324;
 
 /// The claimed maximum error of the platform's `sin`, `cos`, `atan2` (binary64), in ulps of
 /// the exact result: the one place where the assumption lives ([`Glibc`]).
