@@ -313,7 +313,7 @@ fn f64_rounding_section(cert: &Certificate) -> String {
     };
     let unbounded = fr.iter().filter(|f| f.phi.is_none()).count();
     format!(
-        "\n## f64 rounding (CERT-f64-rounding)\n\n{} edge configurations; max over them: φ_wu {} (Euclidean), |p|² − r_u² {}, |q|² − r_w² {}, round-trip point {} (tolerance ≥ {}); round trip decided exactly on every winding-0 box: {}; configurations without a bound: {unbounded}; unresolved boxes: {} (max δ {}); boxes: {}; time {:.1} s (sum). The libm {}\n",
+        "\n## f64 rounding (CERT-f64-rounding)\n\n{} edge configurations; max over them: φ_wu {} (Euclidean), |p|² − r_u² {}, |q|² − r_w² {}, round-trip point {} (the literal test's tolerance ≥ {:.2e}); round trip certified exact on every winding-0 box: {}; configurations without a bound: {unbounded}; unresolved boxes: {} (max δ {}); boxes: {}; time {:.1} s (sum). The libm {}\n",
         fr.len(),
         mx(&|f| f.phi),
         mx(&|f| Some(f.outer)),
