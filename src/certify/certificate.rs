@@ -60,6 +60,10 @@ pub struct PropertyResult {
     pub witness: Option<CertWitness>,
     /// Time spent proving this result, in ms.
     pub millis: u64,
+    /// CERT-f64-rounding: proven bounds on the f64 evaluator's rounding (on `P4.2.3(cert)`,
+    /// one per edge configuration; absent in certificates written before it existed).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub f64_rounding: Option<F64Rounding>,
 }
 
 impl PropertyResult {

@@ -53,11 +53,26 @@ fn set_construction(
         .map_err(|e| format!("--construction {}: {e}", construction.name()))
 }
 
-/// `ppm oracle [--mesh M] [--bits B] [--profile P]`: answer one JSON request per stdin line
+/// `ppm oracle [--mesh M] [--bits B] [--profile P] [--certificate C]`: answer one JSON request per stdin line
 /// with one JSON response per stdout line until end of input. Exit status 0, or 2 when the
 /// initial mesh/precision/profile is rejected or stdin cannot be read.
-pub(crate) fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> ExitCode {
-    let mut s = match session(mesh, bits, profile, sprime) {
+pub(crate) fn run_oracle(
+    mesh: Option<&Path>,
+    bits: u32,
+    profile: &str,
+    sprime: &str,
+    certificate: Option<&Path>,
+) -> ExitCode {
+    let session = session(mesh, bits, profile, sprime).and_then(|mut s| {
+        if let Some(path) = certificate {
+            s.handle(&Request::SetCertificate {
+                path: path.to_path_buf(),
+            })
+            .map_err(|e| format!("--certificate: {e}"))?;
+        }
+        Ok(s)
+    });
+    let mut s = match session {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
