@@ -13,8 +13,15 @@
 //! edges; an edge taken up twice goes wider before passing curves in its region again. An
 //! edge that cannot be traced in its region (not even through other curves) is put back at
 //! the end of the queue once, so it goes around the others rather than through them. An
-//! edge with no path then is reported (`EmbedError::NoPath`). Deterministic: the order of
+//! edge with no path then starts the tracing again with that edge first (at most
+//! [`RESTARTS`] times; it is reported, `EmbedError::NoPath`, when it has no path even traced
+//! first, and `fit_surface` then changes the base mesh there). Deterministic: the order of
 //! the queue, the costs and Dijkstra's ties are fixed.
+//!
+//! **Base edges that are edges of S_T** are traced before all others, along that edge (the
+//! shortest path on |S_T| between its ends, so already the geodesic), and are never taken
+//! up: traced in the greedy order, another curve could cross such an edge, and then nothing
+//! joined its ends (bunny at 10⁻³ of the diagonal, anchor).
 
 use super::base::{BaseMesh, Param};
 use super::embed_checks::{local, meet, only_at};
