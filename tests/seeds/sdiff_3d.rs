@@ -4,17 +4,18 @@
 use crate::common;
 
 use pseudomanifold::report::{CheckResult, Verdict};
-use pseudomanifold::sdiff::interval::IntervalVerdict;
-use pseudomanifold::sdiff::maps::Poly1;
-use pseudomanifold::sdiff::poly::{q, qr, Q};
-use pseudomanifold::sdiff::positivity::{Budget, Decision};
-use pseudomanifold::sdiff::tet_checks::{check_all3, det_decision, Options3};
-use pseudomanifold::sdiff::tet_complex::{self, TetComplex, TetComplexError};
-use pseudomanifold::sdiff::tet_interval::certify_det_tet;
-use pseudomanifold::sdiff::tet_iso::{isosurfaces, kuhn_lattice, IsoError3};
-use pseudomanifold::sdiff::tet_maps::{fixed_control4, multi_indices4, random_adjusted4};
-use pseudomanifold::sdiff::tet_params::{self, MapSpec3, TetMap};
-use pseudomanifold::sdiff::{claims, tet_search};
+use pseudomanifold::sdiff::planar::claims;
+use pseudomanifold::sdiff::planar::interval::IntervalVerdict;
+use pseudomanifold::sdiff::planar::maps::Poly1;
+use pseudomanifold::sdiff::planar::poly::{q, qr, Q};
+use pseudomanifold::sdiff::planar::positivity::{Budget, Decision};
+use pseudomanifold::sdiff::tet::checks::{check_all3, det_decision, Options3};
+use pseudomanifold::sdiff::tet::complex::{self as tet_complex, TetComplex, TetComplexError};
+use pseudomanifold::sdiff::tet::interval::certify_det_tet;
+use pseudomanifold::sdiff::tet::iso::{isosurfaces, kuhn_lattice, IsoError3};
+use pseudomanifold::sdiff::tet::maps::{fixed_control4, multi_indices4, random_adjusted4};
+use pseudomanifold::sdiff::tet::params::{self as tet_params, MapSpec3, TetMap};
+use pseudomanifold::sdiff::tet::search as tet_search;
 use rand::{Rng, SeedableRng};
 use std::path::{Path, PathBuf};
 
@@ -532,7 +533,7 @@ fn sd_e9_hyp_3_d_sd_l131_3_d_planted_monotone_and_unity_faults_are_caught() {
     let mut bad = TetMap::bezier(1, fixed_control4(1), None);
     bad.control[0][0] = qr(11, 10);
     let bad = TetMap::bezier(1, bad.control, None);
-    let r = pseudomanifold::sdiff::tet_checks::partition_of_unity3(&[bad]);
+    let r = pseudomanifold::sdiff::tet::checks::partition_of_unity3(&[bad]);
     assert!(r.failed(), "{r:?}");
 }
 

@@ -23,12 +23,12 @@
 //! c = "0"
 //! ```
 
-use super::maps::Poly1;
-use super::params::{parse_spec, read_spec, FamilySpec, Multiset, ParamError, Spec};
-use super::poly::{q, Q};
-use super::tet::Poly3;
-use super::tet_complex::TetComplex;
-use super::tet_maps::{bernstein4, fixed_control4, multi_indices4};
+use super::complex::TetComplex;
+use super::maps::{bernstein4, fixed_control4, multi_indices4};
+use super::poly::Poly3;
+use crate::sdiff::planar::maps::Poly1;
+use crate::sdiff::planar::params::{parse_spec, read_spec, FamilySpec, Multiset, ParamError, Spec};
+use crate::sdiff::planar::poly::{q, Q};
 use num_traits::Zero;
 use std::path::Path;
 

@@ -11,14 +11,14 @@
 //! d = c − ι (matrix determinant lemma, Σ d_k = 0). [`closed_form_top`] builds it; the search
 //! checks the engine's numerator against it as a polynomial identity.
 
-use super::claims::unit_open;
-use super::poly::{q, qr, Q};
-use super::positivity::Budget;
 use super::simplex_poly::{
     det_decision, fixed_control, indices, is_solitary, SimplexDecision, SimplexError, SimplexMapM,
     SimplexPoly,
 };
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::planar::claims::unit_open;
+use crate::sdiff::planar::poly::{q, qr, Q};
+use crate::sdiff::planar::positivity::Budget;
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;

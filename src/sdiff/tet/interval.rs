@@ -14,13 +14,13 @@
 //! certifies or gives up; it never refutes (a refutation needs an exact value,
 //! `tet::decide_tet`).
 
-use super::interval::{enclose, IntervalVerdict};
-use super::maps::Poly1;
-use super::params::FamilySpec;
-use super::poly::multinomial;
-use super::tet_maps::multi_indices4;
-use super::tet_params::TetMap;
+use super::maps::multi_indices4;
+use super::params::TetMap;
 use crate::numeric::interval::Interval as I;
+use crate::sdiff::planar::interval::{enclose, IntervalVerdict};
+use crate::sdiff::planar::maps::Poly1;
+use crate::sdiff::planar::params::FamilySpec;
+use crate::sdiff::planar::poly::multinomial;
 use num_traits::ToPrimitive;
 use std::collections::HashMap;
 

@@ -16,10 +16,10 @@
 
 use super::complex::PlanarComplex;
 use super::edge::{local, restrict, trim, u_axpy, u_eval, u_mul, u_rem, Frame, UPoly};
-use super::linsys::{positive_solution, rref, Positive, Rref};
 use super::params::{ComplexMap, FamilySpec, MapSpec, Multiset};
 use super::poly::{multi_indices, q, Poly2, Q};
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::common::linsys::{positive_solution, rref, Positive, Rref};
 use num_traits::Zero;
 use serde_json::json;
 use std::collections::{BTreeMap, HashMap};

@@ -14,12 +14,12 @@
 //! construction with X = id, where it is exact up to the crossing points' rounding (f̂ is linear
 //! on every small tetrahedron).
 
-use super::poly::{q, to_f64, Q};
-use super::tet::Poly3;
-use super::tet_complex::TetComplex;
-use super::tet_maps::fixed_control4;
-use super::tet_params::TetMap;
+use super::complex::TetComplex;
+use super::maps::fixed_control4;
+use super::params::TetMap;
+use super::poly::Poly3;
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::planar::poly::{q, to_f64, Q};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 use std::collections::HashMap;

@@ -158,7 +158,7 @@ pub enum FamilySpec {
 pub type Multiset = Vec<u32>;
 
 /// A parsed parameter file for simplices of dimension D (the planar one, D = 2, and the
-/// tetrahedral one of `tet_params`, D = 3: one format, one parser).
+/// tetrahedral one of `tet::params`, D = 3: one format, one parser).
 #[derive(Debug, Clone)]
 pub struct Spec<const D: usize> {
     /// The family.

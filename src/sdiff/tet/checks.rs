@@ -3,22 +3,22 @@
 //! algebraic: partition of unity and K-invariance on faces as polynomial identities, X(σ) ⊂ σ
 //! and det DX > 0 on every closed tetrahedron by trivariate Bernstein certificates over ℚ
 //! (`tet::decide_tet_with`), agreement on shared triangles as bivariate polynomial identities,
-//! and the interval route of `tet_interval` compared with the exact one.
+//! and the interval route of `tet::interval` compared with the exact one.
 //!
 //! Injectivity on σ follows from det DX > 0 on the closed σ and K-invariance (L101,
 //! Meisters–Olech): X maps each face into its own plane, so DX is block-triangular there and
 //! det DX ≠ 0 makes every face and edge restriction a local diffeomorphism too.
 
-use super::interval::IntervalVerdict;
-use super::params::{FamilySpec, Multiset};
-use super::poly::{q, qr, to_f64, Q};
-use super::positivity::{decide_on, Budget, Decision, Strictness};
-use super::tet::{decide_tet_with, jacobian_numerator, Poly3};
-use super::tet_complex::TetComplex;
-use super::tet_interval::certify_det_tet;
-use super::tet_maps::multi_indices4;
-use super::tet_params::{MapSpec3, TetMap};
+use super::complex::TetComplex;
+use super::interval::certify_det_tet;
+use super::maps::multi_indices4;
+use super::params::{MapSpec3, TetMap};
+use super::poly::{decide_tet_with, jacobian_numerator, Poly3};
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::planar::interval::IntervalVerdict;
+use crate::sdiff::planar::params::{FamilySpec, Multiset};
+use crate::sdiff::planar::poly::{q, qr, to_f64, Q};
+use crate::sdiff::planar::positivity::{decide_on, Budget, Decision, Strictness};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 

@@ -8,9 +8,9 @@
 //! det DX is independent of the embedding of the tetrahedron (DX = J·A·J⁻¹ in the plane), so
 //! the reference tetrahedron ⟨0, e_1, e_2, e_3⟩ with chart (s, t, r) = (w_1, w_2, w_3) suffices.
 
-use super::maps::Poly1;
-use super::poly::{multinomial, q, qr, to_f64, Q};
-use super::positivity::{Budget, Cover, Decision, Strictness};
+use crate::sdiff::planar::maps::Poly1;
+use crate::sdiff::planar::poly::{multinomial, q, qr, to_f64, Q};
+use crate::sdiff::planar::positivity::{Budget, Cover, Decision, Strictness};
 use num_traits::{One, Signed, Zero};
 use std::collections::BTreeMap;
 
@@ -290,17 +290,21 @@ pub fn monotonic_det(g: &[Poly1; 4], budget: Budget) -> Decision {
 
 /// `SD-L115(3-D)`: seeded monotonic maps on the tetrahedron (g_i = a t + b t² + c t³ with
 /// a, b, c drawn as in the planar search), each certified or refuted exactly.
-pub fn search_monotonic(samples: usize, seed: u64, budget: Budget) -> super::claims::Search {
+pub fn search_monotonic(
+    samples: usize,
+    seed: u64,
+    budget: Budget,
+) -> crate::sdiff::planar::claims::Search {
     use rand::SeedableRng;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut s = super::claims::Search::default();
+    let mut s = crate::sdiff::planar::claims::Search::default();
     for _ in 0..samples {
         let g: [Poly1; 4] = std::array::from_fn(|_| {
             Poly1(vec![
                 q(0),
-                super::claims::unit_open(&mut rng) * q(10),
-                super::claims::unit_open(&mut rng) * q(10),
-                super::claims::unit_open(&mut rng) * q(10),
+                crate::sdiff::planar::claims::unit_open(&mut rng) * q(10),
+                crate::sdiff::planar::claims::unit_open(&mut rng) * q(10),
+                crate::sdiff::planar::claims::unit_open(&mut rng) * q(10),
             ])
         });
         match monotonic_det(&g, budget) {

@@ -25,8 +25,8 @@
 //! come from a sweep over bounding boxes, so the test is not quadratic on big inputs; sizes and
 //! the number of candidate pairs are bounded (typed errors, never a panic).
 
-use super::poly::{from_f64, Q};
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::planar::poly::{from_f64, Q};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 use std::collections::HashMap;

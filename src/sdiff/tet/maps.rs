@@ -3,12 +3,12 @@
 //! exact det DX certificate of `tet` (D > 0 first, then the Jacobian numerator). Used for the
 //! 3-D readings of L141 (adjusted quadratics) and L146 (degree 4, every non-solitary control
 //! point fixed, the solitary (1,1,1,1) free in the open tetrahedron; proved for m = 3).
-//! The independent interval route for tetrahedra is `tet_interval`.
+//! The independent interval route for tetrahedra is `tet::interval`.
 
-use super::claims::unit_open;
-use super::poly::{multinomial, q, Q};
-use super::positivity::{Budget, Decision};
-use super::tet::{decide_tet, jacobian_numerator, Poly3};
+use super::poly::{decide_tet, jacobian_numerator, Poly3};
+use crate::sdiff::planar::claims::unit_open;
+use crate::sdiff::planar::poly::{multinomial, q, Q};
+use crate::sdiff::planar::positivity::{Budget, Decision};
 use num_bigint::BigInt;
 use rand_chacha::ChaCha8Rng;
 

@@ -1,5 +1,5 @@
 //! Seeded searches of the rational family (Eq. (11)) on a tetrahedron (m = 3), each sample
-//! certified or refuted exactly by `tet_checks::det_decision` (SPEC `SD-L161(3-D)`):
+//! certified or refuted exactly by `tet::checks::det_decision` (SPEC `SD-L161(3-D)`):
 //!
 //! * L161 as stated ("adjusted rational, all control points fixed, weights positive ⇒
 //!   injective, for any dimension"), degrees 1..=4 in 3-D;
@@ -7,12 +7,12 @@
 //!   (random in their open faces) with random positive weights — the paper claims nothing
 //!   there, so a refutation is a finding about the hypothesis "fixed", not an erratum.
 
-use super::claims::Search;
-use super::poly::{q, qr, Q};
-use super::positivity::{Budget, Decision};
-use super::tet_checks::det_decision;
-use super::tet_maps::{fixed_control4, random_adjusted4};
-use super::tet_params::TetMap;
+use super::checks::det_decision;
+use super::maps::{fixed_control4, random_adjusted4};
+use super::params::TetMap;
+use crate::sdiff::planar::claims::Search;
+use crate::sdiff::planar::poly::{q, qr, Q};
+use crate::sdiff::planar::positivity::{Budget, Decision};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
