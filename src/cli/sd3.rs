@@ -63,7 +63,7 @@ fn load3(
     complex: &Path,
     params: &Path,
 ) -> Result<(TetComplex, MapSpec3, Vec<TetMap>, Vec<CheckResult>), String> {
-    let raw = tet::complex::read(complex).map_err(|e| e.to_string())?;
+    let raw = tet::file::read(complex).map_err(|e| e.to_string())?;
     let (k, rep) = match tet::complex::validate(&raw) {
         Ok(x) => x,
         Err(TetComplexError::Invalid(rep)) => {

@@ -2,18 +2,7 @@
 //! here m = 3), read from a small text format and validated exactly: coordinates are the
 //! stored doubles taken as exact rationals (SPEC `SD-K(3-D)`).
 //!
-//! The format (`.tets`, documented in `docs/sdiff-3d.md`): one record per line, `#` starts a
-//! comment, blank lines are ignored.
-//!
-//! ```text
-//! tets                 # the first record: the magic word
-//! v 0 0 0              # a vertex x y z; ids 0, 1, 2, … in order of appearance
-//! v 1 0 0
-//! v 0 1 0
-//! v 0 0 1
-//! t 0 1 2 3            # a tetrahedron by 0-based vertex ids, positively oriented:
-//!                      # det[v1 − v0, v2 − v0, v3 − v0] > 0
-//! ```
+//! The file format and its reader are in [`super::file`].
 //!
 //! The validator checks, each as a [`CheckResult`] naming the file, line and element: vertex
 //! indices in range and distinct, purity (every vertex in some tetrahedron), positive
@@ -30,44 +19,13 @@ use crate::sdiff::planar::poly::{from_f64, Q};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
-/// Largest file accepted.
-pub const MAX_FILE_BYTES: u64 = 64 << 20;
-/// Most vertices accepted.
-pub const MAX_VERTICES: usize = 1 << 20;
-/// Most tetrahedra accepted.
-pub const MAX_TETS: usize = 1 << 21;
+use super::file::RawTets;
+use crate::mesh::MeshError;
+
 /// Most candidate pairs (overlapping bounding boxes) the exact overlap test examines.
 pub const MAX_CANDIDATE_PAIRS: u64 = 20_000_000;
-
-/// A tetrahedral complex as read, before validation.
-#[derive(Debug, Clone, Default)]
-pub struct RawTets {
-    /// The file (names it in messages).
-    pub path: PathBuf,
-    /// Vertex positions as read.
-    pub positions: Vec<[f64; 3]>,
-    /// Source line of each vertex (1-based).
-    pub vertex_lines: Vec<usize>,
-    /// Tetrahedra as read (vertex ids, unchecked).
-    pub tets: Vec<[u32; 4]>,
-    /// Source line of each tetrahedron (1-based).
-    pub tet_lines: Vec<usize>,
-}
-
-impl RawTets {
-    /// "FILE:LINE vertex V".
-    pub fn describe_vertex(&self, v: usize) -> String {
-        let line = self.vertex_lines.get(v).copied().unwrap_or(0);
-        format!("{}:{line}: vertex {v}", self.path.display())
-    }
-    /// "FILE:LINE tetrahedron T".
-    pub fn describe_tet(&self, t: usize) -> String {
-        let line = self.tet_lines.get(t).copied().unwrap_or(0);
-        format!("{}:{line}: tetrahedron {t}", self.path.display())
-    }
-}
 
 /// A validated tetrahedral complex (only [`validate`] makes one).
 #[derive(Debug, Clone)]
@@ -83,36 +41,9 @@ pub struct TetComplex {
 /// Why a file is not a tetrahedral complex.
 #[derive(Debug, thiserror::Error)]
 pub enum TetComplexError {
-    /// Could not read.
-    #[error("{path}: {source}")]
-    Io {
-        /// The file.
-        path: PathBuf,
-        /// The cause.
-        source: std::io::Error,
-    },
-    /// Larger than a limit.
-    #[error("{path}: {what} is {value}, above the limit {limit}")]
-    TooLarge {
-        /// The file.
-        path: PathBuf,
-        /// What is too large.
-        what: &'static str,
-        /// Its size.
-        value: u64,
-        /// The limit.
-        limit: u64,
-    },
-    /// A record that cannot be read.
-    #[error("{path}:{line}: {message}")]
-    Parse {
-        /// The file.
-        path: PathBuf,
-        /// Line (1-based).
-        line: usize,
-        /// What is wrong.
-        message: String,
-    },
+    /// The file cannot be read: I/O, size and count limits, syntax (file and line named).
+    #[error(transparent)]
+    Read(#[from] MeshError),
     /// A coordinate is NaN or infinite.
     #[error("{vertex}: coordinate {value} is not finite")]
     NotFinite {
@@ -138,124 +69,6 @@ pub enum TetComplexError {
     /// The validation found offenders (the report lists them).
     #[error("the input is not a tetrahedral complex (see the report)")]
     Invalid(Vec<CheckResult>),
-}
-
-/// Reads a `.tets` file (size checked before reading).
-pub fn read(path: &Path) -> Result<RawTets, TetComplexError> {
-    let io = |source| TetComplexError::Io {
-        path: path.into(),
-        source,
-    };
-    let meta = std::fs::metadata(path).map_err(io)?;
-    if meta.len() > MAX_FILE_BYTES {
-        return Err(TetComplexError::TooLarge {
-            path: path.into(),
-            what: "the file size",
-            value: meta.len(),
-            limit: MAX_FILE_BYTES,
-        });
-    }
-    let bytes = std::fs::read(path).map_err(io)?;
-    let text = String::from_utf8(bytes).map_err(|e| {
-        let line = 1 + e.as_bytes()[..e.utf8_error().valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count();
-        TetComplexError::Parse {
-            path: path.into(),
-            line,
-            message: "not UTF-8".into(),
-        }
-    })?;
-    parse(&text, path)
-}
-
-/// Parses the text of a `.tets` file (`path` only names it in errors).
-pub fn parse(text: &str, path: &Path) -> Result<RawTets, TetComplexError> {
-    let mut raw = RawTets {
-        path: path.into(),
-        ..RawTets::default()
-    };
-    let err = |line: usize, message: String| TetComplexError::Parse {
-        path: path.into(),
-        line,
-        message,
-    };
-    let mut seen_magic = false;
-    for (k, full) in text.lines().enumerate() {
-        let line = k + 1;
-        let body = full.split('#').next().unwrap_or("");
-        let mut words = body.split_whitespace();
-        let Some(tag) = words.next() else {
-            continue;
-        };
-        let rest: Vec<&str> = words.collect();
-        if !seen_magic {
-            if tag != "tets" || !rest.is_empty() {
-                return Err(err(
-                    line,
-                    format!("expected the header `tets`, found `{}`", body.trim()),
-                ));
-            }
-            seen_magic = true;
-            continue;
-        }
-        match tag {
-            "v" => {
-                if rest.len() != 3 {
-                    return Err(err(
-                        line,
-                        format!("`v` needs 3 coordinates, found {}", rest.len()),
-                    ));
-                }
-                if raw.positions.len() >= MAX_VERTICES {
-                    return Err(TetComplexError::TooLarge {
-                        path: path.into(),
-                        what: "the vertex count",
-                        value: raw.positions.len() as u64 + 1,
-                        limit: MAX_VERTICES as u64,
-                    });
-                }
-                let mut p = [0.0; 3];
-                for (c, w) in rest.iter().enumerate() {
-                    p[c] = w
-                        .parse::<f64>()
-                        .map_err(|_| err(line, format!("`{w}` is not a number")))?;
-                }
-                raw.positions.push(p);
-                raw.vertex_lines.push(line);
-            }
-            "t" => {
-                if rest.len() != 4 {
-                    return Err(err(
-                        line,
-                        format!("`t` needs 4 vertex ids, found {}", rest.len()),
-                    ));
-                }
-                if raw.tets.len() >= MAX_TETS {
-                    return Err(TetComplexError::TooLarge {
-                        path: path.into(),
-                        what: "the tetrahedron count",
-                        value: raw.tets.len() as u64 + 1,
-                        limit: MAX_TETS as u64,
-                    });
-                }
-                let mut t = [0u32; 4];
-                for (c, w) in rest.iter().enumerate() {
-                    t[c] = w.parse::<u32>().map_err(|_| {
-                        err(line, format!("`{w}` is not a vertex id (0 ≤ id < 2³²)"))
-                    })?;
-                }
-                raw.tets.push(t);
-                raw.tet_lines.push(line);
-            }
-            other => return Err(err(line, format!("unknown record `{other}` (v or t)"))),
-        }
-    }
-    if !seen_magic {
-        return Err(err(1, "no header `tets`".into()));
-    }
-    Ok(raw)
 }
 
 /// det\[b − a, c − a, d − a\] (six times the signed volume), exact.
