@@ -2,6 +2,7 @@
 //! polynomials on the m-simplex and the claim search of L146 in any dimension, and exact
 //! homogeneous linear systems over ℚ.
 
+pub(crate) mod complex;
 pub mod linsys;
 pub mod simplex_poly;
 pub mod simplex_search;

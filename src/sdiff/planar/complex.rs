@@ -10,8 +10,9 @@
 use super::poly::{from_f64, Q};
 use crate::mesh::raw::RawMesh;
 use crate::report::{CheckResult, Witness};
-use num_traits::{Signed, Zero};
-use std::collections::HashMap;
+use crate::sdiff::common::complex::{self as common, OrientationWords, Words};
+use num_traits::Signed;
+use serde_json::{Map, Value};
 
 /// A validated planar complex: every triangle positively oriented, no overlaps, ≤ 2
 /// triangles per edge (only [`validate`] makes one).
@@ -84,114 +85,39 @@ pub fn validate(raw: &RawMesh) -> Result<(PlanarComplex, Vec<CheckResult>), Comp
             from_f64(p[1]).unwrap_or_default(),
         ]);
     }
-    let nv = points.len();
-    let mut report = Vec::new();
-
-    let mut range = CheckResult::new("SD-K-indices", "triangle vertex indices are in range");
-    let mut ok_faces = Vec::new();
-    for (f, t) in raw.faces.iter().enumerate() {
-        range.examined += 1;
-        if t.iter().any(|&v| v as usize >= nv) {
-            range.offend(|| {
-                Witness::new(
-                    format!("{} names vertex {:?} of {nv}", raw.describe_face(f), t),
-                    serde_json::json!({"face": f}),
-                )
-            });
-        } else if t[0] == t[1] || t[1] == t[2] || t[0] == t[2] {
-            range.offend(|| {
-                Witness::new(
-                    format!("{} repeats a vertex {:?}", raw.describe_face(f), t),
-                    serde_json::json!({"face": f}),
-                )
-            });
-        } else {
-            ok_faces.push(f);
-        }
-    }
-    report.push(range);
-
-    let mut pure = CheckResult::new(
+    let (range, ok_faces) =
+        common::indices(raw, "SD-K-indices", "triangle vertex indices are in range");
+    let pure = common::purity(
+        raw,
+        &ok_faces,
+        &WORDS,
         "SD-K-pure",
         "purity: every vertex is a vertex of some triangle",
     );
-    let mut used = vec![false; nv];
-    for &f in &ok_faces {
-        for &v in &raw.faces[f] {
-            used[v as usize] = true;
-        }
-    }
-    for (v, u) in used.iter().enumerate() {
-        pure.examined += 1;
-        if !u {
-            pure.offend(|| {
-                Witness::new(
-                    format!("{} is in no triangle", raw.describe_vertex(v)),
-                    serde_json::json!({"vertex": v}),
-                )
-            });
-        }
-    }
-    report.push(pure);
-
-    let mut orientation = CheckResult::new(
+    let (orientation, positive) = common::orientation(
+        raw,
+        &ok_faces,
+        |t| {
+            let [a, b, c] = t.map(|v| &points[v as usize]);
+            orient(a, b, c)
+        },
+        &OrientationWords {
+            degenerate: "degenerate (collinear)",
+            negative: "clockwise",
+            key: "twice_area",
+        },
         "SD-K-orientation",
         "every triangle is positively oriented (exact sign)",
     );
-    for &f in &ok_faces {
-        orientation.examined += 1;
-        let t = raw.faces[f];
-        let o = orient(
-            &points[t[0] as usize],
-            &points[t[1] as usize],
-            &points[t[2] as usize],
-        );
-        if !o.is_positive() {
-            let what = if o.is_zero() {
-                "degenerate (collinear)"
-            } else {
-                "clockwise"
-            };
-            orientation.offend(|| {
-                Witness::new(
-                    format!("{} is {what}", raw.describe_face(f)),
-                    serde_json::json!({"face": f, "twice_area": o.to_string()}),
-                )
-            });
-        }
-    }
-    report.push(orientation);
-
-    let mut facets = CheckResult::new(
+    let facets = common::facets::<3, 2>(
+        raw,
+        &ok_faces,
+        &WORDS,
         "SD-K-facets",
         "every edge is a face of at most two triangles",
     );
-    let mut edges: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
-    for &f in &ok_faces {
-        let t = raw.faces[f];
-        for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            edges.entry((a.min(b), a.max(b))).or_default().push(f);
-        }
-    }
-    let mut keys: Vec<_> = edges.keys().copied().collect();
-    keys.sort_unstable();
-    for e in keys {
-        facets.examined += 1;
-        let fs = &edges[&e];
-        if fs.len() > 2 {
-            facets.offend(|| {
-                Witness::new(
-                    format!("edge {:?} is in {} triangles: {:?}", e, fs.len(), fs),
-                    serde_json::json!({"edge": e, "faces": fs}),
-                )
-            });
-        }
-    }
-    report.push(facets);
-
-    let overlaps = overlap_check(raw, &points, &ok_faces);
-    report.push(overlaps);
+    let overlaps = overlap_check(raw, &points, &positive);
+    let report = vec![range, pure, orientation, facets, overlaps];
 
     if report.iter().any(|r| r.failed()) {
         return Err(ComplexError::Invalid(report));
@@ -225,65 +151,65 @@ fn overlap_check(raw: &RawMesh, points: &[[Q; 2]], faces: &[usize]) -> CheckResu
         "SD-K-overlap",
         "no two triangles have intersecting interiors (exact)",
     );
-    // Sweep over x: bounding boxes sorted by their left end.
-    let bbox = |f: usize| {
-        let t = raw.faces[f];
-        let xs = t.map(|v| raw.positions[v as usize][0]);
-        let ys = t.map(|v| raw.positions[v as usize][1]);
-        (
-            xs.iter().cloned().fold(f64::INFINITY, f64::min),
-            xs.iter().cloned().fold(f64::NEG_INFINITY, f64::max),
-            ys.iter().cloned().fold(f64::INFINITY, f64::min),
-            ys.iter().cloned().fold(f64::NEG_INFINITY, f64::max),
-        )
-    };
-    let mut order: Vec<(f64, f64, f64, f64, usize)> = faces
+    let boxes = faces
         .iter()
         .map(|&f| {
-            let (a, b, c, d) = bbox(f);
-            (a, b, c, d, f)
+            let at = |v: usize| [raw.positions[v][0], raw.positions[v][1]];
+            common::bbox(&raw.faces[f], at, f)
         })
         .collect();
-    order.sort_by(|p, q| p.0.total_cmp(&q.0).then(p.4.cmp(&q.4)));
     let tri = |f: usize| raw.faces[f].map(|v| points[v as usize].clone());
-    let mut active: Vec<(f64, f64, f64, f64, usize)> = Vec::new();
-    for cur in order {
-        active.retain(|a| a.1 >= cur.0);
-        for a in &active {
-            if a.2 > cur.3 || cur.2 > a.3 {
-                continue;
-            }
-            r.examined += 1;
-            let (f, g) = (a.4.min(cur.4), a.4.max(cur.4));
-            let (ta, tb) = (tri(f), tri(g));
-            let oa = orient(&ta[0], &ta[1], &ta[2]);
-            let ob = orient(&tb[0], &tb[1], &tb[2]);
-            if !oa.is_positive() || !ob.is_positive() {
-                continue; // reported by the orientation check
-            }
-            if interiors_meet(&ta, &tb) {
-                r.offend(|| {
-                    Witness::new(
-                        format!(
-                            "{} and {} overlap",
-                            raw.describe_face(f),
-                            raw.describe_face(g)
-                        ),
-                        serde_json::json!({"faces": [f, g]}),
-                    )
-                });
-            }
+    // No limit on the pairs: planar inputs have never needed one (the 3-D sweep has one).
+    let pairs = common::sweep_pairs::<2>(boxes, None, |f, g| {
+        if interiors_meet(&tri(f), &tri(g)) {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "{} and {} overlap",
+                        raw.describe_face(f),
+                        raw.describe_face(g)
+                    ),
+                    serde_json::json!({"faces": [f, g]}),
+                )
+            });
         }
-        active.push(cur);
-    }
-    if r.examined == 0 && faces.len() > 1 {
-        r.note = "no two triangles have overlapping bounding boxes".into();
-    }
+    });
+    r.examined = pairs.unwrap_or_else(|n| n);
     if faces.len() <= 1 {
-        r.skip("fewer than two triangles");
+        r.skip("fewer than two positively oriented triangles");
+    } else if r.examined == 0 {
+        r.note = "no two triangles have overlapping bounding boxes".into();
     }
     r
 }
+
+/// Planar cells as [`common::RawCells`]: triangles named by face (and line, when known).
+impl common::RawCells<3> for RawMesh {
+    fn cells(&self) -> &[[u32; 3]] {
+        &self.faces
+    }
+    fn vertex_count(&self) -> usize {
+        self.positions.len()
+    }
+    fn describe_cell(&self, f: usize) -> String {
+        self.describe_face(f)
+    }
+    fn describe_vertex(&self, v: usize) -> String {
+        RawMesh::describe_vertex(self, v)
+    }
+    fn cell_fields(&self, f: usize) -> Map<String, Value> {
+        Map::from_iter([("face".to_string(), Value::from(f))])
+    }
+    fn vertex_fields(&self, v: usize) -> Map<String, Value> {
+        Map::from_iter([("vertex".to_string(), Value::from(v))])
+    }
+}
+
+const WORDS: Words = Words {
+    cell: "triangle",
+    cells: "triangles",
+    facet: "edge",
+};
 
 impl PlanarComplex {
     /// Barycentric coordinates of the plane point `p` with respect to triangle `f` (exact).
@@ -305,17 +231,11 @@ impl PlanarComplex {
     }
     /// Interior edges as (a, b, f, g): a < b, triangles f and g share it.
     pub fn interior_edges(&self) -> Vec<(u32, u32, usize, usize)> {
-        let mut m: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
-        for (f, t) in self.triangles.iter().enumerate() {
-            for k in 0..3 {
-                let (a, b) = (t[k], t[(k + 1) % 3]);
-                m.entry((a.min(b), a.max(b))).or_default().push(f);
-            }
-        }
+        let m = common::facet_map::<3, 2>(&self.triangles, 0..self.triangles.len());
         let mut v: Vec<_> = m
             .into_iter()
             .filter(|(_, fs)| fs.len() == 2)
-            .map(|((a, b), fs)| (a, b, fs[0], fs[1]))
+            .map(|([a, b], fs)| (a, b, fs[0], fs[1]))
             .collect();
         v.sort_unstable();
         v

@@ -15,10 +15,10 @@
 //! the number of candidate pairs are bounded (typed errors, never a panic).
 
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::common::complex::{self as common, OrientationWords, Words};
 use crate::sdiff::planar::poly::{from_f64, Q};
-use num_traits::{Signed, Zero};
-use serde_json::json;
-use std::collections::HashMap;
+use num_traits::Zero;
+use serde_json::{json, Map, Value};
 use std::path::PathBuf;
 
 use super::file::RawTets;
@@ -90,18 +90,7 @@ fn dot(u: &[Q; 3], v: &[Q; 3]) -> Q {
 
 /// The four triangle faces of a tetrahedron, each a sorted vertex triple.
 pub fn faces_of(t: &[u32; 4]) -> [[u32; 3]; 4] {
-    std::array::from_fn(|skip| {
-        let mut f = [0u32; 3];
-        let mut j = 0;
-        for (k, &v) in t.iter().enumerate() {
-            if k != skip {
-                f[j] = v;
-                j += 1;
-            }
-        }
-        f.sort_unstable();
-        f
-    })
+    common::facets_of(t)
 }
 
 /// Validates `raw` as a tetrahedral complex with boundary; the report lists every check.
@@ -122,121 +111,41 @@ pub fn validate(raw: &RawTets) -> Result<(TetComplex, Vec<CheckResult>), TetComp
         }
         points.push(q);
     }
-    let nv = points.len();
-    let mut report = Vec::new();
-
-    let mut range = CheckResult::new(
+    let (range, ok) = common::indices(
+        raw,
         "SD-K(3-D)-indices",
         "tetrahedron vertex ids are in range and distinct",
     );
-    let mut ok = Vec::new();
-    for (f, t) in raw.tets.iter().enumerate() {
-        range.examined += 1;
-        if let Some(&v) = t.iter().find(|&&v| v as usize >= nv) {
-            range.offend(|| {
-                Witness::new(
-                    format!(
-                        "{} names vertex {v}, the file has {nv}",
-                        raw.describe_tet(f)
-                    ),
-                    json!({"tet": f, "line": raw.tet_lines[f], "vertex": v}),
-                )
-            });
-        } else if (0..4).any(|a| (a + 1..4).any(|b| t[a] == t[b])) {
-            range.offend(|| {
-                Witness::new(
-                    format!("{} repeats a vertex: {t:?}", raw.describe_tet(f)),
-                    json!({"tet": f, "line": raw.tet_lines[f]}),
-                )
-            });
-        } else {
-            ok.push(f);
-        }
-    }
-    report.push(range);
-
-    let mut pure = CheckResult::new(
+    let pure = common::purity(
+        raw,
+        &ok,
+        &WORDS,
         "SD-K(3-D)-pure",
         "purity: every vertex is a vertex of some tetrahedron",
     );
-    let mut used = vec![false; nv];
-    for &f in &ok {
-        for &v in &raw.tets[f] {
-            used[v as usize] = true;
-        }
-    }
-    for (v, u) in used.iter().enumerate() {
-        pure.examined += 1;
-        if !u {
-            pure.offend(|| {
-                Witness::new(
-                    format!("{} is in no tetrahedron", raw.describe_vertex(v)),
-                    json!({"vertex": v, "line": raw.vertex_lines[v]}),
-                )
-            });
-        }
-    }
-    report.push(pure);
-
-    let tet = |f: usize| raw.tets[f].map(|v| &points[v as usize]);
-    let mut orientation = CheckResult::new(
+    let (orientation, positive) = common::orientation(
+        raw,
+        &ok,
+        |t| {
+            let [a, b, c, d] = t.map(|v| &points[v as usize]);
+            orient3(a, b, c, d)
+        },
+        &OrientationWords {
+            degenerate: "degenerate (coplanar)",
+            negative: "negatively oriented",
+            key: "six_volume",
+        },
         "SD-K(3-D)-orientation",
         "every tetrahedron is positively oriented (exact sign)",
     );
-    let mut positive = Vec::new();
-    for &f in &ok {
-        orientation.examined += 1;
-        let p = tet(f);
-        let o = orient3(p[0], p[1], p[2], p[3]);
-        if o.is_positive() {
-            positive.push(f);
-        } else {
-            let what = if o.is_zero() {
-                "degenerate (coplanar)"
-            } else {
-                "negatively oriented"
-            };
-            orientation.offend(|| {
-                Witness::new(
-                    format!("{} is {what}", raw.describe_tet(f)),
-                    json!({"tet": f, "line": raw.tet_lines[f], "six_volume": o.to_string()}),
-                )
-            });
-        }
-    }
-    report.push(orientation);
-
-    let mut facets = CheckResult::new(
+    let facets = common::facets::<4, 3>(
+        raw,
+        &ok,
+        &WORDS,
         "SD-K(3-D)-faces",
         "every triangle is a face of at most two tetrahedra",
     );
-    let mut by_face: HashMap<[u32; 3], Vec<usize>> = HashMap::new();
-    for &f in &ok {
-        for tri in faces_of(&raw.tets[f]) {
-            by_face.entry(tri).or_default().push(f);
-        }
-    }
-    let mut keys: Vec<_> = by_face.keys().copied().collect();
-    keys.sort_unstable();
-    for tri in keys {
-        facets.examined += 1;
-        let ts = &by_face[&tri];
-        if ts.len() > 2 {
-            let lines: Vec<usize> = ts.iter().map(|&f| raw.tet_lines[f]).collect();
-            facets.offend(|| {
-                Witness::new(
-                    format!(
-                        "{}: triangle {tri:?} is a face of {} tetrahedra {ts:?} (lines {lines:?})",
-                        raw.path.display(),
-                        ts.len()
-                    ),
-                    json!({"face": tri, "tets": ts, "lines": lines}),
-                )
-            });
-        }
-    }
-    report.push(facets);
-
+    let mut report = vec![range, pure, orientation, facets];
     report.push(overlap_check(raw, &points, &positive)?);
 
     if report.iter().any(|r| r.failed()) {
@@ -307,8 +216,6 @@ fn min_max(v: &[Q]) -> (&Q, &Q) {
     (lo, hi)
 }
 
-type Bbox = ([f64; 3], [f64; 3], usize);
-
 fn overlap_check(
     raw: &RawTets,
     points: &[[Q; 3]],
@@ -318,51 +225,29 @@ fn overlap_check(
         "SD-K(3-D)-overlap",
         "no two tetrahedra have intersecting interiors (exact)",
     );
-    let bbox = |f: usize| -> Bbox {
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for &v in &raw.tets[f] {
-            let p = raw.positions[v as usize];
-            for k in 0..3 {
-                lo[k] = lo[k].min(p[k]);
-                hi[k] = hi[k].max(p[k]);
-            }
-        }
-        (lo, hi, f)
-    };
-    let mut order: Vec<Bbox> = tets.iter().map(|&f| bbox(f)).collect();
-    order.sort_by(|p, q| p.0[0].total_cmp(&q.0[0]).then(p.2.cmp(&q.2)));
+    let boxes = tets
+        .iter()
+        .map(|&f| common::bbox(&raw.tets[f], |v| raw.positions[v], f))
+        .collect();
     let tet = |f: usize| raw.tets[f].map(|v| &points[v as usize]);
-    let mut active: Vec<Bbox> = Vec::new();
-    for cur in order {
-        active.retain(|a| a.1[0] >= cur.0[0]);
-        for a in &active {
-            if (1..3).any(|k| a.0[k] > cur.1[k] || cur.0[k] > a.1[k]) {
-                continue;
-            }
-            r.examined += 1;
-            if r.examined > MAX_CANDIDATE_PAIRS {
-                return Err(TetComplexError::TooManyPairs {
-                    path: raw.path.clone(),
-                    pairs: r.examined,
-                });
-            }
-            let (f, g) = (a.2.min(cur.2), a.2.max(cur.2));
-            if interiors_meet(&tet(f), &tet(g)) {
-                r.offend(|| {
-                    Witness::new(
-                        format!(
-                            "{} and {} overlap",
-                            raw.describe_tet(f),
-                            raw.describe_tet(g)
-                        ),
-                        json!({"tets": [f, g], "lines": [raw.tet_lines[f], raw.tet_lines[g]]}),
-                    )
-                });
-            }
+    let pairs = common::sweep_pairs::<3>(boxes, Some(MAX_CANDIDATE_PAIRS), |f, g| {
+        if interiors_meet(&tet(f), &tet(g)) {
+            r.offend(|| {
+                Witness::new(
+                    format!(
+                        "{} and {} overlap",
+                        raw.describe_tet(f),
+                        raw.describe_tet(g)
+                    ),
+                    json!({"tets": [f, g], "lines": [raw.tet_lines[f], raw.tet_lines[g]]}),
+                )
+            });
         }
-        active.push(cur);
-    }
+    });
+    r.examined = pairs.map_err(|pairs| TetComplexError::TooManyPairs {
+        path: raw.path.clone(),
+        pairs,
+    })?;
     if tets.len() <= 1 {
         r.skip("fewer than two positively oriented tetrahedra");
     } else if r.examined == 0 {
@@ -370,6 +255,42 @@ fn overlap_check(
     }
     Ok(r)
 }
+
+/// Tetrahedra as [`common::RawCells`], named by file and line.
+impl common::RawCells<4> for RawTets {
+    fn cells(&self) -> &[[u32; 4]] {
+        &self.tets
+    }
+    fn vertex_count(&self) -> usize {
+        self.positions.len()
+    }
+    fn describe_cell(&self, f: usize) -> String {
+        self.describe_tet(f)
+    }
+    fn describe_vertex(&self, v: usize) -> String {
+        RawTets::describe_vertex(self, v)
+    }
+    fn cell_fields(&self, f: usize) -> Map<String, Value> {
+        let line = self.tet_lines.get(f).copied().unwrap_or(0);
+        Map::from_iter([
+            ("tet".to_string(), Value::from(f)),
+            ("line".to_string(), Value::from(line)),
+        ])
+    }
+    fn vertex_fields(&self, v: usize) -> Map<String, Value> {
+        let line = self.vertex_lines.get(v).copied().unwrap_or(0);
+        Map::from_iter([
+            ("vertex".to_string(), Value::from(v)),
+            ("line".to_string(), Value::from(line)),
+        ])
+    }
+}
+
+const WORDS: Words = Words {
+    cell: "tetrahedron",
+    cells: "tetrahedra",
+    facet: "triangle",
+};
 
 impl TetComplex {
     /// Barycentric coordinates of the point `p` with respect to tetrahedron `f` (exact).
@@ -385,12 +306,7 @@ impl TetComplex {
     }
     /// Interior triangles as (sorted vertex triple, tetrahedron f, tetrahedron g), f < g.
     pub fn interior_faces(&self) -> Vec<([u32; 3], usize, usize)> {
-        let mut m: HashMap<[u32; 3], Vec<usize>> = HashMap::new();
-        for (f, t) in self.tets.iter().enumerate() {
-            for tri in faces_of(t) {
-                m.entry(tri).or_default().push(f);
-            }
-        }
+        let m = common::facet_map::<4, 3>(&self.tets, 0..self.tets.len());
         let mut v: Vec<_> = m
             .into_iter()
             .filter(|(_, ts)| ts.len() == 2)
@@ -401,15 +317,10 @@ impl TetComplex {
     }
     /// Triangles that are a face of exactly one tetrahedron (the boundary ∂|K|).
     pub fn boundary_faces(&self) -> Vec<[u32; 3]> {
-        let mut m: HashMap<[u32; 3], usize> = HashMap::new();
-        for t in &self.tets {
-            for tri in faces_of(t) {
-                *m.entry(tri).or_default() += 1;
-            }
-        }
+        let m = common::facet_map::<4, 3>(&self.tets, 0..self.tets.len());
         let mut v: Vec<_> = m
             .into_iter()
-            .filter(|(_, n)| *n == 1)
+            .filter(|(_, ts)| ts.len() == 1)
             .map(|(t, _)| t)
             .collect();
         v.sort_unstable();
