@@ -3,6 +3,7 @@
 //! homogeneous linear systems over ℚ.
 
 pub(crate) mod complex;
+pub(crate) mod decide;
 pub mod linsys;
 pub mod simplex_poly;
 pub mod simplex_search;

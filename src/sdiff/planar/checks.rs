@@ -8,6 +8,7 @@ use super::params::ComplexMap;
 use super::poly::{multi_indices, q, qr, to_f64, Poly2, Q};
 use super::positivity::{decide, decide_on, Budget, Decision, Strictness};
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::common::decide::Tally;
 use num_traits::{Signed, Zero};
 use serde_json::json;
 
@@ -86,7 +87,7 @@ pub fn maps_into_simplex(cm: &ComplexMap, budget: Budget) -> CheckResult {
         "SD-D1(inside)",
         "Def. 1: X(σ) ⊂ σ, all x^c ≥ 0 on σ (exact)",
     );
-    let mut unresolved = 0u64;
+    let mut tally = Tally::default();
     for (f, m) in cm.maps.iter().enumerate() {
         for c in 0..3 {
             r.examined += 1;
@@ -96,33 +97,18 @@ pub fn maps_into_simplex(cm: &ComplexMap, budget: Budget) -> CheckResult {
             } else {
                 m.num[c].mul(&m.den)
             };
-            match decide(&p, Strictness::NonNegative, budget) {
-                Decision::Certified { .. } => {}
-                Decision::Refuted {
-                    point,
-                    value_f64,
-                    point_f64,
-                    ..
-                } => r.offend(|| {
-                    Witness::new(
-                        format!("triangle {f}: x^{c}·D = {value_f64:.3e} < 0 at w = {point_f64:?}"),
-                        json!({"triangle": f, "component": c, "w": point, "value": value_f64}),
-                    )
-                }),
-                Decision::Unresolved { .. } => unresolved += 1,
-            }
+            let d = decide(&p, Strictness::NonNegative, budget);
+            tally.record(&mut r, &d, |x| {
+                let (v, w) = (x.value_f64, x.point_f64);
+                Witness::new(
+                    format!("triangle {f}: x^{c}·D = {v:.3e} < 0 at w = {w:?}"),
+                    json!({"triangle": f, "component": c, "w": x.point, "value": v}),
+                )
+            });
         }
     }
-    inconclusive(&mut r, unresolved);
+    tally.finish(&mut r);
     r
-}
-
-fn inconclusive(r: &mut CheckResult, unresolved: u64) {
-    if unresolved > 0 && !r.failed() {
-        r.skip(format!(
-            "{unresolved} decisions unresolved within the subdivision budget"
-        ));
-    }
 }
 
 /// Mello–Velho Sec. 3 (L99): two triangles sharing an edge define the same X on it. Exact
@@ -187,9 +173,8 @@ pub fn det_positive_exact(cm: &ComplexMap, budget: Budget) -> (CheckResult, Vec<
         "det DX > 0 on every closed triangle (exact Bernstein certificate)",
     );
     let mut decisions = Vec::new();
-    let mut unresolved = 0u64;
+    let mut tally = Tally::default();
     let mut zero_on_boundary = 0u64;
-    let mut worst: Option<f64> = None;
     for (f, m) in cm.maps.iter().enumerate() {
         r.examined += 1;
         if m.family != Family::Polynomial {
@@ -211,45 +196,31 @@ pub fn det_positive_exact(cm: &ComplexMap, budget: Budget) -> (CheckResult, Vec<
                 continue;
             }
             if !dd.certified() {
-                unresolved += 1;
+                tally.unresolved();
                 decisions.push(dd);
                 continue;
             }
         }
         let d = decide(&m.jacobian_numerator(), Strictness::Positive, budget);
-        match &d {
-            Decision::Certified { lower_bound, .. } => {
-                worst = Some(worst.map_or(*lower_bound, |w: f64| w.min(*lower_bound)));
+        if let Decision::Refuted { point, value, .. } = &d {
+            if value == "0" && point.iter().any(|x| x == "0") {
+                zero_on_boundary += 1;
             }
-            Decision::Refuted {
-                point,
-                point_f64,
-                value,
-                value_f64,
-            } => {
-                let on_boundary = point.iter().any(|x| x == "0");
-                if on_boundary && value == "0" {
-                    zero_on_boundary += 1;
-                }
-                let (pt, p, v, vf) = (point.clone(), *point_f64, value.clone(), *value_f64);
-                r.offend(|| {
-                    Witness::new(
-                        format!(
-                            "triangle {f}: det DX numerator = {v} (≈ {vf:.3e}) ≤ 0 at w = {p:?}"
-                        ),
-                        json!({"triangle": f, "w": pt, "value": v}),
-                    )
-                });
-            }
-            Decision::Unresolved { .. } => unresolved += 1,
         }
+        tally.record(&mut r, &d, |x| {
+            let (v, vf, p) = (x.value, x.value_f64, x.point_f64);
+            Witness::new(
+                format!("triangle {f}: det DX numerator = {v} (≈ {vf:.3e}) ≤ 0 at w = {p:?}"),
+                json!({"triangle": f, "w": x.point, "value": v}),
+            )
+        });
         decisions.push(d);
     }
-    r.worst_deviation = worst;
+    r.worst_deviation = tally.worst();
     if zero_on_boundary > 0 && zero_on_boundary == r.offenders {
         r.note = format!("det vanishes only at boundary points of {zero_on_boundary} triangle(s): det > 0 can at most hold on the open triangles there");
     }
-    inconclusive(&mut r, unresolved);
+    tally.finish(&mut r);
     (r, decisions)
 }
 
@@ -394,7 +365,7 @@ pub fn edges_monotone(k: &PlanarComplex, cm: &ComplexMap, budget: Budget) -> Che
         "SD-L101(edges)",
         "X restricted to every edge is strictly increasing in the edge parameter (exact)",
     );
-    let mut unresolved = 0u64;
+    let mut tally = Tally::default();
     let seg = [[q(0), q(0)], [q(1), q(0)], [q(1), q(0)]];
     for (f, m) in cm.maps.iter().enumerate() {
         for la in 0..3 {
@@ -405,21 +376,21 @@ pub fn edges_monotone(k: &PlanarComplex, cm: &ComplexMap, budget: Budget) -> Che
             let d = m.den.compose_affine(&tri);
             // d/du (N_b / D) has the sign of N_b' D − N_b D'.
             let p = nb.ds().mul(&d).sub(&nb.mul(&d.ds()));
-            match decide_on(&p, seg.clone(), Strictness::Positive, budget) {
-                Decision::Certified { .. } => {}
-                Decision::Refuted {
-                    point_f64,
-                    value_f64,
-                    ..
-                } => {
-                    let (a, b) = (k.triangles[f][la], k.triangles[f][lb]);
-                    r.offend(|| Witness::new(format!("triangle {f}, edge ({a}→{b}) at u = {}: derivative numerator {value_f64:.3e} ≤ 0", point_f64[1]), json!({"triangle": f, "edge": [a, b], "u": point_f64[1]})));
-                }
-                Decision::Unresolved { .. } => unresolved += 1,
-            }
+            let d = decide_on(&p, seg.clone(), Strictness::Positive, budget);
+            let (a, b) = (k.triangles[f][la], k.triangles[f][lb]);
+            tally.record(&mut r, &d, |x| {
+                let (u, v) = (x.point_f64[1], x.value_f64);
+                Witness::new(
+                    format!(
+                        "triangle {f}, edge ({a}→{b}) at u = {u}: derivative numerator {v:.3e} ≤ 0"
+                    ),
+                    json!({"triangle": f, "edge": [a, b], "u": u}),
+                )
+            });
         }
     }
-    inconclusive(&mut r, unresolved);
+    // The edge checks report no lower bound (the worst deviation stays unset, as before).
+    tally.finish(&mut r);
     r
 }
 

@@ -22,6 +22,18 @@ pub struct Search {
     pub unresolved: u64,
 }
 
+impl Search {
+    /// Counts one sample's decision; a refuted map is kept with its description (made only
+    /// then). The one tally of the planar, the monotonic 3-D and the rational 3-D searches.
+    pub(crate) fn record(&mut self, d: Decision, describe: impl FnOnce() -> String) {
+        match d {
+            Decision::Certified { .. } => self.certified += 1,
+            d @ Decision::Refuted { .. } => self.refuted.push((describe(), d)),
+            Decision::Unresolved { .. } => self.unresolved += 1,
+        }
+    }
+}
+
 /// Certify or refute det DX > 0 (with D > 0 first) for one map.
 pub fn det_decision(m: &SimplexMap, budget: Budget) -> Decision {
     if m.family != super::maps::Family::Polynomial {
@@ -44,11 +56,7 @@ pub fn search(
     let mut s = Search::default();
     for _ in 0..samples {
         let (desc, m) = gen(&mut rng);
-        match det_decision(&m, budget) {
-            Decision::Certified { .. } => s.certified += 1,
-            d @ Decision::Refuted { .. } => s.refuted.push((desc, d)),
-            Decision::Unresolved { .. } => s.unresolved += 1,
-        }
+        s.record(det_decision(&m, budget), || desc);
     }
     s
 }

@@ -15,6 +15,7 @@ use super::maps::multi_indices4;
 use super::params::{MapSpec3, TetMap};
 use super::poly::{decide_tet_with, jacobian_numerator, Poly3};
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::common::decide::Tally;
 use crate::sdiff::planar::interval::IntervalVerdict;
 use crate::sdiff::planar::params::{FamilySpec, Multiset};
 use crate::sdiff::planar::poly::{q, qr, to_f64, Q};
@@ -37,14 +38,6 @@ impl Default for Options3 {
             budget: Budget::default(),
             interval_boxes: 20_000,
         }
-    }
-}
-
-fn inconclusive(r: &mut CheckResult, unresolved: u64) {
-    if unresolved > 0 && !r.failed() {
-        r.skip(format!(
-            "{unresolved} decisions unresolved within the subdivision budget"
-        ));
     }
 }
 
@@ -121,29 +114,22 @@ pub fn maps_into_simplex3(maps: &[TetMap], budget: Budget) -> CheckResult {
         "SD-D1(inside,3-D)",
         "Def. 1: X(σ) ⊂ σ, all x^c ≥ 0 on σ (exact)",
     );
-    let mut unresolved = 0u64;
+    let mut tally = Tally::default();
     for (f, m) in maps.iter().enumerate() {
         for c in 0..4 {
             r.examined += 1;
             let p = m.num[c].mul(&m.den);
-            match decide_tet_with(&p, Strictness::NonNegative, budget) {
-                Decision::Certified { .. } => {}
-                Decision::Refuted {
-                    point,
-                    point_f64,
-                    value_f64,
-                    ..
-                } => r.offend(|| {
-                    Witness::new(
-                        format!("tetrahedron {f}: x^{c}·D² = {value_f64:.3e} < 0 at (w_1, w_2, w_3) = {point_f64:?}"),
-                        json!({"tet": f, "component": c, "w123": point, "value": value_f64}),
-                    )
-                }),
-                Decision::Unresolved { .. } => unresolved += 1,
-            }
+            let d = decide_tet_with(&p, Strictness::NonNegative, budget);
+            tally.record(&mut r, &d, |x| {
+                let (v, w) = (x.value_f64, x.point_f64);
+                Witness::new(
+                    format!("tetrahedron {f}: x^{c}·D² = {v:.3e} < 0 at (w_1, w_2, w_3) = {w:?}"),
+                    json!({"tet": f, "component": c, "w123": x.point, "value": v}),
+                )
+            });
         }
     }
-    inconclusive(&mut r, unresolved);
+    tally.finish(&mut r);
     r
 }
 
@@ -347,33 +333,24 @@ pub fn det_positive_exact3(maps: &[TetMap], budget: Budget) -> (CheckResult, Vec
         "det DX > 0 on every closed tetrahedron (exact Bernstein certificate)",
     );
     let mut decisions = Vec::new();
-    let mut unresolved = 0u64;
-    let mut worst: Option<f64> = None;
+    let mut tally = Tally::default();
     for (f, m) in maps.iter().enumerate() {
         r.examined += 1;
         let d = det_decision(m, budget);
-        match &d {
-            Decision::Certified { lower_bound, .. } => {
-                worst = Some(worst.map_or(*lower_bound, |w: f64| w.min(*lower_bound)));
-            }
-            Decision::Refuted {
-                point,
-                point_f64,
-                value,
-                value_f64,
-            } => {
-                let (pt, p, v, vf) = (point.clone(), *point_f64, value.clone(), *value_f64);
-                r.offend(|| Witness::new(format!("tetrahedron {f}: D or the det DX numerator = {v} (≈ {vf:.3e}) ≤ 0 at (w_1, w_2, w_3) = {p:?}"), json!({"tet": f, "w123": pt, "value": v})));
-            }
-            Decision::Unresolved { .. } => unresolved += 1,
-        }
+        tally.record(&mut r, &d, |x| {
+            let (v, vf, p) = (x.value, x.value_f64, x.point_f64);
+            Witness::new(
+                format!("tetrahedron {f}: D or the det DX numerator = {v} (≈ {vf:.3e}) ≤ 0 at (w_1, w_2, w_3) = {p:?}"),
+                json!({"tet": f, "w123": x.point, "value": v}),
+            )
+        });
         decisions.push(d);
     }
-    r.worst_deviation = worst;
-    if worst.is_some() {
+    r.worst_deviation = tally.worst();
+    if r.worst_deviation.is_some() {
         r.note = "worst deviation = smallest Bernstein coefficient of a certificate (a lower bound of the det numerator)".into();
     }
-    inconclusive(&mut r, unresolved);
+    tally.finish(&mut r);
     (r, decisions)
 }
 

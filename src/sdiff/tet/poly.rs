@@ -307,19 +307,14 @@ pub fn search_monotonic(
                 crate::sdiff::planar::claims::unit_open(&mut rng) * q(10),
             ])
         });
-        match monotonic_det(&g, budget) {
-            Decision::Certified { .. } => s.certified += 1,
-            d @ Decision::Refuted { .. } => s.refuted.push((
-                format!(
-                    "{:?}",
-                    g.iter()
-                        .map(|p| p.0.iter().map(|x| x.to_string()).collect::<Vec<_>>())
-                        .collect::<Vec<_>>()
-                ),
-                d,
-            )),
-            Decision::Unresolved { .. } => s.unresolved += 1,
-        }
+        s.record(monotonic_det(&g, budget), || {
+            format!(
+                "{:?}",
+                g.iter()
+                    .map(|p| p.0.iter().map(|x| x.to_string()).collect::<Vec<_>>())
+                    .collect::<Vec<_>>()
+            )
+        });
     }
     s
 }

@@ -12,7 +12,7 @@ use super::maps::{fixed_control4, random_adjusted4};
 use super::params::TetMap;
 use crate::sdiff::planar::claims::Search;
 use crate::sdiff::planar::poly::{q, qr, Q};
-use crate::sdiff::planar::positivity::{Budget, Decision};
+use crate::sdiff::planar::positivity::Budget;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -60,11 +60,7 @@ pub fn search3(
     let mut s = Search::default();
     for _ in 0..samples {
         let m = gen(&mut rng);
-        match det_decision(&m, budget) {
-            Decision::Certified { .. } => s.certified += 1,
-            d @ Decision::Refuted { .. } => s.refuted.push((describe(&m), d)),
-            Decision::Unresolved { .. } => s.unresolved += 1,
-        }
+        s.record(det_decision(&m, budget), || describe(&m));
     }
     s
 }
