@@ -22,7 +22,7 @@ use num_traits::{One, Signed, Zero};
 use std::collections::{BTreeMap, HashMap};
 
 /// Largest dimension m accepted.
-pub const MAX_DIM: usize = 8;
+pub(crate) const MAX_DIM: usize = 8;
 /// Largest number of Bernstein coefficients C(n + m, m) of a polynomial to be decided.
 pub const MAX_COEFFICIENTS: usize = 20_000;
 
@@ -64,7 +64,7 @@ pub enum SimplexError {
 }
 
 /// C(n + m, m), saturating.
-pub fn coefficient_count(m: usize, n: usize) -> usize {
+pub(crate) fn coefficient_count(m: usize, n: usize) -> usize {
     let mut c: u128 = 1;
     for k in 1..=m as u128 {
         c = c * (n as u128 + k) / k;
@@ -76,7 +76,7 @@ pub fn coefficient_count(m: usize, n: usize) -> usize {
 }
 
 /// Checks m and the size C(n + m, m) against the bounds.
-pub fn check_size(m: usize, n: usize) -> Result<(), SimplexError> {
+pub(crate) fn check_size(m: usize, n: usize) -> Result<(), SimplexError> {
     if m == 0 || m > MAX_DIM {
         return Err(SimplexError::Dimension { m, max: MAX_DIM });
     }
@@ -610,7 +610,7 @@ pub fn fixed_control(m: usize, n: usize) -> Vec<Vec<Q>> {
 }
 
 /// L146: b_I is *solitary* when every I^i ∈ {0, 1}.
-pub fn is_solitary(i: &[usize]) -> bool {
+pub(crate) fn is_solitary(i: &[usize]) -> bool {
     i.iter().all(|&k| k <= 1)
 }
 

@@ -24,7 +24,7 @@ use rand_chacha::ChaCha8Rng;
 use serde_json::json;
 
 /// A random point of the open face with support `supp` (barycentric, exact).
-pub fn open_face_point(rng: &mut ChaCha8Rng, supp: &[bool]) -> Vec<Q> {
+pub(crate) fn open_face_point(rng: &mut ChaCha8Rng, supp: &[bool]) -> Vec<Q> {
     let w: Vec<Q> = supp
         .iter()
         .map(|&s| if s { unit_open(rng) } else { q(0) })

@@ -48,7 +48,7 @@ fn corner(i: usize) -> [Q; 2] {
 /// maps take each face into itself). Exact: on that edge the Bernstein polynomials B_I with
 /// I^k = 0 are a basis, so x^k vanishes there iff every q_I b_I\[k\] with I^k = 0 is zero (for
 /// Eq. (9): iff g_k(0) = 0).
-pub fn faces_preserved(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
+pub(crate) fn faces_preserved(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-D1(faces)",
         "Def. 1: X maps every edge of σ into itself (exact)",
@@ -82,7 +82,7 @@ pub fn faces_preserved(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
 }
 
 /// Def. 1 (L79) inside: X(σ) ⊂ σ, i.e. every x^c ≥ 0 on σ (given D > 0), decided exactly.
-pub fn maps_into_simplex(cm: &ComplexMap, budget: Budget) -> CheckResult {
+pub(crate) fn maps_into_simplex(cm: &ComplexMap, budget: Budget) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-D1(inside)",
         "Def. 1: X(σ) ⊂ σ, all x^c ≥ 0 on σ (exact)",
@@ -113,7 +113,7 @@ pub fn maps_into_simplex(cm: &ComplexMap, budget: Budget) -> CheckResult {
 
 /// Mello–Velho Sec. 3 (L99): two triangles sharing an edge define the same X on it. Exact
 /// polynomial identity of (Σ N_c v_c)·D' and (Σ N'_c v'_c)·D in the edge parameter.
-pub fn shared_edges_agree(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
+pub(crate) fn shared_edges_agree(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-L99",
         "adjacent triangles define the same X on their common edge (exact)",
@@ -226,7 +226,11 @@ pub fn det_positive_exact(cm: &ComplexMap, budget: Budget) -> (CheckResult, Vec<
 
 /// The interval route for det DX > 0 and its agreement with the exact route: an interval
 /// certificate where the exact route refutes is a defect of one of them.
-pub fn det_positive_interval(cm: &ComplexMap, exact: &[Decision], boxes: usize) -> CheckResult {
+pub(crate) fn det_positive_interval(
+    cm: &ComplexMap,
+    exact: &[Decision],
+    boxes: usize,
+) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-L101(interval)",
         "det DX > 0 by interval branch-and-bound, and agreement with the exact route",
@@ -286,7 +290,7 @@ pub fn adjusted(k: &PlanarComplex, cm: &ComplexMap) -> CheckResult {
 }
 
 /// Sec. 3.1 hypotheses (L111): every g_v has g_v(0) = 0 and g_v' > 0 on [0, 1] (exact).
-pub fn monotone_hypotheses(cm: &ComplexMap, budget: Budget) -> CheckResult {
+pub(crate) fn monotone_hypotheses(cm: &ComplexMap, budget: Budget) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-E9(hyp)",
         "Eq. (9): g_i(0) = 0 and g_i' > 0 on [0, 1] (exact)",
@@ -335,7 +339,7 @@ pub fn monotone_hypotheses(cm: &ComplexMap, budget: Budget) -> CheckResult {
 }
 
 /// Sec. 3.3 hypothesis (L161): every weight q_I > 0.
-pub fn weights_positive(cm: &ComplexMap) -> CheckResult {
+pub(crate) fn weights_positive(cm: &ComplexMap) -> CheckResult {
     let mut r = CheckResult::new("SD-E11(hyp)", "Eq. (11): every weight q_I is positive");
     for (f, m) in cm.maps.iter().enumerate() {
         if m.family != Family::Rational {
@@ -360,7 +364,7 @@ pub fn weights_positive(cm: &ComplexMap) -> CheckResult {
 /// The boundary half of the Meisters–Olech argument (L101): X restricted to each edge of σ is
 /// an increasing map of the edge parameter (exact), so X|∂σ is a homeomorphism of ∂σ; with
 /// det DX > 0 inside, X|σ is then a bijection by the argument principle.
-pub fn edges_monotone(k: &PlanarComplex, cm: &ComplexMap, budget: Budget) -> CheckResult {
+pub(crate) fn edges_monotone(k: &PlanarComplex, cm: &ComplexMap, budget: Budget) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-L101(edges)",
         "X restricted to every edge is strictly increasing in the edge parameter (exact)",
@@ -395,7 +399,7 @@ pub fn edges_monotone(k: &PlanarComplex, cm: &ComplexMap, budget: Budget) -> Che
 }
 
 /// Partition of unity (Eq. (1), L131): Σ_c x^c ≡ 1, i.e. Σ_c N_c − D is the zero polynomial.
-pub fn partition_of_unity(cm: &ComplexMap) -> CheckResult {
+pub(crate) fn partition_of_unity(cm: &ComplexMap) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-L131",
         "Eq. (1) for x: Σ_c x^c ≡ 1 (exact polynomial identity)",

@@ -62,7 +62,7 @@ pub fn search(
 }
 
 /// A rational in (0, 1): extremes (1/1000, 999/1000, 1/2) one time in four, else k/997.
-pub fn unit_open(rng: &mut ChaCha8Rng) -> Q {
+pub(crate) fn unit_open(rng: &mut ChaCha8Rng) -> Q {
     match rng.gen_range(0..8) {
         0 => qr(1, 1000),
         1 => qr(999, 1000),
@@ -71,7 +71,7 @@ pub fn unit_open(rng: &mut ChaCha8Rng) -> Q {
 }
 
 /// A random point of the open face with support `supp` (barycentric, positive on supp).
-pub fn open_face_point(rng: &mut ChaCha8Rng, supp: [bool; 3]) -> [Q; 3] {
+pub(crate) fn open_face_point(rng: &mut ChaCha8Rng, supp: [bool; 3]) -> [Q; 3] {
     let mut w: [Q; 3] = [q(0), q(0), q(0)];
     let mut total = q(0);
     for c in 0..3 {

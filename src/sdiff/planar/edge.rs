@@ -10,7 +10,7 @@ use num_traits::Zero;
 /// The affine chart of triangle f: P(s, t) = v_0 + s (v_1 − v_0) + t (v_2 − v_0), i.e. the
 /// matrix J = \[\[x_s, x_t\], \[y_s, y_t\]\] and det J (> 0 on a validated complex).
 #[derive(Debug, Clone)]
-pub struct Frame {
+pub(crate) struct Frame {
     /// J.
     pub j: [[Q; 2]; 2],
     /// det J.
@@ -29,7 +29,7 @@ impl Frame {
         Frame { j, det }
     }
     /// The plane gradient ∇F = \[F_s, F_t\]·J⁻¹ of a function with chart derivatives (F_s, F_t).
-    pub fn plane_gradient(&self, fs: &Q, ft: &Q) -> [Q; 2] {
+    pub(crate) fn plane_gradient(&self, fs: &Q, ft: &Q) -> [Q; 2] {
         let j = &self.j;
         [
             (fs * &j[1][1] - ft * &j[1][0]) / &self.det,
@@ -37,7 +37,7 @@ impl Frame {
         ]
     }
     /// The plane Jacobian J·A·J⁻¹ of a map with chart Jacobian A (chart to chart).
-    pub fn plane_jacobian(&self, a: &[[Q; 2]; 2]) -> [[Q; 2]; 2] {
+    pub(crate) fn plane_jacobian(&self, a: &[[Q; 2]; 2]) -> [[Q; 2]; 2] {
         let j = &self.j;
         let inv = [
             [&j[1][1] / &self.det, -(&j[0][1]) / &self.det],
@@ -61,7 +61,7 @@ pub fn corner(i: usize) -> [Q; 2] {
 }
 
 /// The chart point (s, t) at parameter u on the edge from local vertex `la` to `lb`.
-pub fn chart_point(la: usize, lb: usize, u: &Q) -> [Q; 2] {
+pub(crate) fn chart_point(la: usize, lb: usize, u: &Q) -> [Q; 2] {
     let (a, b) = (corner(la), corner(lb));
     [&a[0] + u * (&b[0] - &a[0]), &a[1] + u * (&b[1] - &a[1])]
 }
@@ -72,11 +72,11 @@ pub fn local(k: &PlanarComplex, f: usize, v: u32) -> Option<usize> {
 }
 
 /// A univariate polynomial Σ c\[i\] u^i over ℚ.
-pub type UPoly = Vec<Q>;
+pub(crate) type UPoly = Vec<Q>;
 
 /// p restricted to the edge from local vertex `la` to `lb`, as a polynomial in the edge
 /// parameter u (u = 0 at `la`, u = 1 at `lb`).
-pub fn restrict(p: &Poly2, la: usize, lb: usize) -> UPoly {
+pub(crate) fn restrict(p: &Poly2, la: usize, lb: usize) -> UPoly {
     // The degenerate affine map (s, t) ↦ a + s (b − a) + t·0 leaves a polynomial in s only.
     let r = p.compose_affine(&[corner(la), corner(lb), corner(la)]);
     trim((0..=r.deg()).map(|a| r.get(a, 0)).collect())
@@ -91,7 +91,7 @@ pub fn trim(mut p: UPoly) -> UPoly {
 }
 
 /// p + k·r.
-pub fn u_axpy(p: &UPoly, k: &Q, r: &UPoly) -> UPoly {
+pub(crate) fn u_axpy(p: &UPoly, k: &Q, r: &UPoly) -> UPoly {
     let n = p.len().max(r.len());
     trim(
         (0..n)
@@ -107,7 +107,7 @@ pub fn u_axpy(p: &UPoly, k: &Q, r: &UPoly) -> UPoly {
 }
 
 /// p·r.
-pub fn u_mul(p: &UPoly, r: &UPoly) -> UPoly {
+pub(crate) fn u_mul(p: &UPoly, r: &UPoly) -> UPoly {
     if p.is_empty() || r.is_empty() {
         return Vec::new();
     }
@@ -121,7 +121,7 @@ pub fn u_mul(p: &UPoly, r: &UPoly) -> UPoly {
 }
 
 /// The remainder of p modulo d (d ≠ 0), exact.
-pub fn u_rem(p: &UPoly, d: &UPoly) -> UPoly {
+pub(crate) fn u_rem(p: &UPoly, d: &UPoly) -> UPoly {
     let d = trim(d.clone());
     let mut r = trim(p.clone());
     let Some(lead) = d.last().cloned() else {
@@ -139,6 +139,6 @@ pub fn u_rem(p: &UPoly, d: &UPoly) -> UPoly {
 }
 
 /// p(u), exact.
-pub fn u_eval(p: &UPoly, u: &Q) -> Q {
+pub(crate) fn u_eval(p: &UPoly, u: &Q) -> Q {
     p.iter().rev().fold(Q::zero(), |acc, c| acc * u + c)
 }

@@ -80,7 +80,7 @@ impl Implicit {
             .sum()
     }
     /// ∇g(x, y) in f64.
-    pub fn grad_f64(&self, x: f64, y: f64) -> [f64; 2] {
+    pub(crate) fn grad_f64(&self, x: f64, y: f64) -> [f64; 2] {
         let mut g = [0.0; 2];
         for (i, j, c) in &self.terms {
             let c = to_f64(c);
@@ -144,7 +144,7 @@ fn pow_range(t: [&Q; 2], k: u32) -> [Q; 2] {
 }
 
 /// Interval product.
-pub fn mul_range(a: &[Q; 2], b: &[Q; 2]) -> [Q; 2] {
+pub(crate) fn mul_range(a: &[Q; 2], b: &[Q; 2]) -> [Q; 2] {
     let c = [&a[0] * &b[0], &a[0] * &b[1], &a[1] * &b[0], &a[1] * &b[1]];
     let mut lo = c[0].clone();
     let mut hi = c[0].clone();

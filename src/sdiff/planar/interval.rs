@@ -66,7 +66,7 @@ fn basis(j: [usize; 3], w: &[I; 3]) -> I {
 }
 
 /// Interval enclosure of det DX over the box s ∈ `s`, t ∈ `t` (w_0 = 1 − s − t ∩ [0, 1]).
-pub fn det_enclosure(m: &SimplexMap, s: I, t: I) -> I {
+pub(crate) fn det_enclosure(m: &SimplexMap, s: I, t: I) -> I {
     let w0 = (pt(1.0) - s - t).intersection(I::try_from((0.0, 1.0)).unwrap_or(I::ENTIRE));
     let w = [w0, s, t];
     // value and (s, t)-derivatives of the numerators N_1, N_2 and of D.

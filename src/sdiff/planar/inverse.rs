@@ -8,7 +8,7 @@ use serde_json::json;
 
 /// Newton's answer.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Preimage {
+pub(crate) struct Preimage {
     /// (s, t) of the preimage.
     pub st: [f64; 2],
     /// |X(p) − y|∞ at the answer.
@@ -25,11 +25,12 @@ pub fn tolerance(m: &SimplexMap) -> f64 {
 /// X and its Jacobian at (s, t) of triangle `f`: [`SimplexMap::eval_f64_with_jacobian`], or a
 /// planted model (the seam of the planted-fault tests, SPEC `X-planted-sdiff`). An `Err` says
 /// X could not be evaluated there.
-pub type MapEval<'a> = dyn Fn(usize, [f64; 2]) -> Result<([f64; 2], [[f64; 2]; 2]), String> + 'a;
+pub(crate) type MapEval<'a> =
+    dyn Fn(usize, [f64; 2]) -> Result<([f64; 2], [[f64; 2]; 2]), String> + 'a;
 
 /// Why Newton gave no preimage.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum NewtonError {
+pub(crate) enum NewtonError {
     /// X or its Jacobian is not finite at an iterate inside σ, where X is defined (D > 0).
     #[error("X is not finite at (s, t) = {st:?}")]
     NonFinite {
@@ -61,7 +62,7 @@ pub enum NewtonError {
 impl NewtonError {
     /// X itself failed (non-finite or not evaluable) at a point of σ, where it is defined: an
     /// offence of any statement about X on σ, unlike Newton giving up.
-    pub fn is_evaluation_fault(&self) -> bool {
+    pub(crate) fn is_evaluation_fault(&self) -> bool {
         matches!(
             self,
             NewtonError::NonFinite { .. } | NewtonError::Eval { .. }
@@ -70,7 +71,7 @@ impl NewtonError {
 }
 
 /// Solves X(s, t) = y from `start`, staying in the closed triangle by step halving.
-pub fn newton(m: &SimplexMap, y: [f64; 2], start: [f64; 2]) -> Option<Preimage> {
+pub(crate) fn newton(m: &SimplexMap, y: [f64; 2], start: [f64; 2]) -> Option<Preimage> {
     newton_with(
         &|_, p| Ok(m.eval_f64_with_jacobian(p[0], p[1])),
         0,
@@ -83,7 +84,7 @@ pub fn newton(m: &SimplexMap, y: [f64; 2], start: [f64; 2]) -> Option<Preimage> 
 
 /// [`newton`] with X of triangle `f` evaluated by `eval`, residual tolerance `tol`; says why
 /// it found no preimage.
-pub fn newton_with(
+pub(crate) fn newton_with(
     eval: &MapEval,
     f: usize,
     tol: f64,
@@ -139,7 +140,7 @@ pub fn newton_with(
 
 /// Seeded spot check: for random targets y in each triangle, Newton from four starts; every
 /// converged start must give the same preimage (else two preimages: X is not injective).
-pub fn inversion_spot_check(cm: &ComplexMap, seed: u64, per_triangle: usize) -> CheckResult {
+pub(crate) fn inversion_spot_check(cm: &ComplexMap, seed: u64, per_triangle: usize) -> CheckResult {
     inversion_spot_check_with(cm, seed, per_triangle, &|f, p| {
         Ok(cm.maps[f].eval_f64_with_jacobian(p[0], p[1]))
     })

@@ -14,7 +14,7 @@ use serde_json::json;
 use std::collections::HashMap;
 
 /// Points per linear piece (the paper's "m samples"; see the design note: 8).
-pub const SAMPLES_PER_PIECE: usize = 8;
+pub(crate) const SAMPLES_PER_PIECE: usize = 8;
 
 /// A polyline set: points in the plane and segments between them.
 #[derive(Debug, Clone, Default)]

@@ -33,7 +33,7 @@ impl Poly1 {
         Poly1(vec![q(0), q(1)])
     }
     /// g as a polynomial in (s, t) after substituting w.
-    pub fn compose(&self, w: &Poly2) -> Poly2 {
+    pub(crate) fn compose(&self, w: &Poly2) -> Poly2 {
         let mut acc = Poly2::zero(0);
         for c in self.0.iter().rev() {
             acc = acc.mul(w).add(&Poly2::constant(c.clone()));
@@ -41,11 +41,11 @@ impl Poly1 {
         acc
     }
     /// g as a polynomial in s only (t absent): for deciding g' > 0 on [0, 1].
-    pub fn as_poly2(&self) -> Poly2 {
+    pub(crate) fn as_poly2(&self) -> Poly2 {
         self.compose(&Poly2::s())
     }
     /// g(0).
-    pub fn at_zero(&self) -> Q {
+    pub(crate) fn at_zero(&self) -> Q {
         self.0.first().cloned().unwrap_or_else(Q::zero)
     }
 }
@@ -199,7 +199,7 @@ impl SimplexMap {
     }
 
     /// Is any weight non-positive (the hypothesis of the rational claim fails)?
-    pub fn first_nonpositive_weight(&self) -> Option<(usize, Q)> {
+    pub(crate) fn first_nonpositive_weight(&self) -> Option<(usize, Q)> {
         self.weights
             .iter()
             .enumerate()

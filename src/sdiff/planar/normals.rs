@@ -223,7 +223,7 @@ pub fn crossing(
 
 /// L203 on one record: 𝒪 smooth at p while O kinks at p and DX has no jump there contradicts
 /// the argument of L201–L203.
-pub fn l203_offence(p: &EdgePoint) -> bool {
+pub(crate) fn l203_offence(p: &EdgePoint) -> bool {
     p.curved_smooth && p.linear_kink && !p.dx_jumps
 }
 

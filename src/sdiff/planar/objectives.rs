@@ -271,7 +271,7 @@ pub fn total(cells: &[CellError], alpha: f64) -> f64 {
 }
 
 /// The minimiser of a scan and the exact det verdict of its map.
-pub type Judged = (ScanPoint, CheckResult);
+pub(crate) type Judged = (ScanPoint, CheckResult);
 
 /// One point of the L268 scan over X_1's control point c_ε = (1 − λ)a + λb on one edge.
 #[derive(Debug, Clone, Serialize)]

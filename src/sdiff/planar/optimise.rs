@@ -103,7 +103,7 @@ pub struct Optimum {
 }
 
 /// λ_ε per edge (a < b): β of X_1.
-pub type Lambdas = HashMap<(u32, u32), Q>;
+pub(crate) type Lambdas = HashMap<(u32, u32), Q>;
 
 /// The edges of K (a < b), sorted.
 pub fn edges(k: &PlanarComplex) -> Vec<(u32, u32)> {
@@ -156,7 +156,7 @@ pub fn optimise(
 
 /// The same descent over the λ of the edges `free` only, from `start` (every edge of K needs a
 /// value; a missing one is 1/2): the local optimiser of L314 (`SD-L314`).
-pub fn optimise_edges(
+pub(crate) fn optimise_edges(
     k: &PlanarComplex,
     fv: &[Q],
     handles: &[Handle],

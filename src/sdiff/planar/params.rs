@@ -33,9 +33,9 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 /// Largest degree accepted (the exact engine costs O(n⁴) rationals per piece).
-pub const MAX_DEGREE: usize = 12;
+pub(crate) const MAX_DEGREE: usize = 12;
 /// Longest number string accepted.
-pub const MAX_NUMBER_CHARS: usize = 512;
+pub(crate) const MAX_NUMBER_CHARS: usize = 512;
 /// Largest parameter file accepted.
 pub const MAX_FILE_BYTES: u64 = 1 << 20;
 
@@ -155,7 +155,7 @@ pub enum FamilySpec {
 }
 
 /// A sorted global-vertex multiset (the key of a control point or weight).
-pub type Multiset = Vec<u32>;
+pub(crate) type Multiset = Vec<u32>;
 
 /// A parsed parameter file for simplices of dimension D (the planar one, D = 2, and the
 /// tetrahedral one of `tet::params`, D = 3: one format, one parser).
@@ -415,7 +415,7 @@ impl<const D: usize> Spec<D> {
 
     /// Checks every key names vertices of the complex and a face of some cell (of the named
     /// one for an override), every g a vertex, and that `iso.f` has one value per vertex.
-    pub fn check_keys<const C: usize>(
+    pub(crate) fn check_keys<const C: usize>(
         &self,
         path: &Path,
         nv: usize,

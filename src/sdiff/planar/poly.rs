@@ -204,7 +204,7 @@ impl Poly2 {
     }
     /// p∘A where A maps the reference triangle affinely onto the triangle with corners
     /// `corners` (each given as (s, t)): A(s, t) = c0 + s (c1 − c0) + t (c2 − c0).
-    pub fn compose_affine(&self, corners: &[[Q; 2]; 3]) -> Poly2 {
+    pub(crate) fn compose_affine(&self, corners: &[[Q; 2]; 3]) -> Poly2 {
         let lin = |k: usize| -> Poly2 {
             let mut p = Poly2::zero(1);
             p.set(0, 0, corners[0][k].clone());
@@ -290,7 +290,7 @@ pub fn index_of(n: usize, i: [usize; 3]) -> usize {
 }
 
 /// The multinomial coefficient n! / (k_0! k_1! …), Σ k = n.
-pub fn multinomial(n: usize, ks: &[usize]) -> BigInt {
+pub(crate) fn multinomial(n: usize, ks: &[usize]) -> BigInt {
     let mut r = factorial(n);
     for &k in ks {
         r /= factorial(k);

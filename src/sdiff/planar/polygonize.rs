@@ -122,7 +122,7 @@ fn err_linear(g: &Implicit, pts: &[[f64; 2]; 3], vals: &[f64; 3]) -> f64 {
 }
 
 /// L324: the cell is not subdivided when 0 ∉ □g(I) or ⟨□∇g(I), □∇g(I)⟩ > 0 (exact).
-pub fn l324_skip(g: &Implicit, grad: &[Implicit; 2], pts: &[[f64; 2]; 3]) -> bool {
+pub(crate) fn l324_skip(g: &Implicit, grad: &[Implicit; 2], pts: &[[f64; 2]; 3]) -> bool {
     let xs = pts.map(|p| p[0]);
     let ys = pts.map(|p| p[1]);
     let lo = |v: [f64; 3]| v.iter().cloned().fold(f64::INFINITY, f64::min);
@@ -164,7 +164,7 @@ fn distance(g: &Implicit, p: [f64; 2]) -> (f64, f64) {
 
 /// Components and closed loops of the linear isocurve of g on an n × n Kuhn grid (f64): the
 /// reference topology.
-pub fn reference_topology(g: &Implicit, n: usize) -> (usize, usize) {
+pub(crate) fn reference_topology(g: &Implicit, n: usize) -> (usize, usize) {
     let m = Mesh2::kuhn(n, n, g.domain.0, g.domain.1, usize::MAX);
     let vals: Vec<f64> = m.points.iter().map(|p| g.eval_f64(p[0], p[1])).collect();
     let mut lines = super::iso::Polylines::default();

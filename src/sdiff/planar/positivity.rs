@@ -94,7 +94,7 @@ type Tri = [[Q; 2]; 3];
 /// piece budget is spent, so at most `max_pieces` plus the pending stack (≤ (k − 1)·depth + 1
 /// for k children per split) pieces are examined.
 #[derive(Debug, Clone)]
-pub struct Cover {
+pub(crate) struct Cover {
     /// Pieces examined.
     pub pieces: usize,
     /// Deepest piece examined.
@@ -119,7 +119,7 @@ impl Cover {
         }
     }
     /// Count a piece taken at `depth`.
-    pub fn visit(&mut self, depth: u32) {
+    pub(crate) fn visit(&mut self, depth: u32) {
         self.pieces += 1;
         self.deepest = self.deepest.max(depth);
     }
@@ -163,7 +163,7 @@ pub fn decide(p: &Poly2, strict: Strictness, budget: Budget) -> Decision {
 }
 
 /// The reference triangle in the chart (s, t).
-pub fn reference_triangle() -> Tri {
+pub(crate) fn reference_triangle() -> Tri {
     [
         [qr(0, 1), qr(0, 1)],
         [qr(1, 1), qr(0, 1)],
@@ -172,7 +172,7 @@ pub fn reference_triangle() -> Tri {
 }
 
 /// Decide on the triangle `tri` of the chart (s, t).
-pub fn decide_on(p: &Poly2, tri: Tri, strict: Strictness, budget: Budget) -> Decision {
+pub(crate) fn decide_on(p: &Poly2, tri: Tri, strict: Strictness, budget: Budget) -> Decision {
     let n = p.deg();
     let bad = |v: &Q| match strict {
         Strictness::Positive => !v.is_positive(),

@@ -113,7 +113,7 @@ impl Mesh2 {
 
     /// Bisects triangle `id` (and, first, whatever keeps the mesh conforming). Returns the new
     /// triangles.
-    pub fn bisect(&mut self, id: usize) -> Result<Vec<usize>, RefineError> {
+    pub(crate) fn bisect(&mut self, id: usize) -> Result<Vec<usize>, RefineError> {
         let mut out = Vec::new();
         self.bisect_into(id, &mut out, 0)?;
         Ok(out.into_iter().filter(|&t| self.alive[t]).collect())

@@ -74,7 +74,7 @@ pub struct LocalRun {
 
 /// The root of g on a→b as u ∈ (0, 1), exact (60 f64 bisections, then the double read
 /// exactly); `None` unless g changes sign on the edge.
-pub fn root_on_edge(g: &Implicit, pa: [f64; 2], pb: [f64; 2]) -> Option<Q> {
+pub(crate) fn root_on_edge(g: &Implicit, pa: [f64; 2], pb: [f64; 2]) -> Option<Q> {
     let at = |u: f64| g.eval_f64(pa[0] + u * (pb[0] - pa[0]), pa[1] + u * (pb[1] - pa[1]));
     let neg = at(0.0) < 0.0;
     if neg == (at(1.0) < 0.0) {
@@ -118,7 +118,7 @@ pub fn rational_unit(v: [f64; 2]) -> Option<[Q; 2]> {
 
 impl LocalRun {
     /// Runs the optimiser of L314 on the star of the vertices `step` inserted (module doc).
-    pub fn after_subdivide(
+    pub(crate) fn after_subdivide(
         &mut self,
         g: &Implicit,
         mesh: &Mesh2,

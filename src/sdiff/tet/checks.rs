@@ -48,7 +48,7 @@ fn skipped_if_empty(r: &mut CheckResult, reason: &str) {
 }
 
 /// The corner of the reference tetrahedron for local vertex `i` in the chart (s, t, r).
-pub fn corner3(i: usize) -> [Q; 3] {
+pub(crate) fn corner3(i: usize) -> [Q; 3] {
     std::array::from_fn(|k| if k + 1 == i { q(1) } else { q(0) })
 }
 
@@ -77,7 +77,7 @@ pub fn partition_of_unity3(maps: &[TetMap]) -> CheckResult {
 
 /// Def. 1 (L79) on the faces: x^k ≡ 0 on the face w_k = 0. Exact: the B_I with I^k = 0 are a
 /// basis there, so iff q_I b_I\[k\] = 0 for every such I (Eq. (9): iff g_k(0) = 0).
-pub fn faces_preserved3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
+pub(crate) fn faces_preserved3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-D1(faces,3-D)",
         "Def. 1: X maps every face of σ into itself (exact)",
@@ -109,7 +109,7 @@ pub fn faces_preserved3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
 }
 
 /// Def. 1 inside: X(σ) ⊂ σ, every x^c ≥ 0 on σ (sign of N_c·D), exact.
-pub fn maps_into_simplex3(maps: &[TetMap], budget: Budget) -> CheckResult {
+pub(crate) fn maps_into_simplex3(maps: &[TetMap], budget: Budget) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-D1(inside,3-D)",
         "Def. 1: X(σ) ⊂ σ, all x^c ≥ 0 on σ (exact)",
@@ -159,7 +159,7 @@ fn face_image(k: &TetComplex, m: &TetMap, f: usize, tri: &[u32; 3]) -> ([Poly3; 
 
 /// Sec. 3 (L99): two tetrahedra sharing a triangle define the same X on it. Exact identity of
 /// (Σ N_c v_c)·D′ and (Σ N′_c v′_c)·D in the triangle's chart.
-pub fn shared_faces_agree3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
+pub(crate) fn shared_faces_agree3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-L99(3-D)",
         "adjacent tetrahedra define the same X on their common triangle (exact)",
@@ -198,7 +198,7 @@ pub fn shared_faces_agree3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
 }
 
 /// Sec. 3.2 "adjusted" (L137): χ(b_I) = χ(I), c_I in the open face supp I.
-pub fn adjusted3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
+pub(crate) fn adjusted3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-L137(adjusted,3-D)",
         "Sec. 3.2: every control point lies in the open face of its multi-index",
@@ -236,7 +236,7 @@ pub fn adjusted3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
 }
 
 /// Sec. 3.1 hypotheses (L111): g_v(0) = 0 and g_v′ > 0 on \[0, 1\] (exact).
-pub fn monotone_hypotheses3(k: &TetComplex, maps: &[TetMap], budget: Budget) -> CheckResult {
+pub(crate) fn monotone_hypotheses3(k: &TetComplex, maps: &[TetMap], budget: Budget) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-E9(hyp,3-D)",
         "Eq. (9): g_v(0) = 0 and g_v' > 0 on [0, 1] (exact)",
@@ -285,7 +285,7 @@ pub fn monotone_hypotheses3(k: &TetComplex, maps: &[TetMap], budget: Budget) -> 
 }
 
 /// Sec. 3.3 hypothesis (L161): every weight q_I > 0.
-pub fn weights_positive3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
+pub(crate) fn weights_positive3(k: &TetComplex, maps: &[TetMap]) -> CheckResult {
     let mut r = CheckResult::new("SD-E11(hyp,3-D)", "Eq. (11): every weight q_I is positive");
     for (f, m) in maps.iter().enumerate() {
         if m.family != FamilySpec::Rational {
@@ -327,7 +327,7 @@ pub fn det_decision(m: &TetMap, budget: Budget) -> Decision {
 
 /// L101: det DX > 0 on every closed tetrahedron (exact Bernstein certificate, D > 0 first for
 /// Eqs. (9), (11)); returns the decisions for the interval comparison.
-pub fn det_positive_exact3(maps: &[TetMap], budget: Budget) -> (CheckResult, Vec<Decision>) {
+pub(crate) fn det_positive_exact3(maps: &[TetMap], budget: Budget) -> (CheckResult, Vec<Decision>) {
     let mut r = CheckResult::new(
         "SD-L101(det,3-D)",
         "det DX > 0 on every closed tetrahedron (exact Bernstein certificate)",
@@ -356,7 +356,11 @@ pub fn det_positive_exact3(maps: &[TetMap], budget: Budget) -> (CheckResult, Vec
 
 /// The interval route and its agreement with the exact one: an interval certificate where the
 /// exact route refutes is a defect of one of them.
-pub fn det_positive_interval3(maps: &[TetMap], exact: &[Decision], boxes: usize) -> CheckResult {
+pub(crate) fn det_positive_interval3(
+    maps: &[TetMap],
+    exact: &[Decision],
+    boxes: usize,
+) -> CheckResult {
     let mut r = CheckResult::new(
         "SD-L101(interval,3-D)",
         "det DX > 0 by interval branch-and-bound, never certifying what the exact route refutes",

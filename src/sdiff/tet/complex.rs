@@ -25,7 +25,7 @@ use super::file::RawTets;
 use crate::mesh::MeshError;
 
 /// Most candidate pairs (overlapping bounding boxes) the exact overlap test examines.
-pub const MAX_CANDIDATE_PAIRS: u64 = 20_000_000;
+pub(crate) const MAX_CANDIDATE_PAIRS: u64 = 20_000_000;
 
 /// A validated tetrahedral complex (only [`validate`] makes one).
 #[derive(Debug, Clone)]
@@ -86,11 +86,6 @@ fn cross(u: &[Q; 3], v: &[Q; 3]) -> [Q; 3] {
 
 fn dot(u: &[Q; 3], v: &[Q; 3]) -> Q {
     &u[0] * &v[0] + &u[1] * &v[1] + &u[2] * &v[2]
-}
-
-/// The four triangle faces of a tetrahedron, each a sorted vertex triple.
-pub fn faces_of(t: &[u32; 4]) -> [[u32; 3]; 4] {
-    common::facets_of(t)
 }
 
 /// Validates `raw` as a tetrahedral complex with boundary; the report lists every check.

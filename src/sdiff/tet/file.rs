@@ -43,12 +43,12 @@ pub struct RawTets {
 
 impl RawTets {
     /// "FILE:LINE vertex V".
-    pub fn describe_vertex(&self, v: usize) -> String {
+    pub(crate) fn describe_vertex(&self, v: usize) -> String {
         let line = self.vertex_lines.get(v).copied().unwrap_or(0);
         format!("{}:{line}: vertex {v}", self.path.display())
     }
     /// "FILE:LINE tetrahedron T".
-    pub fn describe_tet(&self, t: usize) -> String {
+    pub(crate) fn describe_tet(&self, t: usize) -> String {
         let line = self.tet_lines.get(t).copied().unwrap_or(0);
         format!("{}:{line}: tetrahedron {t}", self.path.display())
     }

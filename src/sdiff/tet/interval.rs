@@ -59,7 +59,7 @@ fn det3(m: &[[I; 3]; 3]) -> I {
 }
 
 /// Enclosures of (D, D det A − ∇Dᵀ adj(A) N) over the box `b` = (s, t, r) of the chart.
-pub fn det_enclosure(m: &TetMap, b: [I; 3]) -> (I, I) {
+pub(crate) fn det_enclosure(m: &TetMap, b: [I; 3]) -> (I, I) {
     let w0 =
         (pt(1.0) - b[0] - b[1] - b[2]).intersection(I::try_from((0.0, 1.0)).unwrap_or(I::ENTIRE));
     let w = [w0, b[0], b[1], b[2]];

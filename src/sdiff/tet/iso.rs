@@ -25,7 +25,7 @@ use serde_json::json;
 use std::collections::HashMap;
 
 /// Largest lattice level accepted (N³ small tetrahedra per tetrahedron).
-pub const MAX_LEVEL: usize = 64;
+pub(crate) const MAX_LEVEL: usize = 64;
 
 /// A triangle mesh in ℝ³.
 #[derive(Debug, Clone, Default)]

@@ -26,7 +26,7 @@ pub fn multi_indices4(n: usize) -> Vec<[usize; 4]> {
 }
 
 /// B_I(w) = n!/(I!) Π w_k^{I_k} on the reference tetrahedron.
-pub fn bernstein4(i: [usize; 4]) -> Poly3 {
+pub(crate) fn bernstein4(i: [usize; 4]) -> Poly3 {
     let n: usize = i.iter().sum();
     let c: BigInt = multinomial(n, &i);
     (0..4).fold(Poly3::constant(Q::from_integer(c)), |acc, k| {
@@ -73,7 +73,7 @@ pub fn fixed_control4(n: usize) -> Vec<[Q; 4]> {
 }
 
 /// A random point of the open face with support `supp`.
-pub fn open_face_point4(rng: &mut ChaCha8Rng, supp: [bool; 4]) -> [Q; 4] {
+pub(crate) fn open_face_point4(rng: &mut ChaCha8Rng, supp: [bool; 4]) -> [Q; 4] {
     let w: [Q; 4] = std::array::from_fn(|c| if supp[c] { unit_open(rng) } else { q(0) });
     let total: Q = w.iter().cloned().sum();
     w.map(|x| x / &total)

@@ -33,13 +33,13 @@ use num_traits::Zero;
 use std::path::Path;
 
 /// Largest degree accepted in 3-D (the Jacobian numerator of Eq. (11) has degree 4n − 3).
-pub const MAX_DEGREE_3D: usize = 6;
+pub(crate) const MAX_DEGREE_3D: usize = 6;
 
 /// A parsed 3-D parameter file (the planar format with points in ℝ³, `params::Spec`).
 pub type MapSpec3 = Spec<3>;
 
 /// Which family of Sec. 3 a tetrahedron's map belongs to.
-pub type Family3 = FamilySpec;
+pub(crate) type Family3 = FamilySpec;
 
 /// One map of the reference tetrahedron, x = (N_0, N_1, N_2, N_3) / D in barycentric
 /// components over the chart (s, t, r) = (w_1, w_2, w_3).
@@ -120,7 +120,7 @@ impl TetMap {
             })
     }
     /// N_1..N_3 (the chart components).
-    pub fn chart_num(&self) -> [Poly3; 3] {
+    pub(crate) fn chart_num(&self) -> [Poly3; 3] {
         [
             self.num[1].clone(),
             self.num[2].clone(),
@@ -130,7 +130,7 @@ impl TetMap {
 }
 
 /// g∘w as a trivariate polynomial (Horner).
-pub fn compose(g: &Poly1, w: &Poly3) -> Poly3 {
+pub(crate) fn compose(g: &Poly1, w: &Poly3) -> Poly3 {
     g.0.iter().rev().fold(Poly3::default(), |acc, c| {
         acc.mul(w).axpy(&q(1), &Poly3::constant(c.clone()))
     })
@@ -155,7 +155,7 @@ impl MapSpec3 {
     }
 
     /// The global multiset of a local multi-index in tetrahedron f.
-    pub fn global_key(k: &TetComplex, f: usize, i: [usize; 4]) -> Multiset {
+    pub(crate) fn global_key(k: &TetComplex, f: usize, i: [usize; 4]) -> Multiset {
         let t = k.tets[f];
         let mut m: Vec<u32> = (0..4)
             .flat_map(|c| std::iter::repeat(t[c]).take(i[c]))

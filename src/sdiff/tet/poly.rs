@@ -100,7 +100,7 @@ impl Poly3 {
             .sum()
     }
     /// p∘A, A the affine map of the reference tetrahedron onto `tet` (corners in the chart).
-    pub fn compose_affine(&self, tet: &[[Q; 3]; 4]) -> Poly3 {
+    pub(crate) fn compose_affine(&self, tet: &[[Q; 3]; 4]) -> Poly3 {
         let lin = |k: usize| -> Poly3 {
             let mut m = BTreeMap::new();
             Self::insert_add(&mut m, [0, 0, 0], tet[0][k].clone());
@@ -157,7 +157,7 @@ impl Poly3 {
 }
 
 /// The reference tetrahedron in the chart.
-pub fn reference_tet() -> [[Q; 3]; 4] {
+pub(crate) fn reference_tet() -> [[Q; 3]; 4] {
     [
         [q(0), q(0), q(0)],
         [q(1), q(0), q(0)],
@@ -172,7 +172,7 @@ pub fn decide_tet(p: &Poly3, budget: Budget) -> Decision {
 }
 
 /// Decide p > 0 or p ≥ 0 (`strict`) on the closed reference tetrahedron, exactly.
-pub fn decide_tet_with(p: &Poly3, strict: Strictness, budget: Budget) -> Decision {
+pub(crate) fn decide_tet_with(p: &Poly3, strict: Strictness, budget: Budget) -> Decision {
     let bad = |v: &Q| match strict {
         Strictness::Positive => !v.is_positive(),
         Strictness::NonNegative => v.is_negative(),

@@ -17,7 +17,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 /// A positive weight: 1/100 or 100 one time in three, else k/97, k ∈ 1..1000.
-pub fn random_weight(rng: &mut ChaCha8Rng) -> Q {
+pub(crate) fn random_weight(rng: &mut ChaCha8Rng) -> Q {
     match rng.gen_range(0..6) {
         0 => qr(1, 100),
         1 => q(100),
