@@ -3,7 +3,7 @@
 
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::report::{render_text, CheckResult};
-use crate::sdiff::{
+use crate::sdiff::planar::{
     c1, checks, claims, complex, handles, implicit, iso, normals, params, polygonize,
     positivity::Budget,
 };
@@ -26,7 +26,7 @@ enum SdCommand {
     Check {
         /// The planar complex (OFF/OBJ/PLY, z = 0).
         mesh: PathBuf,
-        /// The map (TOML; format in src/sdiff/params.rs and tests/data/sdiff/).
+        /// The map (TOML; format in src/sdiff/planar/params.rs and tests/data/sdiff/).
         params: PathBuf,
         #[arg(long)]
         json: bool,
@@ -166,8 +166,8 @@ type IsoInput = (
     complex::PlanarComplex,
     params::MapSpec,
     params::ComplexMap,
-    Vec<crate::sdiff::poly::Q>,
-    crate::sdiff::poly::Q,
+    Vec<crate::sdiff::planar::poly::Q>,
+    crate::sdiff::planar::poly::Q,
 );
 
 fn load_iso(mesh: &Path, params_path: &Path) -> Result<IsoInput, String> {
@@ -451,7 +451,7 @@ pub(super) fn run(a: SdArgs) -> ExitCode {
                 samples,
                 seed,
             ));
-            let s = crate::sdiff::tet::search_monotonic(samples.min(60), seed, b);
+            let s = crate::sdiff::tet::poly::search_monotonic(samples.min(60), seed, b);
             out.push(claims::universal(
                 "SD-L115(3-D)",
                 "Sec. 3.1: monotonic ⇒ injective, on the tetrahedron (chart w_1..w_3)",
