@@ -125,3 +125,28 @@ pub(crate) fn check_report(
         seconds: t0.elapsed().as_secs_f64(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn passes_on_a_valid_surface_with_labels_and_not_on_an_invalid_mesh() {
+        let ok = check_report(
+            &crate::mesh::generate::octahedron(),
+            true,
+            None,
+            SpecProgress::default(),
+        );
+        assert!(ok.validation.is_simplicial_surface);
+        assert!(!ok.extra_checks.is_empty(), "the s_v labelling check ran");
+        assert!(ok.passes());
+        // One face removed: a hole, so not a simplicial surface (Def. 3.1.6).
+        let mut open = crate::mesh::generate::octahedron();
+        open.faces.pop();
+        open.face_origin.pop();
+        let bad = check_report(&open, true, None, SpecProgress::default());
+        assert!(!bad.validation.is_simplicial_surface);
+        assert!(!bad.passes());
+    }
+}
