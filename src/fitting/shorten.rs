@@ -306,6 +306,7 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
         }
     }
     for sweep in 0..MAX_SWEEPS {
+        SWEEP.store(sweep, std::sync::atomic::Ordering::Relaxed);
         let mut moved = 0;
         for ci in 0..emb.curves.len() {
             let mut i = 1;
@@ -360,14 +361,16 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
                         }
                     }
                 }
+                late(k, "node", ci, &emb.curves[ci].nodes, &cand);
                 emb.curves[ci].nodes = cand;
                 moved += 1;
             }
         }
         moved += drop_turns(k, emb, &mut owner, &near);
-        moved += straighten_runs(k, base, emb, &mut owner, &mut near);
+        moved += super::straighten::straighten_runs(k, base, emb, &mut owner, &mut near);
         emb.stats.moves += moved;
         emb.stats.sweeps = sweep + 1;
+        if std::env::var_os("PPM_TRACE_SWEEPS").is_some() { eprintln!("TR sweep {} moved {}", sweep, moved); }
         if moved == 0 {
             break;
         }
@@ -375,7 +378,8 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
     emb.stats.length = emb.curves.iter().map(|c| c.length(k)).sum();
 }
 
-type Near = std::collections::HashMap<crate::mesh::FaceId, Vec<usize>>;
+/// The curves touching each triangle of S_T (for [`segments_meet_other`]).
+pub(super) type Near = std::collections::HashMap<crate::mesh::FaceId, Vec<usize>>;
 
 /// Two consecutive segments on one triangle (a turn inside it) would make a piece with its
 /// three corners on one side of the base triangle, which Floater's map flattens: the node
@@ -404,6 +408,7 @@ fn drop_turns(
             if let Node::Vertex(v) = emb.curves[ci].nodes[i] {
                 owner.remove(&v);
             }
+            late(k, "drop", ci, &emb.curves[ci].nodes, &cand);
             emb.curves[ci].nodes = cand;
             dropped += 1;
             i = i.saturating_sub(1).max(1);
@@ -412,86 +417,73 @@ fn drop_turns(
     dropped
 }
 
-/// Length of a polyline of nodes (NaN when a node is not on S_T).
-fn polyline(k: &SimplicialSurface, nodes: &[Node]) -> f64 {
-    nodes
-        .windows(2)
-        .map(|w| match (w[0].point(k), w[1].point(k)) {
-            (Some(p), Some(q)) => dist(p, q),
-            _ => f64::NAN,
-        })
-        .sum()
-}
-
-/// Replace every run of edge nodes between two vertex nodes by its straightened run
-/// ([`straighten`]) where that is shorter by more than the rounding of the lengths
-/// (16 u of the run's length) and keeps the curves disjoint (the rules of a node move).
-fn straighten_runs(
-    k: &SimplicialSurface,
-    base: &BaseMesh,
-    emb: &mut Embedding,
-    owner: &mut std::collections::HashMap<u32, usize>,
-    near: &mut Near,
-) -> usize {
-    let mut moved = 0;
-    for ci in 0..emb.curves.len() {
-        let mut i = 0;
-        while i + 1 < emb.curves[ci].nodes.len() {
-            let nodes = &emb.curves[ci].nodes;
-            let Some(j) = (i + 1..nodes.len()).find(|&j| matches!(nodes[j], Node::Vertex(_)))
-            else {
-                break;
-            };
-            let next = j;
-            if j < i + 2 {
-                i = next;
+/// TEMP diagnostics.
+pub fn debug_offenders(k: &SimplicialSurface, base: &BaseMesh, emb: &Embedding) {
+    let mut owner: std::collections::HashMap<u32, usize> = Default::default();
+    for (ci, c) in emb.curves.iter().enumerate() {
+        for n in &c.nodes {
+            if let Node::Vertex(v) = *n {
+                owner.insert(v, ci);
+            }
+        }
+    }
+    let mut near: Near = Default::default();
+    for (ci, c) in emb.curves.iter().enumerate() {
+        for w in c.nodes.windows(2) {
+            for f in common_faces(k, &w[0], &w[1]) {
+                let l = near.entry(f).or_default();
+                if !l.contains(&ci) {
+                    l.push(ci);
+                }
+            }
+        }
+    }
+    let mut hist = [0usize; 8];
+    for (ci, c) in emb.curves.iter().enumerate() {
+        for i in 1..c.nodes.len().saturating_sub(1) {
+            let g = relative_gain(k, &c.nodes, i);
+            let b = gain_bound(k, &c.nodes, i);
+            if !(g / b > 1.0) {
                 continue;
             }
-            let Some(new) = super::straighten::straighten_run(k, &nodes[i..=j]) else {
-                i = next;
-                continue;
+            let nodes = &c.nodes;
+            let d = match nodes[i] {
+                Node::Edge { a, b, t } => {
+                    let l = dist(k.position(VertexId(a)), k.position(VertexId(b)));
+                    (t.min(1.0 - t) * l, t, l)
+                }
+                Node::Vertex(_) => (0.0, 0.0, 0.0),
             };
-            let mut run = vec![nodes[i]];
-            run.extend_from_slice(&new);
-            run.push(nodes[j]);
-            let (old, now) = (polyline(k, &nodes[i..=j]), polyline(k, &run));
-            let (ca, cb) = (emb.curves[ci].a, emb.curves[ci].b);
-            let blocked = new.iter().any(|q| match *q {
+            let Some((new, _)) = best_move(k, nodes, i) else { continue };
+            let bv = new.iter().any(|q| match *q {
                 Node::Vertex(u) => {
-                    (base.is_base(u) && u != ca && u != cb)
+                    (base.is_base(u) && u != c.a && u != c.b)
                         || owner.get(&u).is_some_and(|&o| o != ci)
                 }
                 Node::Edge { .. } => false,
             });
-            if !(now < old - 16.0 * f64::EPSILON * old) || blocked {
-                i = next;
-                continue;
-            }
             let mut cand = nodes[..i].to_vec();
-            cand.extend_from_slice(&run);
-            cand.extend_from_slice(&nodes[j + 1..]);
-            let span = (i, i + new.len() + 1);
-            if segments_meet_other(k, emb, ci, &cand, span, near) {
-                i = next;
-                continue;
-            }
-            for q in &new {
-                if let Node::Vertex(u) = *q {
-                    owner.insert(u, ci);
-                }
-            }
-            for w in cand[span.0..=span.1].windows(2) {
-                for f in common_faces(k, &w[0], &w[1]) {
-                    let l = near.entry(f).or_default();
-                    if !l.contains(&ci) {
-                        l.push(ci);
-                    }
-                }
-            }
-            emb.curves[ci].nodes = cand;
-            moved += 1;
-            i = span.1;
+            cand.extend_from_slice(&new);
+            cand.extend_from_slice(&nodes[i + 1..]);
+            cand.dedup();
+            let span = (i - 1, i - 1 + new.len() + 1);
+            let meet = segments_meet_other(k, emb, ci, &cand, span, &near);
+            let r = g / b;
+            hist[(r.log10().floor().max(0.0) as usize).min(7)] += 1;
+            eprintln!(
+                "OFF c{ci} n{i}/{} {:?} P={:?} N={:?} d={:.3e} t={:.3e} l={:.3e} gain={g:.3e} bound={b:.3e} ratio={r:.1} new={:?} blockedV={bv} meet={meet}",
+                nodes.len(), nodes[i], nodes[i-1], nodes[i+1], d.0, d.1, d.2, new
+            );
         }
     }
-    moved
+    eprintln!("OFF hist log10(ratio) {hist:?}");
+}
+
+pub(super) static SWEEP: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+pub(super) fn late(k: &SimplicialSurface, what: &str, ci: usize, old: &[Node], new: &[Node]) {
+    if SWEEP.load(std::sync::atomic::Ordering::Relaxed) < 196 || std::env::var_os("PPM_TRACE_LATE").is_none() {
+        return;
+    }
+    let pl = |n: &[Node]| n.windows(2).map(|w| dist(w[0].point(k).unwrap(), w[1].point(k).unwrap())).sum::<f64>();
+    eprintln!("LATE {} {what} c{ci} len {:.17e} -> {:.17e}\n  old {:?}\n  new {:?}", SWEEP.load(std::sync::atomic::Ordering::Relaxed), pl(old), pl(new), old, new);
 }
