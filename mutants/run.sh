@@ -22,6 +22,8 @@ results="$here/mutants/results.tsv"
 
 # name | file globs (space separated) | test binaries (space separated; `lib` = the unit tests)
 #      | test names to skip (optional: the corpus-wide tests, minutes per mutant)
+#      | test-name filter (optional: only tests whose path contains it, e.g. the module's own
+#        tests in a binary that also holds other seeds' slow engines)
 modules() {
     cat <<'EOF'
 mesh-validate|src/mesh/validate/*.rs|mesh gluing
@@ -36,9 +38,12 @@ report-harness|src/report/harness.rs src/report.rs|lib gluing
 conditions|src/conditions/*.rs|lib chapter4 mesh
 loop-subdiv|src/surface/loop_subdiv/*.rs|lib surface|corpus
 sigma-v|src/surface/sigma_v/*.rs|lib surface|corpus
-msplines|src/msplines/*.rs|lib seeds
-sdiff|src/sdiff/*.rs|lib seeds
+msplines|src/msplines/*.rs|lib seeds||msplines
+sdiff|src/sdiff/*.rs src/sdiff/*/*.rs|lib seeds||sdiff
 render|src/render/*.rs|lib surface
+fitting|src/fitting/*.rs|lib seeds||fitting
+numeric|src/numeric/*.rs|lib chapter4 gluing
+mesh-io|src/mesh/io/*.rs src/mesh/load.rs|lib mesh
 EOF
 }
 
@@ -55,7 +60,7 @@ if [[ -z "$row" ]]; then
     echo "unknown module '$module'; mutants/run.sh --list names them" >&2
     exit 2
 fi
-IFS='|' read -r _ globs tests skips <<<"$row"
+IFS='|' read -r _ globs tests skips filter <<<"$row"
 
 command -v cargo-mutants >/dev/null || {
     echo "cargo-mutants is not installed: cargo install cargo-mutants --locked" >&2
@@ -90,9 +95,16 @@ if [[ "$again" == again ]]; then
 elif [[ "$denom" != 1 ]]; then
     args+=(--shard "0/$denom" --sharding round-robin)
 fi
-if [[ -n "${skips:-}" ]]; then
+if [[ -n "${skips:-}" || -n "${filter:-}" ]]; then
     args+=(--cargo-test-arg=--)
-    for s in $skips; do args+=(--cargo-test-arg=--skip "--cargo-test-arg=$s"); done
+    [[ -n "${filter:-}" ]] && args+=("--cargo-test-arg=$filter")
+    for s in ${skips:-}; do args+=(--cargo-test-arg=--skip "--cargo-test-arg=$s"); done
+fi
+# cargo-mutants' test timeout is a multiple of the unmutated run's time; on a machine shared
+# with other builds that run is not representative, and a false timeout would count as caught.
+# PPM_MUTANTS_TIMEOUT_MULTIPLIER raises the multiple (cargo-mutants' default applies if unset).
+if [[ -n "${PPM_MUTANTS_TIMEOUT_MULTIPLIER:-}" ]]; then
+    args+=(--timeout-multiplier "$PPM_MUTANTS_TIMEOUT_MULTIPLIER")
 fi
 
 generated="$(cd "$tree" && cargo mutants --list "${files[@]}" | wc -l)"

@@ -98,6 +98,8 @@
 //! * [`cli`] — the `ppm` command line.
 
 #![warn(missing_docs)]
+// Items no user outside the crate can reach are `pub(crate)` (docs/architecture.md, "The public API").
+#![deny(unreachable_pub)]
 // The check harness's rule 1 (report::harness): a deviation is compared as `!(d <= tol)`, which
 // is true for NaN, so a NaN is an offence; `partial_cmp` would hide exactly that case.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]

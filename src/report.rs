@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-pub mod harness;
+pub(crate) mod harness;
 pub use harness::{dev_max, uniform_in_triangle, Check, OnError, Restricted};
 
 /// A progress hook of a long computation, called with (items done, total); the command line

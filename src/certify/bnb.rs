@@ -224,6 +224,7 @@ pub(super) fn finish(
         unresolved: st.unresolved,
         witness,
         millis: t0.elapsed().as_millis() as u64,
+        f64_rounding: None,
     }
 }
 

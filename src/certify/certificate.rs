@@ -60,9 +60,22 @@ pub struct PropertyResult {
     pub witness: Option<CertWitness>,
     /// Time spent proving this result, in ms.
     pub millis: u64,
+    /// CERT-f64-rounding: proven bounds on the f64 evaluator's rounding (on `P4.2.3(cert)`,
+    /// one per edge configuration; absent in certificates written before it existed).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub f64_rounding: Option<F64Rounding>,
 }
 
 impl PropertyResult {
+    /// δ where it qualifies what was proven: a result certified outside δ, or an inconclusive
+    /// one; `None` for a whole-set certificate and for a refutation (decided by its witness).
+    pub fn delta_of_partial_proof(&self) -> Option<f64> {
+        match self.outcome {
+            Outcome::CertifiedOutsideDelta | Outcome::Inconclusive => self.delta,
+            Outcome::Certified | Outcome::Refuted => None,
+        }
+    }
+
     /// As a report row.
     pub fn to_check_result(&self) -> CheckResult {
         let verdict = match self.outcome {

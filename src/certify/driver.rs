@@ -16,11 +16,18 @@ pub fn prove_config(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Property
             prove_star(m, true, false, model, s),
             prove_star(m, true, true, model, s),
         ],
-        ConfigKey::Edge { m_u, m_w } => vec![
-            prove_nonempty(m_u, m_w, model),
-            prove_inverse(m_u, m_w, model, s),
-            prove_hausdorff(m_u, m_w, model, s),
-        ],
+        ConfigKey::Edge { m_u, m_w } => {
+            let mut inverse = prove_inverse(m_u, m_w, model, s);
+            // The rounding bound is about the production evaluator (the paper's maps at f64).
+            if model.is_paper() {
+                inverse.f64_rounding = Some(prove_f64_rounding(m_u, m_w, s));
+            }
+            vec![
+                prove_nonempty(m_u, m_w, model),
+                inverse,
+                prove_hausdorff(m_u, m_w, model, s),
+            ]
+        }
         ConfigKey::Triangle { .. } => prove_triangle(key, model, s),
     }
 }
@@ -218,10 +225,10 @@ pub fn summary_table(cert: &Certificate) -> String {
         cert.jobs
     ));
     s.push_str(&format!(
-        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json --summary CERTIFICATE_SUMMARY_M{}.md` (release build). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements).\n\n",
+        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json --summary CERTIFICATE_SUMMARY_M{}.md` (release build). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements); `max δ` = the largest δ of the results certified outside δ (a refuted result is decided by its witness and has no δ); `f64 rounding bound` = proven max |f64 evaluation − exact value| of φ_wu on all of Ω_uw, all labels (CERT-f64-rounding, section below).\n\n",
         cert.max_degree, cert.jobs, cert.max_degree, cert.max_degree
     ));
-    s.push_str("| property | configurations | certified | certified outside δ | refuted | inconclusive | max bound | max centre bound | max δ | boxes | max depth | time (s, sum) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    s.push_str("| property | configurations | certified | certified outside δ | refuted | inconclusive | max bound | max centre bound | max δ | boxes | max depth | time (s, sum) | f64 rounding bound |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     let mut by: BTreeMap<&str, Vec<&PropertyResult>> = BTreeMap::new();
     for r in &cert.results {
         by.entry(r.property.as_str()).or_default().push(r);
@@ -232,10 +239,10 @@ pub fn summary_table(cert: &Certificate) -> String {
         let mx = |f: &dyn Fn(&PropertyResult) -> Option<f64>| {
             rs.iter()
                 .filter_map(|r| f(r))
-                .fold(None, |a: Option<f64>, x| Some(a.map_or(x, |y| y.max(x))))
+                .fold(None, |a: Option<f64>, x| Some(a.map_or(x, |y| crate::report::dev_max(y, x))))
         };
         s.push_str(&format!(
-            "| `{p}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.1} |\n",
+            "| `{p}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.1} | {} |\n",
             rs.len(),
             cnt(Outcome::Certified),
             cnt(Outcome::CertifiedOutsideDelta),
@@ -243,12 +250,14 @@ pub fn summary_table(cert: &Certificate) -> String {
             cnt(Outcome::Inconclusive),
             fmt(mx(&|r| r.bound)),
             fmt(mx(&|r| r.centre_bound)),
-            fmt(mx(&|r| r.delta)),
+            fmt(mx(&|r| r.delta_of_partial_proof())),
             rs.iter().map(|r| r.boxes).sum::<u64>(),
             rs.iter().map(|r| r.max_depth).max().unwrap_or(0),
             rs.iter().map(|r| r.millis).sum::<u64>() as f64 / 1000.0,
+            fmt(mx(&|r| r.f64_rounding.as_ref().and_then(|f| f.phi))),
         ));
     }
+    s.push_str(&f64_rounding_section(cert));
     s.push_str("\n## Per configuration (refutations and non-certified results)\n\n| configuration | property | result | bound | δ | boxes | time (ms) | witness |\n|---|---|---|---|---|---|---|---|\n");
     for r in cert.results.iter().filter(|r| {
         !matches!(
@@ -262,7 +271,7 @@ pub fn summary_table(cert: &Certificate) -> String {
             r.property,
             r.outcome,
             fmt(r.bound),
-            fmt(r.delta),
+            fmt(r.delta_of_partial_proof()),
             r.boxes,
             r.millis,
             r.witness
@@ -275,11 +284,53 @@ pub fn summary_table(cert: &Certificate) -> String {
         ));
     }
     s.push_str("\n## Statements\n\n");
-    let mut seen = std::collections::BTreeSet::new();
+    // In property order, so a merge (which sorts the results) writes the same summary.
+    let mut statements: BTreeMap<&str, &str> = BTreeMap::new();
     for r in &cert.results {
-        if seen.insert(r.property.clone()) {
-            s.push_str(&format!("* `{}`: {}\n", r.property, r.statement));
-        }
+        statements
+            .entry(r.property.as_str())
+            .or_insert(r.statement.as_str());
+    }
+    for (p, st) in statements {
+        s.push_str(&format!("* `{p}`: {st}\n"));
     }
     s
+}
+
+/// The CERT-f64-rounding section of the summary: the worst bound of each quantity over the
+/// edge configurations, the libm assumption, coverage and cost.
+fn f64_rounding_section(cert: &Certificate) -> String {
+    let fr: Vec<&F64Rounding> = cert
+        .results
+        .iter()
+        .filter_map(|r| r.f64_rounding.as_ref())
+        .collect();
+    if fr.is_empty() {
+        return String::new();
+    }
+    let mx = |f: &dyn Fn(&F64Rounding) -> Option<f64>| {
+        fr.iter()
+            .filter_map(|x| f(x))
+            .fold(None, |a: Option<f64>, x| Some(a.map_or(x, |y| crate::report::dev_max(y, x))))
+            .map(|x| format!("{x:.2e}"))
+            .unwrap_or_else(|| "—".into())
+    };
+    let unbounded = fr.iter().filter(|f| f.phi.is_none()).count();
+    format!(
+        "\n## f64 rounding (CERT-f64-rounding)\n\n{} edge configurations; max over them: φ_wu {} (Euclidean), |p|² − r_u² {}, |q|² − r_w² {}, round-trip point {} (the literal test's tolerance ≥ {:.2e}); round trip certified exact on every winding-0 box: {}; configurations without a bound: {unbounded}; unresolved boxes: {} (max δ {}); boxes: {}; time {:.1} s (sum). The libm {}\n",
+        fr.len(),
+        mx(&|f| f.phi),
+        mx(&|f| Some(f.outer)),
+        mx(&|f| f.inner),
+        mx(&|f| f.roundtrip),
+        fr.iter()
+            .map(|f| f.roundtrip_tol)
+            .fold(f64::INFINITY, f64::min),
+        fr.iter().all(|f| f.roundtrip_exact),
+        fr.iter().map(|f| f.unresolved).sum::<u64>(),
+        mx(&|f| f.delta),
+        fr.iter().map(|f| f.boxes).sum::<u64>(),
+        fr.iter().map(|f| f.millis).sum::<u64>() as f64 / 1000.0,
+        crate::numeric::rounding::LIBM_ASSUMPTION,
+    ) + &format!("\n* {}\n", f64_rounding_statement())
 }

@@ -16,7 +16,7 @@
 pub mod interval;
 
 use crate::construction::maps::{
-    self, cos_pi_6, is_nonzero, Corner, EdgeConfig, Ppm, TriangleConfig, P2,
+    self, cos_pi_6, is_nonzero, Corner, EdgeConfig, Paper, Ppm, TriangleConfig, P2,
 };
 use crate::numeric::interval::Interval as I;
 use crate::numeric::{Iv, Mp, Scalar, Trit};
@@ -30,6 +30,7 @@ mod bnb;
 mod certificate;
 mod config;
 mod driver;
+mod f64_bound;
 mod model;
 mod prove_edge;
 mod prove_triangle;
@@ -40,6 +41,7 @@ pub use bnb::*;
 pub use certificate::*;
 pub use config::*;
 pub use driver::*;
+pub use f64_bound::*;
 pub use model::*;
 pub use prove_edge::*;
 pub use prove_triangle::*;

@@ -292,6 +292,7 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
             unresolved: st.unresolved,
             witness: refuted,
             millis: ms,
+            f64_rounding: None,
         }
     };
     let mismatch = model_mismatch > 0;

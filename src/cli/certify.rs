@@ -10,7 +10,7 @@ use std::process::ExitCode;
 
 /// Arguments of `ppm certify`.
 #[derive(Args, Debug)]
-pub struct CertifyArgs {
+pub(super) struct CertifyArgs {
     /// `ppm certify merge …`: join shard certificates instead of proving.
     #[command(subcommand)]
     pub merge: Option<MergeCmd>,
@@ -39,7 +39,7 @@ pub struct CertifyArgs {
 
 /// The `merge` subcommand of `ppm certify`.
 #[derive(Subcommand, Debug)]
-pub enum MergeCmd {
+pub(super) enum MergeCmd {
     /// Join shard certificates into one.
     Merge {
         /// Shard certificate files to join.
@@ -124,7 +124,7 @@ fn run_inner(a: CertifyArgs) -> Result<bool, CertifyError> {
 }
 
 /// Entry point of `ppm certify`.
-pub fn run(a: CertifyArgs) -> ExitCode {
+pub(super) fn run(a: CertifyArgs) -> ExitCode {
     match run_inner(a) {
         Ok(_) => ExitCode::SUCCESS,
         Err(e) => {

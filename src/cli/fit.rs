@@ -13,7 +13,7 @@ use std::time::Instant;
 
 /// Arguments of `ppm fit`.
 #[derive(Args, Debug)]
-pub struct FitArgs {
+pub(super) struct FitArgs {
     /// The dense mesh S_T (OFF, OBJ, PLY; a closed simplicial surface).
     pub file: PathBuf,
     /// ε: the largest distance allowed between a vertex of S_T and the fitted surface at its
@@ -52,7 +52,7 @@ pub struct FitArgs {
 }
 
 /// Run `ppm fit`.
-pub fn run(a: FitArgs) -> ExitCode {
+pub(super) fn run(a: FitArgs) -> ExitCode {
     let t0 = Instant::now();
     let k = match load(&a.file) {
         Ok(k) => k,
@@ -202,7 +202,7 @@ fn read(file: &std::path::Path) -> Result<crate::fitting::format::FitFile, ExitC
 }
 
 /// `ppm sample FIT --level N -o OUT`: the fitted surface sampled through eval.
-pub fn sample_fit(
+pub(super) fn sample_fit(
     file: &std::path::Path,
     level: u32,
     out: &std::path::Path,
@@ -231,7 +231,7 @@ pub fn sample_fit(
 }
 
 /// `ppm eval FIT FACE λ μ ν`: one point of the fitted surface (faces of the base mesh).
-pub fn eval_fit(file: &std::path::Path, face: u32, bary: [f64; 3]) -> ExitCode {
+pub(super) fn eval_fit(file: &std::path::Path, face: u32, bary: [f64; 3]) -> ExitCode {
     let f = match read(file) {
         Ok(f) => f,
         Err(c) => return c,
@@ -257,7 +257,7 @@ pub fn eval_fit(file: &std::path::Path, face: u32, bary: [f64; 3]) -> ExitCode {
 
 /// `ppm check --spec FIT`: the (σ, v) checks (Def. 3.4.1, condition (C), smoothness, eval) on
 /// the fitted PPS read back; the ε statement needs S_T and is checked by `ppm fit`.
-pub fn check_fit_file(file: &std::path::Path, json: bool, seed: u64) -> ExitCode {
+pub(super) fn check_fit_file(file: &std::path::Path, json: bool, seed: u64) -> ExitCode {
     let f = match read(file) {
         Ok(f) => f,
         Err(c) => return c,

@@ -8,7 +8,7 @@ mod load;
 mod msplines;
 mod oracle;
 mod progress;
-pub mod render;
+pub(crate) mod render;
 mod sample;
 mod sd;
 mod sd3;
@@ -76,6 +76,10 @@ enum Command {
         /// S′ (Sec. 6.2): pn | loop; also {"op":"set_surface",...}.
         #[arg(long, default_value = "pn")]
         sprime: String,
+        /// A certificate (`ppm certify`): `phi` answers carry its proven f64 error bound
+        /// (SPEC CERT-f64-rounding); also {"op":"set_certificate","path":...}.
+        #[arg(long)]
+        certificate: Option<PathBuf>,
     },
     /// Compare another implementation's answers against the reference: a table of queries
     /// (JSON lines: a request plus "value") or, with --surface, a sampled surface (OFF, PLY,
@@ -313,7 +317,14 @@ where
             bits,
             profile,
             sprime,
-        } => oracle::run_oracle(mesh.as_deref(), bits, &profile, &sprime),
+            certificate,
+        } => oracle::run_oracle(
+            mesh.as_deref(),
+            bits,
+            &profile,
+            &sprime,
+            certificate.as_deref(),
+        ),
         Command::Diff {
             mesh,
             table,

@@ -16,7 +16,7 @@ use std::process::ExitCode;
 
 /// `ppm msplines …`
 #[derive(Subcommand, Debug)]
-pub enum MsCommand {
+pub(super) enum MsCommand {
     /// Holomorphic 1-form, zero points and affine atlas of a closed mesh (Sec. 5), with the
     /// checks of every statement (SPEC MS-*), including Def. 3.4.1 on the atlas.
     Check(MsCheckArgs),
@@ -27,7 +27,7 @@ pub enum MsCommand {
 
 /// Arguments of `ppm msplines sample`.
 #[derive(Args, Debug)]
-pub struct MsSampleArgs {
+pub(super) struct MsSampleArgs {
     /// The mesh file (OFF, OBJ, PLY): the domain M.
     pub file: PathBuf,
     /// Output mesh (.obj, .off or .ply).
@@ -52,7 +52,7 @@ pub struct MsSampleArgs {
 
 /// Arguments of `ppm msplines check`.
 #[derive(Args, Debug)]
-pub struct MsCheckArgs {
+pub(super) struct MsCheckArgs {
     /// The mesh file (OFF, OBJ, PLY).
     pub file: PathBuf,
     /// Print the report as JSON.

@@ -11,7 +11,7 @@ use std::path::Path;
 use std::process::ExitCode;
 
 /// Longest accepted request line (bounded memory per request).
-pub const MAX_LINE: u64 = 1 << 20;
+pub(super) const MAX_LINE: u64 = 1 << 20;
 
 fn session(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> Result<Session, String> {
     let mut s = Session::new();
@@ -53,11 +53,26 @@ fn set_construction(
         .map_err(|e| format!("--construction {}: {e}", construction.name()))
 }
 
-/// `ppm oracle [--mesh M] [--bits B] [--profile P]`: answer one JSON request per stdin line
+/// `ppm oracle [--mesh M] [--bits B] [--profile P] [--certificate C]`: answer one JSON request per stdin line
 /// with one JSON response per stdout line until end of input. Exit status 0, or 2 when the
 /// initial mesh/precision/profile is rejected or stdin cannot be read.
-pub(crate) fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str, sprime: &str) -> ExitCode {
-    let mut s = match session(mesh, bits, profile, sprime) {
+pub(crate) fn run_oracle(
+    mesh: Option<&Path>,
+    bits: u32,
+    profile: &str,
+    sprime: &str,
+    certificate: Option<&Path>,
+) -> ExitCode {
+    let session = session(mesh, bits, profile, sprime).and_then(|mut s| {
+        if let Some(path) = certificate {
+            s.handle(&Request::SetCertificate {
+                path: path.to_path_buf(),
+            })
+            .map_err(|e| format!("--certificate: {e}"))?;
+        }
+        Ok(s)
+    });
+    let mut s = match session {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
@@ -100,7 +115,7 @@ pub(crate) fn run_oracle(mesh: Option<&Path>, bits: u32, profile: &str, sprime: 
 
 /// What [`read_bounded_line`] read.
 #[derive(Debug, PartialEq, Eq)]
-pub enum Line {
+pub(super) enum Line {
     /// End of input.
     End,
     /// A line of at most [`MAX_LINE`] bytes, in the buffer (newline included if present).
@@ -111,7 +126,10 @@ pub enum Line {
 
 /// Read one line of at most [`MAX_LINE`] bytes into `buf`; a longer one is consumed chunk by
 /// chunk without being stored (memory stays bounded whatever its length).
-pub fn read_bounded_line(input: &mut impl BufRead, buf: &mut Vec<u8>) -> std::io::Result<Line> {
+pub(super) fn read_bounded_line(
+    input: &mut impl BufRead,
+    buf: &mut Vec<u8>,
+) -> std::io::Result<Line> {
     buf.clear();
     let n = Read::by_ref(input).take(MAX_LINE).read_until(b'\n', buf)?;
     if n == 0 {
@@ -142,7 +160,7 @@ pub fn read_bounded_line(input: &mut impl BufRead, buf: &mut Vec<u8>) -> std::io
 
 /// `ppm diff --mesh M TABLE`: compare a JSON-lines table of answers against the reference.
 /// Exit status 0 within tolerance, 1 outside (or items not compared), 2 on a usage error.
-pub fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
+pub(super) fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
     let (tolerance, worst, json) = (a.tolerance, a.worst, a.json);
     if tolerance.is_nan() || tolerance < 0.0 {
         eprintln!("error: --tolerance must be a non-negative number");
@@ -192,7 +210,7 @@ pub fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
 }
 
 /// The `ppm diff TABLE` options for a JSON-lines table (see `crate::cli`).
-pub struct TableArgs {
+pub(super) struct TableArgs {
     /// MPFR precision of the reference.
     pub bits: u32,
     /// Largest accepted deviation.
@@ -212,7 +230,7 @@ pub struct TableArgs {
 }
 
 /// The `ppm diff --surface` options (see `crate::cli`).
-pub struct SurfaceArgs {
+pub(super) struct SurfaceArgs {
     /// Subdivision level (`None`: inferred from the vertex count).
     pub level: Option<u32>,
     /// `order` | `nearest`.

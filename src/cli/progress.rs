@@ -17,7 +17,7 @@ pub(super) struct Line {
 
 impl Line {
     /// A progress line for `label` (e.g. "ppm sample") counting `unit` (e.g. "points").
-    pub fn new(label: &'static str, unit: &'static str, wanted: bool) -> Self {
+    pub(super) fn new(label: &'static str, unit: &'static str, wanted: bool) -> Self {
         Line {
             label,
             unit,
@@ -40,7 +40,7 @@ impl Line {
     }
 
     /// End the line (a newline after the last update, when one was shown).
-    pub fn finish(&self) {
+    pub(super) fn finish(&self) {
         if self.updated.load(Ordering::Relaxed) {
             eprintln!();
         }

@@ -17,7 +17,7 @@ use std::time::Instant;
 
 /// Arguments of `ppm render`.
 #[derive(clap::Args, Debug)]
-pub struct RenderArgs {
+pub(crate) struct RenderArgs {
     /// The mesh K (OFF, OBJ, PLY), or a sampled surface with --input-is-samples.
     pub file: PathBuf,
     /// The PNG to write.
@@ -276,7 +276,7 @@ fn run_inner(a: &RenderArgs) -> Result<(Image, Vec<RenderReport>, Vec<String>), 
 
 /// Run `ppm render`; exit 0 on success, 1 when the normals are flipped (a sign error: the
 /// orientation check), 2 on bad input or I/O errors.
-pub fn run(a: RenderArgs) -> ExitCode {
+pub(crate) fn run(a: RenderArgs) -> ExitCode {
     let t0 = Instant::now();
     let (img, reports, notes) = match run_inner(&a) {
         Ok(x) => x,

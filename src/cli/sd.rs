@@ -3,7 +3,7 @@
 
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::report::{render_text, CheckResult};
-use crate::sdiff::{
+use crate::sdiff::planar::{
     c1, checks, claims, complex, handles, implicit, iso, normals, params, polygonize,
     positivity::Budget,
 };
@@ -13,7 +13,7 @@ use std::process::ExitCode;
 
 /// `ppm sd` arguments.
 #[derive(Args, Debug)]
-pub struct SdArgs {
+pub(super) struct SdArgs {
     #[command(subcommand)]
     cmd: SdCommand,
 }
@@ -26,7 +26,7 @@ enum SdCommand {
     Check {
         /// The planar complex (OFF/OBJ/PLY, z = 0).
         mesh: PathBuf,
-        /// The map (TOML; format in src/sdiff/params.rs and tests/data/sdiff/).
+        /// The map (TOML; format in src/sdiff/planar/params.rs and tests/data/sdiff/).
         params: PathBuf,
         #[arg(long)]
         json: bool,
@@ -166,8 +166,8 @@ type IsoInput = (
     complex::PlanarComplex,
     params::MapSpec,
     params::ComplexMap,
-    Vec<crate::sdiff::poly::Q>,
-    crate::sdiff::poly::Q,
+    Vec<crate::sdiff::planar::poly::Q>,
+    crate::sdiff::planar::poly::Q,
 );
 
 fn load_iso(mesh: &Path, params_path: &Path) -> Result<IsoInput, String> {
@@ -198,7 +198,7 @@ pub(super) fn emit(results: &[CheckResult], json: bool) -> ExitCode {
 }
 
 /// Runs `ppm sd …`.
-pub fn run(a: SdArgs) -> ExitCode {
+pub(super) fn run(a: SdArgs) -> ExitCode {
     match a.cmd {
         SdCommand::Check {
             mesh,
@@ -451,7 +451,7 @@ pub fn run(a: SdArgs) -> ExitCode {
                 samples,
                 seed,
             ));
-            let s = crate::sdiff::tet::search_monotonic(samples.min(60), seed, b);
+            let s = crate::sdiff::tet::poly::search_monotonic(samples.min(60), seed, b);
             out.push(claims::universal(
                 "SD-L115(3-D)",
                 "Sec. 3.1: monotonic ⇒ injective, on the tetrahedron (chart w_1..w_3)",

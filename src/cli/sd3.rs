@@ -3,20 +3,19 @@
 
 use super::sd::{emit, fail};
 use crate::report::{render_text, CheckResult};
-use crate::sdiff::claims;
-use crate::sdiff::positivity::Budget;
-use crate::sdiff::tet_checks::{check_all3, Options3};
-use crate::sdiff::tet_complex::{self, TetComplex, TetComplexError};
-use crate::sdiff::tet_iso;
-use crate::sdiff::tet_params::{self, MapSpec3, TetMap};
-use crate::sdiff::tet_search;
+use crate::sdiff::planar::claims;
+use crate::sdiff::planar::positivity::Budget;
+use crate::sdiff::tet;
+use crate::sdiff::tet::checks::{check_all3, Options3};
+use crate::sdiff::tet::complex::{TetComplex, TetComplexError};
+use crate::sdiff::tet::params::{MapSpec3, TetMap};
 use clap::Subcommand;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// The 3-D subcommands of `ppm sd`.
 #[derive(Subcommand, Debug)]
-pub enum Sd3Command {
+pub(super) enum Sd3Command {
     /// Validate the tetrahedral complex (exact) and check the map of PARAMS on it: Eq. (1),
     /// Def. 1 (faces, inside), agreement on shared triangles, the family's hypotheses, det DX > 0
     /// on every closed tetrahedron (exact, and by intervals with the agreement check).
@@ -24,7 +23,7 @@ pub enum Sd3Command {
     Check3 {
         /// The complex (`.tets`).
         complex: PathBuf,
-        /// The map (TOML; format in src/sdiff/tet_params.rs).
+        /// The map (TOML; format in src/sdiff/tet/params.rs).
         params: PathBuf,
         /// Box budget of the interval route per tetrahedron.
         #[arg(long, default_value_t = 20_000)]
@@ -64,8 +63,8 @@ fn load3(
     complex: &Path,
     params: &Path,
 ) -> Result<(TetComplex, MapSpec3, Vec<TetMap>, Vec<CheckResult>), String> {
-    let raw = tet_complex::read(complex).map_err(|e| e.to_string())?;
-    let (k, rep) = match tet_complex::validate(&raw) {
+    let raw = tet::file::read(complex).map_err(|e| e.to_string())?;
+    let (k, rep) = match tet::complex::validate(&raw) {
         Ok(x) => x,
         Err(TetComplexError::Invalid(rep)) => {
             return Err(format!(
@@ -76,13 +75,13 @@ fn load3(
         }
         Err(e) => return Err(e.to_string()),
     };
-    let spec = tet_params::read(params).map_err(|e| e.to_string())?;
+    let spec = tet::params::read(params).map_err(|e| e.to_string())?;
     let maps = spec.build(&k, params).map_err(|e| e.to_string())?;
     Ok((k, spec, maps, rep))
 }
 
 /// Runs one 3-D subcommand.
-pub fn run(c: Sd3Command) -> ExitCode {
+pub(super) fn run(c: Sd3Command) -> ExitCode {
     match c {
         Sd3Command::Check3 {
             complex,
@@ -115,11 +114,11 @@ pub fn run(c: Sd3Command) -> ExitCode {
             let Some((f, c)) = spec.iso.clone() else {
                 return fail(format!("{}: no [iso] table", params.display()));
             };
-            let iso = match tet_iso::isosurfaces(&k, &maps, &f, &c, level) {
+            let iso = match tet::iso::isosurfaces(&k, &maps, &f, &c, level) {
                 Ok(x) => x,
                 Err(e) => return fail(e.to_string()),
             };
-            let text = |m: &tet_iso::TriMesh, p: &Path| {
+            let text = |m: &tet::iso::TriMesh, p: &Path| {
                 if p.extension().is_some_and(|e| e == "obj") {
                     m.to_obj()
                 } else {
@@ -144,8 +143,8 @@ pub fn run(c: Sd3Command) -> ExitCode {
             let b = Budget::default();
             let mut out = Vec::new();
             for n in 1..=3 {
-                let s = tet_search::search3(samples, seed, b, |r| {
-                    tet_search::random_rational_fixed4(n, r)
+                let s = tet::search::search3(samples, seed, b, |r| {
+                    tet::search::random_rational_fixed4(n, r)
                 });
                 out.push(claims::universal(
                     "SD-L161(3-D)",
@@ -155,8 +154,8 @@ pub fn run(c: Sd3Command) -> ExitCode {
                     seed,
                 ));
             }
-            let s = tet_search::search3(samples, seed, b, |r| {
-                tet_search::random_rational_adjusted4(2, r)
+            let s = tet::search::search3(samples, seed, b, |r| {
+                tet::search::random_rational_adjusted4(2, r)
             });
             let mut r = claims::universal(
                 "SD-L161(3-D)",

@@ -14,7 +14,7 @@ use std::time::Instant;
 
 /// The checks of the (σ, v)-indexed construction; exit 1 on a failure that is not a
 /// documented erratum of the slides.
-pub fn run_check(file: &Path, json: bool, o: &SvCheckOptions) -> ExitCode {
+pub(super) fn run_check(file: &Path, json: bool, o: &SvCheckOptions) -> ExitCode {
     let t0 = Instant::now();
     let k = match load(file) {
         Ok(k) => k,

@@ -17,7 +17,7 @@ pub(crate) fn is_tsv(table: &Path) -> bool {
 }
 
 /// Run the comparison; exit 0 within tolerance, 1 beyond, 2 on bad input.
-pub fn run(
+pub(super) fn run(
     mesh: &Path,
     table: &Path,
     profile: &str,

@@ -621,3 +621,24 @@ pub fn render(r: &Ch4Report) -> String {
     }
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::subset;
+
+    #[test]
+    fn subset_keeps_everything_in_order_when_the_limit_is_not_below_the_count() {
+        let all: Vec<u32> = (0..20).collect();
+        assert_eq!(subset(all.clone(), None, 7), all);
+        assert_eq!(subset(all.clone(), Some(20), 7), all);
+        assert_eq!(subset(all.clone(), Some(50), 7), all);
+        let some = subset(all.clone(), Some(5), 7);
+        assert_eq!(some.len(), 5);
+        assert_eq!(some, subset(all.clone(), Some(5), 7), "seeded");
+        assert_ne!(
+            some,
+            all[..5].to_vec(),
+            "a seeded shuffle, not the first five"
+        );
+    }
+}

@@ -43,17 +43,6 @@ pub enum Element {
     Mesh,
 }
 
-impl Element {
-    /// The degree of the vertex whose p-domain the statement lives in (m_u, or m for a star).
-    pub fn centre_degree(&self) -> Option<u32> {
-        match *self {
-            Element::Edge { m_u, .. } | Element::Triangle { m_u, .. } => Some(m_u),
-            Element::Star { m } => Some(m),
-            Element::Mesh => None,
-        }
-    }
-}
-
 /// Which configurations an erratum's statement fails on, in terms of the centre degree m
 /// (m_u for edges and triangles, m_x for stars) of the family the check runs on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

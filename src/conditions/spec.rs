@@ -26,7 +26,7 @@ pub struct SpecOptions {
 /// Progress hooks of the two long phases (configurations of Ch. 4, check families of Ch. 5);
 /// the library prints nothing.
 #[derive(Default, Clone, Copy)]
-pub struct SpecProgress<'a> {
+pub(crate) struct SpecProgress<'a> {
     /// Called with (done, total) Chapter 4 configurations.
     pub chapter4: Progress<'a>,
     /// Called with (done, total) Chapter 5 check families.
@@ -78,7 +78,7 @@ impl CheckReport {
 /// Validate `raw` (Sec. 3.1) and, on a simplicial surface, run the s_v labelling check
 /// (`labels`) and, with `spec`, Chapters 3.4–4 and Chapter 5. An invalid mesh is a report whose
 /// `is_simplicial_surface` is false, never an error.
-pub fn check_report(
+pub(crate) fn check_report(
     raw: &RawMesh,
     labels: bool,
     spec: Option<&SpecOptions>,

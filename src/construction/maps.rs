@@ -132,14 +132,26 @@ pub const LENS_D_CENTRE: (i64, i64) = (1, 0);
 /// library; for y < 0 tiny the rounded θ may be −π_rounded, which approximates a true angle in
 /// (−π, π]. Errors: the origin ([`MapError::AtOrigin`]); a sign that cannot be decided.
 pub fn polar<S: Scalar>(p: &P2<S>) -> Result<Polar<S>, MapError> {
-    let sx = p.x.sign().ok_or(MapError::Undecided("sign of x in Π"))?;
-    let sy = p.y.sign().ok_or(MapError::Undecided("sign of y in Π"))?;
-    let r = p.norm2().sqrt();
-    let theta = match (sx, sy) {
-        (Ordering::Equal, Ordering::Equal) => return Err(MapError::AtOrigin),
-        (Ordering::Less, Ordering::Equal) => S::pi(p.prec()),
-        _ => p.y.atan2(&p.x),
+    if p.x.is_nan() {
+        return Err(MapError::Undecided("sign of x in Π"));
+    }
+    if p.y.is_nan() {
+        return Err(MapError::Undecided("sign of y in Π"));
+    }
+    let theta = match (p.x.sign(), p.y.sign()) {
+        (Some(Ordering::Equal), Some(Ordering::Equal)) => return Err(MapError::AtOrigin),
+        (Some(Ordering::Less), Some(Ordering::Equal)) => S::pi(p.prec()),
+        // Off the closed ray {y = 0, x ≤ 0} atan2 is the principal angle and continuous, so
+        // knowing x > 0 or y ≠ 0 suffices: a box that crosses the positive x-axis or the
+        // y-axis is decided (point types always know both signs; intervals and
+        // `numeric::rounding::Fe` may know only one).
+        (Some(Ordering::Greater), _) | (_, Some(Ordering::Less | Ordering::Greater)) => {
+            p.y.atan2(&p.x)
+        }
+        (None, _) => return Err(MapError::Undecided("sign of x in Π")),
+        (_, None) => return Err(MapError::Undecided("sign of y in Π")),
     };
+    let r = p.norm2().sqrt();
     Ok(Polar { theta, r })
 }
 

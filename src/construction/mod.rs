@@ -7,11 +7,11 @@
 
 pub mod abstract_view;
 pub mod checks;
-pub mod config;
+pub(crate) mod config;
 pub mod figure;
 pub mod maps;
-pub mod mesh_gluing;
-pub mod sampling;
+pub(crate) mod mesh_gluing;
+pub(crate) mod sampling;
 
 pub use maps::{
     g_uw, in_omega_uw, in_omega_uw_lens, phi_wu, phi_wu_f64_vs_mp, ConfigError, Corner, EdgeConfig,

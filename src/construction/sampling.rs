@@ -12,7 +12,7 @@ use std::collections::BTreeMap;
 
 /// What region a sample was drawn from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
-pub enum Category {
+pub(crate) enum Category {
     /// Uniform in the disk/lens.
     Uniform,
     /// Radius ρ(1 − 10^−k): just inside the boundary circle.
@@ -34,16 +34,14 @@ pub enum Category {
 
 /// Sampled points with their categories.
 #[derive(Clone, Debug)]
-pub struct Samples<S> {
-    /// The seed the points were generated from.
-    pub seed: u64,
+pub(crate) struct Samples<S> {
     /// The points, each with the region it was drawn from.
     pub points: Vec<(Category, P2<S>)>,
 }
 
 impl<S> Samples<S> {
     /// Number of points per category.
-    pub fn counts(&self) -> BTreeMap<Category, usize> {
+    pub(crate) fn counts(&self) -> BTreeMap<Category, usize> {
         let mut m = BTreeMap::new();
         for (c, _) in &self.points {
             *m.entry(*c).or_insert(0) += 1;
@@ -59,28 +57,20 @@ impl<S> Samples<S> {
             .join(", ")
     }
     /// Number of points.
-    pub fn len(&self) -> usize {
+    pub(crate) fn len(&self) -> usize {
         self.points.len()
-    }
-    /// True when there are no points.
-    pub fn is_empty(&self) -> bool {
-        self.points.is_empty()
-    }
-    /// Appends the points of `o` (its seed is not kept).
-    pub fn extend(&mut self, o: Samples<S>) {
-        self.points.extend(o.points);
     }
 }
 
 /// Largest k used for 10^−k offsets at a precision: leaves 3 decimal digits of resolution,
 /// capped at 30.
-pub fn max_offset_exponent(prec: u32) -> u32 {
+pub(crate) fn max_offset_exponent(prec: u32) -> u32 {
     let digits = (prec as f64 * std::f64::consts::LOG10_2).floor() as u32;
     digits.saturating_sub(3).clamp(1, 30)
 }
 
 /// The RNG used by all samplers.
-pub fn rng(seed: u64) -> ChaCha8Rng {
+pub(crate) fn rng(seed: u64) -> ChaCha8Rng {
     ChaCha8Rng::seed_from_u64(seed)
 }
 
@@ -101,7 +91,13 @@ fn point_polar<S: Scalar>(r: &S, angle: &S) -> P2<S> {
 /// angle `cut` (π for Π's branch cut). Proportions: 40% uniform, 15% near the boundary circle
 /// (radius ρ(1 − 10^−k), k = 1..kmax), 15% near the origin (radius ρ·10^−k), 30% near the cut
 /// (angle cut ± 10^−k, both sides equally, radius uniform).
-pub fn sample_disk<S: Scalar>(seed: u64, n: usize, rho: &S, cut: &S, prec: u32) -> Samples<S> {
+pub(crate) fn sample_disk<S: Scalar>(
+    seed: u64,
+    n: usize,
+    rho: &S,
+    cut: &S,
+    prec: u32,
+) -> Samples<S> {
     let mut g = rng(seed);
     let kmax = max_offset_exponent(prec);
     let pi = S::pi(prec);
@@ -135,12 +131,12 @@ pub fn sample_disk<S: Scalar>(seed: u64, n: usize, rho: &S, cut: &S, prec: u32) 
         };
         points.push((cat, p));
     }
-    Samples { seed, points }
+    Samples { points }
 }
 
 /// Points exactly on the circle of radius `rho` (as exactly as the scalar type rounds), at
 /// angles uniform in `(a0, a1)`.
-pub fn sample_circle_arc<S: Scalar>(
+pub(crate) fn sample_circle_arc<S: Scalar>(
     seed: u64,
     n: usize,
     rho: &S,
@@ -156,12 +152,12 @@ pub fn sample_circle_arc<S: Scalar>(
         let a = a0.add(&a1.sub(a0).mul(&S::from_f64(t, prec)));
         points.push((Category::OnBoundary, centre.add(&point_polar(rho, &a))));
     }
-    Samples { seed, points }
+    Samples { points }
 }
 
 /// Half-opening angle α₀ = atan(√2) of the canonical lens seen from the origin: the corners of
 /// E are (1/2, ±√2/2) (intersection of ∂C and ∂D).
-pub fn lens_corner_angle<S: Scalar>(prec: u32) -> S {
+pub(crate) fn lens_corner_angle<S: Scalar>(prec: u32) -> S {
     let s2h = S::from_i64(2, prec).sqrt().div(&S::from_i64(2, prec));
     s2h.atan2(&S::from_ratio(1, 2, prec))
 }
@@ -170,7 +166,7 @@ pub fn lens_corner_angle<S: Scalar>(prec: u32) -> S {
 /// box, points outside are dropped), 40% within ρ·10^−k of the two boundary arcs (∂C inside D
 /// and ∂D inside C), on both sides, including near the corners, 20% within 10^−k of the
 /// lens axis y = 0 (x uniform in (1 − cos π/6, cos π/6)).
-pub fn sample_lens<S: Scalar>(seed: u64, n: usize, prec: u32) -> Samples<S> {
+pub(crate) fn sample_lens<S: Scalar>(seed: u64, n: usize, prec: u32) -> Samples<S> {
     let mut g = rng(seed);
     let kmax = max_offset_exponent(prec);
     let rho = cos_pi_6::<S>(prec);
@@ -219,12 +215,12 @@ pub fn sample_lens<S: Scalar>(seed: u64, n: usize, prec: u32) -> Samples<S> {
             points.push((Category::NearLensBoundary, p));
         }
     }
-    Samples { seed, points }
+    Samples { points }
 }
 
 /// Points exactly on the arc ∂D ∩ int(C) (the inner boundary of E, whose pull-back by
 /// R_(u,w)⁻¹∘g_u⁻¹ is ∂Ω_uw ∩ Ω_u, used for condition (4) / L4.2.3).
-pub fn sample_lens_inner_arc<S: Scalar>(seed: u64, n: usize, prec: u32) -> Samples<S> {
+pub(crate) fn sample_lens_inner_arc<S: Scalar>(seed: u64, n: usize, prec: u32) -> Samples<S> {
     let rho = cos_pi_6::<S>(prec);
     let a0 = lens_corner_angle::<S>(prec);
     let pi = S::pi(prec);

@@ -6,8 +6,9 @@
 //!
 //! A failure names the base faces where it happened; the pipeline reports it (SPEC
 //! `AF-embedding`) and fits with the simplification's parameters, never passing it on as
-//! Floater's. (Refining at those faces and embedding again was tried: on the corpus it did
-//! not converge in 60 rounds.)
+//! Floater's. A base edge with no curve is flipped and the base mesh embedded again
+//! ([`super::fit_surface`], SPEC `AF-embedding`); refining by face splits at the failing faces
+//! and embedding again was tried: on the corpus it did not converge in 60 rounds.
 
 use super::base::{BaseMesh, Param};
 use super::floater::{self, RegionMap};
@@ -37,6 +38,8 @@ pub struct Failure {
     pub what: String,
     /// Base face slots to refine.
     pub faces: Vec<u32>,
+    /// The base edge that has no curve, when that is the failure.
+    pub edge: Option<(u32, u32)>,
 }
 
 /// Embed, cut, map (module doc).
@@ -49,6 +52,7 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
                 .iter()
                 .filter_map(|&(u, w)| base.face_of_edge(u, w))
                 .collect(),
+            edge: Some((a, b)),
         }
     })?;
     shorten::shorten(k, base, &mut emb);
@@ -62,6 +66,7 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
                         .iter()
                         .filter_map(|&(u, w)| base.face_of_edge(u, w))
                         .collect(),
+                    edge: None,
                 };
             }
             overlay::OverlayError::Crossing(f) | overlay::OverlayError::Degenerate(f) => f,
@@ -77,6 +82,7 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
         Failure {
             what: e.to_string(),
             faces,
+            edge: None,
         }
     })?;
     let bad: Vec<u32> = overlay::disk_defects(&ov, base, &emb)
@@ -88,6 +94,7 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
         return Err(Failure {
             what: format!("{} curved triangles are not disks", bad.len()),
             faces: bad,
+            edge: None,
         });
     }
     let maps = floater::map_regions(&ov, base, &emb).map_err(|e| {
@@ -95,6 +102,7 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
         Failure {
             what: e.to_string(),
             faces: vec![*face],
+            edge: None,
         }
     })?;
     let params = floater::params(&maps, base, &emb, base.positions().len());

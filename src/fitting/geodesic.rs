@@ -187,6 +187,11 @@ pub struct EmbedStats {
     pub unrestricted: usize,
     /// Curves taken up again because they walled off a later one ([`super::route`]).
     pub ripped: usize,
+    /// Base edges that are edges of S_T, traced along them first ([`super::route`]).
+    pub on_edges: usize,
+    /// Times the tracing started again with an edge that had no path first
+    /// ([`super::route`]).
+    pub restarts: usize,
     /// Total length of the initial curves.
     pub initial_length: f64,
     /// Total length after shortening.
@@ -279,7 +284,7 @@ impl<'a> Graph<'a> {
         }
     }
     /// The points of edge {u, w} from u to w, ends included.
-    fn along(&self, u: u32, w: u32) -> [u32; EDGE_POINTS as usize + 2] {
+    pub(super) fn along(&self, u: u32, w: u32) -> [u32; EDGE_POINTS as usize + 2] {
         let base = self.n + EDGE_POINTS * self.edge_id[&(u.min(w), u.max(w))];
         std::array::from_fn(|i| match i as u32 {
             0 => u,

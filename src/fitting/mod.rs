@@ -187,6 +187,17 @@ fn percentile(v: &[f64], q: f64) -> f64 {
 /// Repair rounds at most for a base mesh the validator refuses.
 const MAX_REPAIRS: usize = 60;
 
+/// Changes of the base mesh at most per fit where a base edge had no curve (SPEC
+/// `AF-embedding`).
+const MAX_EMBED_REPAIRS: usize = 32;
+
+/// The base faces as sorted vertex triples (which base meshes were embedded already).
+fn face_key(base: &BaseMesh) -> Vec<[u32; 3]> {
+    let mut f: Vec<[u32; 3]> = base.faces().map(|(_, c)| c).collect();
+    f.sort_unstable();
+    f
+}
+
 /// Simplification attempts: a base mesh the repair cannot make valid is simplified again
 /// with half the deviation allowance (closer to S_T, so fewer crossings).
 const ATTEMPTS: usize = 4;
@@ -248,6 +259,7 @@ fn fit_once(
     let mut rounds: Vec<Round> = Vec::new();
     let mut repairs = 0;
     let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
+    let mut embed_repairs = 0;
     loop {
         let tr = std::time::Instant::now();
         let surface = match BaseSurface::new(&base) {
@@ -282,11 +294,7 @@ fn fit_once(
         // holds; otherwise the simplification's parameters are, and the failure is reported
         // (`AF-embedding`, and the checks of the embedding that exists), never passed on.
         // A base mesh whose embedding failed is not embedded again (the failure is kept).
-        let key: Vec<[u32; 3]> = {
-            let mut f: Vec<[u32; 3]> = base.faces().map(|(_, c)| c).collect();
-            f.sort_unstable();
-            f
-        };
+        let key = face_key(&base);
         let emb = match failed_at.iter().find(|(x, _)| *x == key) {
             Some((_, f)) => {
                 progress("embed: failed at this base mesh before, not tried again");
@@ -295,8 +303,43 @@ fn fit_once(
             None => embedded::embed(k, &base),
         };
         if let Err(f) = &emb {
-            if !failed_at.iter().any(|(x, _)| *x == key) {
-                failed_at.push((key, f.clone()));
+            let new = !failed_at.iter().any(|(x, _)| *x == key);
+            if new {
+                failed_at.push((key.clone(), f.clone()));
+            }
+            // A base edge with no curve: the base mesh is changed there by a stellar operation
+            // (seed 002 Part II, "refine S̃_T locally by stellar operators") and embedded
+            // again. Such an edge is one the base mesh's combinatorics put across the curves
+            // of its neighbours (the simplification's parametrization folds S_T there). First
+            // the edge is flipped (its faces' other diagonal may have room); when the flip is
+            // refused or gives a base mesh that failed before (neither diagonal of the quad
+            // can be traced), the vertex of S_T furthest from its flat base triangle among
+            // the two faces' is inserted (`repair`, a face split). The base meshes tried are
+            // remembered, so none is embedded twice; at most MAX_EMBED_REPAIRS per fit.
+            if let (true, Some((a, b))) = (new && embed_repairs < MAX_EMBED_REPAIRS, f.edge) {
+                let before = base.clone();
+                let flipped = base.flip(a, b).is_ok() && {
+                    let flipped_key = face_key(&base);
+                    !failed_at.iter().any(|(x, _)| *x == flipped_key)
+                };
+                let how = if flipped {
+                    format!("base edge {a}-{b} flipped")
+                } else {
+                    base = before;
+                    let st = repair(&mut base, &f.faces, &pos);
+                    format!(
+                        "{} vertices inserted, {} edges flipped at base edge {a}-{b}",
+                        st.inserted, st.flips
+                    )
+                };
+                if face_key(&base) != key {
+                    embed_repairs += 1;
+                    progress(&format!(
+                        "embed: failed ({}); {how}, embedding again",
+                        f.what
+                    ));
+                    continue;
+                }
             }
         }
         let usable = match &emb {
@@ -311,12 +354,14 @@ fn fit_once(
                     (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
                 });
                 progress(&format!(
-                    "embed: {} curves ({} in their faces' region, {} widened, {} on all of S_T, {} taken up and traced again), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
+                    "embed: {} curves ({} along an edge of S_T, {} in their faces' region, {} widened, {} on all of S_T, {} taken up and traced again, {} restarts), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
                     e.emb.curves.len(),
+                    e.emb.stats.on_edges,
                     e.emb.stats.in_region,
                     e.emb.stats.widened,
                     e.emb.stats.unrestricted,
                     e.emb.stats.ripped,
+                    e.emb.stats.restarts,
                     e.emb.stats.initial_length,
                     e.emb.stats.length,
                     e.emb.stats.sweeps,

@@ -13,8 +13,15 @@
 //! edges; an edge taken up twice goes wider before passing curves in its region again. An
 //! edge that cannot be traced in its region (not even through other curves) is put back at
 //! the end of the queue once, so it goes around the others rather than through them. An
-//! edge with no path then is reported (`EmbedError::NoPath`). Deterministic: the order of
+//! edge with no path then starts the tracing again with that edge first (at most
+//! [`RESTARTS`] times; it is reported, `EmbedError::NoPath`, when it has no path even traced
+//! first, and `fit_surface` then changes the base mesh there). Deterministic: the order of
 //! the queue, the costs and Dijkstra's ties are fixed.
+//!
+//! **Base edges that are edges of S_T** are traced before all others, along that edge (the
+//! shortest path on |S_T| between its ends, so already the geodesic), and are never taken
+//! up: traced in the greedy order, another curve could cross such an edge, and then nothing
+//! joined its ends (bunny at 10⁻³ of the diagonal, anchor).
 
 use super::base::{BaseMesh, Param};
 use super::embed_checks::{local, meet, only_at};
@@ -31,6 +38,9 @@ pub const RIP_ROUNDS: usize = 2;
 /// The price of passing another curve, in diagonals of S_T's bounding box.
 pub const PENALTY: f64 = 1.0;
 
+/// Times the tracing starts again with the edge that had no path first.
+pub const RESTARTS: usize = 12;
+
 /// A segment of a traced curve in a triangle's reference frame.
 type Seg = (usize, [[f64; 2]; 2]);
 
@@ -46,6 +56,8 @@ struct Traced {
     ripped: Vec<usize>,
     /// Edges put back at the end of the queue.
     deferred: Vec<bool>,
+    /// Base edges that are edges of S_T, traced along them and never taken up.
+    fixed: Vec<bool>,
 }
 
 impl Traced {
@@ -223,7 +235,7 @@ impl<'a> Edge<'a> {
         // place cannot alternate without end.
         let cost = |c: usize| {
             price
-                .filter(|_| t.ripped[c] < RIP_ROUNDS)
+                .filter(|_| t.ripped[c] < RIP_ROUNDS && !t.fixed[c])
                 .map(|p| p * (1 + t.ripped[c]) as f64)
         };
         dijkstra(
@@ -264,10 +276,16 @@ impl<'a> Edge<'a> {
     }
 }
 
-/// Step 1 (module doc): the initial curves, in the order of the base edges (shortest first).
-pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedding, EmbedError> {
-    let g = Graph::new(k);
-    let edges = base_edges(base);
+/// One tracing of all base edges (module doc): the edges `first` lead the queue, then the
+/// others in the order of `edges`. Err(e): base edge e has no path.
+fn trace_all(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    g: &Graph,
+    edges: &[(u32, u32)],
+    first: &[usize],
+    stats: &mut EmbedStats,
+) -> Result<Traced, usize> {
     let diag = diagonal(base.positions());
     let mut t = Traced {
         used: FxHashMap::default(),
@@ -275,13 +293,25 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
         paths: vec![None; edges.len()],
         ripped: vec![0; edges.len()],
         deferred: vec![false; edges.len()],
+        fixed: vec![false; edges.len()],
     };
+    // A base edge that is an edge of S_T is its own geodesic (no path on |S_T| between its
+    // ends is shorter: the triangle inequality), so it is traced first, along that edge, and
+    // never taken up; every other curve then goes around it. Traced later, another curve could
+    // cross it (it is short and was often in the way), and nothing but that edge joins its
+    // ends inside their faces' region (anchor, bunny: the edge walled off for good).
+    for (e, &(a, b)) in edges.iter().enumerate() {
+        if k.halfedge(VertexId(a), VertexId(b)).is_some() {
+            t.commit(g, k, e, 0, g.along(a, b).to_vec());
+            t.fixed[e] = true;
+        }
+    }
     let mut budget = edges.len();
-    let mut stats = EmbedStats::default();
-    let mut queue: VecDeque<usize> = (0..edges.len()).collect();
+    let mut queue: VecDeque<usize> = first.iter().copied().filter(|&e| !t.fixed[e]).collect();
+    queue.extend((0..edges.len()).filter(|e| !t.fixed[*e] && !first.contains(e)));
     'edges: while let Some(e) = queue.pop_front() {
         let (a, b) = edges[e];
-        let ed = Edge::new(k, base, &g, a, b);
+        let ed = Edge::new(k, base, g, a, b);
         // Around the other curves in the region, through them there, then the same wider.
         let mut found = None;
         'tries: for tiers in [0..3, 3..5] {
@@ -307,16 +337,45 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
                 }
             }
         }
-        let (tier, path) = found.ok_or(EmbedError::NoPath { a, b })?;
+        let (tier, path) = found.ok_or(e)?;
         let blockers = ed.blockers(&t, &path);
         for &c in blockers.iter().rev() {
-            t.take_up(&g, k, c);
+            t.take_up(g, k, c);
             queue.push_front(c);
         }
         budget = budget.saturating_sub(blockers.len());
         stats.ripped += blockers.len();
-        t.commit(&g, k, e, tier, path);
+        t.commit(g, k, e, tier, path);
     }
+    Ok(t)
+}
+
+/// Step 1 (module doc): the initial curves. The base edges are traced in the order of
+/// [`base_edges`] (shortest first); when one has no path, the tracing starts again with that
+/// edge first (before the edges promoted earlier), at most [`RESTARTS`] times.
+pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedding, EmbedError> {
+    let g = Graph::new(k);
+    let edges = base_edges(base);
+    let mut stats = EmbedStats::default();
+    let mut first: Vec<usize> = Vec::new();
+    let t = loop {
+        let mut s = EmbedStats::default();
+        match trace_all(k, base, &g, &edges, &first, &mut s) {
+            Ok(t) => {
+                stats.ripped = s.ripped;
+                break t;
+            }
+            Err(e) => {
+                if stats.restarts >= RESTARTS || first.first() == Some(&e) {
+                    let (a, b) = edges[e];
+                    return Err(EmbedError::NoPath { a, b });
+                }
+                stats.restarts += 1;
+                first.retain(|&x| x != e);
+                first.insert(0, e);
+            }
+        }
+    };
     let mut curves = Vec::new();
     let mut index = HashMap::new();
     for (e, p) in t.paths.into_iter().enumerate() {
@@ -326,6 +385,9 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
             0..=2 => stats.in_region += 1,
             3 => stats.widened += 1,
             _ => stats.unrestricted += 1,
+        }
+        if t.fixed[e] {
+            stats.on_edges += 1;
         }
         index.insert((a, b), curves.len());
         curves.push(Curve {

@@ -12,7 +12,7 @@
 //! Index convention, kept literally: Ω_ij ⊆ Ω_i, and φ_ji : Ω_ij → Ω_ji.
 
 pub mod data;
-pub mod error;
+pub(crate) mod error;
 pub mod exact1d;
 pub mod file;
 pub mod ppm;
@@ -20,7 +20,7 @@ pub mod relation;
 pub mod report;
 pub mod sampled;
 pub mod stereo;
-pub mod tolerance;
+pub(crate) mod tolerance;
 
 pub use data::{GluingData, Idx, Point};
 pub use error::GluingFileError;

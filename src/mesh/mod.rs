@@ -5,12 +5,12 @@
 //!   [`SimplicialSurface`] — the type says the Def. 3.1.6 conditions were verified.
 //! * [`halfedge`] is the DCEL of Sec. 6.1.1 with the labelling s_v of Sec. 6.1.2.
 
-pub mod error;
+pub(crate) mod error;
 pub mod generate;
-pub mod halfedge;
-pub mod ids;
+pub(crate) mod halfedge;
+pub(crate) mod ids;
 pub mod io;
-pub mod load;
+pub(crate) mod load;
 pub mod raw;
 pub mod star;
 pub mod validate;

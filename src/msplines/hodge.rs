@@ -16,7 +16,7 @@ use crate::numeric::vec3::{cross, dot, sub};
 
 /// Geometry of one face: edge vectors e1 = x1 − x0, e2 = x2 − x0, unit normal, area.
 #[derive(Debug, Clone, Copy)]
-pub struct FaceFrame {
+pub(crate) struct FaceFrame {
     e1: V3,
     e2: V3,
     /// Unit normal (orientation of the face).
@@ -27,7 +27,7 @@ pub struct FaceFrame {
 
 impl FaceFrame {
     /// The frame of face f.
-    pub fn new(k: &SimplicialSurface, f: FaceId) -> Self {
+    pub(crate) fn new(k: &SimplicialSurface, f: FaceId) -> Self {
         let [a, b, c] = k.face(f).map(|v| k.position(v));
         let (e1, e2) = (sub(b, a), sub(c, a));
         let cr = cross(e1, e2);
@@ -40,7 +40,7 @@ impl FaceFrame {
         }
     }
     /// g_f: the in-plane vector with ⟨g, e1⟩ = a01 and ⟨g, e2⟩ = a02.
-    pub fn gradient(&self, a01: f64, a02: f64) -> V3 {
+    pub(crate) fn gradient(&self, a01: f64, a02: f64) -> V3 {
         let (g11, g12, g22) = (
             dot(self.e1, self.e1),
             dot(self.e1, self.e2),
@@ -56,13 +56,13 @@ impl FaceFrame {
         ]
     }
     /// n × g.
-    pub fn rotate(&self, g: V3) -> V3 {
+    pub(crate) fn rotate(&self, g: V3) -> V3 {
         cross(self.n, g)
     }
 }
 
 /// g_f(form) from the stored values ω\[v0,v1\] and −ω\[v2,v0\] = ω\[v0,v2\].
-pub fn face_vector(ei: &EdgeIndex, fr: &FaceFrame, form: &[f64], f: FaceId) -> V3 {
+pub(crate) fn face_vector(ei: &EdgeIndex, fr: &FaceFrame, form: &[f64], f: FaceId) -> V3 {
     let [h01, _, h20] = face_halfedges(f);
     fr.gradient(ei.eval(form, h01), -ei.eval(form, h20))
 }
@@ -85,7 +85,7 @@ pub struct Conjugate {
 }
 
 /// Compute ∗h_k for every harmonic basis form.
-pub fn conjugate(
+pub(crate) fn conjugate(
     k: &SimplicialSurface,
     ei: &EdgeIndex,
     h: &[Vec<f64>],

@@ -20,7 +20,7 @@ use crate::surface::smooth::{GluingView, MpEval, SmoothError, SmoothSurface};
 
 /// The spline F with the mesh M and the atlas it is defined on (`pipeline::spline`).
 #[derive(Debug, Clone, Copy)]
-pub struct SplineSurface<'a> {
+pub(crate) struct SplineSurface<'a> {
     /// The domain manifold M.
     pub k: &'a SimplicialSurface,
     /// The affine atlas of Sec. 5.4.

@@ -102,6 +102,9 @@ impl Scalar for Iv {
     fn sqr(&self) -> Self {
         Iv(self.0.sqr())
     }
+    fn is_nan(&self) -> bool {
+        self.0.is_empty() || self.0.inf().is_nan() || self.0.sup().is_nan()
+    }
     fn sign(&self) -> Option<Ordering> {
         let (lo, hi) = (self.0.inf(), self.0.sup());
         if self.0.is_empty() || lo.is_nan() || hi.is_nan() {

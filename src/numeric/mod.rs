@@ -11,6 +11,7 @@ pub mod mp_backend;
 #[cfg(feature = "mpfr")]
 pub mod mp_mpfr;
 pub mod predicates;
+pub mod rounding;
 pub mod scalar;
 pub mod union_find;
 pub mod vec3;
@@ -21,6 +22,7 @@ pub use mp::Mp;
 pub use mp_backend::MpBackend;
 #[cfg(feature = "mpfr")]
 pub use mp_mpfr::MpMpfr;
+pub use rounding::Fe;
 pub use scalar::{check_prec_bits, Scalar, Trit, DEFAULT_MP_PREC, PREC_BITS};
 pub use union_find::UnionFind;
 

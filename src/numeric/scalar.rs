@@ -156,6 +156,13 @@ pub trait Scalar: Clone + Debug + Send + Sync + 'static {
     /// (NaN; an interval containing 0). Both zeros give `Some(Equal)`.
     fn sign(&self) -> Option<Ordering>;
 
+    /// True when the value is not a number (a NaN point, an empty or NaN enclosure): the one
+    /// case where [`Scalar::sign`] is `None` for point types. Interval types override it, as
+    /// their `sign` is also `None` for an enclosure that merely contains 0.
+    fn is_nan(&self) -> bool {
+        self.sign().is_none()
+    }
+
     /// self², as `self.mul(self)`.
     fn sqr(&self) -> Self {
         self.mul(self)

@@ -8,7 +8,7 @@
 //! items with their arguments, and whether every deviation is within the tolerance.
 //!
 //! The reference is fixed for the whole table by the command line (mesh, precision, profile,
-//! S′): lines that would change it (`load`, `set_precision`, `set_profile`, `set_surface`, `set_construction`) are
+//! S′): lines that would change it (`load`, `set_certificate`, `set_precision`, `set_profile`, `set_surface`, `set_construction`) are
 //! refused as problems, not executed. A table with nothing compared is not a pass.
 
 use super::protocol::Session;
@@ -85,8 +85,9 @@ pub struct DiffReport {
 
 /// Ops that would change the reference the table is compared against (fixed by the command
 /// line for the whole table).
-pub const SESSION_OPS: [&str; 5] = [
+pub const SESSION_OPS: [&str; 6] = [
     "load",
+    "set_certificate",
     "set_precision",
     "set_profile",
     "set_surface",

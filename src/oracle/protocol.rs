@@ -48,6 +48,13 @@ pub enum Request {
         /// Mesh file (OFF, OBJ or PLY).
         path: PathBuf,
     },
+    /// Read a certificate (`ppm certify`): later `phi` answers of the edge configurations it
+    /// bounds carry `info.f64_error_bound`, its proven bound on |f64 − exact| (SPEC
+    /// `CERT-f64-rounding`).
+    SetCertificate {
+        /// Certificate JSON file.
+        path: PathBuf,
+    },
     /// Set the MPFR precision of later answers (default 256).
     SetPrecision {
         /// Precision in bits, 2..=[`MAX_BITS`].
@@ -358,6 +365,8 @@ pub struct Session {
     sprime: crate::surface::SurfaceKind,
     ch5: Option<Ch5>,
     sigma_v: Option<super::sigma_v::SigmaVOracle>,
+    /// φ_wu's proven f64 error bound per edge configuration (m_u, m_w), from `set_certificate`.
+    f64_bounds: std::collections::BTreeMap<(u32, u32), f64>,
 }
 
 impl Default for Session {
@@ -369,6 +378,7 @@ impl Default for Session {
             sprime: crate::surface::SurfaceKind::default(),
             ch5: None,
             sigma_v: None,
+            f64_bounds: Default::default(),
         }
     }
 }
@@ -512,6 +522,15 @@ impl Session {
                     sv.reset();
                 }
                 Ok(Response::plain(out))
+            }
+            Request::SetCertificate { path } => {
+                let cert = crate::certify::read_certificate(path)
+                    .map_err(|e| OracleError::Load(e.to_string()))?;
+                self.f64_bounds = super::query::f64_bounds(&cert);
+                Ok(Response::plain(json!({
+                    "edge_configurations": self.f64_bounds.len(),
+                    "libm_ulps": crate::numeric::rounding::LIBM_ULPS,
+                })))
             }
             Request::SetPrecision { bits } => {
                 if !crate::numeric::PREC_BITS.contains(bits) {
@@ -743,6 +762,9 @@ impl Session {
             }
         };
         add_info(&mut r, req.info(&f));
+        if r.f64.is_some() {
+            add_info(&mut r, req.f64_bound(k, &self.f64_bounds));
+        }
         Ok(r)
     }
 

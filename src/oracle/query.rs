@@ -255,6 +255,33 @@ impl Request {
         }
     }
 
+    /// The certificate's proven bound on the f64 error of a `phi` answer (SPEC
+    /// `CERT-f64-rounding`): 0 for φ_uu = id, the edge configuration's bound otherwise, nothing
+    /// when no certificate was set or it does not cover the configuration.
+    pub(crate) fn f64_bound(
+        &self,
+        k: Option<&crate::mesh::SimplicialSurface>,
+        bounds: &std::collections::BTreeMap<(u32, u32), f64>,
+    ) -> Option<Value> {
+        let (Request::Phi { u, w, .. }, Some(k)) = (self, k) else {
+            return None;
+        };
+        if bounds.is_empty() {
+            return None;
+        }
+        let g = PpmGluing::new(k);
+        let bound = if u == w {
+            0.0
+        } else {
+            let c = g.edge_config(VertexId(*u), VertexId(*w)).ok()?;
+            *bounds.get(&(c.m_u, c.m_w))?
+        };
+        Some(json!({
+            "f64_error_bound": bound,
+            "f64_error_bound_note": format!("proven |f64 − exact| of φ_wu for p in the boxes covering Ω_uw, any labels (certificate, SPEC CERT-f64-rounding); {}", crate::numeric::rounding::LIBM_ASSUMPTION),
+        }))
+    }
+
     /// Non-numerical facts of a numerical answer (`info`), from the f64 environment.
     pub(crate) fn info(&self, e: &Env<f64>) -> Option<Value> {
         match self {
@@ -330,4 +357,20 @@ pub(crate) fn both_or_note(
         Ok(a) => both(&a, b, bits),
         Err(e) => mp_only(b, bits, e.to_string()),
     }
+}
+
+/// φ_wu's f64 error bounds of a certificate of the paper's model, by edge configuration.
+pub(crate) fn f64_bounds(
+    cert: &crate::certify::Certificate,
+) -> std::collections::BTreeMap<(u32, u32), f64> {
+    cert.results
+        .iter()
+        .filter(|_| cert.model == "paper")
+        .filter_map(
+            |r| match (r.key, r.f64_rounding.as_ref().and_then(|f| f.phi)) {
+                (crate::certify::ConfigKey::Edge { m_u, m_w }, Some(b)) => Some(((m_u, m_w), b)),
+                _ => None,
+            },
+        )
+        .collect()
 }

@@ -10,7 +10,7 @@ use serde_json::{json, Value};
 
 /// The (σ, v) state of a session: κ and, built on first use, the surface and MPFR constants.
 #[derive(Debug, Clone)]
-pub struct SigmaVOracle {
+pub(crate) struct SigmaVOracle {
     /// κ of r_{v,σ}.
     pub kappa: f64,
     pps: Option<SigmaVPps>,
@@ -19,7 +19,7 @@ pub struct SigmaVOracle {
 
 impl SigmaVOracle {
     /// A state with κ (validated when the surface is built).
-    pub fn new(kappa: f64) -> Self {
+    pub(crate) fn new(kappa: f64) -> Self {
         SigmaVOracle {
             kappa,
             pps: None,
@@ -34,7 +34,7 @@ impl SigmaVOracle {
     }
 
     /// The surface of `k` (S′ = PN triangles, the default patch degree), built on first use.
-    pub fn pps(&mut self, k: &SimplicialSurface) -> Result<&SigmaVPps, String> {
+    pub(crate) fn pps(&mut self, k: &SimplicialSurface) -> Result<&SigmaVPps, String> {
         if self.pps.is_none() {
             let pn = PnTriangles::new(k);
             let p = SigmaVPps::build(
@@ -51,7 +51,7 @@ impl SigmaVOracle {
 
     /// eval in f64 and at `bits`: (f64 point or its error, MPFR point, info).
     #[allow(clippy::type_complexity)]
-    pub fn eval(
+    pub(crate) fn eval(
         &mut self,
         k: &SimplicialSurface,
         face: u32,

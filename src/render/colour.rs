@@ -67,7 +67,7 @@ pub struct ColourRange {
 }
 
 /// The percentiles used for the robust range.
-pub const ROBUST_PERCENTILES: (f64, f64) = (2.0, 98.0);
+pub(crate) const ROBUST_PERCENTILES: (f64, f64) = (2.0, 98.0);
 
 impl ColourRange {
     /// Parse `--range a,b` (finite, a ≤ 0 ≤ b, a < b).
@@ -139,9 +139,9 @@ impl ColourRange {
 }
 
 /// Colour of undefined values (NaN curvature at a singular point).
-pub const UNDEFINED: [f64; 3] = [0.5, 0.5, 0.5];
+pub(crate) const UNDEFINED: [f64; 3] = [0.5, 0.5, 0.5];
 /// Colour of a surface drawn with `--colour none`.
-pub const PLAIN: [f64; 3] = [0.8, 0.8, 0.8];
+pub(crate) const PLAIN: [f64; 3] = [0.8, 0.8, 0.8];
 
 const BLUE: [f64; 3] = [0.13, 0.40, 0.67];
 const WHITE: [f64; 3] = [0.97, 0.97, 0.97];

@@ -9,7 +9,7 @@ use super::image::Image;
 use font8x8::legacy::BASIC_LEGACY;
 
 /// Glyph cell size in font pixels.
-pub const GLYPH: u32 = 8;
+pub(crate) const GLYPH: u32 = 8;
 
 /// Width in pixels of `text` at `scale`.
 pub(crate) fn text_width(text: &str, scale: u32) -> u32 {

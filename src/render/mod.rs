@@ -14,17 +14,17 @@
 //! * [`error`] — typed errors.
 
 pub mod camera;
-pub mod colour;
-pub mod colour_bar;
-pub mod error;
-pub mod font;
-pub mod image;
+pub(crate) mod colour;
+pub(crate) mod colour_bar;
+pub(crate) mod error;
+pub(crate) mod font;
+pub(crate) mod image;
 pub mod orientation;
-pub mod panels;
-pub mod picture;
-pub mod raster;
-pub mod scene;
-pub mod shade;
+pub(crate) mod panels;
+pub(crate) mod picture;
+pub(crate) mod raster;
+pub(crate) mod scene;
+pub(crate) mod shade;
 pub mod source;
 
 pub use camera::{Camera, View};

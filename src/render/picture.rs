@@ -12,7 +12,7 @@ use super::shade::{brightness, light_direction, lit};
 use serde::Serialize;
 
 /// Background colour.
-pub const BACKGROUND: [u8; 3] = [255, 255, 255];
+pub(crate) const BACKGROUND: [u8; 3] = [255, 255, 255];
 
 /// How to draw a scene.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -77,7 +77,7 @@ pub struct RenderReport {
 }
 
 /// The scene's per-vertex values for `colour`, or an error when it carries none.
-pub fn values(scene: &Scene, colour: ColourBy) -> Result<Option<&[f64]>, RenderError> {
+pub(crate) fn values(scene: &Scene, colour: ColourBy) -> Result<Option<&[f64]>, RenderError> {
     match colour {
         ColourBy::None => Ok(None),
         ColourBy::Gaussian => scene

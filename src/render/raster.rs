@@ -8,11 +8,11 @@
 //! orthographic camera).
 
 /// No triangle covers the pixel.
-pub const NONE: u32 = u32::MAX;
+pub(crate) const NONE: u32 = u32::MAX;
 
 /// Per-pixel visibility: nearest triangle, its depth and the barycentric coordinates.
 #[derive(Debug, Clone)]
-pub struct Visibility {
+pub(crate) struct Visibility {
     /// Width in pixels.
     pub width: u32,
     /// Height in pixels.
@@ -29,7 +29,7 @@ pub struct Visibility {
 
 impl Visibility {
     /// An empty buffer.
-    pub fn new(width: u32, height: u32) -> Self {
+    pub(crate) fn new(width: u32, height: u32) -> Self {
         let n = width as usize * height as usize;
         Visibility {
             width,
@@ -42,7 +42,7 @@ impl Visibility {
     }
 
     /// Number of covered pixels (the silhouette area).
-    pub fn covered(&self) -> usize {
+    pub(crate) fn covered(&self) -> usize {
         self.face.iter().filter(|&&f| f != NONE).count()
     }
 

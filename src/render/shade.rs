@@ -5,7 +5,7 @@
 use crate::numeric::vec3::{dot, norm};
 
 /// Fraction of light that reaches every point.
-pub const AMBIENT: f64 = 0.25;
+pub(crate) const AMBIENT: f64 = 0.25;
 
 /// The light direction in camera terms: mostly from the viewer, a little from above-left.
 pub(crate) fn light_direction(right: [f64; 3], up: [f64; 3], towards: [f64; 3]) -> [f64; 3] {
@@ -25,6 +25,6 @@ pub(crate) fn brightness(n: [f64; 3], l: [f64; 3]) -> f64 {
 }
 
 /// `base` lit by `brightness`.
-pub fn lit(base: [f64; 3], brightness: f64) -> [f64; 3] {
+pub(crate) fn lit(base: [f64; 3], brightness: f64) -> [f64; 3] {
     base.map(|c| c * brightness)
 }

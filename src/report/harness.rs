@@ -42,7 +42,7 @@ pub fn dev_max(a: f64, b: f64) -> f64 {
 /// Rule 1 for an interval enclosure `[lo, hi]` of a deviation at a point: it refutes the
 /// bound `tol` when it surely exceeds it (`lo > tol`) or when it is not a finite enclosure
 /// (an empty or unbounded enclosure of a point evaluation is a NaN or an overflow).
-pub fn enclosure_exceeds(lo: f64, hi: f64, tol: f64) -> bool {
+pub(crate) fn enclosure_exceeds(lo: f64, hi: f64, tol: f64) -> bool {
     !(lo <= tol && lo.is_finite() && hi.is_finite())
 }
 

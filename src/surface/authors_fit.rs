@@ -48,7 +48,7 @@ fn bary_origin(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> [f64; 3] {
 
 /// The kept grid points of degree m, in their row order, with sector and barycentric
 /// coordinates w.r.t. (v′, v′_i, v′_{i+1}).
-pub fn authors_samples(m: u32, l: usize) -> Vec<Sample> {
+pub(crate) fn authors_samples(m: u32, l: usize) -> Vec<Sample> {
     let n = 2 * l;
     let r = (PI / m as f64).cos();
     let d = (2.0 * r) / n as f64;
@@ -193,7 +193,7 @@ impl CroutLu {
 
 /// The authors' least-squares problem for one degree: samples, A and the LU of AᵀA.
 #[derive(Debug, Clone)]
-pub struct AuthorsDegreeFit {
+pub(crate) struct AuthorsDegreeFit {
     /// l, the bi-degree.
     pub l: usize,
     /// The kept grid points, in row order.
@@ -205,7 +205,7 @@ pub struct AuthorsDegreeFit {
 
 impl AuthorsDegreeFit {
     /// Build A and factor AᵀA for degree m with bi-degree l.
-    pub fn new(m: u32, l: usize) -> AuthorsDegreeFit {
+    pub(crate) fn new(m: u32, l: usize) -> AuthorsDegreeFit {
         let samples = authors_samples(m, l);
         let r = (PI / m as f64).cos();
         let (rx, sx) = (-r, r);
@@ -236,14 +236,9 @@ impl AuthorsDegreeFit {
         AuthorsDegreeFit { l, samples, a, lu }
     }
 
-    /// Whether AᵀA could be factored (their code stops with an error otherwise).
-    pub fn is_factored(&self) -> bool {
-        self.lu.is_some()
-    }
-
     /// Control points from the S′ values at the samples (in sample order), in our storage
     /// order j(l+1) + k; `None` if AᵀA was not factored or `data` has the wrong length.
-    pub fn solve(&self, data: &[[f64; 3]]) -> Option<Vec<[f64; 3]>> {
+    pub(crate) fn solve(&self, data: &[[f64; 3]]) -> Option<Vec<[f64; 3]>> {
         let lu = self.lu.as_ref()?;
         if data.len() != self.samples.len() {
             return None;
@@ -275,7 +270,7 @@ impl AuthorsDegreeFit {
 /// our label (i + `offset`) mod m_v), then the normal equations. `out` gets the control
 /// points in our storage order; returns false (out untouched) when their fit is undefined
 /// (AᵀA not factored).
-pub fn fit_vertex_authors(
+pub(crate) fn fit_vertex_authors(
     k: &SimplicialSurface,
     target: &dyn TargetSurface,
     v: VertexId,
@@ -319,7 +314,7 @@ mod tests {
         for m in [3u32, 4, 5, 6, 7, 9] {
             let l = (m as usize + 1).min(7);
             let f = AuthorsDegreeFit::new(m, l);
-            assert!(f.is_factored(), "m = {m}");
+            assert!(f.lu.is_some(), "m = {m}");
             let sectors: std::collections::BTreeSet<u32> =
                 f.samples.iter().map(|s| s.sector).collect();
             assert_eq!(sectors.len(), m as usize, "m = {m}");

@@ -27,10 +27,10 @@ use super::SurfaceError;
 use crate::mesh::FaceId;
 
 /// The map-and-blend part of the bound in units of ε·scale (see the module doc).
-pub const MAP_BOUND_ULPS: f64 = 4096.0;
+pub(crate) const MAP_BOUND_ULPS: f64 = 4096.0;
 
 /// Higham's γ_n = nu/(1 − nu), u = ε/2: the relative error bound of n roundings.
-pub fn gamma_n(n: usize) -> f64 {
+pub(crate) fn gamma_n(n: usize) -> f64 {
     let nu = n as f64 * f64::EPSILON / 2.0;
     nu / (1.0 - nu)
 }
@@ -54,7 +54,7 @@ impl BoundedPoint {
 }
 
 /// A(x, y) = max_d Σ_{j,k} |b_jk\[d\]| B_j^l(x) B_k^l(y), rounded up by its own γ_{8l+8}.
-pub fn abs_patch_f64(cp: &[[f64; 3]], l: usize, half: f64, x: f64, y: f64) -> f64 {
+pub(crate) fn abs_patch_f64(cp: &[[f64; 3]], l: usize, half: f64, x: f64, y: f64) -> f64 {
     let l1 = l + 1;
     let bx = super::bezier::bernstein_vec_f64(l, half, x);
     let by = super::bezier::bernstein_vec_f64(l, half, y);

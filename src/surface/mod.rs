@@ -16,26 +16,26 @@
 //! See `SPEC.md` for statement-by-statement verdicts.
 
 pub mod admissible;
-pub mod authors_fit;
+pub(crate) mod authors_fit;
 pub mod bezier;
 pub mod checks;
-pub mod consts;
-pub mod error;
+pub(crate) mod consts;
+pub(crate) mod error;
 pub mod eval;
-pub mod eval_bound;
+pub(crate) mod eval_bound;
 pub mod fit;
 mod fit_linear;
 pub mod geometry;
 pub mod jet;
-pub mod kind;
+pub(crate) mod kind;
 pub mod loop_subdiv;
-pub mod options;
+pub(crate) mod options;
 pub mod output;
 pub mod pps;
 pub mod profile;
-pub mod scalar_ext;
+pub(crate) mod scalar_ext;
 pub mod sigma_v;
-pub mod smooth;
+pub(crate) mod smooth;
 mod storage;
 pub mod target;
 pub mod weights;

@@ -59,6 +59,24 @@ fn l4_2_1_cert_docs_quote_the_summaries_configuration_counts() {
                 }
             }
         }
+        // No δ anywhere in a committed summary: every property row is certified on the whole
+        // stated set or refuted by a witness (no result certified only outside δ, none
+        // inconclusive), so its `max δ` cell is empty.
+        let mut props = 0;
+        for row in text
+            .lines()
+            .filter(|l| l.starts_with("| `") && l.contains("(cert)"))
+        {
+            let c: Vec<&str> = row.split('|').map(str::trim).collect();
+            if c.len() < 13 {
+                continue; // the per-configuration table has fewer columns
+            }
+            assert_eq!(c[4], "0", "{file}: certified only outside δ: {row}");
+            assert_eq!(c[6], "0", "{file}: inconclusive: {row}");
+            assert_eq!(c[9], "—", "{file}: a δ in the summary: {row}");
+            props += 1;
+        }
+        assert!(props >= 8, "{file}: {props} property rows read");
         if m >= 16 {
             assert!(
                 spec.contains(&format!("(M = {m}: {n} configurations"))

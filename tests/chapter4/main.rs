@@ -6,6 +6,7 @@ mod common;
 
 mod cert_docs;
 mod cert_exact;
+mod cert_f64_rounding;
 mod certify_provers;
 mod construction_explore;
 mod construction_maps;

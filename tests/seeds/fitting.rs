@@ -129,6 +129,44 @@ fn af_embedding_rip_up_and_af_geodesic_shortest_hold_on_eight() {
     }
 }
 
+/// Base edges that are edges of S_T (SPEC AF-embedding): traced first, along that edge of S_T
+/// (their own geodesic), and never taken up. On bunny at ε = 10⁻³ of the diagonal, traced in
+/// the greedy order, other curves crossed such an edge and walled it off for good; now the
+/// embedding exists and every check of it holds.
+#[test]
+fn af_embedding_edges_of_s_t_first_hold_on_bunny() {
+    use pseudomanifold::fitting::embed_checks::run;
+    use pseudomanifold::fitting::geodesic::Node;
+    use pseudomanifold::mesh::VertexId;
+    let Some(dir) = crate::common::shared_path("af_embedding_edges_of_s_t", "meshes/good") else {
+        return;
+    };
+    let k = pseudomanifold::mesh::load_surface(&dir.join("bunny.off")).expect("corpus mesh loads");
+    let f = fit(&k, 1e-3);
+    assert!(f.floater_params, "bunny at 1e-3: Floater's parameters used");
+    let e = f.embedded.as_ref().expect("bunny at 1e-3 is embedded");
+    assert!(e.emb.stats.on_edges > 0, "some base edges are edges of S_T");
+    let mut along = 0;
+    for c in &e.emb.curves {
+        if k.halfedge(VertexId(c.a), VertexId(c.b)).is_some() {
+            along += 1;
+            assert!(
+                c.nodes.iter().all(|n| match *n {
+                    Node::Vertex(v) => v == c.a || v == c.b,
+                    Node::Edge { a, b, .. } => (a, b) == (c.a, c.b),
+                }),
+                "the curve of base edge {}-{} runs along that edge of S_T",
+                c.a,
+                c.b
+            );
+        }
+    }
+    assert_eq!(along, e.emb.stats.on_edges);
+    for r in run(&k, &f.base, e) {
+        assert_holds_for("bunny at 1e-3", &r);
+    }
+}
+
 /// A shape function moved by 2ε (every ψ of one base vertex's corners) is caught by
 /// `AF-epsilon` at that vertex.
 #[test]

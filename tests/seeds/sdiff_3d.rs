@@ -3,18 +3,22 @@
 
 use crate::common;
 
+use pseudomanifold::mesh::io::Limits;
+use pseudomanifold::mesh::{Location, MeshError};
 use pseudomanifold::report::{CheckResult, Verdict};
-use pseudomanifold::sdiff::interval::IntervalVerdict;
-use pseudomanifold::sdiff::maps::Poly1;
-use pseudomanifold::sdiff::poly::{q, qr, Q};
-use pseudomanifold::sdiff::positivity::{Budget, Decision};
-use pseudomanifold::sdiff::tet_checks::{check_all3, det_decision, Options3};
-use pseudomanifold::sdiff::tet_complex::{self, TetComplex, TetComplexError};
-use pseudomanifold::sdiff::tet_interval::certify_det_tet;
-use pseudomanifold::sdiff::tet_iso::{isosurfaces, kuhn_lattice, IsoError3};
-use pseudomanifold::sdiff::tet_maps::{fixed_control4, multi_indices4, random_adjusted4};
-use pseudomanifold::sdiff::tet_params::{self, MapSpec3, TetMap};
-use pseudomanifold::sdiff::{claims, tet_search};
+use pseudomanifold::sdiff::planar::claims;
+use pseudomanifold::sdiff::planar::interval::IntervalVerdict;
+use pseudomanifold::sdiff::planar::maps::Poly1;
+use pseudomanifold::sdiff::planar::poly::{q, qr, Q};
+use pseudomanifold::sdiff::planar::positivity::{Budget, Decision};
+use pseudomanifold::sdiff::tet::checks::{check_all3, det_decision, Options3};
+use pseudomanifold::sdiff::tet::complex::{self as tet_complex, TetComplex, TetComplexError};
+use pseudomanifold::sdiff::tet::file as tets_file;
+use pseudomanifold::sdiff::tet::interval::certify_det_tet;
+use pseudomanifold::sdiff::tet::iso::{isosurfaces, kuhn_lattice, IsoError3};
+use pseudomanifold::sdiff::tet::maps::{fixed_control4, multi_indices4, random_adjusted4};
+use pseudomanifold::sdiff::tet::params::{self as tet_params, MapSpec3, TetMap};
+use pseudomanifold::sdiff::tet::search as tet_search;
 use rand::{Rng, SeedableRng};
 use std::path::{Path, PathBuf};
 
@@ -25,7 +29,7 @@ fn data(name: &str) -> PathBuf {
 }
 
 fn complex(name: &str) -> TetComplex {
-    let raw = tet_complex::read(&data(name)).expect("fixture reads");
+    let raw = tets_file::read(&data(name)).expect("fixture reads");
     match tet_complex::validate(&raw) {
         Ok((k, rep)) => {
             common::assert_hold_except_skipped(name, &rep, &[]);
@@ -55,7 +59,7 @@ fn run(mesh: &str, params: &str) -> Vec<CheckResult> {
 
 /// Validation of inline text; Err carries the failing check IDs or the typed error.
 fn validate_text(text: &str) -> Result<TetComplex, String> {
-    let raw = tet_complex::parse(text, Path::new("inline.tets")).map_err(|e| e.to_string())?;
+    let raw = tets_file::parse(text, Path::new("inline.tets")).map_err(|e| e.to_string())?;
     match tet_complex::validate(&raw) {
         Ok((k, _)) => Ok(k),
         Err(TetComplexError::Invalid(rep)) => Err(rep
@@ -200,7 +204,7 @@ fn sd_k_3_d_validator_accepts_complexes_with_boundary_and_rejects_planted_faults
     let e = validate_text(&skew(-0.25)).unwrap_err();
     assert!(e.contains("SD-K(3-D)-overlap"), "{e}");
     {
-        let raw = tet_complex::parse(&skew(0.0), Path::new("x")).unwrap();
+        let raw = tets_file::parse(&skew(0.0), Path::new("x")).unwrap();
         let p: Vec<[Q; 3]> = raw
             .positions
             .iter()
@@ -248,21 +252,38 @@ fn sd_k_3_d_validator_accepts_complexes_with_boundary_and_rejects_planted_faults
     }
     let e = validate_text("tets\nv 0 0\n").unwrap_err();
     assert!(
-        e.contains("inline.tets:2") && e.contains("3 coordinates"),
+        e.contains("inline.tets: line 2") && e.contains("3 coordinates"),
         "{e}"
     );
     let e = validate_text("tets\nv 0 0 0\nt 0 1 2 -1\n").unwrap_err();
-    assert!(e.contains("inline.tets:3"), "{e}");
+    assert!(e.contains("inline.tets: line 3"), "{e}");
     let e = validate_text("tets\nt 0 1 2 4294967296\n").unwrap_err();
-    assert!(e.contains("inline.tets:2"), "{e}");
+    assert!(e.contains("inline.tets: line 2"), "{e}");
     let e = validate_text("OFF\n").unwrap_err();
     assert!(e.contains("header"), "{e}");
     let e = validate_text("tets\nq 1\n").unwrap_err();
     assert!(e.contains("unknown record"), "{e}");
     let e = validate_text("tets\n# nothing\nv 0 0 0\n").unwrap_err();
     assert!(e.contains("no tetrahedron"), "{e}");
-    let e = tet_complex::read(&data("no_such.tets")).unwrap_err();
+    let e = tets_file::read(&data("no_such.tets")).unwrap_err();
     assert!(e.to_string().contains("no_such.tets"), "{e}");
+    // The count bounds are those of the mesh readers (`mesh::io::Limits`), with their error.
+    let few = Limits {
+        max_vertices: 3,
+        ..Limits::default()
+    };
+    let e = tets_file::parse_with(CORNER, Path::new("few.tets"), few).unwrap_err();
+    assert!(
+        matches!(
+            &e,
+            MeshError::TooLarge {
+                at: Location::Line(5),
+                what: "vertex",
+                ..
+            }
+        ),
+        "{e}"
+    );
     // Every planted fault above was reported (SPEC `SD-K(3-D)`: caught): inverted, flat, three
     // on a triangle, shifted, skew, vertex inside, indices, repeat, unused, 3 non-finite,
     // 3 parse errors, header, unknown record, no tetrahedron.
@@ -314,7 +335,7 @@ fn kuhn_text(g: usize) -> String {
 #[test]
 fn sd_k_3_d_the_overlap_sweep_stays_local_on_a_larger_grid() {
     let g = 4;
-    let raw = tet_complex::parse(&kuhn_text(g), Path::new("kuhn4.tets")).unwrap();
+    let raw = tets_file::parse(&kuhn_text(g), Path::new("kuhn4.tets")).unwrap();
     let t0 = std::time::Instant::now();
     let (k, rep) = tet_complex::validate(&raw).expect("a Kuhn grid is a complex");
     let overlap = by_id(&rep, "SD-K(3-D)-overlap");
@@ -334,7 +355,7 @@ fn sd_k_3_d_the_overlap_sweep_stays_local_on_a_larger_grid() {
     );
     // Planted: one tetrahedron moved by half a cell overlaps its neighbours.
     let moved = kuhn_text(g).replacen("v 1 1 1\n", "v 2.5 1.25 1\n", 1);
-    let raw = tet_complex::parse(&moved, Path::new("moved.tets")).unwrap();
+    let raw = tets_file::parse(&moved, Path::new("moved.tets")).unwrap();
     assert!(matches!(
         tet_complex::validate(&raw),
         Err(TetComplexError::Invalid(_))
@@ -532,7 +553,7 @@ fn sd_e9_hyp_3_d_sd_l131_3_d_planted_monotone_and_unity_faults_are_caught() {
     let mut bad = TetMap::bezier(1, fixed_control4(1), None);
     bad.control[0][0] = qr(11, 10);
     let bad = TetMap::bezier(1, bad.control, None);
-    let r = pseudomanifold::sdiff::tet_checks::partition_of_unity3(&[bad]);
+    let r = pseudomanifold::sdiff::tet::checks::partition_of_unity3(&[bad]);
     assert!(r.failed(), "{r:?}");
 }
 

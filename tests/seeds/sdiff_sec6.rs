@@ -2,19 +2,19 @@
 //! m = 4 (`SD-L146(4-D)`).
 
 use pseudomanifold::report::Verdict;
-use pseudomanifold::sdiff::claims;
-use pseudomanifold::sdiff::maps::SimplexMap;
-use pseudomanifold::sdiff::poly::{index_of, q, qr, Q};
-use pseudomanifold::sdiff::positivity::{Budget, Decision, Strictness};
-use pseudomanifold::sdiff::simplex_poly::{
+use pseudomanifold::sdiff::common::simplex_poly::{
     decide, det_decision, fixed_control, indices, is_one, SimplexDecision, SimplexError,
     SimplexMapM, SimplexPoly, MAX_COEFFICIENTS,
 };
-use pseudomanifold::sdiff::simplex_search::{
+use pseudomanifold::sdiff::common::simplex_search::{
     closed_form_top, fixed_solitary_control, judge, near_vertex_control, search_fixed_solitary,
     search_with, vertex_configuration, vertex_configurations,
 };
-use pseudomanifold::sdiff::{tet, tet_maps};
+use pseudomanifold::sdiff::planar::claims;
+use pseudomanifold::sdiff::planar::maps::SimplexMap;
+use pseudomanifold::sdiff::planar::poly::{index_of, q, qr, Q};
+use pseudomanifold::sdiff::planar::positivity::{Budget, Decision, Strictness};
+use pseudomanifold::sdiff::tet::{maps as tet_maps, poly as tet};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
@@ -163,8 +163,8 @@ fn cross_2d(map2: &SimplexMap) -> (&'static str, &'static str) {
         .iter()
         .map(|i| map2.control[index_of(n, [i[0], i[1], i[2]])].to_vec())
         .collect();
-    let weights: Option<Vec<Q>> = (map2.family == pseudomanifold::sdiff::maps::Family::Rational)
-        .then(|| {
+    let weights: Option<Vec<Q>> =
+        (map2.family == pseudomanifold::sdiff::planar::maps::Family::Rational).then(|| {
             indices(2, n)
                 .iter()
                 .map(|i| map2.weights[index_of(n, [i[0], i[1], i[2]])].clone())
@@ -184,7 +184,7 @@ fn cross_2d(map2: &SimplexMap) -> (&'static str, &'static str) {
     let dm = det_decision(&ours, b).unwrap();
     if let SimplexDecision::Refuted { point, .. } = &dm {
         let w: Vec<Q> = point.iter().map(|s| parse(s)).collect();
-        let den_bad = map2.family != pseudomanifold::sdiff::maps::Family::Polynomial
+        let den_bad = map2.family != pseudomanifold::sdiff::planar::maps::Family::Polynomial
             && map2.den.eval(&w[1], &w[2]) <= q(0);
         assert!(den_bad || j2.eval(&w[1], &w[2]) <= q(0));
     }
@@ -438,10 +438,10 @@ fn sd_l146_4_d_planted_faults_are_reported_with_witnesses() {
 
 #[test]
 fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1() {
-    use pseudomanifold::sdiff::checks::det_positive_exact;
-    use pseudomanifold::sdiff::handles::quadratic_spec;
-    use pseudomanifold::sdiff::objectives::scan_l268;
-    use pseudomanifold::sdiff::optimise::{self, optimise, OptimiseError, OptimiseOptions};
+    use pseudomanifold::sdiff::planar::checks::det_positive_exact;
+    use pseudomanifold::sdiff::planar::handles::quadratic_spec;
+    use pseudomanifold::sdiff::planar::objectives::scan_l268;
+    use pseudomanifold::sdiff::planar::optimise::{self, optimise, OptimiseError, OptimiseOptions};
     let k = square();
     let f = vec![q(-1), q(1), q(2), q(-1), q(1)];
     let h = handles(qr(1, 32));
@@ -573,7 +573,9 @@ fn print_reports(name: &str, r: &[pseudomanifold::report::CheckResult]) {
 /// quartic (the fixtures of `polygonize`), with fewer steps than the CLI defaults.
 #[test]
 fn sd_l314_sd_l314_distance_sd_l316_local_optimiser_during_refinement_vs_closed_form_fit() {
-    use pseudomanifold::sdiff::{implicit::Implicit, optimise::OptimiseOptions, polygonize};
+    use pseudomanifold::sdiff::planar::{
+        implicit::Implicit, optimise::OptimiseOptions, polygonize,
+    };
     let opts = polygonize::Options {
         max_steps: 60,
         reference_grid: 256,
@@ -648,8 +650,10 @@ fn sd_l314_sd_l314_distance_sd_l316_local_optimiser_during_refinement_vs_closed_
 /// certified); an empty range is an error offence; no subdivision is skipped.
 #[test]
 fn sd_l314_planted_folds_are_reported_never_accepted() {
-    use pseudomanifold::sdiff::refine_optimise::{rational_unit, Outcome};
-    use pseudomanifold::sdiff::{implicit::Implicit, optimise::OptimiseOptions, polygonize};
+    use pseudomanifold::sdiff::planar::refine_optimise::{rational_unit, Outcome};
+    use pseudomanifold::sdiff::planar::{
+        implicit::Implicit, optimise::OptimiseOptions, polygonize,
+    };
     let opts = polygonize::Options {
         max_steps: 8,
         reference_grid: 128,
@@ -711,7 +715,9 @@ fn sd_l314_planted_folds_are_reported_never_accepted() {
         let n = rational_unit(v).unwrap();
         assert_eq!(&n[0] * &n[0] + &n[1] * &n[1], q(1));
         let l = (v[0] * v[0] + v[1] * v[1]).sqrt();
-        let nf = n.clone().map(|x| pseudomanifold::sdiff::poly::to_f64(&x));
+        let nf = n
+            .clone()
+            .map(|x| pseudomanifold::sdiff::planar::poly::to_f64(&x));
         assert!(
             (nf[0] - v[0] / l).abs() + (nf[1] - v[1] / l).abs() < 1e-5,
             "{v:?}"

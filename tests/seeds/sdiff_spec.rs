@@ -2,14 +2,14 @@
 
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::report::{CheckResult, Verdict};
-use pseudomanifold::sdiff::checks::{check_all, Options};
-use pseudomanifold::sdiff::claims::{self, search};
-use pseudomanifold::sdiff::complex::{validate, ComplexError, PlanarComplex};
-use pseudomanifold::sdiff::maps::{Poly1, SimplexMap};
-use pseudomanifold::sdiff::params::{self, ComplexMap};
-use pseudomanifold::sdiff::poly::{bernstein_basis, multi_indices, q, qr, Poly2, Q};
-use pseudomanifold::sdiff::positivity::{decide, Budget, Decision, Strictness};
-use pseudomanifold::sdiff::{interval, iso};
+use pseudomanifold::sdiff::planar::checks::{check_all, Options};
+use pseudomanifold::sdiff::planar::claims::{self, search};
+use pseudomanifold::sdiff::planar::complex::{validate, ComplexError, PlanarComplex};
+use pseudomanifold::sdiff::planar::maps::{Poly1, SimplexMap};
+use pseudomanifold::sdiff::planar::params::{self, ComplexMap};
+use pseudomanifold::sdiff::planar::poly::{bernstein_basis, multi_indices, q, qr, Poly2, Q};
+use pseudomanifold::sdiff::planar::positivity::{decide, Budget, Decision, Strictness};
+use pseudomanifold::sdiff::planar::{interval, iso};
 use std::path::Path;
 
 use crate::common;
@@ -394,7 +394,7 @@ fn sd_l139_adjusted_quartic_can_be_non_injective_witness() {
     let n = 4;
     let mut b = SimplexMap::fixed_control(n);
     let set = |b: &mut Vec<[Q; 3]>, i: [usize; 3], x: Q| {
-        let k = pseudomanifold::sdiff::poly::index_of(n, i);
+        let k = pseudomanifold::sdiff::planar::poly::index_of(n, i);
         b[k] = [q(1) - &x, x, q(0)];
     };
     set(&mut b, [3, 1, 0], qr(999, 1000));
@@ -513,7 +513,8 @@ fn sd_l168_level_at_a_vertex_is_a_typed_error() {
 
 // ---- Sec. 5: one-sided normals (L203) and the C¹ system (Eq. (12), L213–L225) ----------
 
-use pseudomanifold::sdiff::{c1, linsys, normals};
+use pseudomanifold::sdiff::common::linsys;
+use pseudomanifold::sdiff::planar::{c1, normals};
 
 fn inline(text: &str) -> params::MapSpec {
     params::parse(text, Path::new("inline.toml")).unwrap()
@@ -540,7 +541,8 @@ fn sd_l203_identity_keeps_the_kink_and_a_derivative_jump_alone_does_not_smooth()
         .expect("O crosses the diagonal");
     assert!(p.linear_kink && !p.curved_smooth && !p.dx_jumps, "{p:?}");
     assert!(
-        (pseudomanifold::sdiff::poly::to_f64(&p.u.parse::<Q>().unwrap()) - 1.0 / 3.0).abs() < 1e-15
+        (pseudomanifold::sdiff::planar::poly::to_f64(&p.u.parse::<Q>().unwrap()) - 1.0 / 3.0).abs()
+            < 1e-15
     );
     assert_eq!(p.curved_cross, p.linear_cross);
     assert_ne!(p.curved_cross, "0");
@@ -592,8 +594,13 @@ fn rational_fixed(k: &PlanarComplex, n: usize) -> (params::MapSpec, ComplexMap) 
 }
 
 fn grid(n: usize) -> PlanarComplex {
-    let m =
-        pseudomanifold::sdiff::refine::Mesh2::kuhn(n, n, [0.0, 0.0], [n as f64, n as f64], 10_000);
+    let m = pseudomanifold::sdiff::planar::refine::Mesh2::kuhn(
+        n,
+        n,
+        [0.0, 0.0],
+        [n as f64, n as f64],
+        10_000,
+    );
     validate(&m.to_raw().0).unwrap().0
 }
 
@@ -839,7 +846,7 @@ fn sd_l225_homogeneous_objective_has_infimum_zero_and_no_minimiser_on_the_2x2_gr
 #[test]
 fn sd_6_1_handle_restricted_sweep_on_the_diagonal_is_certified_exactly_inside_the_predicted_interval(
 ) {
-    use pseudomanifold::sdiff::handles;
+    use pseudomanifold::sdiff::planar::handles;
     let k = square();
     let f = kink_values();
     let s = handles::sweep(&k, &f, &q(0), (0, 2), 32, Budget::default()).unwrap();
@@ -879,7 +886,7 @@ fn sd_6_1_handle_restricted_sweep_on_the_diagonal_is_certified_exactly_inside_th
 
 #[test]
 fn sd_6_2_distance_sd_6_2_topology_sd_l302_sd_l324_taubin_and_circle() {
-    use pseudomanifold::sdiff::{implicit::Implicit, polygonize};
+    use pseudomanifold::sdiff::planar::{implicit::Implicit, polygonize};
     // Fewer steps and a coarser reference than the CLI defaults (400, 512²), to keep the test
     // short; the SPEC row quotes `ppm sd polygonize` with the defaults.
     let opts = polygonize::Options {
@@ -942,7 +949,7 @@ fn sd_6_2_distance_sd_6_2_topology_sd_l302_sd_l324_taubin_and_circle() {
 
 #[test]
 fn sd_l115_3_d_monotonic_maps_on_tetrahedra_are_certified_exactly() {
-    use pseudomanifold::sdiff::tet;
+    use pseudomanifold::sdiff::tet::poly as tet;
     use rand::{Rng, SeedableRng};
     // X = id: Jacobian numerator ≡ 1.
     let id = [
@@ -1159,7 +1166,7 @@ fn sd_l203_sd_e12_sd_l219_a_single_triangle_is_skipped_not_held() {
 
 // ---- the normal-based objectives: L229–L233 (Sec. 5) and L262–L268 (Sec. 6.1) ----------
 
-use pseudomanifold::sdiff::objectives::{self, HandleErrorKind};
+use pseudomanifold::sdiff::planar::objectives::{self, HandleErrorKind};
 
 /// square.off scaled by `s` (validated again).
 fn scaled_square(s: i64) -> PlanarComplex {
@@ -1226,7 +1233,7 @@ fn sd_l231_sd_l231_corrected_normal_deviation_is_positive_on_exactly_c1_curves_a
         println!(
             "SD-L231 n = {n}: {}; at 𝒪's crossing u ≈ {:.6}: ‖n − n′‖² = {at_crossing:.3e}; witness: {}",
             r.note,
-            pseudomanifold::sdiff::poly::to_f64(&u),
+            pseudomanifold::sdiff::planar::poly::to_f64(&u),
             r.witnesses[0].text
         );
     }
@@ -1269,8 +1276,8 @@ fn sd_l262_handle_error_is_exact_in_position_and_carries_units_of_length_squared
     assert!(cells.iter().all(|c| c.position == "0"), "{cells:?}");
     assert!(cells.iter().any(|c| !c.normal_zero));
     // X_1 fitted to a handle inside the adjusted range (SD-6.1(handle)): exactly 0 again.
-    let l = pseudomanifold::sdiff::handles::lambda_for(&qr(1, 3), &qr(1, 4));
-    let cm1 = pseudomanifold::sdiff::handles::quadratic_spec(
+    let l = pseudomanifold::sdiff::planar::handles::lambda_for(&qr(1, 3), &qr(1, 4));
+    let cm1 = pseudomanifold::sdiff::planar::handles::quadratic_spec(
         &k,
         &std::collections::HashMap::from([((0, 2), l.clone())]),
     )
@@ -1322,7 +1329,7 @@ fn sd_l268_sd_l268_restricted_minimiser_over_x1_is_not_a_diffeomorphism_for_a_ha
 ) {
     let k = square();
     let f = kink_values();
-    let lam_star = pseudomanifold::sdiff::handles::lambda_for(&qr(1, 3), &qr(1, 32));
+    let lam_star = pseudomanifold::sdiff::planar::handles::lambda_for(&qr(1, 3), &qr(1, 32));
     assert_eq!(lam_star, qr(1021, 186));
     let mut grid: Vec<Q> = (-16..=128).map(|j| qr(j, 16)).collect();
     grid.push(lam_star.clone());
@@ -1371,7 +1378,7 @@ fn sd_l268_sd_l268_restricted_minimiser_over_x1_is_not_a_diffeomorphism_for_a_ha
     assert!(b.objective > 0.0);
     println!("SD-L268(restricted) α = 1/100, λ ∈ (0, 1): {}", r.note);
     // A handle inside the adjusted range (u_h = 1/4): the α = 0 minimiser is a diffeomorphism.
-    let lam = pseudomanifold::sdiff::handles::lambda_for(&qr(1, 3), &qr(1, 4));
+    let lam = pseudomanifold::sdiff::planar::handles::lambda_for(&qr(1, 3), &qr(1, 4));
     let mut grid2 = grid.clone();
     grid2.push(lam.clone());
     let (_, best) = objectives::scan_l268(&k, &f, &handles(qr(1, 4)), (0, 2), 0.0, &grid2).unwrap();
@@ -1391,8 +1398,8 @@ fn sd_l268_sd_l268_restricted_minimiser_over_x1_is_not_a_diffeomorphism_for_a_ha
 
 #[test]
 fn sd_l310_sd_l316_stand_in_subdivide_is_conforming_and_local() {
-    use pseudomanifold::sdiff::refine::Mesh2;
-    use pseudomanifold::sdiff::subdivide::{check_l316, subdivide};
+    use pseudomanifold::sdiff::planar::refine::Mesh2;
+    use pseudomanifold::sdiff::planar::subdivide::{check_l316, subdivide};
     // Refine towards the circle |p − (1/2, 1/2)| = 3/10 on a 4×4 Kuhn grid of [0, 1]²: always
     // the largest crossed triangle (lowest level, then smallest id), 150 calls.
     let mut mesh = Mesh2::kuhn(4, 4, [0.0, 0.0], [1.0, 1.0], 100_000);
@@ -1442,14 +1449,16 @@ fn sd_l310_sd_l316_stand_in_subdivide_is_conforming_and_local() {
 
 #[test]
 fn sd_l141_3_d_sd_l146_3_d_polynomial_maps_on_a_tetrahedron_are_certified_exactly() {
-    use pseudomanifold::sdiff::tet::{jacobian_numerator, Poly3};
-    use pseudomanifold::sdiff::tet_maps::*;
+    use pseudomanifold::sdiff::tet::maps::*;
+    use pseudomanifold::sdiff::tet::poly::{jacobian_numerator, Poly3};
     use rand::SeedableRng;
     // A positive constant is certified (degree 0: every corner is the one coefficient; before
     // this row the corners e_1..e_3 of a constant were left at 0 and D = 1 was "refuted").
-    let one = pseudomanifold::sdiff::tet::decide_tet(&Poly3::constant(q(1)), Budget::default());
+    let one =
+        pseudomanifold::sdiff::tet::poly::decide_tet(&Poly3::constant(q(1)), Budget::default());
     assert!(one.certified(), "{one:?}");
-    let neg = pseudomanifold::sdiff::tet::decide_tet(&Poly3::constant(q(-1)), Budget::default());
+    let neg =
+        pseudomanifold::sdiff::tet::poly::decide_tet(&Poly3::constant(q(-1)), Budget::default());
     assert!(matches!(neg, Decision::Refuted { .. }), "{neg:?}");
     // X = id (b_I = I/n): numerator ≡ 1 for n = 1..4.
     for n in 1..=4 {
@@ -1540,7 +1549,7 @@ fn sd_l141_3_d_sd_l146_3_d_polynomial_maps_on_a_tetrahedron_are_certified_exactl
 /// target, dropped from the sample, so the NaN map held on the targets that stayed away.
 #[test]
 fn x_planted_sdiff_nan_error_and_empty_domain_are_reported() {
-    use pseudomanifold::sdiff::inverse::inversion_spot_check_with;
+    use pseudomanifold::sdiff::planar::inverse::inversion_spot_check_with;
     let (_, _, cm) = load("rational.toml");
     let exact = |f: usize, p: [f64; 2]| Ok(cm.maps[f].eval_f64_with_jacobian(p[0], p[1]));
     let clean = inversion_spot_check_with(&cm, 1, 16, &exact);

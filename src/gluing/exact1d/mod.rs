@@ -5,7 +5,7 @@ pub mod data;
 pub mod decide;
 pub mod interval;
 pub mod random;
-pub mod sampled_view;
+pub(crate) mod sampled_view;
 
 pub use data::{Adjacency, Exact1d, Piece};
 pub use interval::{Interval, OpenSet, Q};

@@ -2,8 +2,8 @@
 //! a condition, only refute it: a `holds` verdict means "on every sample" (count and seed are in
 //! the result); a `FAILS` verdict always carries a concrete witness.
 
-pub mod cocycle;
-pub mod domains;
+pub(crate) mod cocycle;
+pub(crate) mod domains;
 pub mod hausdorff;
 
 pub use cocycle::{check_3a, check_3b, check_3c, check_grimm_hughes, check_maps_into};

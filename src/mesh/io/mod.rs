@@ -23,7 +23,7 @@ mod obj;
 mod off;
 mod ply;
 mod polygon;
-mod text;
+pub(crate) mod text;
 mod write;
 
 use std::path::{Path, PathBuf};

@@ -88,7 +88,8 @@ enum Role {
 
 /// Vertex scalar properties kept besides x, y, z: the normals and curvatures that
 /// `ppm sample` writes (read back by `ppm render --input-is-samples`).
-pub const VERTEX_SCALARS: [&str; 5] = ["nx", "ny", "nz", "gaussian_curvature", "mean_curvature"];
+pub(super) const VERTEX_SCALARS: [&str; 5] =
+    ["nx", "ny", "nz", "gaussian_curvature", "mean_curvature"];
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum ElemKind {

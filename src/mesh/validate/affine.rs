@@ -8,7 +8,7 @@ use serde_json::json;
 /// Def. 3.1.1, decided exactly: (b − a) × (c − a) ≠ 0 in exact arithmetic on the stored f64
 /// values. `candidates[f]` marks faces with in-range, distinct, finite corners (others are
 /// reported by their own checks). Returns the check and the per-face non-degeneracy flags.
-pub fn affinely_independent(raw: &RawMesh, candidates: &[bool]) -> (CheckResult, Vec<bool>) {
+pub(crate) fn affinely_independent(raw: &RawMesh, candidates: &[bool]) -> (CheckResult, Vec<bool>) {
     let mut r = Check::new("D3.1.1", "triangle vertices affinely independent (exact)");
     let mut ok = vec![false; raw.faces.len()];
     for (f, t) in raw.faces.iter().enumerate() {

@@ -9,7 +9,7 @@ use serde_json::json;
 /// Def. 3.1.3(i) as it applies to a triangle list: K is the closure of the listed triangles,
 /// so "every face of a simplex of K is in K" fails exactly when a triangle names a vertex
 /// that does not exist (an index out of range).
-pub fn indices_in_range(raw: &RawMesh) -> CheckResult {
+pub(crate) fn indices_in_range(raw: &RawMesh) -> CheckResult {
     let n = raw.positions.len() as u64;
     let mut r = Check::new("D3.1.3(i)", "faces of faces present (indices in range)");
     r.examined(raw.faces.len() as u64);
@@ -34,7 +34,7 @@ pub fn indices_in_range(raw: &RawMesh) -> CheckResult {
 }
 
 /// Coordinates must be finite real numbers (a NaN or infinite coordinate is not a point of R³).
-pub fn coordinates_finite(raw: &RawMesh) -> CheckResult {
+pub(crate) fn coordinates_finite(raw: &RawMesh) -> CheckResult {
     let mut r = Check::new("X-finite", "coordinates finite");
     r.examined(raw.positions.len() as u64);
     for (v, p) in raw.positions.iter().enumerate() {
@@ -51,7 +51,7 @@ pub fn coordinates_finite(raw: &RawMesh) -> CheckResult {
 }
 
 /// A triangle whose corner list repeats a vertex spans fewer than 3 points (Def. 3.1.1).
-pub fn repeated_corners(raw: &RawMesh) -> (CheckResult, Vec<bool>) {
+pub(crate) fn repeated_corners(raw: &RawMesh) -> (CheckResult, Vec<bool>) {
     let mut r = Check::new("X-repeated-corner", "no face repeats a vertex");
     r.examined(raw.faces.len() as u64);
     let mut bad = vec![false; raw.faces.len()];
@@ -71,7 +71,7 @@ pub fn repeated_corners(raw: &RawMesh) -> (CheckResult, Vec<bool>) {
 
 /// Two faces with the same vertex set (in any order or orientation) are one simplex listed
 /// twice; Def. 3.1.3 describes a *set* of simplices.
-pub fn duplicate_faces(raw: &RawMesh, inc: &Incidence) -> CheckResult {
+pub(crate) fn duplicate_faces(raw: &RawMesh, inc: &Incidence) -> CheckResult {
     let mut r = Check::new("X-duplicate-face", "no duplicate faces");
     r.examined(raw.faces.len() as u64);
     for group in inc.duplicate_groups() {
@@ -98,7 +98,7 @@ pub fn duplicate_faces(raw: &RawMesh, inc: &Incidence) -> CheckResult {
 
 /// Vertices that no face uses are not in K (K is the closure of the triangles). Not an error,
 /// but reported: a user's vertex ids stay file indices, so these ids are not in I.
-pub fn unreferenced_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
+pub(crate) fn unreferenced_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
     let mut r = Check::new("X-unreferenced", "every vertex is used by a face");
     r.examined(raw.positions.len() as u64);
     for (v, &used) in referenced.iter().enumerate() {

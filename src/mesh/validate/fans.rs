@@ -21,7 +21,7 @@ use rayon::prelude::*;
 use rstar::{PointDistance, RTree, RTreeObject, AABB};
 
 /// Vertices with at least this many eligible incident triangles get the star treatment.
-pub const HIGH_DEGREE: usize = 16;
+pub(super) const HIGH_DEGREE: usize = 16;
 /// Up to this many stars, the nearest non-incident box is found by a scan (no tree to build).
 const FEW_STARS: usize = 8;
 

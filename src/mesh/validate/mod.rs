@@ -4,15 +4,15 @@
 //! [`validate`] runs them all and is the only constructor of
 //! [`SimplicialSurface`].
 
-pub mod affine;
-pub mod basic;
+pub(crate) mod affine;
+pub(crate) mod basic;
 mod fans;
 mod grid;
-pub mod incidence;
+pub(crate) mod incidence;
 pub mod intersect;
 pub mod predicates;
 pub mod surface;
-pub mod topology;
+pub(crate) mod topology;
 
 pub use incidence::Incidence;
 

@@ -28,7 +28,7 @@ pub struct Component {
 
 /// Result of orienting the faces consistently.
 #[derive(Debug, Clone)]
-pub struct Orientation {
+pub(crate) struct Orientation {
     /// `flip[f]`: reverse face f to make the orientation consistent.
     pub flip: Vec<bool>,
     /// Whether a consistent orientation exists.
@@ -37,7 +37,7 @@ pub struct Orientation {
 
 /// Orient the active faces consistently by breadth-first search across manifold edges (edges
 /// in exactly two faces). Non-orientable when some edge is forced both ways.
-pub fn orient(raw: &RawMesh, inc: &Incidence) -> (Orientation, CheckResult) {
+pub(crate) fn orient(raw: &RawMesh, inc: &Incidence) -> (Orientation, CheckResult) {
     let nf = raw.faces.len();
     let mut r = Check::new("X-orientable", "orientable, consistently oriented");
     let mut flip = vec![false; nf];
@@ -105,7 +105,7 @@ pub fn orient(raw: &RawMesh, inc: &Incidence) -> (Orientation, CheckResult) {
 }
 
 /// Connected components (through shared vertices) with χ and genus.
-pub fn components(
+pub(crate) fn components(
     raw: &RawMesh,
     inc: &Incidence,
     orientable: bool,
@@ -159,7 +159,7 @@ pub fn components(
 }
 
 /// Degree (number of incident edges) histogram over the vertices of K.
-pub fn degree_histogram(inc: &Incidence, nv: usize) -> BTreeMap<u32, u64> {
+pub(crate) fn degree_histogram(inc: &Incidence, nv: usize) -> BTreeMap<u32, u64> {
     let mut deg = vec![0u32; nv];
     for &(a, b) in &inc.edges {
         deg[a as usize] += 1;

@@ -80,7 +80,7 @@ fn int_mat<S: Scalar>(m: &[[i64; 5]; 5], prec: u32) -> Mat<S> {
 }
 
 /// xᵐ by repeated squaring.
-pub fn powi<S: Scalar>(x: &S, mut m: u64, prec: u32) -> S {
+pub(crate) fn powi<S: Scalar>(x: &S, mut m: u64, prec: u32) -> S {
     let mut r = S::from_i64(1, prec);
     let mut b = x.clone();
     while m > 0 {
@@ -97,7 +97,7 @@ pub fn powi<S: Scalar>(x: &S, mut m: u64, prec: u32) -> S {
 
 /// Σ_{j<m} μ^{m−1−j} λʲ: closed form when μ and λ are well apart, the sum when they are close
 /// or equal (no cancellation either way).
-pub fn divided_power<S: Scalar>(mu: &S, lambda: &S, m: u64, prec: u32) -> S {
+pub(crate) fn divided_power<S: Scalar>(mu: &S, lambda: &S, m: u64, prec: u32) -> S {
     if m == 0 {
         return S::from_i64(0, prec);
     }

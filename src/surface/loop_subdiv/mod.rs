@@ -1,14 +1,14 @@
 //! S′ = the Loop subdivision limit surface of K (Sec. 6.2; Loop 1987), evaluated exactly at
 //! any (σ, λ, μ, ν) of the base mesh by Stam's method (1998).
 
-pub mod eigen;
+pub(crate) mod eigen;
 mod fast;
 mod linear;
-pub mod patch;
+pub(crate) mod patch;
 pub mod regular;
 pub mod rules;
 pub mod stam;
-pub mod surface;
+pub(crate) mod surface;
 pub mod topology;
 
 pub use surface::{LoopError, LoopStats, LoopSurface, MAX_VALENCE};

@@ -13,13 +13,13 @@ use super::topology::{ring, LocalMesh, Topology};
 use crate::numeric::Scalar;
 
 /// A dense matrix as rows.
-pub type Mat<S> = Vec<Vec<S>>;
+pub(crate) type Mat<S> = Vec<Vec<S>>;
 
 /// The three regular sub-triangles of the patch at level 1, as level-1 lattice corners
 /// (q₀, q₁, q₂): k = 1 at r₀, k = 2 the middle one (rotated by π), k = 3 at r₁. The local
 /// parameter s of sub-triangle k at level n is t₁ = 2ⁿ(x, y) − (1, 0), t₂ = (1, 1) − 2ⁿ(x, y),
 /// t₃ = 2ⁿ(x, y) − (0, 1) (Stam's t_{k,n}).
-pub const SUB_TRIANGLES: [[(i64, i64); 3]; 3] = [
+pub(crate) const SUB_TRIANGLES: [[(i64, i64); 3]; 3] = [
     [(1, 0), (2, 0), (1, 1)],
     [(1, 1), (0, 1), (1, 0)],
     [(0, 1), (1, 1), (0, 2)],

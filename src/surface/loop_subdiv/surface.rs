@@ -156,7 +156,7 @@ pub struct LoopSurface {
 /// `loop_eval.cpp` of siqueirafm/PPS): when both patch coordinates (v, w) are below it they
 /// are replaced by it, so a point within it of the patch origin is evaluated at
 /// (1 − 2·10⁻⁴, 10⁻⁴, 10⁻⁴) instead (docs/authors-code.md, defect D2).
-pub const AUTHORS_CORNER_CLAMP: f64 = 1e-4;
+pub(crate) const AUTHORS_CORNER_CLAMP: f64 = 1e-4;
 
 impl std::fmt::Debug for LoopSurface {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {

@@ -22,8 +22,8 @@ pub mod errata;
 pub mod gluing;
 pub mod patch;
 mod smooth;
-pub mod surface;
-pub mod view;
+pub(crate) mod surface;
+pub(crate) mod view;
 pub mod wedge;
 pub mod weight;
 

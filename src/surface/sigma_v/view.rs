@@ -33,7 +33,8 @@ pub enum Version {
 
 /// A transition map replacing the tutorial's (planted faults): `(j, i, q) ↦ φ_ji(q)` in plane
 /// coordinates, `None` for the tutorial's.
-pub type SvPhiOverride<'a> = dyn Fn(Corner, Corner, [f64; 2]) -> Option<[f64; 2]> + Sync + 'a;
+pub(crate) type SvPhiOverride<'a> =
+    dyn Fn(Corner, Corner, [f64; 2]) -> Option<[f64; 2]> + Sync + 'a;
 
 /// Per case-(2) pair (i, j): the grid points of Ω_uw found in Ω_ij, computed once.
 type GridCache = std::collections::HashMap<(Idx, Idx), Vec<P2<f64>>>;
@@ -54,7 +55,7 @@ pub struct SigmaVView<'a> {
 /// gluing domains. The grid is invariant under h (x ↦ 1 − x, y ↦ −y), so g_(u,w) maps the
 /// grid of Ω_uw onto the grid of Ω_wu: Ω_ij and Ω_ji are found non-empty together (up to
 /// rounding on their boundaries), also when they are thin slivers.
-pub const LENS_GRID_SIDE: usize = 64;
+pub(crate) const LENS_GRID_SIDE: usize = 64;
 
 impl<'a> SigmaVView<'a> {
     /// The view on `ids` (ids outside I are dropped).

@@ -70,10 +70,11 @@ pub enum SmoothError {
 
 /// eval(σ, λ, μ, ν) in MPFR at the precision [`SmoothSurface::mp_eval`] was asked for, with
 /// the construction's constants at that precision built once.
-pub type MpEval<'a> = Box<dyn Fn(FaceId, [f64; 3]) -> Result<[Mp; 3], SmoothError> + Sync + 'a>;
+pub(crate) type MpEval<'a> =
+    Box<dyn Fn(FaceId, [f64; 3]) -> Result<[Mp; 3], SmoothError> + Sync + 'a>;
 
 /// The gluing data of a set of p-domains (Def. 3.4.1), as the sampled checkers take it.
-pub type GluingView<'a> = Box<dyn GluingData<2, S = f64> + 'a>;
+pub(crate) type GluingView<'a> = Box<dyn GluingData<2, S = f64> + 'a>;
 
 /// A smooth surface built from the triangle mesh K and evaluated from a triangle of K:
 /// eval(σ, λ, μ, ν) of Sec. 6.1.4 for the two PPS, F at the point of M for the manifold

@@ -1,0 +1,231 @@
+//! CERT-f64-rounding: proven bounds on the rounding of the `f64` evaluator (the generic maps
+//! of `construction::maps` instantiated at `f64`, which the oracle and `ppm eval-map` run), per
+//! edge configuration, on the whole of Ω_uw and for every pair of labels.
+//!
+//! The same generic code runs on [`Fe`] (exact value and `f64` error, both enclosed) over the
+//! polar boxes of u's chart that meet Ω_uw (closed form of Def. 4.1.9, module `interval`):
+//! `Paper::g_uw_formula` with the canonical labels, then the label rotations. Labels enter
+//! only through R_(u,w) at the start and R_(w,u)⁻¹ at the end (Def. 4.1.8): the first is
+//! bounded once per configuration on the disk |p| ≤ 1 for every label i (its `f64` error
+//! enters the canonical evaluation as the input error of a = R_(u,w)(p), whose exact value the
+//! box encloses), the second is evaluated on every box for every label j.
+//!
+//! The literal membership test (Def. 4.1.9, `Ppm::in_omega_uw_literal`) decides three signs:
+//! |p|² − r_u² (p ∈ Ω_u), |q|² − r_w² with q = g_(w,u)⁻¹(p) (q ∈ Ω_w), and
+//! |g_(w,u)(q) − p|² − tol² (the round trip). Their `f64` errors are bounded on the same boxes;
+//! the round-trip decision is certified exact (`Fe::le` decides only when the `f64` and the
+//! exact comparison agree) on every box where the winding condition holds.
+
+use super::*;
+use crate::construction::maps::{omega_radius, rotate_frac, roundtrip_tolerance};
+use crate::numeric::rounding::{mag, Glibc, LibmModel, LIBM_ULPS};
+use crate::numeric::Fe;
+
+/// The proven `f64` rounding bounds of one edge configuration (m_u, m_w), all labels.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct F64Rounding {
+    /// max |φ_wu(p) in f64 − φ_wu(p)| (Euclidean) over every box meeting Ω_uw, all labels
+    /// (`None`: no box bounded).
+    pub phi: Option<f64>,
+    /// max |f64 − exact| of |p|² − r_u² over |p| ≤ 1: p ∈ Ω_u (Def. 4.1.1) is decided
+    /// exactly unless ||p|² − r_u²| ≤ this.
+    pub outer: f64,
+    /// max |f64 − exact| of |q|² − r_w², q = g_(w,u)⁻¹(p), on the boxes meeting Ω_uw: q ∈ Ω_w
+    /// is decided exactly unless ||q|² − r_w²| ≤ this.
+    pub inner: Option<f64>,
+    /// max |f64 − exact| of the round-trip point g_(w,u)(q) on the boxes with winding 0.
+    pub roundtrip: Option<f64>,
+    /// The literal test's round-trip tolerance at this configuration.
+    pub roundtrip_tol: f64,
+    /// The round-trip decision "close" is certified identical in f64 and exactly on every
+    /// winding-0 box (f64 |g_(w,u)(q) − p|² ≤ tol² with the exact value 0).
+    pub roundtrip_exact: bool,
+    /// Boxes evaluated.
+    pub boxes: u64,
+    /// Boxes meeting Ω_uw left unbounded at the depth limit or the budget, or where the
+    /// round trip could not be bounded.
+    pub unresolved: u64,
+    /// Largest diameter of an unresolved box.
+    pub delta: Option<f64>,
+    /// The libm assumption used, in ulps (`numeric::rounding::LIBM_ULPS`).
+    pub libm_ulps: f64,
+    /// Time spent, in ms.
+    pub millis: u64,
+}
+
+/// Boxes are bounded once their diameter is at most this (the bound is a maximum of box-wise
+/// enclosures, which loosen with the box).
+pub const F64_BOUND_DIAM: f64 = 0.05;
+
+fn sym(x: f64) -> I {
+    iv(-x, x)
+}
+
+/// The Euclidean error of a point.
+fn err2(p: &P2<Fe<impl LibmModel>>) -> f64 {
+    let (x, y) = (c(p.x.err()), c(p.y.err()));
+    (x.sqr() + y.sqr()).sqrt().sup()
+}
+
+/// max over labels i of the f64 error of R_(u,w)(p) = M_{−2πi/m_u}(p), |p_x|, |p_y| ≤ 1.
+fn input_rotation_error<L: LibmModel>(m_u: u32) -> f64 {
+    let unit = P2::new(Fe::<L>::exact(iv(-1.0, 1.0)), Fe::exact(iv(-1.0, 1.0)));
+    (1..m_u as i64)
+        .map(|i| {
+            let a = rotate_frac(&unit, -i, m_u as i64);
+            a.x.err().max(a.y.err())
+        })
+        .fold(0.0, f64::max)
+}
+
+/// CERT-f64-rounding for the edge configuration (m_u, m_w) with the libm model of the
+/// certificates.
+pub fn prove_f64_rounding(m_u: u32, m_w: u32, s: &Settings) -> F64Rounding {
+    prove_f64_rounding_with::<Glibc>(m_u, m_w, s)
+}
+
+/// A point whose coordinates lie in [−R, R] with the f64 errors `ex`, `ey`: the hull over all
+/// boxes, for the label rotations (bounded once per configuration instead of per box).
+fn hull_point<L: LibmModel>(rad: f64, ex: I, ey: I) -> P2<Fe<L>> {
+    P2::new(Fe::new(iv(-rad, rad), ex), Fe::new(iv(-rad, rad), ey))
+}
+
+/// Running hull of the errors and magnitudes of points.
+#[derive(Clone, Copy)]
+struct ErrHull {
+    ex: I,
+    ey: I,
+    rad: f64,
+}
+
+impl ErrHull {
+    fn new() -> ErrHull {
+        ErrHull {
+            ex: c(0.0),
+            ey: c(0.0),
+            rad: 0.0,
+        }
+    }
+    fn add<L: LibmModel>(&mut self, p: &P2<Fe<L>>) {
+        self.ex = self.ex.convex_hull(p.x.e);
+        self.ey = self.ey.convex_hull(p.y.e);
+        for f in [&p.x, &p.y] {
+            self.rad = self.rad.max(mag(f.v)).max(mag(f.w()));
+        }
+    }
+    fn point<L: LibmModel>(&self) -> P2<Fe<L>> {
+        hull_point(self.rad, self.ex, self.ey)
+    }
+}
+
+/// [`prove_f64_rounding`] under the libm accuracy model `L` (a smaller claim gives a smaller
+/// bound: `tests/chapter4/cert_f64_rounding.rs`).
+pub fn prove_f64_rounding_with<L: LibmModel>(m_u: u32, m_w: u32, s: &Settings) -> F64Rounding {
+    let t0 = Instant::now();
+    let du = Deg::new(m_u);
+    let e0 = canon_edge(m_u, m_w);
+    let er0 = e0.reversed();
+    let (mu, mw) = (m_u as i64, m_w as i64);
+    let eps_in = input_rotation_error::<L>(m_u);
+    let unit = Fe::<L>::exact(iv(-1.0, 1.0));
+    let outer = P2::new(unit, unit)
+        .norm2()
+        .sub(&omega_radius::<Fe<L>>(m_u, 53).sqr())
+        .err();
+    // Pass 1: d = g_w⁻¹∘h∘g_u(a) on every box meeting Ω_uw (canonical labels: both rotations
+    // are the identity), a = R_(u,w)(p) with the input rotation's error.
+    let mut leaves: Vec<(PBox, P2<Fe<L>>)> = Vec::new();
+    let mut dh = ErrHull::new();
+    let st = bnb(disk_box(m_u), s.max_depth, s.budget, |b| {
+        let (th, r) = (b.ith(), b.ir());
+        if member_any(&du, th, r, Domain::Literal).is_false() {
+            return Leaf::Proven(None, None);
+        }
+        if b.diam() > F64_BOUND_DIAM {
+            return Leaf::Split;
+        }
+        let a = P2::new(
+            Fe::<L>::new(r * th.cos(), sym(eps_in)),
+            Fe::new(r * th.sin(), sym(eps_in)),
+        );
+        match Paper.g_uw_formula(&e0, &a) {
+            Ok(d) if d.x.err().is_finite() && d.y.err().is_finite() => {
+                dh.add(&d);
+                leaves.push((*b, d));
+                Leaf::Proven(Some(0.0), None)
+            }
+            _ => Leaf::Split,
+        }
+    });
+    let resolved = !leaves.is_empty() && st.refuted.is_none();
+    // φ_wu = R_(w,u)⁻¹(d) for every label j; the round trip starts with R_(w,u)(φ_wu), whose
+    // exact value is d again.
+    let r_w2 = omega_radius::<Fe<L>>(m_w, 53).sqr();
+    let (mut phi, mut inner) = (0.0f64, 0.0f64);
+    let mut bh = ErrHull::new();
+    for j in 0..mw {
+        let q = rotate_frac(&dh.point::<L>(), j, mw);
+        phi = phi.max(err2(&q));
+        inner = inner.max(q.norm2().sub(&r_w2).err());
+        bh.add(&rotate_frac(&q, -j, mw));
+    }
+    // Pass 2: the round trip g_u⁻¹∘h∘g_w on the boxes where it is the identity exactly (one
+    // principal piece, winding 0: `prove_inverse`).
+    let mut rh = ErrHull::new();
+    let mut rt_boxes = 0u64;
+    let mut rt_failed = 0u64;
+    for (b, d) in &leaves {
+        let th = b.ith();
+        let pieces = interval::principal_pieces(th);
+        if pieces.len() != 1 || !du.winding0(pieces[0]).is_true() {
+            continue;
+        }
+        rt_boxes += 1;
+        let d2 = P2::new(Fe::<L>::new(d.x.v, bh.ex), Fe::new(d.y.v, bh.ey));
+        match Paper.g_uw_formula(&er0, &d2) {
+            Ok(back) if back.x.err().is_finite() && back.y.err().is_finite() => rh.add(&back),
+            _ => rt_failed += 1,
+        }
+    }
+    // R_(u,w)⁻¹ for every label i; back − p is exactly 0, so its f64 value is the error of
+    // back, rounded once more by the subtraction (and the exact comparison with tol² is
+    // 0 < tol²: `le` decides only where f64 agrees).
+    let tol = Fe::<L>::from_f64(roundtrip_tolerance(&e0, 1.0), 53).mul(&unit.unit_roundoff());
+    let tol2 = tol.sqr();
+    let (mut rt, mut roundtrip_exact) = (0.0f64, rt_boxes > 0 && rt_failed == 0);
+    for i in 0..mu {
+        let bi = rotate_frac(&rh.point::<L>(), i, mu);
+        rt = rt.max(err2(&bi));
+        let diff = |f: &Fe<L>| Fe::<L>::new(c(0.0), f.e + sym(mag(f.e) * 1.2e-16));
+        roundtrip_exact &= P2::new(diff(&bi.x), diff(&bi.y))
+            .norm2()
+            .le(&tol2)
+            .is_true();
+    }
+    let bounded = |x: f64| (resolved && x.is_finite()).then_some(x);
+    F64Rounding {
+        phi: bounded(phi),
+        outer,
+        inner: bounded(inner),
+        roundtrip: if rt_failed == 0 && rt_boxes > 0 {
+            bounded(rt)
+        } else {
+            None
+        },
+        roundtrip_tol: tol.to_f64(),
+        roundtrip_exact,
+        boxes: st.boxes,
+        unresolved: st.unresolved + rt_failed,
+        delta: (st.unresolved > 0).then_some(st.delta),
+        libm_ulps: L::LIBM_ULPS,
+        millis: t0.elapsed().as_millis() as u64,
+    }
+}
+
+/// The statement of CERT-f64-rounding (certificate summary).
+pub fn f64_rounding_statement() -> String {
+    format!(
+        "CERT-f64-rounding: per edge configuration (m_u, m_w), for every label pair and every p in a polar box of u's chart meeting Ω_uw (the boxes cover the closure of Ω_uw; diameter ≤ {F64_BOUND_DIAM}): |φ_wu(p) evaluated in f64 by the generic maps (`construction::maps`, what the oracle runs) − φ_wu(p)| ≤ `phi`; the literal membership test (Def. 4.1.9) decides p ∈ Ω_u exactly unless ||p|² − r_u²| ≤ `outer`, q ∈ Ω_w exactly unless ||q|² − r_w²| ≤ `inner` (q = g_(w,u)⁻¹(p)), the f64 round-trip point g_(w,u)(q) errs by ≤ `roundtrip` on every winding-0 box, and where `roundtrip_exact` holds (that bound, rounded through the comparison, below the literal test's tolerance tol) the round-trip decision is exact too; outside these boxes (exactly not in Ω_uw) the f64 answer is not bounded here. Model: IEEE-754 binary64, round to nearest, + − × ÷ √ correctly rounded, {LIBM_ULPS} ulp for libm sin, cos, atan2 ({})",
+        crate::numeric::rounding::LIBM_ASSUMPTION
+    )
+}
