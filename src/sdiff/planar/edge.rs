@@ -19,7 +19,7 @@ pub(crate) struct Frame {
 
 impl Frame {
     /// The frame of triangle `f`.
-    pub fn of(k: &PlanarComplex, f: usize) -> Frame {
+    pub(crate) fn of(k: &PlanarComplex, f: usize) -> Frame {
         let t = k.triangles[f].map(|v| &k.points[v as usize]);
         let j = [
             [&t[1][0] - &t[0][0], &t[2][0] - &t[0][0]],

@@ -108,7 +108,7 @@ pub(crate) struct Cover {
 
 impl Cover {
     /// A cover of no pieces yet; `max_depth` in the engine's units of subdivision.
-    pub fn new(max_depth: u32, max_pieces: usize) -> Cover {
+    pub(crate) fn new(max_depth: u32, max_pieces: usize) -> Cover {
         Cover {
             pieces: 0,
             deepest: 0,
@@ -124,7 +124,7 @@ impl Cover {
         self.deepest = self.deepest.max(depth);
     }
     /// A certified piece: its coefficients bound p from below.
-    pub fn certify(&mut self, coeffs: &[Q]) {
+    pub(crate) fn certify(&mut self, coeffs: &[Q]) {
         if let Some(m) = coeffs.iter().min() {
             if self.lower.as_ref().map_or(true, |l| m < l) {
                 self.lower = Some(m.clone());
@@ -132,7 +132,7 @@ impl Cover {
         }
     }
     /// Whether an undecided piece at `depth` may be split; if not it is left open.
-    pub fn split(&mut self, depth: u32) -> bool {
+    pub(crate) fn split(&mut self, depth: u32) -> bool {
         if depth >= self.max_depth || self.pieces >= self.max_pieces {
             self.open += 1;
             false
@@ -141,7 +141,7 @@ impl Cover {
         }
     }
     /// After the last piece (no counterexample found): certified iff no piece was left open.
-    pub fn finish(&self) -> Decision {
+    pub(crate) fn finish(&self) -> Decision {
         if self.open > 0 {
             Decision::Unresolved {
                 pieces: self.pieces,
