@@ -382,9 +382,6 @@ pub fn run(
     base: &BaseMesh,
     e: &super::embedded::Embedded,
 ) -> Vec<CheckResult> {
-    if std::env::var_os("PPM_DEBUG_SHORTEN").is_some() {
-        shorten::debug_offenders(k, base, &e.emb);
-    }
     vec![
         check_on_surface(k, &e.emb),
         check_disjoint(k, base, &e.emb),

@@ -306,7 +306,6 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
         }
     }
     for sweep in 0..MAX_SWEEPS {
-        SWEEP.store(sweep, std::sync::atomic::Ordering::Relaxed);
         let mut moved = 0;
         for ci in 0..emb.curves.len() {
             let mut i = 1;
@@ -361,7 +360,6 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
                         }
                     }
                 }
-                late(k, "node", ci, &emb.curves[ci].nodes, &cand);
                 emb.curves[ci].nodes = cand;
                 moved += 1;
             }
@@ -370,7 +368,6 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
         moved += super::straighten::straighten_runs(k, base, emb, &mut owner, &mut near);
         emb.stats.moves += moved;
         emb.stats.sweeps = sweep + 1;
-        if std::env::var_os("PPM_TRACE_SWEEPS").is_some() { eprintln!("TR sweep {} moved {}", sweep, moved); }
         if moved == 0 {
             break;
         }
@@ -408,82 +405,10 @@ fn drop_turns(
             if let Node::Vertex(v) = emb.curves[ci].nodes[i] {
                 owner.remove(&v);
             }
-            late(k, "drop", ci, &emb.curves[ci].nodes, &cand);
             emb.curves[ci].nodes = cand;
             dropped += 1;
             i = i.saturating_sub(1).max(1);
         }
     }
     dropped
-}
-
-/// TEMP diagnostics.
-pub fn debug_offenders(k: &SimplicialSurface, base: &BaseMesh, emb: &Embedding) {
-    let mut owner: std::collections::HashMap<u32, usize> = Default::default();
-    for (ci, c) in emb.curves.iter().enumerate() {
-        for n in &c.nodes {
-            if let Node::Vertex(v) = *n {
-                owner.insert(v, ci);
-            }
-        }
-    }
-    let mut near: Near = Default::default();
-    for (ci, c) in emb.curves.iter().enumerate() {
-        for w in c.nodes.windows(2) {
-            for f in common_faces(k, &w[0], &w[1]) {
-                let l = near.entry(f).or_default();
-                if !l.contains(&ci) {
-                    l.push(ci);
-                }
-            }
-        }
-    }
-    let mut hist = [0usize; 8];
-    for (ci, c) in emb.curves.iter().enumerate() {
-        for i in 1..c.nodes.len().saturating_sub(1) {
-            let g = relative_gain(k, &c.nodes, i);
-            let b = gain_bound(k, &c.nodes, i);
-            if !(g / b > 1.0) {
-                continue;
-            }
-            let nodes = &c.nodes;
-            let d = match nodes[i] {
-                Node::Edge { a, b, t } => {
-                    let l = dist(k.position(VertexId(a)), k.position(VertexId(b)));
-                    (t.min(1.0 - t) * l, t, l)
-                }
-                Node::Vertex(_) => (0.0, 0.0, 0.0),
-            };
-            let Some((new, _)) = best_move(k, nodes, i) else { continue };
-            let bv = new.iter().any(|q| match *q {
-                Node::Vertex(u) => {
-                    (base.is_base(u) && u != c.a && u != c.b)
-                        || owner.get(&u).is_some_and(|&o| o != ci)
-                }
-                Node::Edge { .. } => false,
-            });
-            let mut cand = nodes[..i].to_vec();
-            cand.extend_from_slice(&new);
-            cand.extend_from_slice(&nodes[i + 1..]);
-            cand.dedup();
-            let span = (i - 1, i - 1 + new.len() + 1);
-            let meet = segments_meet_other(k, emb, ci, &cand, span, &near);
-            let r = g / b;
-            hist[(r.log10().floor().max(0.0) as usize).min(7)] += 1;
-            eprintln!(
-                "OFF c{ci} n{i}/{} {:?} P={:?} N={:?} d={:.3e} t={:.3e} l={:.3e} gain={g:.3e} bound={b:.3e} ratio={r:.1} new={:?} blockedV={bv} meet={meet}",
-                nodes.len(), nodes[i], nodes[i-1], nodes[i+1], d.0, d.1, d.2, new
-            );
-        }
-    }
-    eprintln!("OFF hist log10(ratio) {hist:?}");
-}
-
-pub(super) static SWEEP: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-pub(super) fn late(k: &SimplicialSurface, what: &str, ci: usize, old: &[Node], new: &[Node]) {
-    if SWEEP.load(std::sync::atomic::Ordering::Relaxed) < 196 || std::env::var_os("PPM_TRACE_LATE").is_none() {
-        return;
-    }
-    let pl = |n: &[Node]| n.windows(2).map(|w| dist(w[0].point(k).unwrap(), w[1].point(k).unwrap())).sum::<f64>();
-    eprintln!("LATE {} {what} c{ci} len {:.17e} -> {:.17e}\n  old {:?}\n  new {:?}", SWEEP.load(std::sync::atomic::Ordering::Relaxed), pl(old), pl(new), old, new);
 }

@@ -244,9 +244,6 @@ fn straighten_piece(
 ) -> Piece {
     let (nodes, ca, cb) = (&emb.curves[ci].nodes, emb.curves[ci].a, emb.curves[ci].b);
     let Some(new) = straighten_run(k, &nodes[s..=e]) else {
-        if std::env::var("PPM_TRACE_CURVE").ok().and_then(|c| c.parse::<usize>().ok()) == Some(ci) {
-            eprintln!("TR piece {s}..={e}: no sleeve {:?}", &nodes[s..=e]);
-        }
         return Piece::Kept;
     };
     let forbidden = new.iter().find_map(|q| match *q {
@@ -258,10 +255,6 @@ fn straighten_piece(
         }
         _ => None,
     });
-    let tr = std::env::var("PPM_TRACE_CURVE").ok().and_then(|c| c.parse::<usize>().ok()) == Some(ci);
-    if tr {
-        eprintln!("TR piece {s}..={e} of {} -> {new:?} forbidden {forbidden:?}\n  old {:?}", nodes.len(), &nodes[s..=e]);
-    }
     if let Some(u) = forbidden {
         return Piece::Wraps(u);
     }
@@ -276,9 +269,6 @@ fn straighten_piece(
     cand.extend_from_slice(&run);
     cand.extend_from_slice(&nodes[e + 1..]);
     let span = (s, s + new.len() + 1);
-    if tr {
-        eprintln!("TR   old {old:.17e} now {now:.17e} meet {}", segments_meet_other(k, emb, ci, &cand, span, near));
-    }
     if segments_meet_other(k, emb, ci, &cand, span, near) {
         return Piece::Kept;
     }
@@ -295,7 +285,6 @@ fn straighten_piece(
             }
         }
     }
-    super::shorten::late(k, "piece", ci, &emb.curves[ci].nodes, &cand);
     emb.curves[ci].nodes = cand;
     Piece::Replaced(span.1)
 }
@@ -424,7 +413,6 @@ fn hug(
     if !closer || segments_meet_other(k, emb, ci, &cand, span, near) {
         return false;
     }
-    super::shorten::late(k, "hug", ci, &emb.curves[ci].nodes, &cand);
     emb.curves[ci].nodes = cand;
     true
 }
