@@ -239,7 +239,9 @@ pub fn summary_table(cert: &Certificate) -> String {
         let mx = |f: &dyn Fn(&PropertyResult) -> Option<f64>| {
             rs.iter()
                 .filter_map(|r| f(r))
-                .fold(None, |a: Option<f64>, x| Some(a.map_or(x, |y| crate::report::dev_max(y, x))))
+                .fold(None, |a: Option<f64>, x| {
+                    Some(a.map_or(x, |y| crate::report::dev_max(y, x)))
+                })
         };
         s.push_str(&format!(
             "| `{p}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.1} | {} |\n",
@@ -311,7 +313,9 @@ fn f64_rounding_section(cert: &Certificate) -> String {
     let mx = |f: &dyn Fn(&F64Rounding) -> Option<f64>| {
         fr.iter()
             .filter_map(|x| f(x))
-            .fold(None, |a: Option<f64>, x| Some(a.map_or(x, |y| crate::report::dev_max(y, x))))
+            .fold(None, |a: Option<f64>, x| {
+                Some(a.map_or(x, |y| crate::report::dev_max(y, x)))
+            })
             .map(|x| format!("{x:.2e}"))
             .unwrap_or_else(|| "—".into())
     };
