@@ -293,8 +293,8 @@ fn straighten_piece(
 /// ([`straighten_run`], [`straighten_piece`]). Where the funnel's path wraps a vertex the
 /// curve may not pass through (a base vertex, or a node of another curve), the constrained
 /// shortest curve passes arbitrarily close to it on the side the curve is on: the run's
-/// nodes on the edges of S_T at that vertex stay (the node rules move them towards it) and
-/// the pieces before and after them are straightened on their own. Rejecting the whole run
+/// nodes on the edges of S_T at that vertex are placed next to it ([`hug`]) and the pieces
+/// before and after them are straightened on their own. Rejecting the whole run
 /// instead left its other nodes to the node rules, which converge linearly: on
 /// skull_low_resolution at 3·10⁻³ the shortening did not settle in 200 sweeps.
 pub(super) fn straighten_runs(
@@ -336,9 +336,7 @@ pub(super) fn straighten_runs(
                     }
                     Piece::Wraps(u) => {
                         let nodes = &emb.curves[ci].nodes;
-                        let at_u = |h: &usize| {
-                            matches!(nodes[*h], Node::Edge { a, b, .. } if a == u || b == u)
-                        };
+                        let at_u = |h: &usize| matches!(nodes[*h], Node::Edge { a, b, .. } if a == u || b == u);
                         match ((s + 1..e).find(at_u), (s + 1..e).rev().find(at_u)) {
                             (Some(h1), Some(h2)) => {
                                 if hug(k, emb, near, ci, u, (h1, h2)) {
@@ -415,4 +413,47 @@ fn hug(
     }
     emb.curves[ci].nodes = cand;
     true
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fitting::shorten::{gain_bound, relative_gain};
+    use crate::mesh::generate;
+    use crate::mesh::validate::validate;
+
+    /// [`hug`]'s claim (SPEC `AF-geodesic-shortest`): a chain of nodes on the spokes of a
+    /// vertex u, each HUG_ULPS·u·(‖u‖ + l) from u, gains at most an eighth of its rounding
+    /// bound, whichever node of the chain moves. The chain wraps the apex of a bipyramid
+    /// between two equator vertices, as a curve wraps a base vertex it may not pass through.
+    #[test]
+    fn af_geodesic_shortest_hugging_nodes_gain_below_an_eighth_of_the_bound() {
+        let Some(k) = validate(&generate::bipyramid(8)).surface else {
+            panic!("the bipyramid is a simplicial surface");
+        };
+        let u = 0u32;
+        let pu = k.position(VertexId(u));
+        let mut nodes = vec![Node::Vertex(2)];
+        for b in 3..=5u32 {
+            let l = norm(sub(k.position(VertexId(b)), pu));
+            let t = HUG_ULPS * f64::EPSILON * (norm(pu) + l) / l;
+            nodes.push(Node::Edge { a: u, b, t });
+        }
+        nodes.push(Node::Vertex(6));
+        // Control: the same chain a quarter of the way out is far beyond the bound.
+        let mut far = nodes.clone();
+        for q in &mut far[1..4] {
+            if let Node::Edge { t, .. } = q {
+                *t = 0.25;
+            }
+        }
+        assert!((1..4).any(|i| relative_gain(&k, &far, i) > gain_bound(&k, &far, i)));
+        for i in 1..nodes.len() - 1 {
+            let (g, bound) = (relative_gain(&k, &nodes, i), gain_bound(&k, &nodes, i));
+            assert!(
+                g <= bound / 8.0,
+                "node {i}: relative gain {g:e}, bound {bound:e}"
+            );
+        }
+    }
 }
