@@ -365,7 +365,7 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
             }
         }
         moved += drop_turns(k, emb, &mut owner, &near);
-        moved += straighten_runs(k, base, emb, &mut owner, &mut near);
+        moved += super::straighten::straighten_runs(k, base, emb, &mut owner, &mut near);
         emb.stats.moves += moved;
         emb.stats.sweeps = sweep + 1;
         if moved == 0 {
@@ -375,7 +375,8 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
     emb.stats.length = emb.curves.iter().map(|c| c.length(k)).sum();
 }
 
-type Near = std::collections::HashMap<crate::mesh::FaceId, Vec<usize>>;
+/// The curves touching each triangle of S_T (for [`segments_meet_other`]).
+pub(super) type Near = std::collections::HashMap<crate::mesh::FaceId, Vec<usize>>;
 
 /// Two consecutive segments on one triangle (a turn inside it) would make a piece with its
 /// three corners on one side of the base triangle, which Floater's map flattens: the node
@@ -410,88 +411,4 @@ fn drop_turns(
         }
     }
     dropped
-}
-
-/// Length of a polyline of nodes (NaN when a node is not on S_T).
-fn polyline(k: &SimplicialSurface, nodes: &[Node]) -> f64 {
-    nodes
-        .windows(2)
-        .map(|w| match (w[0].point(k), w[1].point(k)) {
-            (Some(p), Some(q)) => dist(p, q),
-            _ => f64::NAN,
-        })
-        .sum()
-}
-
-/// Replace every run of edge nodes between two vertex nodes by its straightened run
-/// ([`straighten`]) where that is shorter by more than the rounding of the lengths
-/// (16 u of the run's length) and keeps the curves disjoint (the rules of a node move).
-fn straighten_runs(
-    k: &SimplicialSurface,
-    base: &BaseMesh,
-    emb: &mut Embedding,
-    owner: &mut std::collections::HashMap<u32, usize>,
-    near: &mut Near,
-) -> usize {
-    let mut moved = 0;
-    for ci in 0..emb.curves.len() {
-        let mut i = 0;
-        while i + 1 < emb.curves[ci].nodes.len() {
-            let nodes = &emb.curves[ci].nodes;
-            let Some(j) = (i + 1..nodes.len()).find(|&j| matches!(nodes[j], Node::Vertex(_)))
-            else {
-                break;
-            };
-            let next = j;
-            if j < i + 2 {
-                i = next;
-                continue;
-            }
-            let Some(new) = super::straighten::straighten_run(k, &nodes[i..=j]) else {
-                i = next;
-                continue;
-            };
-            let mut run = vec![nodes[i]];
-            run.extend_from_slice(&new);
-            run.push(nodes[j]);
-            let (old, now) = (polyline(k, &nodes[i..=j]), polyline(k, &run));
-            let (ca, cb) = (emb.curves[ci].a, emb.curves[ci].b);
-            let blocked = new.iter().any(|q| match *q {
-                Node::Vertex(u) => {
-                    (base.is_base(u) && u != ca && u != cb)
-                        || owner.get(&u).is_some_and(|&o| o != ci)
-                }
-                Node::Edge { .. } => false,
-            });
-            if !(now < old - 16.0 * f64::EPSILON * old) || blocked {
-                i = next;
-                continue;
-            }
-            let mut cand = nodes[..i].to_vec();
-            cand.extend_from_slice(&run);
-            cand.extend_from_slice(&nodes[j + 1..]);
-            let span = (i, i + new.len() + 1);
-            if segments_meet_other(k, emb, ci, &cand, span, near) {
-                i = next;
-                continue;
-            }
-            for q in &new {
-                if let Node::Vertex(u) = *q {
-                    owner.insert(u, ci);
-                }
-            }
-            for w in cand[span.0..=span.1].windows(2) {
-                for f in common_faces(k, &w[0], &w[1]) {
-                    let l = near.entry(f).or_default();
-                    if !l.contains(&ci) {
-                        l.push(ci);
-                    }
-                }
-            }
-            emb.curves[ci].nodes = cand;
-            moved += 1;
-            i = span.1;
-        }
-    }
-    moved
 }
