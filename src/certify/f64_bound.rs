@@ -16,10 +16,12 @@
 //! the round-trip decision is certified exact (`Fe::le` decides only when the `f64` and the
 //! exact comparison agree) on every box where the winding condition holds.
 
+// Bounds are maxima that must keep a NaN (a NaN bound is no bound), as every deviation does.
 use super::*;
 use crate::construction::maps::{omega_radius, rotate_frac, roundtrip_tolerance};
 use crate::numeric::rounding::{mag, Glibc, LibmModel, LIBM_ULPS};
 use crate::numeric::Fe;
+use crate::report::dev_max;
 
 /// The proven `f64` rounding bounds of one edge configuration (m_u, m_w), all labels.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -73,9 +75,9 @@ fn input_rotation_error<L: LibmModel>(m_u: u32) -> f64 {
     (1..m_u as i64)
         .map(|i| {
             let a = rotate_frac(&unit, -i, m_u as i64);
-            a.x.err().max(a.y.err())
+            dev_max(a.x.err(), a.y.err())
         })
-        .fold(0.0, f64::max)
+        .fold(0.0, dev_max)
 }
 
 /// CERT-f64-rounding for the edge configuration (m_u, m_w) with the libm model of the
@@ -110,7 +112,7 @@ impl ErrHull {
         self.ex = self.ex.convex_hull(p.x.e);
         self.ey = self.ey.convex_hull(p.y.e);
         for f in [&p.x, &p.y] {
-            self.rad = self.rad.max(mag(f.v)).max(mag(f.w()));
+            self.rad = dev_max(dev_max(self.rad, mag(f.v)), mag(f.w()));
         }
     }
     fn point<L: LibmModel>(&self) -> P2<Fe<L>> {
@@ -165,8 +167,8 @@ pub fn prove_f64_rounding_with<L: LibmModel>(m_u: u32, m_w: u32, s: &Settings) -
     let mut bh = ErrHull::new();
     for j in 0..mw {
         let q = rotate_frac(&dh.point::<L>(), j, mw);
-        phi = phi.max(err2(&q));
-        inner = inner.max(q.norm2().sub(&r_w2).err());
+        phi = dev_max(phi, err2(&q));
+        inner = dev_max(inner, q.norm2().sub(&r_w2).err());
         bh.add(&rotate_frac(&q, -j, mw));
     }
     // Pass 2: the round trip g_u⁻¹∘h∘g_w on the boxes where it is the identity exactly (one
@@ -195,7 +197,7 @@ pub fn prove_f64_rounding_with<L: LibmModel>(m_u: u32, m_w: u32, s: &Settings) -
     let (mut rt, mut roundtrip_exact) = (0.0f64, rt_boxes > 0 && rt_failed == 0);
     for i in 0..mu {
         let bi = rotate_frac(&rh.point::<L>(), i, mu);
-        rt = rt.max(err2(&bi));
+        rt = dev_max(rt, err2(&bi));
         let diff = |f: &Fe<L>| Fe::<L>::new(c(0.0), f.e + sym(mag(f.e) * 1.2e-16));
         roundtrip_exact &= P2::new(diff(&bi.x), diff(&bi.y))
             .norm2()
