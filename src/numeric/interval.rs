@@ -53,7 +53,8 @@ impl TryFrom<(f64, f64)> for Interval {
     }
 }
 
-fn up(x: f64) -> f64 {
+/// The next f64 above `x` (NaN and +∞ unchanged): one ulp of outward rounding.
+pub(crate) fn up(x: f64) -> f64 {
     if x.is_nan() || x == f64::INFINITY {
         return x;
     }
@@ -64,7 +65,8 @@ fn up(x: f64) -> f64 {
     f64::from_bits(if x > 0.0 { b + 1 } else { b - 1 })
 }
 
-fn down(x: f64) -> f64 {
+/// The next f64 below `x`.
+pub(crate) fn down(x: f64) -> f64 {
     -up(-x)
 }
 

@@ -6,7 +6,7 @@
 
 use super::maps::{Family, SimplexMap};
 use super::poly::{multi_indices, multinomial, to_f64, Q};
-use crate::numeric::interval::Interval as I;
+use crate::numeric::interval::{down, up, Interval as I};
 use num_traits::ToPrimitive;
 
 /// Outcome of the interval route.
@@ -25,20 +25,6 @@ pub enum IntervalVerdict {
         /// Boxes examined.
         boxes: usize,
     },
-}
-
-fn up(x: f64) -> f64 {
-    if x.is_nan() || x == f64::INFINITY {
-        return x;
-    }
-    if x == 0.0 {
-        return f64::from_bits(1);
-    }
-    let b = x.to_bits();
-    f64::from_bits(if x > 0.0 { b + 1 } else { b - 1 })
-}
-fn down(x: f64) -> f64 {
-    -up(-x)
 }
 
 /// An interval enclosing the rational `x` (one ulp either side of the nearest f64).
