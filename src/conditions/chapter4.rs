@@ -624,7 +624,10 @@ pub fn render(r: &Ch4Report) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::subset;
+    use super::*;
+    use crate::certify::{ConfigKey, PropertyCoverage};
+    use crate::mesh::generate;
+    use crate::mesh::validate::validate;
 
     #[test]
     fn subset_keeps_everything_in_order_when_the_limit_is_not_below_the_count() {
@@ -640,5 +643,69 @@ mod tests {
             all[..5].to_vec(),
             "a seeded shuffle, not the first five"
         );
+    }
+
+    fn octahedron_run(opts: &Ch4Options) -> Ch4Report {
+        let k = validate(&generate::octahedron())
+            .surface
+            .expect("the octahedron is a simplicial surface");
+        run_chapter4(&k, opts)
+    }
+
+    #[test]
+    fn a_run_that_checks_only_edge_configurations_is_not_inconclusive() {
+        // The "nothing was checked" test sums the three kinds: edge configurations alone are a
+        // run that examined something.
+        let r = octahedron_run(&Ch4Options {
+            samples: 2,
+            max_triangle_configs: Some(0),
+            max_star_configs: Some(0),
+            ..Ch4Options::default()
+        });
+        assert!(r.coverage.edge_configs_checked > 0);
+        assert_eq!(r.coverage.triangle_configs_checked, 0);
+        assert_eq!(r.coverage.star_configs_checked, 0);
+        assert_eq!(r.inconclusive, None);
+        let none = octahedron_run(&Ch4Options {
+            samples: 2,
+            max_edge_configs: Some(0),
+            max_triangle_configs: Some(0),
+            max_star_configs: Some(0),
+            ..Ch4Options::default()
+        });
+        assert!(none.inconclusive.is_some());
+        assert!(!none.passes());
+    }
+
+    #[test]
+    fn render_lists_eight_configurations_and_counts_the_rest() {
+        let mut r = octahedron_run(&Ch4Options {
+            samples: 2,
+            max_edge_configs: Some(1),
+            max_triangle_configs: Some(0),
+            max_star_configs: Some(0),
+            ..Ch4Options::default()
+        });
+        let keys =
+            |n: u32| -> Vec<ConfigKey> { (3..3 + n).map(|m| ConfigKey::Vertex { m }).collect() };
+        let property = |missing: Vec<ConfigKey>| PropertyCoverage {
+            property: "C5.4-at-most-two(cert)".to_string(),
+            certified: false,
+            missing,
+            refuted: Vec::new(),
+            inconclusive: Vec::new(),
+            max_delta: None,
+        };
+        r.certificates = Some(CertCoverage {
+            file: "c.json".to_string(),
+            max_degree: 20,
+            model: "paper".to_string(),
+            configs_needed: 9,
+            config_errors: Vec::new(),
+            properties: vec![property(keys(9)), property(keys(8))],
+        });
+        let text = render(&r);
+        assert_eq!(text.matches("… (9 in all)").count(), 1, "{text}");
+        assert!(!text.contains("(8 in all)"), "{text}");
     }
 }
