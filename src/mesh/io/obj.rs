@@ -60,16 +60,15 @@ fn parse_corner(ctx: &Ctx<'_>, line: u64, tok: &str, nverts: u64) -> Result<u32,
         )
     })?;
     let zero_based = if i > 0 {
-        i - 1
+        i.unsigned_abs() - 1
     } else if i < 0 {
-        let r = (nverts as i64).checked_add(i).unwrap_or(-1);
-        if r < 0 {
-            return Err(ctx.parse(
+        // -1 is the last vertex read so far: nverts − |i|, which exists only when |i| ≤ nverts.
+        nverts.checked_sub(i.unsigned_abs()).ok_or_else(|| {
+            ctx.parse(
                 at(),
                 format!("relative vertex index {i} refers before the first vertex ({nverts} vertices so far)"),
-            ));
-        }
-        r
+            )
+        })?
     } else {
         return Err(ctx.parse(at(), "vertex index 0 (OBJ indices are 1-based)"));
     };
@@ -146,4 +145,35 @@ pub(crate) fn read(bytes: &[u8], ctx: &Ctx<'_>) -> Result<RawMesh, MeshError> {
         origin_is_line: true,
         vertex_scalars: Vec::new(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::io::ReadOptions;
+    use std::path::Path;
+
+    fn read_str(text: &str) -> Result<RawMesh, MeshError> {
+        let opts = ReadOptions::default();
+        let ctx = Ctx {
+            path: Path::new("t.obj"),
+            opts: &opts,
+        };
+        read(text.as_bytes(), &ctx)
+    }
+
+    #[test]
+    fn relative_indices_count_back_from_the_last_vertex_read() {
+        let m = read_str("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -4 -3 -2\nf 2 -1 -3\n")
+            .expect("valid relative indices");
+        assert_eq!(m.faces, vec![[0, 1, 2], [1, 3, 1]]);
+        for bad in ["-5", "-9223372036854775808", "0"] {
+            let e = read_str(&format!(
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 {bad}\n"
+            ))
+            .expect_err(bad);
+            assert!(matches!(e, MeshError::Parse { .. }), "{bad}: {e}");
+            assert!(e.to_string().contains("line 5"), "{bad}: {e}");
+        }
+    }
 }
