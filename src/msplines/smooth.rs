@@ -13,10 +13,10 @@ use super::spline_sample::sample;
 use super::view::AtlasView;
 use crate::gluing::data::Idx;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::Mp;
 use crate::report::Progress;
 use crate::surface::geometry::SurfacePoint;
 use crate::surface::output::{Attributes, SampledMesh};
-use crate::numeric::Mp;
 use crate::surface::smooth::{GluingView, Located, MpConsts, SmoothError, SmoothSurface};
 
 /// The spline F with the mesh M and the atlas it is defined on (`pipeline::spline`).
@@ -184,12 +184,7 @@ impl SmoothSurface for OwnedSpline {
     fn mp_consts(&self, bits: u32) -> Result<MpConsts, SmoothError> {
         self.view().mp_consts(bits)
     }
-    fn eval_mp(
-        &self,
-        c: &MpConsts,
-        f: FaceId,
-        bary: [f64; 3],
-    ) -> Result<Located<Mp>, SmoothError> {
+    fn eval_mp(&self, c: &MpConsts, f: FaceId, bary: [f64; 3]) -> Result<Located<Mp>, SmoothError> {
         self.view().eval_mp(c, f, bary)
     }
     fn eval_geometry(&self, f: FaceId, bary: [f64; 3]) -> Result<SurfacePoint, SmoothError> {

@@ -104,7 +104,9 @@ impl Choice {
     pub(crate) fn info(&self) -> Option<Value> {
         match *self {
             Choice::Vertex { .. } => None,
-            Choice::SigmaV { kappa, .. } => Some(json!({"construction": "sigma-v", "kappa": kappa})),
+            Choice::SigmaV { kappa, .. } => {
+                Some(json!({"construction": "sigma-v", "kappa": kappa}))
+            }
             Choice::Spline(p) => Some(json!({
                 "construction": Construction::ManifoldSpline.name(),
                 "form": p.form,

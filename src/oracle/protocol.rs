@@ -19,7 +19,7 @@ use crate::mesh::{load_surface, FaceId, LoadError, SimplicialSurface, VertexId};
 use crate::numeric::{Mp, Scalar, Trit};
 use crate::surface::jet::Jet;
 use crate::surface::smooth::{MpConsts, SmoothSurface};
-use crate::surface::{Consts, Construction, Pps, Profile, SurfaceError};
+use crate::surface::{Construction, Consts, Pps, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -718,8 +718,7 @@ impl Session {
             }
             Needs::Consts => {
                 let c = self.ch5()?;
-                c.mp
-                    .get_or_insert_with(|| MpConsts::new(bits, c.pps.consts::<Mp>(bits)));
+                c.mp.get_or_insert_with(|| MpConsts::new(bits, c.pps.consts::<Mp>(bits)));
             }
             Needs::Jets => {
                 let c = self.ch5()?;

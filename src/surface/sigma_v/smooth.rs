@@ -12,9 +12,7 @@ use crate::report::Progress;
 use crate::surface::geometry::{from_jet, SurfacePoint};
 use crate::surface::jet::Jet;
 use crate::surface::output::{Attributes, SampledMesh};
-use crate::surface::smooth::{
-    ChartAt, GluingView, Located, MpConsts, SmoothError, SmoothSurface,
-};
+use crate::surface::smooth::{ChartAt, GluingView, Located, MpConsts, SmoothError, SmoothSurface};
 
 /// eval's answer as the trait gives it: the point, the corner (σ, v) and q (SPEC `SV-D13`).
 fn located<S>((corner, q, point): (Corner, P2<S>, [S; 3])) -> Located<S> {
@@ -55,12 +53,7 @@ impl SmoothSurface for SigmaVPps {
         Ok(MpConsts::new(bits, self.consts::<Mp>(bits)))
     }
 
-    fn eval_mp(
-        &self,
-        c: &MpConsts,
-        f: FaceId,
-        bary: [f64; 3],
-    ) -> Result<Located<Mp>, SmoothError> {
+    fn eval_mp(&self, c: &MpConsts, f: FaceId, bary: [f64; 3]) -> Result<Located<Mp>, SmoothError> {
         let cm: &SvConsts<Mp> = c.get().ok_or(SmoothError::ForeignConsts {
             surface: "the (σ, v)-indexed PPS",
         })?;

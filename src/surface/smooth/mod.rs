@@ -127,17 +127,14 @@ pub trait SmoothSurface: Sync {
     /// eval in MPFR with the constants `c` of [`Self::mp_consts`] (the f64-fitted control
     /// points evaluated exactly enough, so |f64 − MPFR| measures the f64 rounding); the
     /// barycentric coordinates are read exactly at `c`'s precision.
-    fn eval_mp(
-        &self,
-        c: &MpConsts,
-        f: FaceId,
-        bary: [f64; 3],
-    ) -> Result<Located<Mp>, SmoothError>;
+    fn eval_mp(&self, c: &MpConsts, f: FaceId, bary: [f64; 3]) -> Result<Located<Mp>, SmoothError>;
 
     /// eval in MPFR at `bits` as a closure holding the constants, built here, once.
     fn mp_eval(&self, bits: u32) -> Result<MpEval<'_>, SmoothError> {
         let c = self.mp_consts(bits)?;
-        Ok(Box::new(move |f, bary| Ok(self.eval_mp(&c, f, bary)?.point)))
+        Ok(Box::new(move |f, bary| {
+            Ok(self.eval_mp(&c, f, bary)?.point)
+        }))
     }
 
     /// The point with its first and second derivatives in the chart eval chose, unit normal,

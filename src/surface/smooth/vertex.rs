@@ -65,13 +65,10 @@ impl SmoothSurface for Pps {
         Ok(MpConsts::new(bits, self.consts::<Mp>(bits)))
     }
 
-    fn eval_mp(
-        &self,
-        c: &MpConsts,
-        f: FaceId,
-        bary: [f64; 3],
-    ) -> Result<Located<Mp>, SmoothError> {
-        let cm: &Consts<Mp> = c.get().ok_or(SmoothError::ForeignConsts { surface: NAME })?;
+    fn eval_mp(&self, c: &MpConsts, f: FaceId, bary: [f64; 3]) -> Result<Located<Mp>, SmoothError> {
+        let cm: &Consts<Mp> = c
+            .get()
+            .ok_or(SmoothError::ForeignConsts { surface: NAME })?;
         let bm = bary.map(|x| Mp::from_f64(x, c.bits()));
         Ok(located(self.eval(f, &bm, cm)?))
     }
