@@ -166,8 +166,8 @@ type IsoInput = (
     complex::PlanarComplex,
     params::MapSpec,
     params::ComplexMap,
-    Vec<crate::sdiff::planar::poly::Q>,
-    crate::sdiff::planar::poly::Q,
+    Vec<crate::sdiff::common::rational::Q>,
+    crate::sdiff::common::rational::Q,
 );
 
 fn load_iso(mesh: &Path, params_path: &Path) -> Result<IsoInput, String> {
