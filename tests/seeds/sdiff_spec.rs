@@ -403,7 +403,7 @@ fn sd_l139_adjusted_quartic_can_be_non_injective_witness() {
     set(&mut b, [2, 2, 0], qr(1, 1000));
     set(&mut b, [1, 3, 0], qr(1, 1000));
     let m = SimplexMap::polynomial(n, b);
-    let s = claims::Search {
+    let s = pseudomanifold::sdiff::common::simplex_search::Search {
         certified: 0,
         refuted: vec![(
             "edge fold".into(),
@@ -461,12 +461,18 @@ fn sd_l101_interval_route_agrees_with_the_exact_route_on_random_maps() {
         let ex = claims::det_decision(&m, Budget::default());
         let iv = interval::certify_det(&m, 20_000);
         match (ex.certified(), iv) {
-            (true, interval::IntervalVerdict::Certified { lower_bound, .. }) => {
+            (
+                true,
+                pseudomanifold::sdiff::common::interval::IntervalVerdict::Certified {
+                    lower_bound,
+                    ..
+                },
+            ) => {
                 both += 1;
                 assert!(lower_bound > 0.0);
             }
             (true, _) => exact_only += 1,
-            (false, interval::IntervalVerdict::Certified { .. }) => {
+            (false, pseudomanifold::sdiff::common::interval::IntervalVerdict::Certified { .. }) => {
                 panic!("interval certifies a refuted map: {ex:?}")
             }
             (false, _) => {}

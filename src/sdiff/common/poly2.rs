@@ -7,9 +7,9 @@
 //! Bernstein conversion over `BigRational`; the operations needed (sum, product, partial
 //! derivatives, composition with an affine map, Bernstein coefficients) are a few dozen lines.
 
-use super::rational::{multinomial, q, Q};
+use super::rational::{multinomial, q, to_f64, Q};
 use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
+use num_traits::{One, Zero};
 
 /// Σ c\[a\]\[b\] s^a t^b, dense, total degree ≤ `deg`.
 #[derive(Debug, Clone, PartialEq)]

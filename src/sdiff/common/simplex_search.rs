@@ -16,10 +16,9 @@ use super::simplex_poly::{
     SimplexPoly,
 };
 use crate::report::{CheckResult, Witness};
-use crate::sdiff::common::positivity::Budget;
+use crate::sdiff::common::positivity::{Budget, Decision};
 use crate::sdiff::common::rational::{q, qr, Q};
-use crate::sdiff::common::simplex_search::unit_open;
-use rand::SeedableRng;
+use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;
 
@@ -82,7 +81,6 @@ pub fn fixed_solitary_control(m: usize, n: usize, rng: &mut ChaCha8Rng) -> Vec<V
 /// for each w its minimum over the closed faces is at their vertices. Each solitary point is
 /// put at (1 − ε)·(a seeded vertex of its face) + ε·(the face's centroid), ε = 1/1000 (open).
 pub fn near_vertex_control(m: usize, n: usize, rng: &mut ChaCha8Rng) -> Vec<Vec<Q>> {
-    use rand::Rng;
     near_vertex_with(m, n, |size| rng.gen_range(0..size))
 }
 

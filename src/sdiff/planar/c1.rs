@@ -384,7 +384,7 @@ pub fn run(
     c: &Q,
     scope: Scope,
     max_inequalities: usize,
-) -> Result<C1Run, super::params::ParamError> {
+) -> Result<C1Run, crate::sdiff::common::params::ParamError> {
     let path = std::path::Path::new("(C¹ system)");
     let mut base = spec.clone();
     base.family = FamilySpec::Rational;

@@ -9,6 +9,7 @@ use crate::sdiff::common::poly1::Poly1;
 use crate::sdiff::common::poly2::{index_of, multi_indices};
 use crate::sdiff::common::positivity::{decide, Budget, Decision, Strictness};
 use crate::sdiff::common::rational::{q, qr, Q};
+use crate::sdiff::common::simplex_search::{unit_open, Search};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;

@@ -5,9 +5,10 @@
 //! refutation needs an exact value).
 
 use super::maps::{Family, SimplexMap};
-use crate::numeric::interval::{down, up, Interval as I};
+use crate::numeric::interval::Interval as I;
+use crate::sdiff::common::interval::{enclose, IntervalVerdict};
 use crate::sdiff::common::poly2::multi_indices;
-use crate::sdiff::common::rational::{multinomial, to_f64, Q};
+use crate::sdiff::common::rational::multinomial;
 use num_traits::ToPrimitive;
 
 fn pt(x: f64) -> I {
@@ -100,7 +101,7 @@ fn quotient_det(v: [I; 3], ds: [I; 3], dt: [I; 3]) -> I {
     j(0, &ds) * j(1, &dt) - j(0, &dt) * j(1, &ds)
 }
 
-fn poly1_with_derivative(g: &super::maps::Poly1, x: I) -> (I, I) {
+fn poly1_with_derivative(g: &crate::sdiff::common::poly1::Poly1, x: I) -> (I, I) {
     let mut v = pt(0.0);
     let mut d = pt(0.0);
     for (k, c) in g.0.iter().enumerate() {

@@ -8,6 +8,7 @@
 //! The control points b_I are barycentric coordinates (they need not sum to one: Eq. (10)'s
 //! partition-of-unity statement is about exactly that).
 
+use crate::sdiff::common::poly1::Poly1;
 use crate::sdiff::common::poly2::{bernstein_basis, index_of, multi_indices, Poly2};
 use crate::sdiff::common::rational::{q, Q};
 use num_traits::{Signed, Zero};

@@ -18,7 +18,7 @@ use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::decide::Tally;
 use crate::sdiff::common::interval::IntervalVerdict;
 use crate::sdiff::common::params::{FamilySpec, Multiset};
-use crate::sdiff::common::positivity::{decide_on, Budget, Decision, Strictness};
+use crate::sdiff::common::positivity::{Budget, Decision, Strictness};
 use crate::sdiff::common::rational::{q, qr, to_f64, Q};
 use num_traits::{Signed, Zero};
 use serde_json::json;
