@@ -230,31 +230,6 @@ pub(super) fn sample_fit(
     }
 }
 
-/// `ppm eval FIT FACE λ μ ν`: one point of the fitted surface (faces of the base mesh).
-pub(super) fn eval_fit(file: &std::path::Path, face: u32, bary: [f64; 3]) -> ExitCode {
-    let f = match read(file) {
-        Ok(f) => f,
-        Err(c) => return c,
-    };
-    if face as usize >= f.k.num_faces() {
-        eprintln!(
-            "error: face {face} ≥ {} faces of the base mesh",
-            f.k.num_faces()
-        );
-        return ExitCode::from(2);
-    }
-    match f.pps.eval_f64(crate::mesh::FaceId(face), bary) {
-        Ok(p) => {
-            println!("{{\"face\": {face}, \"bary\": {bary:?}, \"point\": {p:?}}}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("error: {e}");
-            ExitCode::from(1)
-        }
-    }
-}
-
 /// `ppm check --spec FIT`: the (σ, v) checks (Def. 3.4.1, condition (C), smoothness, eval) on
 /// the fitted PPS read back; the ε statement needs S_T and is checked by `ppm fit`.
 pub(super) fn check_fit_file(file: &std::path::Path, json: bool, seed: u64) -> ExitCode {

@@ -3,6 +3,7 @@
 
 mod certify;
 pub mod check;
+mod eval;
 mod fit;
 mod load;
 mod msplines;
@@ -208,7 +209,9 @@ enum Command {
     /// Manifold splines (Gu–He–Qin): holomorphic 1-form, zero points, affine atlas (SPEC MS-*).
     #[command(subcommand)]
     Msplines(msplines::MsCommand),
-    /// Evaluate one point of M: eval(σ, λ, μ, ν) of Sec. 6.1.4.
+    /// Evaluate one point of M: eval(σ, λ, μ, ν) of Sec. 6.1.4, with the chart eval chose and
+    /// (from the jets) its normal and curvatures. FILE is a mesh or a fitted-surface file
+    /// (`ppm fit -o`).
     Eval {
         file: PathBuf,
         face: u32,
@@ -220,6 +223,22 @@ enum Command {
         /// S′ (Sec. 6.2): pn | loop
         #[arg(long, default_value = "pn")]
         surface: String,
+        /// vertex (the report's, default) | sigma-v (the tutorial's (σ, v)-indexed PPS) |
+        /// manifold-spline (Gu–He–Qin Secs. 5.5–5.6 with `ppm msplines sample`'s defaults;
+        /// positions only). Not for a fitted-surface file.
+        #[arg(long, value_enum)]
+        construction: Option<Construction>,
+        /// sigma-v: κ of r_{v,σ} (SPEC SV-D3).
+        #[arg(long, default_value_t = crate::surface::sigma_v::DEFAULT_KAPPA)]
+        kappa: f64,
+        /// sigma-v: degree of the triangular patches (SPEC SV-D11), 1..=15.
+        #[arg(long, default_value_t = crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
+              value_parser = patch_degree_parser)]
+        patch_degree: usize,
+        /// positions | normals | curvature (default: curvature for a mesh, positions for a
+        /// fitted-surface file).
+        #[arg(long)]
+        attributes: Option<String>,
     },
 }
 
@@ -309,6 +328,10 @@ where
             ),
             Construction::SigmaV => {
                 eprintln!("error: --construction sigma-v: runs with --spec only");
+                ExitCode::from(2)
+            }
+            Construction::ManifoldSpline => {
+                eprintln!("error: --construction manifold-spline: its checks are `ppm msplines check` (SPEC MS-*)");
                 ExitCode::from(2)
             }
         },
@@ -491,12 +514,20 @@ where
             nu,
             profile,
             surface,
-        } => {
-            if crate::fitting::format::is_fit_file(&file) {
-                fit::eval_fit(&file, face, [lambda, mu, nu])
-            } else {
-                sample::run_eval(&file, face, [lambda, mu, nu], &profile, &surface)
-            }
-        }
+            construction,
+            kappa,
+            patch_degree,
+            attributes,
+        } => eval::run(&eval::EvalArgs {
+            file: &file,
+            face,
+            bary: [lambda, mu, nu],
+            profile: &profile,
+            surface: &surface,
+            construction,
+            kappa,
+            patch_degree,
+            attributes: attributes.as_deref(),
+        }),
     }
 }

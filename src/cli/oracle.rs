@@ -187,12 +187,19 @@ pub(super) fn run_diff(mesh: &Path, table: &Path, a: &TableArgs) -> ExitCode {
         }
     };
     let r = diff_table(&mut s, &text, tolerance, worst);
-    if !json && a.construction != Construction::Vertex {
-        println!(
-            "reference construction of the eval lines: {} (SPEC SV-D13), κ = {}",
-            a.construction.name(),
-            a.kappa.unwrap_or(crate::surface::sigma_v::DEFAULT_KAPPA)
-        );
+    if !json {
+        match a.construction {
+            Construction::Vertex => {}
+            Construction::SigmaV => println!(
+                "reference construction of the eval lines: {} (SPEC SV-D13), κ = {}",
+                a.construction.name(),
+                a.kappa.unwrap_or(crate::surface::sigma_v::DEFAULT_KAPPA)
+            ),
+            Construction::ManifoldSpline => println!(
+                "reference construction of the eval lines: {} (Secs. 5.5–5.6; it has no MPFR evaluation, so its eval lines are refused)",
+                a.construction.name()
+            ),
+        }
     }
     if json {
         println!(

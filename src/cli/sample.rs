@@ -1,8 +1,9 @@
-//! `ppm sample` and `ppm eval` (Sec. 6.2, Sec. 6.1.4).
+//! `ppm sample` (Sec. 6.2).
 
 use super::load::surface as load;
 use super::progress::Line;
-use crate::mesh::{FaceId, SimplicialSurface};
+use crate::mesh::SimplicialSurface;
+use crate::oracle::choice::Choice;
 use crate::surface::output::{
     edge_use_counts, write_mesh_with_attributes, Attributes, SampledMesh,
 };
@@ -28,18 +29,7 @@ fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, Exi
         eprintln!("error: S′ = {}: {e}", kind.name());
         ExitCode::from(1)
     })?;
-    // Progress for the large fits (Sec. 5.2) that are admitted: say what is being built.
-    if let Ok(bytes) = crate::surface::admissible::check_fit_size(k, profile) {
-        if bytes > 1 << 28 {
-            let max_m = k.vertices().map(|v| k.degree(v)).max().unwrap_or(0);
-            eprintln!(
-                "ppm: fitting the shape functions (Sec. 5.2, {} profile, largest degree {max_m}, l = {}): about {} MB; this may take a while",
-                profile.name(),
-                profile.bezier_degree(max_m),
-                bytes >> 20
-            );
-        }
-    }
+    note_large_fit(k, profile);
     Pps::try_build(
         k,
         target.as_target(),
@@ -52,6 +42,22 @@ fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, Exi
         eprintln!("error: {e}");
         ExitCode::from(2)
     })
+}
+
+/// Progress for the large fits (Sec. 5.2) that are admitted: say what is being built (shared
+/// by `ppm sample` and `ppm eval`).
+pub(super) fn note_large_fit(k: &SimplicialSurface, profile: Profile) {
+    if let Ok(bytes) = crate::surface::admissible::check_fit_size(k, profile) {
+        if bytes > 1 << 28 {
+            let max_m = k.vertices().map(|v| k.degree(v)).max().unwrap_or(0);
+            eprintln!(
+                "ppm: fitting the shape functions (Sec. 5.2, {} profile, largest degree {max_m}, l = {}): about {} MB; this may take a while",
+                profile.name(),
+                profile.bezier_degree(max_m),
+                bytes >> 20
+            );
+        }
+    }
 }
 
 /// The options of `ppm sample` (see `crate::cli`).
@@ -98,6 +104,11 @@ pub(crate) fn run_sample(a: &SampleArgs) -> ExitCode {
         Construction::Vertex => build_vertex(&k, a, t0).map(|p| Box::new(p) as _),
         Construction::SigmaV => super::sigma_v::build(&k, a.kappa, a.patch_degree, a.quiet, t0)
             .map(|p| Box::new(p) as _),
+        // `ppm msplines sample`'s spline (positions only: `--attributes positions`).
+        c @ Construction::ManifoldSpline => Choice::default_of(c).build(&k).map_err(|e| {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }),
     };
     let surface = match built {
         Ok(s) => s,
@@ -166,37 +177,4 @@ pub(crate) fn write_sampled(
         );
     }
     ExitCode::SUCCESS
-}
-
-/// `ppm eval FILE FACE λ μ ν`: one point of M (Sec. 6.1.4), with its chart, normal and
-/// curvatures.
-pub(crate) fn run_eval(
-    file: &Path,
-    face: u32,
-    bary: [f64; 3],
-    profile: &str,
-    surface: &str,
-) -> ExitCode {
-    let k = match load(file) {
-        Ok(k) => k,
-        Err(c) => return c,
-    };
-    let pps = match build(&k, profile, surface) {
-        Ok(p) => p,
-        Err(c) => return c,
-    };
-    let cj = pps.consts(53);
-    match pps.eval_geometry(FaceId(face), bary, &cj) {
-        Ok((chart, v, g)) => {
-            println!(
-                "{{\"face\": {face}, \"bary\": {bary:?}, \"chart\": \"{chart:?}\", \"vertex\": {v}, \"point\": {:?}, \"normal\": {:?}, \"gaussian\": {}, \"mean\": {}}}",
-                g.point, g.normal, g.gaussian, g.mean
-            );
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("error: {e}");
-            ExitCode::from(1)
-        }
-    }
 }

@@ -3,9 +3,9 @@
 
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::report::{render_text, CheckResult};
+use crate::sdiff::common::positivity::Budget;
 use crate::sdiff::planar::{
     c1, checks, claims, complex, handles, implicit, iso, normals, params, polygonize,
-    positivity::Budget,
 };
 use clap::{Args, Subcommand};
 use std::path::{Path, PathBuf};
@@ -166,8 +166,8 @@ type IsoInput = (
     complex::PlanarComplex,
     params::MapSpec,
     params::ComplexMap,
-    Vec<crate::sdiff::planar::poly::Q>,
-    crate::sdiff::planar::poly::Q,
+    Vec<crate::sdiff::common::rational::Q>,
+    crate::sdiff::common::rational::Q,
 );
 
 fn load_iso(mesh: &Path, params_path: &Path) -> Result<IsoInput, String> {
@@ -302,7 +302,7 @@ pub(super) fn run(a: SdArgs) -> ExitCode {
                 Ok(x) => x,
                 Err(e) => return fail(e),
             };
-            if spec.family == params::FamilySpec::Monotonic {
+            if spec.family == crate::sdiff::common::params::FamilySpec::Monotonic {
                 return fail(format!("{}: (12) is for the rational family (Eq. (11)); give degree and control points", p.display()));
             }
             let scope = if crossed_only {

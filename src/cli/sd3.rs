@@ -3,8 +3,8 @@
 
 use super::sd::{emit, fail};
 use crate::report::{render_text, CheckResult};
+use crate::sdiff::common::positivity::Budget;
 use crate::sdiff::planar::claims;
-use crate::sdiff::planar::positivity::Budget;
 use crate::sdiff::tet;
 use crate::sdiff::tet::checks::{check_all3, Options3};
 use crate::sdiff::tet::complex::{TetComplex, TetComplexError};

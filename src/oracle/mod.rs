@@ -4,16 +4,18 @@
 //!
 //! * [`Session`] holds a validated mesh and answers [`Request`]s (the `ppm oracle` JSON-lines
 //!   protocol, documented in `docs/oracle.md`).
+//! * [`choice`] builds the construction a command or session chose as a `SmoothSurface`
+//!   (`ppm eval` and the protocol's `eval` evaluate through it).
 //! * [`diff`] compares another implementation's answers against the reference (`ppm diff`).
 //! * [`surface_diff`] compares another implementation's sampled surface against the reference
 //!   sampling of Sec. 6.2 (`ppm diff --surface`).
 //! * [`tsv_diff`] compares a TSV table of eval and S′ points (`ppm diff MESH TABLE.tsv`).
 
+pub mod choice;
 pub mod diff;
 pub mod protocol;
 mod query;
 mod reference;
-pub(crate) mod sigma_v;
 pub mod surface_diff;
 pub mod tsv_diff;
 

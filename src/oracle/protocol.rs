@@ -11,14 +11,15 @@
 //! (Sec. 5.2); the MPFR answers evaluate the construction with *those* control points, so the
 //! difference measures the rounding of the f64 evaluation, not of the fit.
 
-use super::mp_decimal;
-use super::query::{add_info, both, both_or_note, mp_only, vertex, Env, Needs, Numeric, OnF64};
+use super::choice::{read_fitted, vertex_pps, Choice};
+use super::query::{add_info, both, both_or_note, vertex, Env, Needs, Numeric, OnF64};
+use super::reference::Other;
 use crate::construction::{GluingError, MapError, PpmGluing, P2};
 use crate::mesh::{load_surface, FaceId, LoadError, SimplicialSurface, VertexId};
 use crate::numeric::{Mp, Scalar, Trit};
 use crate::surface::jet::Jet;
-use crate::surface::smooth::SmoothSurface;
-use crate::surface::{Consts, Pps, PpsOptions, Profile, SurfaceError};
+use crate::surface::smooth::{MpConsts, SmoothSurface};
+use crate::surface::{Construction, Consts, Pps, Profile, SurfaceError};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
 use std::path::PathBuf;
@@ -43,9 +44,12 @@ pub enum MemberTest {
 #[derive(Debug, Clone, Deserialize, Serialize, PartialEq)]
 #[serde(tag = "op", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Request {
-    /// Load and validate a mesh; later queries refer to its vertex ids (file indices).
+    /// Load and validate a mesh; later queries refer to its vertex ids (file indices). A
+    /// fitted-surface file (`ppm fit -o`, docs/fit-format.md) loads its base mesh, and later
+    /// `eval` requests answer for the fitted surface (until `set_construction` or another
+    /// `load`).
     Load {
-        /// Mesh file (OFF, OBJ or PLY).
+        /// Mesh file (OFF, OBJ or PLY) or fitted-surface file.
         path: PathBuf,
     },
     /// Read a certificate (`ppm certify`): later `phi` answers of the edge configurations it
@@ -126,10 +130,12 @@ pub enum Request {
         surface: String,
     },
     /// Select the construction later `eval` requests answer for: `"vertex"` (the report's,
-    /// default) or `"sigma-v"` (the tutorial's (σ, v)-indexed PPS, SPEC `SV-…`; optional
-    /// `kappa`, default 1/4). Other Chapter 5 ops stay with the vertex construction.
+    /// default), `"sigma-v"` (the tutorial's (σ, v)-indexed PPS, SPEC `SV-…`; optional
+    /// `kappa`, default 1/4) or `"manifold-spline"` (seed 003 Secs. 5.5–5.6; no MPFR
+    /// evaluation, so its `eval` is refused). Other Chapter 5 ops stay with the vertex
+    /// construction.
     SetConstruction {
-        /// `"vertex"` or `"sigma-v"`.
+        /// `"vertex"`, `"sigma-v"` or `"manifold-spline"`.
         construction: String,
         /// κ of r_{v,σ} (sigma-v only).
         #[serde(default)]
@@ -347,12 +353,13 @@ impl Response {
     }
 }
 
-/// The Chapter 5 state of a session: the pseudo-surface and its constants per scalar.
+/// The Chapter 5 state of a session: the pseudo-surface and its constants per scalar (the
+/// MPFR ones as `eval` takes them through `SmoothSurface`, shared with the other queries).
 struct Ch5 {
     pps: Pps,
     target: crate::surface::SPrime,
     jet: Consts<Jet<f64>>,
-    mp: Option<Consts<Mp>>,
+    mp: Option<MpConsts>,
     jet_mp: Option<Consts<Jet<Mp>>>,
 }
 
@@ -364,7 +371,8 @@ pub struct Session {
     profile: Profile,
     sprime: crate::surface::SurfaceKind,
     ch5: Option<Ch5>,
-    sigma_v: Option<super::sigma_v::SigmaVOracle>,
+    /// The reference of `eval` when it is not the vertex PPS of `ch5`.
+    other: Option<Other>,
     /// φ_wu's proven f64 error bound per edge configuration (m_u, m_w), from `set_certificate`.
     f64_bounds: std::collections::BTreeMap<(u32, u32), f64>,
 }
@@ -377,7 +385,7 @@ impl Default for Session {
             profile: Profile::default(),
             sprime: crate::surface::SurfaceKind::default(),
             ch5: None,
-            sigma_v: None,
+            other: None,
             f64_bounds: Default::default(),
         }
     }
@@ -420,28 +428,36 @@ impl Session {
     /// (σ, v) PPS after `set_construction` `"sigma-v"`. What `ppm diff --surface` compares
     /// against.
     pub fn reference(&mut self) -> Result<&dyn SmoothSurface, OracleError> {
-        if self.sigma_v.is_some() {
+        if self.other.is_some() {
             let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
-            let sv = self.sigma_v.as_mut().ok_or(OracleError::NoMesh)?;
-            Ok(sv.pps(k).map_err(OracleError::Refused)?)
+            let o = self.other.as_mut().ok_or(OracleError::NoMesh)?;
+            o.surface(k)
         } else {
             Ok(&self.ch5()?.pps)
+        }
+    }
+
+    /// `eval`'s reference with its MPFR constants at the session's precision and the `info`
+    /// naming it (none for the vertex PPS).
+    #[allow(clippy::type_complexity)]
+    fn eval_reference(
+        &mut self,
+    ) -> Result<(&dyn SmoothSurface, &MpConsts, Option<&Value>), OracleError> {
+        let bits = self.bits;
+        if self.other.is_some() {
+            let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
+            let o = self.other.as_mut().ok_or(OracleError::NoMesh)?;
+            o.with_mp(k, bits)
+        } else {
+            let (pps, cm) = self.ch5()?.with_mp(bits);
+            Ok((pps, cm, None))
         }
     }
 
     fn ch5(&mut self) -> Result<&mut Ch5, OracleError> {
         if self.ch5.is_none() {
             let k = self.k()?;
-            let target = crate::surface::SPrime::for_profile(self.sprime, k, self.profile)
-                .map_err(|e| OracleError::Load(e.to_string()))?;
-            let pps = Pps::try_build(
-                k,
-                target.as_target(),
-                PpsOptions {
-                    profile: self.profile,
-                    ..PpsOptions::default()
-                },
-            )?;
+            let (target, pps) = vertex_pps(k, self.profile, self.sprime)?;
             let jet = pps.consts(53);
             self.ch5 = Some(Ch5 {
                 pps,
@@ -453,7 +469,7 @@ impl Session {
         }
         let bits = self.bits;
         let c = self.ch5.as_mut().ok_or(OracleError::NoMesh)?;
-        if c.mp.as_ref().is_some_and(|m| m.prec != bits) {
+        if c.mp.as_ref().is_some_and(|m| m.bits() != bits) {
             c.mp = None;
             c.jet_mp = None;
         }
@@ -501,8 +517,19 @@ impl Session {
                 // the previous one.
                 self.surface = None;
                 self.ch5 = None;
-                if let Some(sv) = &mut self.sigma_v {
-                    sv.reset();
+                if self.other.as_ref().is_some_and(|o| o.choice.is_none()) {
+                    self.other = None;
+                }
+                if let Some(o) = &mut self.other {
+                    o.reset();
+                }
+                if crate::fitting::format::is_fit_file(path) {
+                    let fit = read_fitted(path)?;
+                    let k = fit.k;
+                    let out = json!({"vertices": k.num_vertices(), "faces": k.num_faces(), "edges": k.num_edges(), "construction": "fit"});
+                    self.surface = Some(k);
+                    self.other = Some(Other::read(fit.surface, fit.info));
+                    return Ok(Response::plain(out));
                 }
                 let k = load_surface(path).map_err(|e| match e {
                     LoadError::Read(e) => OracleError::Load(e.to_string()),
@@ -517,10 +544,6 @@ impl Session {
                 })?;
                 let out = json!({"vertices": k.num_vertices(), "faces": k.num_faces(), "edges": k.num_edges()});
                 self.surface = Some(k);
-                self.ch5 = None;
-                if let Some(sv) = &mut self.sigma_v {
-                    sv.reset();
-                }
                 Ok(Response::plain(out))
             }
             Request::SetCertificate { path } => {
@@ -554,25 +577,37 @@ impl Session {
             Request::SetConstruction {
                 construction,
                 kappa,
-            } => match crate::surface::Construction::parse(construction) {
-                Some(crate::surface::Construction::Vertex) => {
-                    self.sigma_v = None;
+            } => match Construction::parse(construction) {
+                Some(Construction::Vertex) => {
+                    self.other = None;
                     Ok(Response::plain(json!({"construction": "vertex"})))
                 }
-                Some(crate::surface::Construction::SigmaV) => {
+                Some(Construction::SigmaV) => {
                     let kappa = kappa.unwrap_or(crate::surface::sigma_v::DEFAULT_KAPPA);
                     if !(kappa > 0.0 && kappa < 1.0) {
                         return Err(OracleError::Malformed(format!(
                             "kappa {kappa} is not in (0, 1) (SPEC SV-D3)"
                         )));
                     }
-                    self.sigma_v = Some(super::sigma_v::SigmaVOracle::new(kappa));
+                    self.other = Some(Other::chosen(Choice::SigmaV {
+                        kappa,
+                        patch_degree: crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
+                    }));
                     Ok(Response::plain(
                         json!({"construction": "sigma-v", "kappa": kappa}),
                     ))
                 }
+                Some(c @ Construction::ManifoldSpline) => {
+                    if kappa.is_some() {
+                        return Err(OracleError::Malformed(
+                            "kappa applies to the sigma-v construction only (SPEC SV-D3)".into(),
+                        ));
+                    }
+                    self.other = Some(Other::chosen(Choice::default_of(c)));
+                    Ok(Response::plain(json!({"construction": c.name()})))
+                }
                 None => Err(OracleError::Malformed(format!(
-                    "unknown construction {construction:?} (expected \"vertex\" or \"sigma-v\")"
+                    "unknown construction {construction:?} (expected \"vertex\", \"sigma-v\" or \"manifold-spline\")"
                 ))),
             },
             Request::SetProfile { profile } => {
@@ -605,50 +640,8 @@ impl Session {
                 if !bary.iter().all(|c| c.is_finite()) {
                     return Err(OracleError::NonFinite);
                 }
-                if let Some(sv) = &mut self.sigma_v {
-                    let k = self.surface.as_ref().ok_or(OracleError::NoMesh)?;
-                    let (a, b, info) = sv
-                        .eval(k, *face, *bary, bits)
-                        .map_err(OracleError::Undefined)?;
-                    let mut r = match a {
-                        Ok(a) => both(&a, &b, bits),
-                        Err(e) => mp_only(&b, bits, e),
-                    };
-                    r.info = Some(match r.info.take() {
-                        Some(Value::Object(mut m)) => {
-                            if let Value::Object(i) = info {
-                                m.extend(i);
-                            }
-                            Value::Object(m)
-                        }
-                        _ => info,
-                    });
-                    return Ok(r);
-                }
-                let (pps, cm) = self.ch5()?.with_mp(bits);
-                let f = FaceId(*face);
-                let bm = bary.map(|x| Mp::from_f64(x, bits));
-                let b = pps.eval(f, &bm, cm)?;
-                let a = pps.eval(f, bary, pps.consts_f64());
-                let q: Vec<String> = [&b.q.x, &b.q.y].into_iter().map(mp_decimal).collect();
-                let mut info = json!({"chart": b.chart, "vertex": b.vertex.0, "q": q});
-                let mut r = match a {
-                    Ok(a) => {
-                        info["q_f64"] = json!([a.q.x, a.q.y]);
-                        if a.chart != b.chart {
-                            info["chart_f64"] = json!(a.chart);
-                        }
-                        both(&a.point, &b.point, bits)
-                    }
-                    Err(e) => both_or_note(Err(e.into()), &b.point, bits),
-                };
-                if let Some(Value::Object(extra)) = r.info.take() {
-                    for (k, v) in extra {
-                        info[k] = v;
-                    }
-                }
-                r.info = Some(info);
-                Ok(r)
+                let (s, c, named) = self.eval_reference()?;
+                super::reference::answer(s, c, named, FaceId(*face), *bary)
             }
             Request::Degree { v } => {
                 let g = PpmGluing::new(self.k()?);
@@ -725,7 +718,7 @@ impl Session {
             }
             Needs::Consts => {
                 let c = self.ch5()?;
-                c.mp.get_or_insert_with(|| c.pps.consts::<Mp>(bits));
+                c.mp.get_or_insert_with(|| MpConsts::new(bits, c.pps.consts::<Mp>(bits)));
             }
             Needs::Jets => {
                 let c = self.ch5()?;
@@ -748,7 +741,7 @@ impl Session {
             k,
             pps: f.pps,
             target: f.target,
-            consts: c.and_then(|c| c.mp.as_ref()),
+            consts: c.and_then(|c| c.mp.as_ref()).and_then(MpConsts::get),
             jets: c.and_then(|c| c.jet_mp.as_ref()),
         };
         let mut r = match q.on_f64 {
@@ -798,9 +791,9 @@ impl Session {
 
 impl Ch5 {
     /// The pseudo-surface with its MPFR constants at `bits` (built once, cached).
-    fn with_mp(&mut self, bits: u32) -> (&Pps, &Consts<Mp>) {
+    fn with_mp(&mut self, bits: u32) -> (&Pps, &MpConsts) {
         let Ch5 { pps, mp, .. } = self;
-        let m = mp.get_or_insert_with(|| pps.consts::<Mp>(bits));
+        let m = mp.get_or_insert_with(|| MpConsts::new(bits, pps.consts::<Mp>(bits)));
         (&*pps, &*m)
     }
 }

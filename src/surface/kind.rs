@@ -1,6 +1,7 @@
 //! Which construction builds the smooth surface from K: the report's vertex-indexed PPS
-//! (Ch. 4–5) or the tutorial's (σ, v)-indexed PPS (seed 002, Parts IV–V; SPEC `SV-…`). One
-//! value, chosen once where a command or an oracle session is dispatched.
+//! (Ch. 4–5), the tutorial's (σ, v)-indexed PPS (seed 002, Parts IV–V; SPEC `SV-…`) or the
+//! manifold spline F(M) (seed 003, Secs. 5.5–5.6; SPEC `MS-…`). One value, chosen once where a
+//! command or an oracle session is dispatched (`oracle::choice` builds it).
 
 /// The construction of the smooth surface.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Serialize, clap::ValueEnum)]
@@ -11,6 +12,8 @@ pub enum Construction {
     Vertex,
     /// The tutorial's PPS: one chart per (σ, v), σ a triangle and v one of its vertices.
     SigmaV,
+    /// The manifold spline of Gu–He–Qin (Secs. 5.5–5.6): f64 eval only (no MPFR, no jets).
+    ManifoldSpline,
 }
 
 impl Construction {
@@ -19,6 +22,7 @@ impl Construction {
         match self {
             Construction::Vertex => "vertex",
             Construction::SigmaV => "sigma-v",
+            Construction::ManifoldSpline => "manifold-spline",
         }
     }
     /// Inverse of [`Construction::name`].
@@ -26,6 +30,7 @@ impl Construction {
         match s {
             "vertex" => Some(Construction::Vertex),
             "sigma-v" => Some(Construction::SigmaV),
+            "manifold-spline" => Some(Construction::ManifoldSpline),
             _ => None,
         }
     }

@@ -1,9 +1,9 @@
 //! Fixtures of the seed-004 tests (`tests/seeds/sdiff_spec.rs`, `tests/seeds/sdiff_sec6.rs`).
 
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
+use pseudomanifold::sdiff::common::rational::{qr, Q};
 use pseudomanifold::sdiff::planar::complex::{validate, PlanarComplex};
 use pseudomanifold::sdiff::planar::objectives::Handle;
-use pseudomanifold::sdiff::planar::poly::{qr, Q};
 use std::path::{Path, PathBuf};
 
 /// A file of `tests/data/sdiff/`.

@@ -2,6 +2,9 @@
 //! m = 4 (`SD-L146(4-D)`).
 
 use pseudomanifold::report::Verdict;
+use pseudomanifold::sdiff::common::poly2::index_of;
+use pseudomanifold::sdiff::common::positivity::{Budget, Decision, Strictness};
+use pseudomanifold::sdiff::common::rational::{q, qr, Q};
 use pseudomanifold::sdiff::common::simplex_poly::{
     decide, det_decision, fixed_control, indices, is_one, SimplexDecision, SimplexError,
     SimplexMapM, SimplexPoly, MAX_COEFFICIENTS,
@@ -12,8 +15,6 @@ use pseudomanifold::sdiff::common::simplex_search::{
 };
 use pseudomanifold::sdiff::planar::claims;
 use pseudomanifold::sdiff::planar::maps::SimplexMap;
-use pseudomanifold::sdiff::planar::poly::{index_of, q, qr, Q};
-use pseudomanifold::sdiff::planar::positivity::{Budget, Decision, Strictness};
 use pseudomanifold::sdiff::tet::{maps as tet_maps, poly as tet};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -717,7 +718,7 @@ fn sd_l314_planted_folds_are_reported_never_accepted() {
         let l = (v[0] * v[0] + v[1] * v[1]).sqrt();
         let nf = n
             .clone()
-            .map(|x| pseudomanifold::sdiff::planar::poly::to_f64(&x));
+            .map(|x| pseudomanifold::sdiff::common::rational::to_f64(&x));
         assert!(
             (nf[0] - v[0] / l).abs() + (nf[1] - v[1] / l).abs() < 1e-5,
             "{v:?}"

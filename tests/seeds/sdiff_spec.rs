@@ -2,13 +2,15 @@
 
 use pseudomanifold::mesh::io::{read_mesh, ReadOptions};
 use pseudomanifold::report::{CheckResult, Verdict};
+use pseudomanifold::sdiff::common::poly1::Poly1;
+use pseudomanifold::sdiff::common::poly2::{bernstein_basis, multi_indices, Poly2};
+use pseudomanifold::sdiff::common::positivity::{decide, Budget, Decision, Strictness};
+use pseudomanifold::sdiff::common::rational::{q, qr, Q};
 use pseudomanifold::sdiff::planar::checks::{check_all, Options};
 use pseudomanifold::sdiff::planar::claims::{self, search};
 use pseudomanifold::sdiff::planar::complex::{validate, ComplexError, PlanarComplex};
-use pseudomanifold::sdiff::planar::maps::{Poly1, SimplexMap};
+use pseudomanifold::sdiff::planar::maps::SimplexMap;
 use pseudomanifold::sdiff::planar::params::{self, ComplexMap};
-use pseudomanifold::sdiff::planar::poly::{bernstein_basis, multi_indices, q, qr, Poly2, Q};
-use pseudomanifold::sdiff::planar::positivity::{decide, Budget, Decision, Strictness};
 use pseudomanifold::sdiff::planar::{interval, iso};
 use std::path::Path;
 
@@ -394,14 +396,14 @@ fn sd_l139_adjusted_quartic_can_be_non_injective_witness() {
     let n = 4;
     let mut b = SimplexMap::fixed_control(n);
     let set = |b: &mut Vec<[Q; 3]>, i: [usize; 3], x: Q| {
-        let k = pseudomanifold::sdiff::planar::poly::index_of(n, i);
+        let k = pseudomanifold::sdiff::common::poly2::index_of(n, i);
         b[k] = [q(1) - &x, x, q(0)];
     };
     set(&mut b, [3, 1, 0], qr(999, 1000));
     set(&mut b, [2, 2, 0], qr(1, 1000));
     set(&mut b, [1, 3, 0], qr(1, 1000));
     let m = SimplexMap::polynomial(n, b);
-    let s = claims::Search {
+    let s = pseudomanifold::sdiff::common::simplex_search::Search {
         certified: 0,
         refuted: vec![(
             "edge fold".into(),
@@ -459,12 +461,18 @@ fn sd_l101_interval_route_agrees_with_the_exact_route_on_random_maps() {
         let ex = claims::det_decision(&m, Budget::default());
         let iv = interval::certify_det(&m, 20_000);
         match (ex.certified(), iv) {
-            (true, interval::IntervalVerdict::Certified { lower_bound, .. }) => {
+            (
+                true,
+                pseudomanifold::sdiff::common::interval::IntervalVerdict::Certified {
+                    lower_bound,
+                    ..
+                },
+            ) => {
                 both += 1;
                 assert!(lower_bound > 0.0);
             }
             (true, _) => exact_only += 1,
-            (false, interval::IntervalVerdict::Certified { .. }) => {
+            (false, pseudomanifold::sdiff::common::interval::IntervalVerdict::Certified { .. }) => {
                 panic!("interval certifies a refuted map: {ex:?}")
             }
             (false, _) => {}
@@ -541,7 +549,8 @@ fn sd_l203_identity_keeps_the_kink_and_a_derivative_jump_alone_does_not_smooth()
         .expect("O crosses the diagonal");
     assert!(p.linear_kink && !p.curved_smooth && !p.dx_jumps, "{p:?}");
     assert!(
-        (pseudomanifold::sdiff::planar::poly::to_f64(&p.u.parse::<Q>().unwrap()) - 1.0 / 3.0).abs()
+        (pseudomanifold::sdiff::common::rational::to_f64(&p.u.parse::<Q>().unwrap()) - 1.0 / 3.0)
+            .abs()
             < 1e-15
     );
     assert_eq!(p.curved_cross, p.linear_cross);
@@ -1233,7 +1242,7 @@ fn sd_l231_sd_l231_corrected_normal_deviation_is_positive_on_exactly_c1_curves_a
         println!(
             "SD-L231 n = {n}: {}; at 𝒪's crossing u ≈ {:.6}: ‖n − n′‖² = {at_crossing:.3e}; witness: {}",
             r.note,
-            pseudomanifold::sdiff::planar::poly::to_f64(&u),
+            pseudomanifold::sdiff::common::rational::to_f64(&u),
             r.witnesses[0].text
         );
     }

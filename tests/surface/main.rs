@@ -8,6 +8,7 @@ mod architecture;
 mod authors_code;
 mod docs_pictures;
 mod loop_sprime;
+mod one_surface;
 mod oracle;
 mod oracle_surface;
 mod python_layer;

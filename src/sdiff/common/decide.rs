@@ -4,7 +4,7 @@
 //! "holds" — unless something already failed it.
 
 use crate::report::{CheckResult, Witness};
-use crate::sdiff::planar::positivity::Decision;
+use crate::sdiff::common::positivity::Decision;
 
 /// A refuting point of an exact decision, for the witness.
 pub(crate) struct Refutation<'a> {

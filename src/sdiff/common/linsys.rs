@@ -8,7 +8,7 @@
 //! inequalities can grow quadratically per step, so it runs under a budget; over budget the
 //! answer is *undecided*, never a guess.
 
-use crate::sdiff::planar::poly::{q, Q};
+use crate::sdiff::common::rational::{q, Q};
 use num_traits::{One, Signed, Zero};
 
 /// A matrix in reduced row echelon form.

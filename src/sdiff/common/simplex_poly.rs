@@ -16,8 +16,8 @@
 //! (`positivity::Cover`: a counterexample anywhere wins), and with a piece left open the answer
 //! is *unresolved*, never a guess. Sizes are bounded before any work ([`MAX_DIM`], [`MAX_COEFFICIENTS`]): a typed [`SimplexError`].
 
-use crate::sdiff::planar::poly::{multinomial, q, qr, to_f64, Q};
-use crate::sdiff::planar::positivity::{Budget, Cover, Decision, Strictness};
+use crate::sdiff::common::positivity::{Budget, Cover, Decision, Strictness};
+use crate::sdiff::common::rational::{multinomial, q, qr, to_f64, Q};
 use num_traits::{One, Signed, Zero};
 use std::collections::{BTreeMap, HashMap};
 

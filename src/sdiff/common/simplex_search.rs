@@ -16,12 +16,43 @@ use super::simplex_poly::{
     SimplexPoly,
 };
 use crate::report::{CheckResult, Witness};
-use crate::sdiff::planar::claims::unit_open;
-use crate::sdiff::planar::poly::{q, qr, Q};
-use crate::sdiff::planar::positivity::Budget;
-use rand::SeedableRng;
+use crate::sdiff::common::positivity::{Budget, Decision};
+use crate::sdiff::common::rational::{q, qr, Q};
+use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;
+
+/// What a search found.
+#[derive(Debug, Clone, Default)]
+pub struct Search {
+    /// Maps certified injective-by-det.
+    pub certified: u64,
+    /// Maps with an exact point of det ≤ 0 (description of the map, the decision).
+    pub refuted: Vec<(String, Decision)>,
+    /// Maps neither certified nor refuted within the budget.
+    pub unresolved: u64,
+}
+
+impl Search {
+    /// Counts one sample's decision; a refuted map is kept with its description (made only
+    /// then). The one tally of the planar, the monotonic 3-D and the rational 3-D searches.
+    pub(crate) fn record(&mut self, d: Decision, describe: impl FnOnce() -> String) {
+        match d {
+            Decision::Certified { .. } => self.certified += 1,
+            d @ Decision::Refuted { .. } => self.refuted.push((describe(), d)),
+            Decision::Unresolved { .. } => self.unresolved += 1,
+        }
+    }
+}
+
+/// A rational in (0, 1): extremes (1/1000, 999/1000, 1/2) one time in four, else k/997.
+pub(crate) fn unit_open(rng: &mut ChaCha8Rng) -> Q {
+    match rng.gen_range(0..8) {
+        0 => qr(1, 1000),
+        1 => qr(999, 1000),
+        _ => qr(rng.gen_range(1..997), 997),
+    }
+}
 
 /// A random point of the open face with support `supp` (barycentric, exact).
 pub(crate) fn open_face_point(rng: &mut ChaCha8Rng, supp: &[bool]) -> Vec<Q> {
@@ -50,7 +81,6 @@ pub fn fixed_solitary_control(m: usize, n: usize, rng: &mut ChaCha8Rng) -> Vec<V
 /// for each w its minimum over the closed faces is at their vertices. Each solitary point is
 /// put at (1 − ε)·(a seeded vertex of its face) + ε·(the face's centroid), ε = 1/1000 (open).
 pub fn near_vertex_control(m: usize, n: usize, rng: &mut ChaCha8Rng) -> Vec<Vec<Q>> {
-    use rand::Rng;
     near_vertex_with(m, n, |size| rng.gen_range(0..size))
 }
 

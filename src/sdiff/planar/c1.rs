@@ -16,10 +16,12 @@
 
 use super::complex::PlanarComplex;
 use super::edge::{local, restrict, trim, u_axpy, u_eval, u_mul, u_rem, Frame, UPoly};
-use super::params::{ComplexMap, FamilySpec, MapSpec, Multiset};
-use super::poly::{multi_indices, q, Poly2, Q};
+use super::params::{ComplexMap, MapSpec};
 use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::linsys::{positive_solution, rref, Positive, Rref};
+use crate::sdiff::common::params::{FamilySpec, Multiset};
+use crate::sdiff::common::poly2::{multi_indices, Poly2};
+use crate::sdiff::common::rational::{q, Q};
 use num_traits::Zero;
 use serde_json::json;
 use std::collections::{BTreeMap, HashMap};
@@ -382,7 +384,7 @@ pub fn run(
     c: &Q,
     scope: Scope,
     max_inequalities: usize,
-) -> Result<C1Run, super::params::ParamError> {
+) -> Result<C1Run, crate::sdiff::common::params::ParamError> {
     let path = std::path::Path::new("(C¹ system)");
     let mut base = spec.clone();
     base.family = FamilySpec::Rational;

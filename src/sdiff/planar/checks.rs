@@ -2,13 +2,15 @@
 //! carrying its SPEC ID (`SD-…`), decided exactly where the statement is algebraic.
 
 use super::complex::PlanarComplex;
-use super::interval::{certify_det, IntervalVerdict};
+use super::interval::certify_det;
 use super::maps::{Family, SimplexMap};
 use super::params::ComplexMap;
-use super::poly::{multi_indices, q, qr, to_f64, Poly2, Q};
-use super::positivity::{decide, decide_on, Budget, Decision, Strictness};
 use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::decide::Tally;
+use crate::sdiff::common::interval::IntervalVerdict;
+use crate::sdiff::common::poly2::{multi_indices, Poly2};
+use crate::sdiff::common::positivity::{decide, decide_on, Budget, Decision, Strictness};
+use crate::sdiff::common::rational::{q, qr, to_f64, Q};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 
@@ -295,7 +297,6 @@ pub(crate) fn monotone_hypotheses(cm: &ComplexMap, budget: Budget) -> CheckResul
         "SD-E9(hyp)",
         "Eq. (9): g_i(0) = 0 and g_i' > 0 on [0, 1] (exact)",
     );
-    let seg = [[q(0), q(0)], [q(1), q(0)], [q(1), q(0)]];
     for (f, m) in cm.maps.iter().enumerate() {
         for (c, g) in m.g.iter().enumerate() {
             r.examined += 1;
@@ -308,12 +309,7 @@ pub(crate) fn monotone_hypotheses(cm: &ComplexMap, budget: Budget) -> CheckResul
                 });
                 continue;
             }
-            let d = decide_on(
-                &g.as_poly2().ds(),
-                seg.clone(),
-                Strictness::Positive,
-                budget,
-            );
+            let d = g.decide_increasing(budget);
             if let Decision::Refuted {
                 point_f64,
                 value_f64,

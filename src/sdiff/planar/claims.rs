@@ -3,36 +3,16 @@
 //! refuted with an exact witness. A claim "holds" here when no sample refutes it; an
 //! existential claim holds when a sample exhibits it.
 
-use super::maps::{Poly1, SimplexMap};
-use super::poly::{index_of, multi_indices, q, qr, Q};
-use super::positivity::{decide, Budget, Decision, Strictness};
+use super::maps::SimplexMap;
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::common::poly1::Poly1;
+use crate::sdiff::common::poly2::{index_of, multi_indices};
+use crate::sdiff::common::positivity::{decide, Budget, Decision, Strictness};
+use crate::sdiff::common::rational::{q, qr, Q};
+use crate::sdiff::common::simplex_search::{unit_open, Search};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde_json::json;
-
-/// What a search found.
-#[derive(Debug, Clone, Default)]
-pub struct Search {
-    /// Maps certified injective-by-det.
-    pub certified: u64,
-    /// Maps with an exact point of det ≤ 0 (description of the map, the decision).
-    pub refuted: Vec<(String, Decision)>,
-    /// Maps neither certified nor refuted within the budget.
-    pub unresolved: u64,
-}
-
-impl Search {
-    /// Counts one sample's decision; a refuted map is kept with its description (made only
-    /// then). The one tally of the planar, the monotonic 3-D and the rational 3-D searches.
-    pub(crate) fn record(&mut self, d: Decision, describe: impl FnOnce() -> String) {
-        match d {
-            Decision::Certified { .. } => self.certified += 1,
-            d @ Decision::Refuted { .. } => self.refuted.push((describe(), d)),
-            Decision::Unresolved { .. } => self.unresolved += 1,
-        }
-    }
-}
 
 /// Certify or refute det DX > 0 (with D > 0 first) for one map.
 pub fn det_decision(m: &SimplexMap, budget: Budget) -> Decision {
@@ -59,15 +39,6 @@ pub fn search(
         s.record(det_decision(&m, budget), || desc);
     }
     s
-}
-
-/// A rational in (0, 1): extremes (1/1000, 999/1000, 1/2) one time in four, else k/997.
-pub(crate) fn unit_open(rng: &mut ChaCha8Rng) -> Q {
-    match rng.gen_range(0..8) {
-        0 => qr(1, 1000),
-        1 => qr(999, 1000),
-        _ => qr(rng.gen_range(1..997), 997),
-    }
 }
 
 /// A random point of the open face with support `supp` (barycentric, positive on supp).

@@ -7,10 +7,10 @@
 //! outside every triangle), positive orientation, at most two triangles per edge, and no two
 //! triangles whose interiors meet (decided by the separating-axis theorem with exact signs).
 
-use super::poly::{from_f64, Q};
 use crate::mesh::raw::RawMesh;
 use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::complex::{self as common, OrientationWords, Words};
+use crate::sdiff::common::rational::{from_f64, Q};
 use num_traits::Signed;
 use serde_json::{Map, Value};
 

@@ -4,7 +4,8 @@
 //! univariate operations the C¹ checks need (sum, product, remainder).
 
 use super::complex::PlanarComplex;
-use super::poly::{q, Poly2, Q};
+use crate::sdiff::common::poly2::Poly2;
+use crate::sdiff::common::rational::{q, Q};
 use num_traits::Zero;
 
 /// The affine chart of triangle f: P(s, t) = v_0 + s (v_1 − v_0) + t (v_2 − v_0), i.e. the

@@ -11,10 +11,11 @@
 
 use super::checks::{det_positive_exact, edges_monotone};
 use super::complex::PlanarComplex;
-use super::params::{FamilySpec, MapSpec, ParamError};
-use super::poly::{q, to_f64, Q};
-use super::positivity::Budget;
+use super::params::MapSpec;
 use crate::report::{CheckResult, Verdict, Witness};
+use crate::sdiff::common::params::{FamilySpec, ParamError};
+use crate::sdiff::common::positivity::Budget;
+use crate::sdiff::common::rational::{q, to_f64, Q};
 use num_traits::{Signed, Zero};
 use serde::Serialize;
 use serde_json::json;

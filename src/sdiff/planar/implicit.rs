@@ -4,7 +4,7 @@
 //! natural interval extension over a box in exact rationals (the inclusion function □g of
 //! L318–L320: each monomial's exact range, summed).
 
-use super::poly::{to_f64, Q};
+use crate::sdiff::common::rational::{to_f64, Q};
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 

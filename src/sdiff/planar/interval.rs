@@ -1,40 +1,15 @@
 //! The second, independent route to det DX > 0: interval branch-and-bound in f64 with outward
 //! rounding (`numeric::interval`), evaluated from the control points through the hodograph
 //! ∂x/∂s = n Σ_{|J|=n−1} (b_{J+e1} − b_{J+e0}) B_J (and likewise for t), not from the exact
-//! polynomials of [`super::positivity`]. It can certify, or give up; it never refutes (a
+//! polynomials of [`crate::sdiff::common::positivity`]. It can certify, or give up; it never refutes (a
 //! refutation needs an exact value).
 
 use super::maps::{Family, SimplexMap};
-use super::poly::{multi_indices, multinomial, to_f64, Q};
-use crate::numeric::interval::{down, up, Interval as I};
+use crate::numeric::interval::Interval as I;
+use crate::sdiff::common::interval::{enclose, IntervalVerdict};
+use crate::sdiff::common::poly2::multi_indices;
+use crate::sdiff::common::rational::multinomial;
 use num_traits::ToPrimitive;
-
-/// Outcome of the interval route.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
-#[serde(rename_all = "snake_case", tag = "kind")]
-pub enum IntervalVerdict {
-    /// det DX > 0 on every box covering the triangle.
-    Certified {
-        /// Boxes in the cover.
-        boxes: usize,
-        /// Smallest lower bound of det over the cover.
-        lower_bound: f64,
-    },
-    /// Some box could not be decided within the budget.
-    Unknown {
-        /// Boxes examined.
-        boxes: usize,
-    },
-}
-
-/// An interval enclosing the rational `x` (one ulp either side of the nearest f64).
-pub fn enclose(x: &Q) -> I {
-    let f = to_f64(x);
-    if f.is_finite() && Q::from_float(f).as_ref() == Some(x) {
-        return I::try_from((f, f)).unwrap_or(I::ENTIRE);
-    }
-    I::try_from((down(f), up(f))).unwrap_or(I::ENTIRE)
-}
 
 fn pt(x: f64) -> I {
     I::try_from((x, x)).unwrap_or(I::ENTIRE)
@@ -99,7 +74,7 @@ pub(crate) fn det_enclosure(m: &SimplexMap, s: I, t: I) -> I {
                 }
             }
             if n > 0 {
-                let pos = |i: [usize; 3]| super::poly::index_of(n, i);
+                let pos = |i: [usize; 3]| crate::sdiff::common::poly2::index_of(n, i);
                 for j in multi_indices(n - 1) {
                     let bj = basis(j, &w) * pt(n as f64);
                     let e0 = pos([j[0] + 1, j[1], j[2]]);
@@ -126,7 +101,7 @@ fn quotient_det(v: [I; 3], ds: [I; 3], dt: [I; 3]) -> I {
     j(0, &ds) * j(1, &dt) - j(0, &dt) * j(1, &ds)
 }
 
-fn poly1_with_derivative(g: &super::maps::Poly1, x: I) -> (I, I) {
+fn poly1_with_derivative(g: &crate::sdiff::common::poly1::Poly1, x: I) -> (I, I) {
     let mut v = pt(0.0);
     let mut d = pt(0.0);
     for (k, c) in g.0.iter().enumerate() {

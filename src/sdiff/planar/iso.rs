@@ -7,8 +7,8 @@
 use super::complex::PlanarComplex;
 use super::inverse::newton;
 use super::params::ComplexMap;
-use super::poly::{from_f64, to_f64, Q};
 use crate::report::{CheckResult, Witness};
+use crate::sdiff::common::rational::{from_f64, to_f64, Q};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 use std::collections::HashMap;

@@ -8,7 +8,9 @@
 //! The control points b_I are barycentric coordinates (they need not sum to one: Eq. (10)'s
 //! partition-of-unity statement is about exactly that).
 
-use super::poly::{bernstein_basis, index_of, multi_indices, q, Poly2, Q};
+use crate::sdiff::common::poly1::Poly1;
+use crate::sdiff::common::poly2::{bernstein_basis, index_of, multi_indices, Poly2};
+use crate::sdiff::common::rational::{q, Q};
 use num_traits::{Signed, Zero};
 
 /// Which family of Sec. 3 a map belongs to.
@@ -21,33 +23,6 @@ pub enum Family {
     Polynomial,
     /// Sec. 3.3, Eq. (11).
     Rational,
-}
-
-/// A univariate polynomial g(t) = Σ coeffs\[k\] t^k (the g_i of Eq. (9)).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Poly1(pub Vec<Q>);
-
-impl Poly1 {
-    /// g(t) = t.
-    pub fn identity() -> Self {
-        Poly1(vec![q(0), q(1)])
-    }
-    /// g as a polynomial in (s, t) after substituting w.
-    pub(crate) fn compose(&self, w: &Poly2) -> Poly2 {
-        let mut acc = Poly2::zero(0);
-        for c in self.0.iter().rev() {
-            acc = acc.mul(w).add(&Poly2::constant(c.clone()));
-        }
-        acc
-    }
-    /// g as a polynomial in s only (t absent): for deciding g' > 0 on [0, 1].
-    pub(crate) fn as_poly2(&self) -> Poly2 {
-        self.compose(&Poly2::s())
-    }
-    /// g(0).
-    pub(crate) fn at_zero(&self) -> Q {
-        self.0.first().cloned().unwrap_or_else(Q::zero)
-    }
 }
 
 /// One map of the reference triangle onto itself (hopefully), x = N / D.

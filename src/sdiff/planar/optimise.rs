@@ -15,9 +15,9 @@
 use super::complex::PlanarComplex;
 use super::handles::quadratic_spec;
 use super::objectives::{handle_errors, total, Handle, HandleErrorKind};
-use super::params::ParamError;
-use super::poly::{qr, to_f64, Q};
 use crate::report::{CheckResult, Verdict, Witness};
+use crate::sdiff::common::params::ParamError;
+use crate::sdiff::common::rational::{qr, to_f64, Q};
 use serde::Serialize;
 use serde_json::json;
 use std::collections::{BTreeSet, HashMap};

@@ -17,12 +17,12 @@ use super::handles::quadratic_spec;
 use super::implicit::Implicit;
 use super::objectives::Handle;
 use super::optimise::{edges, optimise_edges, Lambdas, OptimiseOptions};
-use super::poly::{from_f64, q, Q};
-use super::positivity::Budget;
 use super::refine::Mesh2;
 use super::subdivide::SubdivideStep;
 use crate::mesh::raw::RawMesh;
 use crate::report::{CheckResult, Verdict, Witness};
+use crate::sdiff::common::positivity::Budget;
+use crate::sdiff::common::rational::{from_f64, q, Q};
 use num_traits::{Signed, Zero};
 use serde::Serialize;
 use serde_json::json;
@@ -198,7 +198,7 @@ impl LocalRun {
             }
             let (pa, pb) = (k.points_f64[a], k.points_f64[b]);
             let u = root_on_edge(g, pa, pb).ok_or(format!("no root of g on {:?}", glob(e)))?;
-            let uf = super::poly::to_f64(&u);
+            let uf = crate::sdiff::common::rational::to_f64(&u);
             let p = [pa[0] + uf * (pb[0] - pa[0]), pa[1] + uf * (pb[1] - pa[1])];
             let n = rational_unit(g.grad_f64(p[0], p[1]))
                 .ok_or(format!("∇g = 0 at the root on {:?}", glob(e)))?;

@@ -16,10 +16,10 @@ use super::params::{MapSpec3, TetMap};
 use super::poly::{decide_tet_with, jacobian_numerator, Poly3};
 use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::decide::Tally;
-use crate::sdiff::planar::interval::IntervalVerdict;
-use crate::sdiff::planar::params::{FamilySpec, Multiset};
-use crate::sdiff::planar::poly::{q, qr, to_f64, Q};
-use crate::sdiff::planar::positivity::{decide_on, Budget, Decision, Strictness};
+use crate::sdiff::common::interval::IntervalVerdict;
+use crate::sdiff::common::params::{FamilySpec, Multiset};
+use crate::sdiff::common::positivity::{Budget, Decision, Strictness};
+use crate::sdiff::common::rational::{q, qr, to_f64, Q};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 
@@ -241,7 +241,6 @@ pub(crate) fn monotone_hypotheses3(k: &TetComplex, maps: &[TetMap], budget: Budg
         "SD-E9(hyp,3-D)",
         "Eq. (9): g_v(0) = 0 and g_v' > 0 on [0, 1] (exact)",
     );
-    let seg = [[q(0), q(0)], [q(1), q(0)], [q(1), q(0)]];
     for (f, m) in maps.iter().enumerate() {
         for (c, g) in m.g.iter().enumerate() {
             r.examined += 1;
@@ -256,12 +255,7 @@ pub(crate) fn monotone_hypotheses3(k: &TetComplex, maps: &[TetMap], budget: Budg
                 });
                 continue;
             }
-            let d = decide_on(
-                &g.as_poly2().ds(),
-                seg.clone(),
-                Strictness::Positive,
-                budget,
-            );
+            let d = g.decide_increasing(budget);
             if let Decision::Refuted {
                 point_f64,
                 value_f64,

@@ -16,7 +16,7 @@
 
 use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::complex::{self as common, OrientationWords, Words};
-use crate::sdiff::planar::poly::{from_f64, Q};
+use crate::sdiff::common::rational::{from_f64, Q};
 use num_traits::Zero;
 use serde_json::{json, Map, Value};
 use std::path::PathBuf;

@@ -17,10 +17,10 @@
 use super::maps::multi_indices4;
 use super::params::TetMap;
 use crate::numeric::interval::Interval as I;
-use crate::sdiff::planar::interval::{enclose, IntervalVerdict};
-use crate::sdiff::planar::maps::Poly1;
-use crate::sdiff::planar::params::FamilySpec;
-use crate::sdiff::planar::poly::multinomial;
+use crate::sdiff::common::interval::{enclose, IntervalVerdict};
+use crate::sdiff::common::params::FamilySpec;
+use crate::sdiff::common::poly1::Poly1;
+use crate::sdiff::common::rational::multinomial;
 use num_traits::ToPrimitive;
 use std::collections::HashMap;
 

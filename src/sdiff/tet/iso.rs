@@ -19,7 +19,7 @@ use super::maps::fixed_control4;
 use super::params::TetMap;
 use super::poly::Poly3;
 use crate::report::{CheckResult, Witness};
-use crate::sdiff::planar::poly::{q, to_f64, Q};
+use crate::sdiff::common::rational::{q, to_f64, Q};
 use num_traits::{Signed, Zero};
 use serde_json::json;
 use std::collections::HashMap;

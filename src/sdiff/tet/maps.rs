@@ -6,9 +6,9 @@
 //! The independent interval route for tetrahedra is `tet::interval`.
 
 use super::poly::{decide_tet, jacobian_numerator, Poly3};
-use crate::sdiff::planar::claims::unit_open;
-use crate::sdiff::planar::poly::{multinomial, q, Q};
-use crate::sdiff::planar::positivity::{Budget, Decision};
+use crate::sdiff::common::positivity::{Budget, Decision};
+use crate::sdiff::common::rational::{multinomial, q, Q};
+use crate::sdiff::common::simplex_search::unit_open;
 use num_bigint::BigInt;
 use rand_chacha::ChaCha8Rng;
 

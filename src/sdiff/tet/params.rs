@@ -26,9 +26,9 @@
 use super::complex::TetComplex;
 use super::maps::{bernstein4, fixed_control4, multi_indices4};
 use super::poly::Poly3;
-use crate::sdiff::planar::maps::Poly1;
-use crate::sdiff::planar::params::{parse_spec, read_spec, FamilySpec, Multiset, ParamError, Spec};
-use crate::sdiff::planar::poly::{q, Q};
+use crate::sdiff::common::params::{parse_spec, read_spec, FamilySpec, Multiset, ParamError, Spec};
+use crate::sdiff::common::poly1::Poly1;
+use crate::sdiff::common::rational::{q, Q};
 use num_traits::Zero;
 use std::path::Path;
 

@@ -8,9 +8,9 @@
 //! det DX is independent of the embedding of the tetrahedron (DX = J·A·J⁻¹ in the plane), so
 //! the reference tetrahedron ⟨0, e_1, e_2, e_3⟩ with chart (s, t, r) = (w_1, w_2, w_3) suffices.
 
-use crate::sdiff::planar::maps::Poly1;
-use crate::sdiff::planar::poly::{multinomial, q, qr, to_f64, Q};
-use crate::sdiff::planar::positivity::{Budget, Cover, Decision, Strictness};
+use crate::sdiff::common::poly1::Poly1;
+use crate::sdiff::common::positivity::{Budget, Cover, Decision, Strictness};
+use crate::sdiff::common::rational::{multinomial, q, qr, to_f64, Q};
 use num_traits::{One, Signed, Zero};
 use std::collections::BTreeMap;
 
@@ -294,17 +294,17 @@ pub fn search_monotonic(
     samples: usize,
     seed: u64,
     budget: Budget,
-) -> crate::sdiff::planar::claims::Search {
+) -> crate::sdiff::common::simplex_search::Search {
     use rand::SeedableRng;
     let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
-    let mut s = crate::sdiff::planar::claims::Search::default();
+    let mut s = crate::sdiff::common::simplex_search::Search::default();
     for _ in 0..samples {
         let g: [Poly1; 4] = std::array::from_fn(|_| {
             Poly1(vec![
                 q(0),
-                crate::sdiff::planar::claims::unit_open(&mut rng) * q(10),
-                crate::sdiff::planar::claims::unit_open(&mut rng) * q(10),
-                crate::sdiff::planar::claims::unit_open(&mut rng) * q(10),
+                crate::sdiff::common::simplex_search::unit_open(&mut rng) * q(10),
+                crate::sdiff::common::simplex_search::unit_open(&mut rng) * q(10),
+                crate::sdiff::common::simplex_search::unit_open(&mut rng) * q(10),
             ])
         });
         s.record(monotonic_det(&g, budget), || {

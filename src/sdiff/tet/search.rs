@@ -10,9 +10,9 @@
 use super::checks::det_decision;
 use super::maps::{fixed_control4, random_adjusted4};
 use super::params::TetMap;
-use crate::sdiff::planar::claims::Search;
-use crate::sdiff::planar::poly::{q, qr, Q};
-use crate::sdiff::planar::positivity::Budget;
+use crate::sdiff::common::positivity::Budget;
+use crate::sdiff::common::rational::{q, qr, Q};
+use crate::sdiff::common::simplex_search::Search;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 

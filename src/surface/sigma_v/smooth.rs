@@ -1,7 +1,7 @@
 //! The tutorial's (σ, v)-indexed PPS (Part V, SPEC `SV-D12`, eval `SV-D13`) as a
 //! [`SmoothSurface`].
 
-use super::gluing::CornerId;
+use super::gluing::{Corner, CornerId};
 use super::surface::{SigmaVPps, SvConsts};
 use super::view::{SigmaVView, Version};
 use crate::construction::P2;
@@ -12,7 +12,19 @@ use crate::report::Progress;
 use crate::surface::geometry::{from_jet, SurfacePoint};
 use crate::surface::jet::Jet;
 use crate::surface::output::{Attributes, SampledMesh};
-use crate::surface::smooth::{GluingView, MpEval, SmoothError, SmoothSurface};
+use crate::surface::smooth::{ChartAt, GluingView, Located, MpConsts, SmoothError, SmoothSurface};
+
+/// eval's answer as the trait gives it: the point, the corner (σ, v) and q (SPEC `SV-D13`).
+fn located<S>((corner, q, point): (Corner, P2<S>, [S; 3])) -> Located<S> {
+    Located {
+        point,
+        chart: Some(ChartAt::Corner {
+            v: corner.v,
+            k: corner.k,
+            q: [q.x, q.y],
+        }),
+    }
+}
 
 impl SmoothSurface for SigmaVPps {
     fn name(&self) -> String {
@@ -33,12 +45,20 @@ impl SmoothSurface for SigmaVPps {
         Ok(SigmaVPps::eval_f64(self, f, bary)?)
     }
 
-    fn mp_eval(&self, bits: u32) -> Result<MpEval<'_>, SmoothError> {
-        let c: SvConsts<Mp> = self.consts(bits);
-        Ok(Box::new(move |f, bary| {
-            let bm = bary.map(|x| Mp::from_f64(x, bits));
-            Ok(self.eval(f, &bm, &c)?.2)
-        }))
+    fn eval_located(&self, f: FaceId, bary: [f64; 3]) -> Result<Located<f64>, SmoothError> {
+        Ok(located(self.eval(f, &bary, self.consts_f64())?))
+    }
+
+    fn mp_consts(&self, bits: u32) -> Result<MpConsts, SmoothError> {
+        Ok(MpConsts::new(bits, self.consts::<Mp>(bits)))
+    }
+
+    fn eval_mp(&self, c: &MpConsts, f: FaceId, bary: [f64; 3]) -> Result<Located<Mp>, SmoothError> {
+        let cm: &SvConsts<Mp> = c.get().ok_or(SmoothError::ForeignConsts {
+            surface: "the (σ, v)-indexed PPS",
+        })?;
+        let bm = bary.map(|x| Mp::from_f64(x, c.bits()));
+        Ok(located(self.eval(f, &bm, cm)?))
     }
 
     /// θ_(σ,c*) as an order-3 jet at q = f_(σ,c*)(p), in the corner eval chose (`SV-D13`).

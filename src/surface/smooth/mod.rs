@@ -10,6 +10,9 @@
 //!   ([`SmoothSurface::face_corners`], the sampling pattern's input), eval in f64 with its
 //!   error bound when the construction has an analysis ([`SmoothSurface::eval_bounded`]) and
 //!   in MPFR ([`SmoothSurface::mp_eval`]);
+//! * the oracle's `eval` and `ppm eval` answer with the chart eval chose
+//!   ([`SmoothSurface::eval_located`], [`SmoothSurface::eval_mp`] with constants built once
+//!   per precision by [`SmoothSurface::mp_consts`]);
 //! * one point of M with its jets — position, tangents, normal, curvatures
 //!   ([`SmoothSurface::eval_geometry`], Sec. 6.1.4 with the jets of θ);
 //! * the parametric pseudo-surface's gluing data seen through Def. 3.4.1
@@ -31,7 +34,10 @@
 //! returns instead of being an associated type — and the callers hold a `&dyn SmoothSurface`
 //! rather than matching on [`super::Construction`] at each use.
 
+mod located;
 mod vertex;
+
+pub(crate) use located::{ChartAt, Located, MpConsts};
 
 use super::eval_bound::BoundedPoint;
 use super::geometry::SurfacePoint;
@@ -56,6 +62,12 @@ pub enum SmoothError {
     /// The manifold spline (seed 003, SPEC `MS-…`): its sampling or evaluation error.
     #[error(transparent)]
     Spline(Box<dyn std::error::Error + Send + Sync>),
+    /// MPFR constants of another construction were handed to [`SmoothSurface::eval_mp`].
+    #[error("the MPFR constants given are not {surface}'s")]
+    ForeignConsts {
+        /// The construction.
+        surface: &'static str,
+    },
     /// The method has no meaning for this construction (see the trait's doc).
     #[error("{what} is not available for {surface}: {why}")]
     Unsupported {
@@ -101,9 +113,29 @@ pub trait SmoothSurface: Sync {
         Ok((self.eval_f64(f, bary)?, None))
     }
 
-    /// eval in MPFR at `bits` (the f64-fitted control points evaluated exactly enough, so
-    /// |f64 − MPFR| measures the f64 rounding): the constants are built here, once.
-    fn mp_eval(&self, bits: u32) -> Result<MpEval<'_>, SmoothError>;
+    /// [`Self::eval_f64`] with the chart eval chose and q in it (the same point).
+    fn eval_located(&self, f: FaceId, bary: [f64; 3]) -> Result<Located<f64>, SmoothError> {
+        Ok(Located {
+            point: self.eval_f64(f, bary)?,
+            chart: None,
+        })
+    }
+
+    /// The construction's constants in MPFR at `bits`, for [`Self::eval_mp`].
+    fn mp_consts(&self, bits: u32) -> Result<MpConsts, SmoothError>;
+
+    /// eval in MPFR with the constants `c` of [`Self::mp_consts`] (the f64-fitted control
+    /// points evaluated exactly enough, so |f64 − MPFR| measures the f64 rounding); the
+    /// barycentric coordinates are read exactly at `c`'s precision.
+    fn eval_mp(&self, c: &MpConsts, f: FaceId, bary: [f64; 3]) -> Result<Located<Mp>, SmoothError>;
+
+    /// eval in MPFR at `bits` as a closure holding the constants, built here, once.
+    fn mp_eval(&self, bits: u32) -> Result<MpEval<'_>, SmoothError> {
+        let c = self.mp_consts(bits)?;
+        Ok(Box::new(move |f, bary| {
+            Ok(self.eval_mp(&c, f, bary)?.point)
+        }))
+    }
 
     /// The point with its first and second derivatives in the chart eval chose, unit normal,
     /// Gaussian and mean curvature (from order-3 jets of the parametrization; the jet

@@ -1,7 +1,7 @@
 //! The report's vertex-indexed PPS (Defs. 5.4.1–5.4.2, eval of Sec. 6.1.4) as a
 //! [`SmoothSurface`].
 
-use super::{GluingView, MpEval, SmoothError, SmoothSurface};
+use super::{ChartAt, GluingView, Located, MpConsts, SmoothError, SmoothSurface};
 use crate::construction::abstract_view::AbstractPpm;
 use crate::construction::PpmGluing;
 use crate::gluing::data::Idx;
@@ -12,7 +12,21 @@ use crate::surface::eval_bound::BoundedPoint;
 use crate::surface::geometry::SurfacePoint;
 use crate::surface::jet::Jet;
 use crate::surface::output::{sample_surface_with, Attributes, SampledMesh};
-use crate::surface::{Consts, Pps};
+use crate::surface::{Consts, EvalPoint, Pps};
+
+const NAME: &str = "the vertex-indexed PPS";
+
+/// eval's answer as the trait gives it: the point, Ω_vertex's chart and q.
+fn located<S>(e: EvalPoint<S>) -> Located<S> {
+    Located {
+        point: e.point,
+        chart: Some(ChartAt::Vertex {
+            chart: e.chart,
+            vertex: e.vertex,
+            q: [e.q.x, e.q.y],
+        }),
+    }
+}
 
 impl SmoothSurface for Pps {
     fn name(&self) -> String {
@@ -43,12 +57,20 @@ impl SmoothSurface for Pps {
         Ok((b.point, Some(b)))
     }
 
-    fn mp_eval(&self, bits: u32) -> Result<MpEval<'_>, SmoothError> {
-        let c: Consts<Mp> = self.consts(bits);
-        Ok(Box::new(move |f, bary| {
-            let bm = bary.map(|x| Mp::from_f64(x, bits));
-            Ok(self.eval(f, &bm, &c)?.point)
-        }))
+    fn eval_located(&self, f: FaceId, bary: [f64; 3]) -> Result<Located<f64>, SmoothError> {
+        Ok(located(self.eval(f, &bary, self.consts_f64())?))
+    }
+
+    fn mp_consts(&self, bits: u32) -> Result<MpConsts, SmoothError> {
+        Ok(MpConsts::new(bits, self.consts::<Mp>(bits)))
+    }
+
+    fn eval_mp(&self, c: &MpConsts, f: FaceId, bary: [f64; 3]) -> Result<Located<Mp>, SmoothError> {
+        let cm: &Consts<Mp> = c
+            .get()
+            .ok_or(SmoothError::ForeignConsts { surface: NAME })?;
+        let bm = bary.map(|x| Mp::from_f64(x, c.bits()));
+        Ok(located(self.eval(f, &bm, cm)?))
     }
 
     fn eval_geometry(&self, f: FaceId, bary: [f64; 3]) -> Result<SurfacePoint, SmoothError> {
@@ -77,7 +99,7 @@ impl SmoothSurface for Pps {
                 .all(|f| self.face(f).is_ok_and(|c| c == k.face(f)));
         if !same {
             return Err(SmoothError::Unsupported {
-                surface: "the vertex-indexed PPS",
+                surface: NAME,
                 what: "the Def. 3.4.1 view",
                 why: "the mesh given is not the K the surface was built from",
             });

@@ -10,7 +10,8 @@
 //!   examined ([`Cover`]), so a counterexample anywhere wins; with a piece left open the answer
 //!   is *unresolved*, never a guess.
 
-use super::poly::{qr, to_f64, Poly2, Q};
+use super::poly2::Poly2;
+use super::rational::{qr, to_f64, Q};
 use num_traits::Signed;
 
 /// Strict (p > 0) or non-strict (p ≥ 0).
@@ -185,9 +186,9 @@ pub(crate) fn decide_on(p: &Poly2, tri: Tri, strict: Strictness, budget: Budget)
         let coeffs = p.compose_affine(&t).bernstein(n);
         // Corners of the piece: indices (n,0,0), (0,n,0), (0,0,n) hold p at t[0], t[1], t[2].
         let corners = [
-            (super::poly::index_of(n, [n, 0, 0]), 0usize),
-            (super::poly::index_of(n, [0, n, 0]), 1),
-            (super::poly::index_of(n, [0, 0, n]), 2),
+            (super::poly2::index_of(n, [n, 0, 0]), 0usize),
+            (super::poly2::index_of(n, [0, n, 0]), 1),
+            (super::poly2::index_of(n, [0, 0, n]), 2),
         ];
         for (idx, c) in corners {
             if bad(&coeffs[idx]) {

@@ -7,20 +7,9 @@
 //! Bernstein conversion over `BigRational`; the operations needed (sum, product, partial
 //! derivatives, composition with an affine map, Bernstein coefficients) are a few dozen lines.
 
+use super::rational::{multinomial, q, to_f64, Q};
 use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
-
-pub use crate::numeric::Q;
-
-/// `n` as a rational.
-pub fn q(n: i64) -> Q {
-    Q::from_integer(BigInt::from(n))
-}
-
-/// `p/d` as a rational (`d ≠ 0`).
-pub fn qr(p: i64, d: i64) -> Q {
-    Q::new(BigInt::from(p), BigInt::from(d))
-}
+use num_traits::{One, Zero};
 
 /// Σ c\[a\]\[b\] s^a t^b, dense, total degree ≤ `deg`.
 #[derive(Debug, Clone, PartialEq)]
@@ -289,19 +278,6 @@ pub fn index_of(n: usize, i: [usize; 3]) -> usize {
     j * (n + 1) - j * j.saturating_sub(1) / 2 + i[2]
 }
 
-/// The multinomial coefficient n! / (k_0! k_1! …), Σ k = n.
-pub(crate) fn multinomial(n: usize, ks: &[usize]) -> BigInt {
-    let mut r = factorial(n);
-    for &k in ks {
-        r /= factorial(k);
-    }
-    r
-}
-
-fn factorial(n: usize) -> BigInt {
-    (1..=n).fold(BigInt::one(), |acc, k| acc * BigInt::from(k))
-}
-
 /// The Bernstein polynomial B_I(w) = multinom(n; I) w_0^I0 w_1^I1 w_2^I2 as a [`Poly2`].
 pub fn bernstein_basis(i: [usize; 3]) -> Poly2 {
     let n = i[0] + i[1] + i[2];
@@ -310,19 +286,4 @@ pub fn bernstein_basis(i: [usize; 3]) -> Poly2 {
         .mul(&Poly2::s().pow(i[1]))
         .mul(&Poly2::t().pow(i[2]))
         .scale(&Q::from_integer(multinomial(n, &i)))
-}
-
-/// Nearest f64 of a rational (huge or tiny values saturate to ±∞ / 0 as f64 does).
-pub fn to_f64(x: &Q) -> f64 {
-    use num_traits::ToPrimitive;
-    x.to_f64().unwrap_or(if x.is_negative() {
-        f64::NEG_INFINITY
-    } else {
-        f64::INFINITY
-    })
-}
-
-/// The exact rational value of a finite f64 (`None` for NaN/∞).
-pub fn from_f64(x: f64) -> Option<Q> {
-    Q::from_float(x)
 }
