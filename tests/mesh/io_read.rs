@@ -297,3 +297,25 @@ fn obj_polygon_before_its_vertices_is_triangulated_at_the_end() {
     assert_eq!(m.face_origin, vec![1, 1, 6]);
     assert_eq!(m.triangulated_polygons, 1);
 }
+
+#[test]
+fn ply_ascii_blank_lines_in_the_body_are_skipped() {
+    let header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    let tight = format!("{header}0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    let loose = format!("{header}\n0 0 0\n   \n1 0 0\n\n0 1 0\n\n3 0 1 2\n\n");
+    let read = |s: &str| {
+        read_mesh_from_bytes(
+            s.as_bytes(),
+            MeshFormat::PlyAscii,
+            "t.ply",
+            &ReadOptions::default(),
+        )
+        .unwrap_or_else(|e| panic!("{e}"))
+    };
+    let (a, b) = (read(&tight), read(&loose));
+    assert_eq!(a.positions, b.positions);
+    assert_eq!(a.faces, b.faces);
+    assert_eq!(b.faces, vec![[0, 1, 2]]);
+    // The face's origin is the line it is on, blank lines counted.
+    assert_eq!(b.face_origin, vec![17]);
+}

@@ -609,7 +609,6 @@ impl Value {
     fn as_f64(self) -> f64 {
         match self {
             Value::Int(i) => i as f64,
-            Value::Float(f) if f.is_nan() => f64::NAN,
             Value::Float(f) => f,
         }
     }

@@ -216,3 +216,57 @@ fn check_fan(idx: &[u32], positions: &[[f64; 3]], pts: &mut Vec<[f64; 3]>) -> Re
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::check_fan;
+
+    fn fan_ok(pos: &[[f64; 3]]) -> Result<(), String> {
+        check_fan(&[0, 1, 2, 3], pos, &mut Vec::new())
+    }
+
+    /// The square [0, s]² with corner 2 lifted by `lift · s`.
+    fn lifted(s: f64, lift: f64) -> Vec<[f64; 3]> {
+        vec![
+            [0.0, 0.0, 0.0],
+            [s, 0.0, 0.0],
+            [s, s, lift * s],
+            [0.0, s, 0.0],
+        ]
+    }
+
+    /// (0, 0), (1/2 + t, 1/2 − t), (1, 1), (0, 1), scaled by s: corner 1 turns by about 4t
+    /// radians, at every scale.
+    fn bent(s: f64, t: f64) -> Vec<[f64; 3]> {
+        vec![
+            [0.0, 0.0, 0.0],
+            [s * (0.5 + t), s * (0.5 - t), 0.0],
+            [s, s, 0.0],
+            [0.0, s, 0.0],
+        ]
+    }
+
+    #[test]
+    fn planarity_is_relative_to_the_polygon_s_size() {
+        for s in [1e-3, 1.0, 1e3] {
+            assert!(
+                fan_ok(&lifted(s, 0.5e-4)).is_ok(),
+                "scale {s}: within the tolerance"
+            );
+            let e = fan_ok(&lifted(s, 1e-3)).expect_err("off the plane");
+            assert!(e.contains("not planar"), "scale {s}: {e}");
+        }
+    }
+
+    #[test]
+    fn nearly_straight_corners_are_judged_by_their_angle_at_every_scale() {
+        for s in [1e-3, 1.0, 1e3] {
+            let e = fan_ok(&bent(s, 2.5e-11)).expect_err("a turn of 1e-10 rad");
+            assert!(e.contains("not convex"), "scale {s}: {e}");
+            assert!(
+                fan_ok(&bent(s, 1e-6)).is_ok(),
+                "scale {s}: a turn of 4e-6 rad"
+            );
+        }
+    }
+}
