@@ -2,10 +2,11 @@
 //! one after another in the graph of the vertices of S_T and the points inside its edges,
 //! each closing its points and segments to the later ones. SPEC `AF-embedding`.
 //!
-//! **Rip-up (a choice; the slides' remedy is the AC·CB rule).** Greedy tracing can wall an
-//! edge off: curves traced before it close every path between its end points in the region
-//! it is allowed. Then the edge is traced once more with the earlier curves made passable at
-//! a price (each point of another curve on the path, and each step meeting another curve's
+//! **Rip-up (a choice; the slides' AC·CB rule, [`super::unblock`], is for an edge with no
+//! path even so).** Greedy tracing can wall an edge off: curves traced before it close
+//! every path between its end points in the region it is allowed. Then the edge is traced
+//! once more with the earlier curves made passable at a price (each point of another curve
+//! on the path, and each step meeting another curve's
 //! segment, costs [`PENALTY`] diagonals of S_T, times one plus the number of times that curve
 //! was taken up already); the curves it passes are taken up, the edge is kept, and they are
 //! traced again right after it (in the order of the base edges). A curve is taken up at most
