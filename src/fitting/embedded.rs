@@ -6,9 +6,10 @@
 //!
 //! A failure names the base faces where it happened; the pipeline reports it (SPEC
 //! `AF-embedding`) and fits with the simplification's parameters, never passing it on as
-//! Floater's. A base edge with no curve is flipped and the base mesh embedded again
-//! ([`super::fit_surface`], SPEC `AF-embedding`); refining by face splits at the failing faces
-//! and embedding again was tried: on the corpus it did not converge in 60 rounds.
+//! Floater's. Where base edges have no curve, the base mesh is changed at each by the AC·CB
+//! rule ([`super::unblock`], SPEC `AF-embedding`) and embedded again ([`super::fit_surface`]);
+//! refining by face splits at the failing faces and embedding again was tried: on the corpus it
+//! did not converge in 60 rounds.
 
 use super::base::{BaseMesh, Param};
 use super::floater::{self, RegionMap};

@@ -534,8 +534,8 @@ fn describe(a: u32, b: u32, ch: unblock::Change) -> String {
     }
 }
 
-/// Refine the base mesh at base face slots `faces` (a refused base mesh's crossing faces, or
-/// where the embedding failed): insert the vertex of S_T furthest from its flat base triangle
+/// Refine the base mesh at base face slots `faces` (a refused base mesh's crossing faces):
+/// insert the vertex of S_T furthest from its flat base triangle
 /// among the face's own (else those of the faces around its corners); with none, flip the
 /// face's longest flippable edge.
 fn repair(base: &mut BaseMesh, faces: &[u32], pos: &[[f64; 3]]) -> refine::RefineStats {

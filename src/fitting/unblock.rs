@@ -50,8 +50,8 @@ pub enum Change {
         /// The removed base vertex.
         c: u32,
     },
-    /// The edge a–b was split at vertex `c` of S_T (the AC·CB rule); `flipped` says whether
-    /// the old edge went (an edge split) or only its face was split.
+    /// The edge a–b was split at vertex `c` of S_T (the AC·CB rule); `edge_split` says
+    /// whether the old edge went (an edge split) or only its face was split.
     Split {
         /// The new base vertex.
         c: u32,

