@@ -6,9 +6,10 @@
 //!
 //! A failure names the base faces where it happened; the pipeline reports it (SPEC
 //! `AF-embedding`) and fits with the simplification's parameters, never passing it on as
-//! Floater's. A base edge with no curve is flipped and the base mesh embedded again
-//! ([`super::fit_surface`], SPEC `AF-embedding`); refining by face splits at the failing faces
-//! and embedding again was tried: on the corpus it did not converge in 60 rounds.
+//! Floater's. Where base edges have no curve, the base mesh is changed at each by the AC·CB
+//! rule ([`super::unblock`], SPEC `AF-embedding`) and embedded again ([`super::fit_surface`]);
+//! refining by face splits at the failing faces and embedding again was tried: on the corpus it
+//! did not converge in 60 rounds.
 
 use super::base::{BaseMesh, Param};
 use super::floater::{self, RegionMap};
@@ -32,7 +33,7 @@ pub struct Embedded {
 }
 
 /// Why the embedding failed, and where.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub struct Failure {
     /// What went wrong.
     pub what: String,
@@ -40,19 +41,26 @@ pub struct Failure {
     pub faces: Vec<u32>,
     /// The base edge that has no curve, when that is the failure.
     pub edge: Option<(u32, u32)>,
+    /// Every base edge with no curve (the first is `edge`).
+    pub blocked: Vec<(u32, u32)>,
+    /// Why the base-mesh changes at that edge stopped (`unblock`), when they did.
+    pub gave_up: Option<super::unblock::GiveUp>,
 }
 
 /// Embed, cut, map (module doc).
 pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure> {
     let mut emb = route::initial_curves(k, base).map_err(|e| {
-        let EmbedError::NoPath { a, b } = e;
+        let EmbedError::NoPath { a, b, blocked } = &e;
+        let (a, b) = (*a, *b);
         Failure {
+            blocked: blocked.clone(),
             what: e.to_string(),
             faces: [(a, b), (b, a)]
                 .iter()
                 .filter_map(|&(u, w)| base.face_of_edge(u, w))
                 .collect(),
             edge: Some((a, b)),
+            gave_up: None,
         }
     })?;
     shorten::shorten(k, base, &mut emb);
@@ -67,6 +75,8 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
                         .filter_map(|&(u, w)| base.face_of_edge(u, w))
                         .collect(),
                     edge: None,
+                    gave_up: None,
+                    blocked: Vec::new(),
                 };
             }
             overlay::OverlayError::Crossing(f) | overlay::OverlayError::Degenerate(f) => f,
@@ -83,6 +93,8 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
             what: e.to_string(),
             faces,
             edge: None,
+            gave_up: None,
+            blocked: Vec::new(),
         }
     })?;
     let bad: Vec<u32> = overlay::disk_defects(&ov, base, &emb)
@@ -95,6 +107,8 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
             what: format!("{} curved triangles are not disks", bad.len()),
             faces: bad,
             edge: None,
+            gave_up: None,
+            blocked: Vec::new(),
         });
     }
     let maps = floater::map_regions(&ov, base, &emb).map_err(|e| {
@@ -103,6 +117,8 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
             what: e.to_string(),
             faces: vec![*face],
             edge: None,
+            gave_up: None,
+            blocked: Vec::new(),
         }
     })?;
     let params = floater::params(&maps, base, &emb, base.positions().len());

@@ -231,6 +231,9 @@ pub enum EmbedError {
         a: u32,
         /// Base vertex.
         b: u32,
+        /// Every base edge with no path when the others are traced (a–b first; the walk of
+        /// `unblock` changes the base mesh at each before embedding again).
+        blocked: Vec<(u32, u32)>,
     },
 }
 

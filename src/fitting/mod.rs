@@ -32,6 +32,7 @@ pub mod route;
 pub mod shorten;
 pub mod simplify;
 pub mod straighten;
+pub mod unblock;
 
 use base::{BaseMesh, RemovalLimits};
 use fitted::{BaseSurface, BaseSurfaceError, Fitted, SurfaceParam};
@@ -153,6 +154,8 @@ pub struct Fit {
     pub repairs: usize,
     /// The rounds.
     pub rounds: Vec<Round>,
+    /// The base-mesh changes where a base edge had no curve (the AC·CB rule, `unblock`).
+    pub unblock: unblock::Walk,
 }
 
 /// A bound on |fl(eval) − eval| for the fitted PPS: the operation count of
@@ -186,10 +189,6 @@ fn percentile(v: &[f64], q: f64) -> f64 {
 
 /// Repair rounds at most for a base mesh the validator refuses.
 const MAX_REPAIRS: usize = 60;
-
-/// Changes of the base mesh at most per fit where a base edge had no curve (SPEC
-/// `AF-embedding`).
-const MAX_EMBED_REPAIRS: usize = 32;
 
 /// The base faces as sorted vertex triples (which base meshes were embedded already).
 fn face_key(base: &BaseMesh) -> Vec<[u32; 3]> {
@@ -259,7 +258,7 @@ fn fit_once(
     let mut rounds: Vec<Round> = Vec::new();
     let mut repairs = 0;
     let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
-    let mut embed_repairs = 0;
+    let mut walk = unblock::Walk::default();
     loop {
         let tr = std::time::Instant::now();
         let surface = match BaseSurface::new(&base) {
@@ -295,50 +294,64 @@ fn fit_once(
         // (`AF-embedding`, and the checks of the embedding that exists), never passed on.
         // A base mesh whose embedding failed is not embedded again (the failure is kept).
         let key = face_key(&base);
-        let emb = match failed_at.iter().find(|(x, _)| *x == key) {
+        let mut emb = match failed_at.iter().find(|(x, _)| *x == key) {
             Some((_, f)) => {
                 progress("embed: failed at this base mesh before, not tried again");
                 Err(f.clone())
             }
             None => embedded::embed(k, &base),
         };
-        if let Err(f) = &emb {
+        if let Some(f) = emb.as_ref().err().cloned() {
             let new = !failed_at.iter().any(|(x, _)| *x == key);
             if new {
                 failed_at.push((key.clone(), f.clone()));
             }
             // A base edge with no curve: the base mesh is changed there by a stellar operation
-            // (seed 002 Part II, "refine S̃_T locally by stellar operators") and embedded
-            // again. Such an edge is one the base mesh's combinatorics put across the curves
-            // of its neighbours (the simplification's parametrization folds S_T there). First
-            // the edge is flipped (its faces' other diagonal may have room); when the flip is
-            // refused or gives a base mesh that failed before (neither diagonal of the quad
-            // can be traced), the vertex of S_T furthest from its flat base triangle among
-            // the two faces' is inserted (`repair`, a face split). The base meshes tried are
-            // remembered, so none is embedded twice; at most MAX_EMBED_REPAIRS per fit.
-            if let (true, Some((a, b))) = (new && embed_repairs < MAX_EMBED_REPAIRS, f.edge) {
-                let before = base.clone();
-                let flipped = base.flip(a, b).is_ok() && {
-                    let flipped_key = face_key(&base);
-                    !failed_at.iter().any(|(x, _)| *x == flipped_key)
-                };
-                let how = if flipped {
-                    format!("base edge {a}-{b} flipped")
+            // (seed 002 Part II: the AC·CB rule, read as the edge split of AB at a vertex C of
+            // S_T; a flip first, once per pair), and embedded again (`unblock`: the walk never
+            // repeats a base mesh and is bounded). When it gives up, the failure names the edge.
+            if let (true, Some(first)) = (new, f.edge) {
+                let blocked = if f.blocked.is_empty() {
+                    vec![first]
                 } else {
-                    base = before;
-                    let st = repair(&mut base, &f.faces, &pos);
-                    format!(
-                        "{} vertices inserted, {} edges flipped at base edge {a}-{b}",
-                        st.inserted, st.flips
-                    )
+                    f.blocked.clone()
                 };
-                if face_key(&base) != key {
-                    embed_repairs += 1;
+                let (before, walk_before) = (base.clone(), walk.clone());
+                let (mut done, mut gave_up) =
+                    unblock_all(&mut base, &mut walk, &blocked, &sopts.limits, &failed_at);
+                // All the blocked edges are changed before embedding again (each embedding
+                // costs the whole of S_T); when the validator refuses the result, only the
+                // first blocked edge is changed, as one at a time did before.
+                if done.len() > 1 && BaseSurface::new(&base).is_err() {
+                    base = before;
+                    walk = walk_before;
+                    (done, gave_up) = unblock_all(
+                        &mut base,
+                        &mut walk,
+                        &blocked[..1],
+                        &sopts.limits,
+                        &failed_at,
+                    );
+                }
+                if !done.is_empty() {
                     progress(&format!(
-                        "embed: failed ({}); {how}, embedding again",
-                        f.what
+                        "embed: failed ({}; {} base edges without a curve); {}; embedding again",
+                        f.what,
+                        f.blocked.len().max(1),
+                        done.join("; ")
                     ));
                     continue;
+                }
+                if let Some(g) = gave_up {
+                    let f = embedded::Failure {
+                        what: format!("{}; {g}", f.what),
+                        gave_up: Some(g),
+                        ..f
+                    };
+                    if let Some(last) = failed_at.last_mut() {
+                        last.1 = f.clone();
+                    }
+                    emb = Err(f);
                 }
             }
         }
@@ -442,6 +455,7 @@ fn fit_once(
                 hierarchy,
                 repairs,
                 rounds,
+                unblock: walk,
             });
         }
         if rounds.len() + 1 >= opts.max_rounds {
@@ -474,8 +488,54 @@ fn fit_once(
     }
 }
 
-/// Refine the base mesh at base face slots `faces` (a refused base mesh's crossing faces, or
-/// where the embedding failed): insert the vertex of S_T furthest from its flat base triangle
+/// The walk's change at every blocked edge still in the base mesh: what was done, and the first
+/// reason it gave up at one.
+fn unblock_all(
+    base: &mut BaseMesh,
+    walk: &mut unblock::Walk,
+    blocked: &[(u32, u32)],
+    lim: &RemovalLimits,
+    failed_at: &[(Vec<[u32; 3]>, embedded::Failure)],
+) -> (Vec<String>, Option<unblock::GiveUp>) {
+    let mut done = Vec::new();
+    let mut gave_up = None;
+    for &(a, b) in blocked {
+        // An earlier change of this round may have taken the edge away already.
+        if base.face_of_edge(a, b).is_none() {
+            continue;
+        }
+        let changed = walk.change(base, a, b, lim, |m| {
+            let k = face_key(m);
+            failed_at.iter().any(|(x, _)| *x == k)
+        });
+        match changed {
+            Ok(ch) => done.push(describe(a, b, ch)),
+            Err(g) => {
+                gave_up.get_or_insert(g);
+            }
+        }
+    }
+    (done, gave_up)
+}
+
+/// One line of the progress report for a base-mesh change at edge a–b.
+fn describe(a: u32, b: u32, ch: unblock::Change) -> String {
+    match ch {
+        unblock::Change::Flipped => format!("base edge {a}-{b} flipped"),
+        unblock::Change::Removed { c } => format!(
+            "base vertex {c} opposite edge {a}-{b} removed (AC·CB rule, no vertex of S_T left to split at)"
+        ),
+        unblock::Change::Split { c, edge_split: true } => {
+            format!("base edge {a}-{b} split at vertex {c} of S_T (AC·CB rule)")
+        }
+        unblock::Change::Split { c, edge_split: false } => format!(
+            "a base face at edge {a}-{b} split at vertex {c} of S_T (AC·CB rule; the edge's flip refused)"
+        ),
+    }
+}
+
+/// Refine the base mesh at base face slots `faces` (a refused base mesh's crossing faces):
+/// insert the vertex of S_T furthest from its flat base triangle
 /// among the face's own (else those of the faces around its corners); with none, flip the
 /// face's longest flippable edge.
 fn repair(base: &mut BaseMesh, faces: &[u32], pos: &[[f64; 3]]) -> refine::RefineStats {

@@ -2,10 +2,11 @@
 //! one after another in the graph of the vertices of S_T and the points inside its edges,
 //! each closing its points and segments to the later ones. SPEC `AF-embedding`.
 //!
-//! **Rip-up (a choice; the slides' remedy is the AC·CB rule).** Greedy tracing can wall an
-//! edge off: curves traced before it close every path between its end points in the region
-//! it is allowed. Then the edge is traced once more with the earlier curves made passable at
-//! a price (each point of another curve on the path, and each step meeting another curve's
+//! **Rip-up (a choice; the slides' AC·CB rule, [`super::unblock`], is for an edge with no
+//! path even so).** Greedy tracing can wall an edge off: curves traced before it close
+//! every path between its end points in the region it is allowed. Then the edge is traced
+//! once more with the earlier curves made passable at a price (each point of another curve
+//! on the path, and each step meeting another curve's
 //! segment, costs [`PENALTY`] diagonals of S_T, times one plus the number of times that curve
 //! was taken up already); the curves it passes are taken up, the edge is kept, and they are
 //! traced again right after it (in the order of the base edges). A curve is taken up at most
@@ -284,8 +285,9 @@ fn trace_all(
     g: &Graph,
     edges: &[(u32, u32)],
     first: &[usize],
+    collect: bool,
     stats: &mut EmbedStats,
-) -> Result<Traced, usize> {
+) -> Result<Traced, Vec<usize>> {
     let diag = diagonal(base.positions());
     let mut t = Traced {
         used: FxHashMap::default(),
@@ -306,6 +308,7 @@ fn trace_all(
             t.fixed[e] = true;
         }
     }
+    let mut blocked = Vec::new();
     let mut budget = edges.len();
     let mut queue: VecDeque<usize> = first.iter().copied().filter(|&e| !t.fixed[e]).collect();
     queue.extend((0..edges.len()).filter(|e| !t.fixed[*e] && !first.contains(e)));
@@ -337,7 +340,15 @@ fn trace_all(
                 }
             }
         }
-        let (tier, path) = found.ok_or(e)?;
+        // With `collect`, an edge with no path is skipped and the others traced, so that
+        // one tracing names every blocked edge.
+        let Some((tier, path)) = found else {
+            if collect {
+                blocked.push(e);
+                continue;
+            }
+            return Err(vec![e]);
+        };
         let blockers = ed.blockers(&t, &path);
         for &c in blockers.iter().rev() {
             t.take_up(g, k, c);
@@ -347,7 +358,11 @@ fn trace_all(
         stats.ripped += blockers.len();
         t.commit(g, k, e, tier, path);
     }
-    Ok(t)
+    if blocked.is_empty() {
+        Ok(t)
+    } else {
+        Err(blocked)
+    }
 }
 
 /// Step 1 (module doc): the initial curves. The base edges are traced in the order of
@@ -360,15 +375,26 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
     let mut first: Vec<usize> = Vec::new();
     let t = loop {
         let mut s = EmbedStats::default();
-        match trace_all(k, base, &g, &edges, &first, &mut s) {
+        match trace_all(k, base, &g, &edges, &first, false, &mut s) {
             Ok(t) => {
                 stats.ripped = s.ripped;
                 break t;
             }
-            Err(e) => {
+            Err(es) => {
+                let e = es[0];
                 if stats.restarts >= RESTARTS || first.first() == Some(&e) {
+                    // The same tracing once more, past the blocked edges, to name them all.
+                    let mut all = trace_all(k, base, &g, &edges, &first, true, &mut s)
+                        .err()
+                        .unwrap_or_default();
+                    all.retain(|&x| x != e);
+                    all.insert(0, e);
                     let (a, b) = edges[e];
-                    return Err(EmbedError::NoPath { a, b });
+                    return Err(EmbedError::NoPath {
+                        a,
+                        b,
+                        blocked: all.into_iter().map(|x| edges[x]).collect(),
+                    });
                 }
                 stats.restarts += 1;
                 first.retain(|&x| x != e);
@@ -380,7 +406,11 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
     let mut index = HashMap::new();
     for (e, p) in t.paths.into_iter().enumerate() {
         let (a, b) = edges[e];
-        let (tier, path) = p.ok_or(EmbedError::NoPath { a, b })?;
+        let (tier, path) = p.ok_or(EmbedError::NoPath {
+            a,
+            b,
+            blocked: vec![(a, b)],
+        })?;
         match tier {
             0..=2 => stats.in_region += 1,
             3 => stats.widened += 1,
