@@ -5,6 +5,13 @@
 //! of the errors: the former bound, running `Fe` through the whole round trip, was 1.50e−11 at
 //! M = 8 and 1.77e−9 at M = 32; the worst seeded point used 1.3e−4 of it).
 //!
+//! Where the former bound was lost (measured): its return trip started from the pass-1 errors
+//! hulled over all boxes and labels (box by box the same chain gave ≤ 3.4e−13 at M = 8, 45×
+//! less), and each operation adds the enclosed errors' magnitudes, so atan2's propagation
+//! (|e_x| + |e_y|)/r_min, multiplied by r_max·m/6 back in Π⁻¹, blows up on wide angular boxes
+//! near the chart origin at high degree (9.8e−12 on one box of (32, 3)). The stage-wise bound
+//! below is 8.69e−14 at M = 8 (worst (3, 3)) and 3.05e−13 at (32, 32).
+//!
 //! ## The argument
 //! The round trip is a chain of ten stages Φ_1..Φ_10, each a map R² → R² whose `f64` code
 //! ends in a point of two `f64` numbers (`Ppm::g_uw_inv` then `Ppm::g_uw_formula` of the
@@ -27,7 +34,7 @@
 //! the whole set is in x > 0 or in y > 0 or in y < 0.
 //!
 //! Labels: the rotation stages' δ are bounded once per configuration for every label on the
-//! disk of radius [`ROT_RAD`] (checked per box); R_(w,u) followed by R_(w,u)⁻¹ is exactly the
+//! square [−R, R]², R = [`ROT_RAD`] (every state they receive is checked to lie in it); R_(w,u) followed by R_(w,u)⁻¹ is exactly the
 //! identity, so the sets of stages 6..9 are those of the canonical labels widened by δ_5 + δ_6.
 //! The decision: f64 computes |x̂_10 − p|² with each coordinate at most the bound, then
 //! compares it with tol² (`Fe::le` decides only where f64 and exact agree; the exact value is
