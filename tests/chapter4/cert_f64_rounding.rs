@@ -324,3 +324,27 @@ fn cert_f64_rounding_oracle_prints_the_certificate_bound_with_phi() {
     }
     assert!(answered >= 3, "{answered}");
 }
+
+#[test]
+fn cert_f64_rounding_committed_m8_certificate_has_the_roundtrip_exact() {
+    // The committed M = 8 certificate (SPEC `CERT-f64-rounding`): every edge configuration's
+    // round trip certified exact by the stage-wise bound, with g_v and g_v⁻¹ bounded.
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let cert =
+        pseudomanifold::certify::read_certificate(&root.join("certificates/certificate_M8.json"))
+            .expect("certificates/certificate_M8.json");
+    let fr: Vec<_> = cert
+        .results
+        .iter()
+        .filter_map(|r| r.f64_rounding.as_ref())
+        .collect();
+    assert_eq!(fr.len(), 36);
+    for f in fr {
+        assert!(f.roundtrip_exact, "{f:?}");
+        assert_eq!(f.roundtrip_verdict, Some(RoundTripVerdict::Exact), "{f:?}");
+        assert_eq!(f.roundtrip_unresolved, Some(0), "{f:?}");
+        let rt = f.roundtrip.expect("bounded");
+        assert!(rt < f.roundtrip_tol, "{f:?}");
+        assert!(f.g_v.is_some_and(|g| g < 1e-14) && f.g_v_inv.is_some_and(|g| g < 1e-14));
+    }
+}
