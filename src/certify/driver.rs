@@ -319,9 +319,15 @@ fn f64_rounding_section(cert: &Certificate) -> String {
             .map(|x| format!("{x:.2e}"))
             .unwrap_or_else(|| "—".into())
     };
+    // Counts absent from older certificates are shown as "—".
+    let sum_opt = |f: &dyn Fn(&F64Rounding) -> Option<u64>| {
+        let v: Option<Vec<u64>> = fr.iter().map(|x| f(x)).collect();
+        v.map(|v| v.iter().sum::<u64>().to_string())
+            .unwrap_or_else(|| "—".into())
+    };
     let unbounded = fr.iter().filter(|f| f.phi.is_none()).count();
     format!(
-        "\n## f64 rounding (CERT-f64-rounding)\n\n{} edge configurations; max over them: φ_wu {} (Euclidean), |p|² − r_u² {}, |q|² − r_w² {}, round-trip point {} (the literal test's tolerance ≥ {:.2e}); round trip certified exact on every winding-0 box: {}; configurations without a bound: {unbounded}; unresolved boxes: {} (max δ {}); boxes: {}; time {:.1} s (sum). The libm {}\n",
+        "\n## f64 rounding (CERT-f64-rounding)\n\n{} edge configurations; max over them: φ_wu {} (Euclidean), |p|² − r_u² {}, |q|² − r_w² {}, round-trip point {} (the literal test's tolerance ≥ {:.2e}); round trip certified exact on every box: {} (round-trip boxes {}, unresolved {}); g_v alone {}, g_v⁻¹ alone {}; configurations without a bound: {unbounded}; unresolved boxes: {} (max δ {}); boxes: {}; time {:.1} s (sum). The libm {}\n",
         fr.len(),
         mx(&|f| f.phi),
         mx(&|f| Some(f.outer)),
@@ -331,6 +337,10 @@ fn f64_rounding_section(cert: &Certificate) -> String {
             .map(|f| f.roundtrip_tol)
             .fold(f64::INFINITY, f64::min),
         fr.iter().all(|f| f.roundtrip_exact),
+        sum_opt(&|f| f.roundtrip_boxes),
+        sum_opt(&|f| f.roundtrip_unresolved),
+        mx(&|f| f.g_v),
+        mx(&|f| f.g_v_inv),
         fr.iter().map(|f| f.unresolved).sum::<u64>(),
         mx(&|f| f.delta),
         fr.iter().map(|f| f.boxes).sum::<u64>(),

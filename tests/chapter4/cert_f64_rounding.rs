@@ -2,7 +2,9 @@
 //! 256-bit evaluations of the same generic maps at seeded points, and planted faults (a too
 //! small libm claim, a mutated f64 map) that the check must catch.
 
-use pseudomanifold::certify::{prove_f64_rounding, prove_f64_rounding_with, Settings};
+use pseudomanifold::certify::{
+    prove_f64_rounding, prove_f64_rounding_with, RoundTripVerdict, Settings,
+};
 use pseudomanifold::construction::maps::{self, omega_radius, EdgeConfig, Ppm, P2};
 use pseudomanifold::construction::Paper;
 use pseudomanifold::numeric::rounding::{Fe, LibmModel};
@@ -64,7 +66,8 @@ fn points(m_u: u32, m_w: u32, n: usize, seed: u64) -> Vec<(EdgeConfig, [f64; 2])
 #[test]
 fn cert_f64_rounding_bounds_hold_against_mp256_at_seeded_points() {
     let s = Settings::default();
-    let (mut ratio, mut rt_ratio): (f64, f64) = (0.0, 0.0);
+    let (mut ratio, mut rt_ratio, mut g_ratio): (f64, f64, f64) = (0.0, 0.0, 0.0);
+    let mut worst_rt: f64 = 0.0;
     let mut checked = 0u64;
     for (m_u, m_w) in CONFIGS {
         let b = prove_f64_rounding(m_u, m_w, &s);
@@ -78,10 +81,16 @@ fn cert_f64_rounding_bounds_hold_against_mp256_at_seeded_points() {
             phi < 1e-12 && inner < 1e-12 && b.outer < 1e-14,
             "({m_u},{m_w}): {b:?}"
         );
-        // Measured, not claimed: the round-trip bound is above the literal test's tolerance
-        // (the enclosures lose the correlation of the errors), so the round-trip decision is
-        // not certified exact (`roundtrip_exact`); the bound itself is checked below.
-        assert!(rt < 1e-10, "({m_u},{m_w}): {b:?}");
+        // The stage-wise bound (module `certify::f64_roundtrip`) is below the literal test's
+        // tolerance: the round-trip decision is certified exact; the bound is checked below.
+        assert!(rt < b.roundtrip_tol, "({m_u},{m_w}): {b:?}");
+        assert!(b.roundtrip_exact, "({m_u},{m_w}): {b:?}");
+        assert_eq!(b.roundtrip_verdict, Some(RoundTripVerdict::Exact));
+        assert_eq!(b.roundtrip_unresolved, Some(0));
+        let (gv, gvi) = (
+            b.g_v.expect("g_v bounded"),
+            b.g_v_inv.expect("g_v⁻¹ bounded"),
+        );
         for (e, p) in points(m_u, m_w, 300, 11 * m_u as u64 + m_w as u64) {
             let (pf, pm) = (P2::new(p[0], p[1]), P2::<Mp>::from_f64(p[0], p[1], 256));
             // φ_wu (Def. 4.1.10; the membership of p is decided above).
@@ -106,12 +115,31 @@ fn cert_f64_rounding_bounds_hold_against_mp256_at_seeded_points() {
             let bm = Paper.g_uw_formula(&er, &gm).expect("mp round trip");
             assert!(dist(&bf, &bm) <= rt, "({m_u},{m_w}) p = {p:?}");
             rt_ratio = rt_ratio.max(dist(&bf, &bm) / rt);
+            worst_rt = worst_rt.max(dist(&bf, &bm));
+            // g_v and g_v⁻¹ alone at the f64 points φ_wu feeds them: a = R_(u,w)(p) and
+            // c = h(g_u(a)) (exact inputs for both evaluators).
+            let a = Paper.r_uw(&e, &pf);
+            let (am, ga) = (a.convert::<Mp>(256), maps::g_v(m_u, &a).expect("g_u"));
+            let d = dist(&ga, &maps::g_v(m_u, &am).expect("mp g_u"));
+            assert!(d <= gv, "({m_u},{m_w}) p = {p:?}: g_v {d:e} > {gv:e}");
+            let cc = maps::h(&ga);
+            let gi = maps::g_v_inv(m_w, &cc).expect("g_w⁻¹");
+            let d = dist(
+                &gi,
+                &maps::g_v_inv(m_w, &cc.convert::<Mp>(256)).expect("mp"),
+            );
+            assert!(d <= gvi, "({m_u},{m_w}) p = {p:?}: g_v⁻¹ {d:e} > {gvi:e}");
+            g_ratio = g_ratio.max(d / gvi);
             checked += 1;
         }
     }
     // Not vacuous: the worst point uses a visible part of the bound.
     assert!(ratio > 1e-3, "max |f64 − mp| / bound = {ratio:e}");
-    eprintln!("CERT-f64-rounding: {checked} points, max |f64 − mp| / bound (φ) = {ratio:.3e}, round trip {rt_ratio:.3e}");
+    assert!(
+        rt_ratio > 1e-3,
+        "round trip: max |f64 − mp| / bound = {rt_ratio:e}"
+    );
+    eprintln!("CERT-f64-rounding: {checked} points, max |f64 − mp| / bound (φ) = {ratio:.3e}, round trip {rt_ratio:.3e} (worst {worst_rt:.3e}), g_v⁻¹ {g_ratio:.3e}");
     crate::common::verdicts::record(
         "CERT-f64-rounding",
         crate::common::verdicts::Seen::Certified,
@@ -141,6 +169,61 @@ fn cert_f64_rounding_planted_mutated_map_exceeds_the_bound() {
         "CERT-f64-rounding",
         crate::common::verdicts::Seen::Caught,
         pts.len() as u64,
+    );
+}
+
+/// The paper's maps with h scaled by 1 + 1e−10 in f64 (h∘h is no longer the identity; a
+/// constant shift would cancel in the round trip, h being an involution).
+struct SloppyScale;
+impl Ppm<f64> for SloppyScale {
+    fn h(&self, p: &P2<f64>) -> P2<f64> {
+        let q = maps::h(p);
+        P2::new(q.x * (1.0 + 1e-10), q.y)
+    }
+}
+
+/// |f64 round trip − exact round trip| of the literal test (Def. 4.1.9) for the model `m`.
+fn roundtrip_err(m: &impl Ppm<f64>, e: &EdgeConfig, p: [f64; 2]) -> f64 {
+    let er = e.reversed();
+    let (pf, pm) = (P2::new(p[0], p[1]), P2::<Mp>::from_f64(p[0], p[1], 256));
+    let gf = m.g_uw_inv(&er, &pf).expect("f64 q");
+    let gm = Paper.g_uw_inv(&er, &pm).expect("mp q");
+    let bf = m.g_uw_formula(&er, &gf).expect("f64 round trip");
+    let bm = Paper.g_uw_formula(&er, &gm).expect("mp round trip");
+    dist(&bf, &bm)
+}
+
+#[test]
+fn cert_f64_rounding_planted_too_small_roundtrip_bound_is_violated() {
+    // (a) The bound computed with the unit roundoff taken as 2⁻⁶³ instead of 2⁻⁵³: every term
+    // of the stage-wise bound is linear in u (up to the 2⁻¹⁰⁷⁴ underflow terms), so it is the
+    // certified bound / 2¹⁰. MPFR-256 at seeded points exceeds it.
+    // (b) A mutated f64 map (h scaled by 1 + 1e−10) exceeds the certified bound at almost every
+    // point.
+    let s = Settings::default();
+    let (mut violated, mut caught, mut n) = (0, 0, 0);
+    for (m_u, m_w) in CONFIGS {
+        let rt = prove_f64_rounding(m_u, m_w, &s)
+            .roundtrip
+            .expect("round trip bounded");
+        let planted = rt / 1024.0;
+        for (e, p) in points(m_u, m_w, 300, 11 * m_u as u64 + m_w as u64) {
+            violated += (roundtrip_err(&Paper, &e, p) > planted) as u32;
+            caught += (roundtrip_err(&SloppyScale, &e, p) > rt) as u32;
+            n += 1;
+        }
+    }
+    assert!(violated > 0, "{violated}");
+    // Measured: 1497 of 1500 (where the two scaled h nearly undo each other it stays within).
+    assert!(
+        caught * 10 >= n * 9,
+        "mutated h caught at {caught} of {n} points"
+    );
+    eprintln!("planted round-trip bound (u = 2⁻⁶³) violated at {violated} of {n} points, mutated h at {caught}");
+    crate::common::verdicts::record(
+        "CERT-f64-rounding",
+        crate::common::verdicts::Seen::Caught,
+        violated as u64 + caught as u64,
     );
 }
 
@@ -240,4 +323,28 @@ fn cert_f64_rounding_oracle_prints_the_certificate_bound_with_phi() {
         }
     }
     assert!(answered >= 3, "{answered}");
+}
+
+#[test]
+fn cert_f64_rounding_committed_m8_certificate_has_the_roundtrip_exact() {
+    // The committed M = 8 certificate (SPEC `CERT-f64-rounding`): every edge configuration's
+    // round trip certified exact by the stage-wise bound, with g_v and g_v⁻¹ bounded.
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let cert =
+        pseudomanifold::certify::read_certificate(&root.join("certificates/certificate_M8.json"))
+            .expect("certificates/certificate_M8.json");
+    let fr: Vec<_> = cert
+        .results
+        .iter()
+        .filter_map(|r| r.f64_rounding.as_ref())
+        .collect();
+    assert_eq!(fr.len(), 36);
+    for f in fr {
+        assert!(f.roundtrip_exact, "{f:?}");
+        assert_eq!(f.roundtrip_verdict, Some(RoundTripVerdict::Exact), "{f:?}");
+        assert_eq!(f.roundtrip_unresolved, Some(0), "{f:?}");
+        let rt = f.roundtrip.expect("bounded");
+        assert!(rt < f.roundtrip_tol, "{f:?}");
+        assert!(f.g_v.is_some_and(|g| g < 1e-14) && f.g_v_inv.is_some_and(|g| g < 1e-14));
+    }
 }
