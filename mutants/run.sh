@@ -22,8 +22,8 @@ results="$here/mutants/results.tsv"
 
 # name | file globs (space separated) | test binaries (space separated; `lib` = the unit tests)
 #      | test names to skip (optional: the corpus-wide tests, minutes per mutant)
-#      | test-name filter (optional: only tests whose path contains it, e.g. the module's own
-#        tests in a binary that also holds other seeds' slow engines)
+#      | test-name filters (optional, space separated: only tests whose path contains one of
+#        them, e.g. the module's own tests in a binary that also holds slow engines)
 modules() {
     cat <<'EOF'
 mesh-validate|src/mesh/validate/*.rs|mesh gluing
@@ -40,7 +40,7 @@ loop-subdiv|src/surface/loop_subdiv/*.rs|lib surface|corpus
 sigma-v|src/surface/sigma_v/*.rs|lib surface|corpus
 msplines|src/msplines/*.rs|lib seeds||msplines
 sdiff|src/sdiff/*.rs src/sdiff/*/*.rs|lib seeds||sdiff
-render|src/render/*.rs|lib surface
+render|src/render/*.rs|lib surface||render docs_pictures
 fitting|src/fitting/*.rs|lib seeds||fitting
 numeric|src/numeric/*.rs|lib chapter4 gluing
 mesh-io|src/mesh/io/*.rs src/mesh/load.rs|lib mesh
@@ -97,7 +97,7 @@ elif [[ "$denom" != 1 ]]; then
 fi
 if [[ -n "${skips:-}" || -n "${filter:-}" ]]; then
     args+=(--cargo-test-arg=--)
-    [[ -n "${filter:-}" ]] && args+=("--cargo-test-arg=$filter")
+    for f in ${filter:-}; do args+=("--cargo-test-arg=$f"); done
     for s in ${skips:-}; do args+=(--cargo-test-arg=--skip "--cargo-test-arg=$s"); done
 fi
 # cargo-mutants' test timeout is a multiple of the unmutated run's time; on a machine shared
