@@ -363,6 +363,13 @@ struct Ch5 {
     jet_mp: Option<Consts<Jet<Mp>>>,
 }
 
+// The Python layer holds a session behind a mutex shared by Python threads: it must stay
+// `Send`, which this fails to compile without.
+const _: fn() = || {
+    fn send<T: Send>() {}
+    send::<Session>();
+};
+
 /// A session: the loaded mesh, the MPFR precision, the Chapter 5 profile and (built lazily)
 /// the pseudo-surface of Chapter 5.
 pub struct Session {

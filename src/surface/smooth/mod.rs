@@ -91,7 +91,10 @@ pub(crate) type GluingView<'a> = Box<dyn GluingData<2, S = f64> + 'a>;
 /// A smooth surface built from the triangle mesh K and evaluated from a triangle of K:
 /// eval(σ, λ, μ, ν) of Sec. 6.1.4 for the two PPS, F at the point of M for the manifold
 /// spline (see the module doc for which caller needs which method).
-pub trait SmoothSurface: Sync {
+///
+/// `Send + Sync`: a surface is sampled by worker threads, and an oracle session holding one is
+/// moved between threads (the Python layer keeps it behind a mutex).
+pub trait SmoothSurface: Send + Sync {
     /// The construction, as reports name it (with its parameters).
     fn name(&self) -> String;
 
