@@ -377,10 +377,14 @@ pub(super) fn run(a: SdArgs) -> ExitCode {
             };
             match polygonize::polygonize(&g, &opts) {
                 Ok(out) => {
+                    let mesh_off = match polygonize::to_off(&out.mesh) {
+                        Ok(b) => b,
+                        Err(e) => return fail(format!("the triangulation: {e}")),
+                    };
                     let files = [
-                        (Some(output), out.iso.curved.to_obj()),
-                        (linear, out.iso.linear.to_obj()),
-                        (mesh, polygonize::to_off(&out.mesh)),
+                        (Some(output), out.iso.curved.to_obj().into_bytes()),
+                        (linear, out.iso.linear.to_obj().into_bytes()),
+                        (mesh, mesh_off),
                     ];
                     for (path, text) in files {
                         if let Some(path) = path {

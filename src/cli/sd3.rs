@@ -2,6 +2,7 @@
 //! (Mello–Velho with m = 3; SPEC rows `SD-…(3-D)`; the `.tets` format in docs/sdiff-3d.md).
 
 use super::sd::{emit, fail};
+use crate::mesh::io::output_format;
 use crate::report::{render_text, CheckResult};
 use crate::sdiff::common::positivity::Budget;
 use crate::sdiff::planar::claims;
@@ -31,8 +32,8 @@ pub(super) enum Sd3Command {
         #[arg(long)]
         json: bool,
     },
-    /// Write the curved isosurface 𝒪 = (f̂∘X)⁻¹(c) (Sec. 4) of PARAMS' [iso] as OFF (or OBJ when
-    /// OUTPUT ends in .obj) and compare its topology with the linear one (X = id).
+    /// Write the curved isosurface 𝒪 = (f̂∘X)⁻¹(c) (Sec. 4) of PARAMS' [iso] in the format of
+    /// OUTPUT's extension (.obj, .off, .ply) and compare its topology with the linear one (X = id).
     Iso3 {
         complex: PathBuf,
         params: PathBuf,
@@ -118,18 +119,15 @@ pub(super) fn run(c: Sd3Command) -> ExitCode {
                 Ok(x) => x,
                 Err(e) => return fail(e.to_string()),
             };
-            let text = |m: &tet::iso::TriMesh, p: &Path| {
-                if p.extension().is_some_and(|e| e == "obj") {
-                    m.to_obj()
-                } else {
-                    m.to_off()
-                }
+            let write = |m: &tet::iso::TriMesh, p: &Path| {
+                let format = output_format(p)?;
+                std::fs::write(p, m.encode(format)?)
             };
-            if let Err(e) = std::fs::write(&output, text(&iso.curved, output.as_path())) {
+            if let Err(e) = write(&iso.curved, output.as_path()) {
                 return fail(format!("{}: {e}", output.display()));
             }
             if let Some(p) = linear {
-                if let Err(e) = std::fs::write(&p, text(&iso.linear, p.as_path())) {
+                if let Err(e) = write(&iso.linear, p.as_path()) {
                     return fail(format!("{}: {e}", p.display()));
                 }
             }

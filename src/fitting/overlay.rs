@@ -13,7 +13,6 @@ use super::base::BaseMesh;
 use super::geodesic::{common_faces, Embedding, Node};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::numeric::UnionFind;
-use robust::{orient2d, Coord};
 use std::collections::{HashMap, HashSet};
 
 /// A triangle of the overlay inside one triangle of S_T.
@@ -65,11 +64,8 @@ pub enum OverlayError {
 
 const REF: [[f64; 2]; 3] = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
 
-/// Exact sign of the orientation of (a, b, c).
-pub fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
-    let p = |x: [f64; 2]| Coord { x: x[0], y: x[1] };
-    orient2d(p(a), p(b), p(c))
-}
+/// The orientation of (a, b, c), its sign exact (the crate's one predicate).
+pub use crate::numeric::predicates::orient2_det as orient;
 
 /// Ear triangulation of a convex polygon (points may be collinear along its sides).
 fn triangulate(poly: &[usize], at: &[[f64; 2]], out: &mut Vec<[usize; 3]>) -> bool {

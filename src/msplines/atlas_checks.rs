@@ -7,15 +7,11 @@ use super::cochain::EdgeIndex;
 use super::view::AtlasView;
 use crate::gluing::sampled::{check_all, SampleConfig};
 use crate::mesh::{FaceId, SimplicialSurface};
+use crate::numeric::predicates::orient2_det;
 use crate::report::{CheckResult, Verdict, Witness, MAX_WITNESSES};
 use rand::{Rng, SeedableRng};
-use robust::{orient2d, Coord};
 use serde_json::json;
 use std::collections::BTreeSet;
-
-fn c(p: P2) -> Coord<f64> {
-    Coord { x: p[0], y: p[1] }
-}
 
 /// Sec. 5.4 step (4): χ(U_α ∪ U_β) = 1 for every overlapping pair (the paper's test that the
 /// union is a topological disk).
@@ -53,10 +49,10 @@ pub fn check_union_disks(k: &SimplicialSurface, ei: &EdgeIndex, at: &Atlas) -> C
 /// has the other on its closed outer side.
 fn interiors_overlap(s: &[P2; 3], t: &[P2; 3]) -> bool {
     let sep = |a: &[P2; 3], b: &[P2; 3]| {
-        let o = orient2d(c(a[0]), c(a[1]), c(a[2])).signum();
+        let o = orient2_det(a[0], a[1], a[2]).signum();
         (0..3).any(|i| {
             b.iter()
-                .all(|&p| orient2d(c(a[i]), c(a[(i + 1) % 3]), c(p)) * o <= 0.0)
+                .all(|&p| orient2_det(a[i], a[(i + 1) % 3], p) * o <= 0.0)
         })
     };
     !(sep(s, t) || sep(t, s))
@@ -139,8 +135,8 @@ fn injective(at: &Atlas, id: &str, name: &str) -> (CheckResult, Vec<usize>) {
         let before = r.offenders;
         let tris: Vec<(&FaceId, &[P2; 3])> = ch.faces.iter().collect();
         for (f, t) in &tris {
-            // `!(o > 0)`: a NaN image (orient2d of a NaN point is NaN) is not oriented.
-            if !(orient2d(c(t[0]), c(t[1]), c(t[2])) > 0.0) {
+            // `!(o > 0)`: a NaN image (orient2_det of a NaN point is NaN) is not oriented.
+            if !(orient2_det(t[0], t[1], t[2]) > 0.0) {
                 r.offend(|| {
                     Witness::new(
                         format!(

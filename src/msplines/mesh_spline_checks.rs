@@ -5,6 +5,7 @@
 use super::atlas::Atlas;
 use super::mesh_spline::{face_ring, Evaluation, MeshPoint, MeshSpline, SplineError};
 use crate::mesh::{FaceId, SimplicialSurface};
+use crate::numeric::predicates::orient2_det;
 use crate::report::{Check, CheckResult, OnError, Witness};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -110,12 +111,11 @@ pub fn check_knots_generic(k: &SimplicialSurface, sp: &MeshSpline) -> CheckResul
                 .flat_map(|c| rec[c].iter().take(b[c] + 1).copied())
                 .collect();
             r.examined += 1;
-            let c = |p: [f64; 2]| robust::Coord { x: p[0], y: p[1] };
             let mut bad = None;
             for x in 0..v.len() {
                 for y in x + 1..v.len() {
                     for z in y + 1..v.len() {
-                        if bad.is_none() && robust::orient2d(c(v[x]), c(v[y]), c(v[z])) == 0.0 {
+                        if bad.is_none() && orient2_det(v[x], v[y], v[z]) == 0.0 {
                             bad = Some([x, y, z]);
                         }
                     }
@@ -123,8 +123,8 @@ pub fn check_knots_generic(k: &SimplicialSurface, sp: &MeshSpline) -> CheckResul
             }
             // DMS need Δ_β^I = [t_{0,β0}, t_{1,β1}, t_{2,β2}] proper, oriented like I.
             let d = [b[0], b[0] + b[1] + 1, b[0] + b[1] + b[2] + 2];
-            let oi = robust::orient2d(c(rec[0][0]), c(rec[1][0]), c(rec[2][0]));
-            let od = robust::orient2d(c(v[d[0]]), c(v[d[1]]), c(v[d[2]]));
+            let oi = orient2_det(rec[0][0], rec[1][0], rec[2][0]);
+            let od = orient2_det(v[d[0]], v[d[1]], v[d[2]]);
             if bad.is_none() && !(oi > 0.0 && od > 0.0) {
                 r.offend(|| {
                     Witness::new(

@@ -11,9 +11,9 @@
 use super::atlas::{Atlas, P2};
 use crate::gluing::data::{GluingData, Idx, Point};
 use crate::mesh::{FaceId, SimplicialSurface};
+use crate::numeric::predicates::orient2_det;
 use rand::Rng;
 use rand_chacha::ChaCha8Rng;
-use robust::{orient2d, Coord};
 
 /// Distance between the copies of ℝ² relative to the (normalised) chart radius 1.
 pub const COPY_SPACING: f64 = 2.5;
@@ -30,20 +30,16 @@ pub struct AtlasView<'a> {
     phi_override: Option<Box<PhiOverride<'a>>>,
 }
 
-fn c(p: P2) -> Coord<f64> {
-    Coord { x: p[0], y: p[1] }
-}
-
 /// Barycentric coordinates of p in t (f64), and whether p is in the closed triangle (exact).
 fn locate(t: &[P2; 3], p: P2) -> Option<[f64; 3]> {
-    let area = orient2d(c(t[0]), c(t[1]), c(t[2]));
+    let area = orient2_det(t[0], t[1], t[2]);
     if area == 0.0 {
         return None;
     }
     let s = [
-        orient2d(c(t[1]), c(t[2]), c(p)),
-        orient2d(c(t[2]), c(t[0]), c(p)),
-        orient2d(c(t[0]), c(t[1]), c(p)),
+        orient2_det(t[1], t[2], p),
+        orient2_det(t[2], t[0], p),
+        orient2_det(t[0], t[1], p),
     ];
     if s.iter().any(|&x| x * area < 0.0) {
         return None;

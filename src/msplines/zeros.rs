@@ -11,7 +11,7 @@
 use super::cochain::{face_halfedges, EdgeIndex};
 use super::hodge::OneForm;
 use crate::mesh::{SimplicialSurface, VertexId};
-use robust::{orient2d, Coord};
+use crate::numeric::predicates::orient2_det;
 use serde::Serialize;
 
 /// The winding of one vertex, or why it is undecided (the origin on the polygon).
@@ -23,10 +23,6 @@ pub enum Winding {
     OnPolygon,
 }
 
-fn c(p: [f64; 2]) -> Coord<f64> {
-    Coord { x: p[0], y: p[1] }
-}
-
 /// Exact winding number of the closed polygon `pts` about the origin.
 pub fn winding_number(pts: &[[f64; 2]]) -> Winding {
     let o = [0.0, 0.0];
@@ -34,7 +30,7 @@ pub fn winding_number(pts: &[[f64; 2]]) -> Winding {
     let mut w = 0i64;
     for i in 0..n {
         let (a, b) = (pts[i], pts[(i + 1) % n]);
-        let s = orient2d(c(a), c(b), c(o));
+        let s = orient2_det(a, b, o);
         // The origin on the closed segment [a, b].
         if s == 0.0
             && a[0].min(b[0]) <= 0.0
@@ -107,7 +103,7 @@ pub fn locate(k: &SimplicialSurface, ei: &EdgeIndex, om: &OneForm) -> ZeroSet {
             .map(|cc| {
                 let a = om.at(ei, hs[cc]);
                 let b = om.at(ei, hs[(cc + 2) % 3]);
-                orient2d(c([0.0, 0.0]), c(a), c([-b[0], -b[1]]))
+                orient2_det([0.0, 0.0], a, [-b[0], -b[1]])
             })
             .collect();
         if signs.iter().all(|&s| s < 0.0) {

@@ -118,6 +118,30 @@ pub fn orient2(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Ordering> {
     orient2d(p(a), p(b), p(c)).partial_cmp(&0.0)
 }
 
+/// det(b − a, c − a) as a value: Shewchuk's adaptive orient2d (its sign exact, its magnitude
+/// rounded) where that is exact ([`SAFE_MIN`, `SAFE_MAX`]); outside, the exact sign with the
+/// rounded magnitude (at least the smallest normal, so the sign survives); NaN when a
+/// coordinate is NaN or infinite. For callers that use the value (barycentric coordinates) as
+/// well as the sign.
+pub fn orient2_det(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    let pts = [a, b, c];
+    if !pts.iter().all(|p| p.iter().all(|x| x.is_finite())) {
+        return f64::NAN;
+    }
+    if pts.iter().all(|p| p.iter().all(|&x| safe(x))) {
+        let p = |x: [f64; 2]| Coord { x: x[0], y: x[1] };
+        return orient2d(p(a), p(b), p(c));
+    }
+    let m = ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+        .abs()
+        .max(f64::MIN_POSITIVE);
+    match orient2_exact(a, b, c) {
+        Ordering::Less => -m,
+        Ordering::Equal => 0.0,
+        Ordering::Greater => m,
+    }
+}
+
 /// det(b − a, c − a) in the ring of the coordinates (exact over rationals).
 pub fn det2<S>(a: &[S; 2], b: &[S; 2], c: &[S; 2]) -> S
 where

@@ -78,3 +78,30 @@ pub(crate) fn draw_colour_bar(
         );
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::colour::RangeSource;
+
+    /// A tick is a black mark `scale` rows thick centred on its value's row, just right of the
+    /// bar: at scale 2 the tick of 0 in [−1, 1] covers rows 59 and 60 of a 120-row image
+    /// (bottom 100, top 20: row 100 − 40), and nothing above or below.
+    #[test]
+    fn render_colour_bar_tick_is_centred_on_its_row() {
+        let scale = 2;
+        let mut img = Image::filled(strip_width(scale), 120, [255, 255, 255]);
+        let range = ColourRange {
+            lo: -1.0,
+            hi: 1.0,
+            source: RangeSource::User,
+        };
+        draw_colour_bar(&mut img, 0, &range, "H", scale);
+        let tick_x = 4 * scale + 12 * scale;
+        let black = [0, 0, 0];
+        assert_eq!(img.get(tick_x, 59), black);
+        assert_eq!(img.get(tick_x, 60), black);
+        assert_ne!(img.get(tick_x, 58), black);
+        assert_ne!(img.get(tick_x, 61), black);
+    }
+}

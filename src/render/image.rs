@@ -66,3 +66,26 @@ impl Image {
 pub(crate) fn to_rgb8(c: [f64; 3]) -> [u8; 3] {
     c.map(|x| (x * 255.0).round().clamp(0.0, 255.0) as u8)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A point left of, above, right of or below the image writes nothing (text and bars
+    /// overhang the edges): not even the pixel its wrapped index would name.
+    #[test]
+    fn render_image_put_outside_writes_nothing() {
+        let white = [255, 255, 255];
+        let mut img = Image::filled(4, 3, white);
+        for (x, y) in [(-1, 1), (1, -1), (4, 1), (1, 3), (-1, -1)] {
+            img.put(x, y, [0, 0, 0]);
+        }
+        for y in 0..3 {
+            for x in 0..4 {
+                assert_eq!(img.get(x, y), white, "pixel ({x}, {y})");
+            }
+        }
+        img.put(3, 2, [0, 0, 0]);
+        assert_eq!(img.get(3, 2), [0, 0, 0]);
+    }
+}

@@ -65,10 +65,8 @@ impl Visibility {
         let hi_x = s.iter().map(|p| p[0]).fold(f64::NEG_INFINITY, f64::max);
         let lo_y = s.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
         let hi_y = s.iter().map(|p| p[1]).fold(f64::NEG_INFINITY, f64::max);
-        if hi_x < 0.0 || hi_y < 0.0 || lo_x > w || lo_y > h {
-            return;
-        }
-        // Pixel i has its centre at i + 0.5.
+        // Pixel i has its centre at i + 0.5; the ranges are empty for a triangle off the image
+        // (the float-to-int casts saturate).
         let x0 = (lo_x - 0.5).ceil().max(0.0) as u32;
         let x1 = ((hi_x - 0.5).floor().min(w - 1.0)) as i64;
         let y0 = (lo_y - 0.5).ceil().max(0.0) as u32;
@@ -92,5 +90,30 @@ impl Visibility {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Triangles wholly off the image cover nothing (the pixel ranges are empty, also for
+    /// corners far beyond u32); one straddling the left edge covers only pixels inside.
+    #[test]
+    fn render_raster_off_image_triangles_cover_nothing() {
+        let mut v = Visibility::new(8, 6);
+        let far = 1e300;
+        for s in [
+            [[-9.0, 1.0, 0.0], [-1.0, 1.0, 0.0], [-1.0, 5.0, 0.0]],
+            [[9.0, 1.0, 0.0], [far, 1.0, 0.0], [far, 5.0, 0.0]],
+            [[1.0, -far, 0.0], [7.0, -far, 0.0], [7.0, -0.6, 0.0]],
+            [[1.0, 6.6, 0.0], [7.0, 6.6, 0.0], [7.0, far, 0.0]],
+        ] {
+            v.draw(0, s);
+        }
+        assert_eq!(v.covered(), 0);
+        v.draw(1, [[-4.0, 0.0, 0.0], [2.0, 0.0, 0.0], [-4.0, 6.0, 0.0]]);
+        assert!(v.covered() > 0);
+        assert!(v.face.iter().all(|&f| f == NONE || f == 1));
     }
 }

@@ -17,14 +17,40 @@ pub(crate) fn light_direction(right: [f64; 3], up: [f64; 3], towards: [f64; 3]) 
 /// Brightness factor in [AMBIENT, 1] of the interpolated normal `n` (any length) under the
 /// light `l`; a zero or non-finite normal (singular point) gets the ambient term alone.
 pub(crate) fn brightness(n: [f64; 3], l: [f64; 3]) -> f64 {
-    let len = norm(n);
-    if !(len > 0.0 && len.is_finite()) {
+    // A zero, infinite or NaN normal makes the cosine non-finite (0/0, ∞/∞, NaN).
+    let cos = dot(n, l) / norm(n);
+    if !cos.is_finite() {
         return AMBIENT;
     }
-    AMBIENT + (1.0 - AMBIENT) * (dot(n, l) / len).max(0.0)
+    AMBIENT + (1.0 - AMBIENT) * cos.max(0.0)
 }
 
 /// `base` lit by `brightness`.
 pub(crate) fn lit(base: [f64; 3], brightness: f64) -> [f64; 3] {
     base.map(|c| c * brightness)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Lambert's term for a normal facing the light, none for one facing away, and the ambient
+    /// term alone for a singular normal (zero, infinite or NaN: a chart centre's undefined
+    /// normal is drawn, not hidden).
+    #[test]
+    fn render_brightness_lambert_and_singular_normals() {
+        let l = [0.0, 0.0, 1.0];
+        assert_eq!(brightness([0.0, 0.0, 2.0], l), 1.0);
+        assert_eq!(brightness([0.0, 0.0, -1.0], l), AMBIENT);
+        let half = brightness([0.0, 1.0, 1.0], l);
+        assert!((half - (AMBIENT + (1.0 - AMBIENT) * 0.5f64.sqrt())).abs() < 1e-15);
+        for n in [
+            [0.0; 3],
+            [f64::NAN, 0.0, 1.0],
+            [f64::INFINITY, 0.0, 1.0],
+            [1e-200, 0.0, 0.0],
+        ] {
+            assert_eq!(brightness(n, l), AMBIENT, "{n:?}");
+        }
+    }
 }

@@ -25,7 +25,9 @@ use super::params::ComplexMap;
 use super::refine::{Mesh2, RefineError};
 use super::refine_optimise::{root_on_edge, LocalRun};
 use super::subdivide::subdivide;
+use crate::mesh::io::write_mesh_to;
 use crate::mesh::raw::RawMesh;
+use crate::mesh::MeshFormat;
 use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::params::ParamError;
 use crate::sdiff::common::positivity::Budget;
@@ -526,14 +528,9 @@ fn measure(
     vec![d, t, l]
 }
 
-/// The triangulation as OFF text.
-pub fn to_off(raw: &RawMesh) -> String {
-    let mut s = format!("OFF\n{} {} 0\n", raw.positions.len(), raw.faces.len());
-    for p in &raw.positions {
-        s.push_str(&format!("{:.17} {:.17} 0\n", p[0], p[1]));
-    }
-    for f in &raw.faces {
-        s.push_str(&format!("3 {} {} {}\n", f[0], f[1], f[2]));
-    }
-    s
+/// The triangulation as OFF text, by the crate's one mesh writer (`mesh::io`).
+pub fn to_off(raw: &RawMesh) -> std::io::Result<Vec<u8>> {
+    let mut out = Vec::new();
+    write_mesh_to(&mut out, &raw.positions, &raw.faces, MeshFormat::Off)?;
+    Ok(out)
 }

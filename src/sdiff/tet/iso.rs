@@ -18,6 +18,8 @@ use super::complex::TetComplex;
 use super::maps::fixed_control4;
 use super::params::TetMap;
 use super::poly::Poly3;
+use crate::mesh::io::write_mesh_to;
+use crate::mesh::MeshFormat;
 use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::rational::{q, to_f64, Q};
 use num_traits::{Signed, Zero};
@@ -56,27 +58,25 @@ pub struct Topology {
 }
 
 impl TriMesh {
-    /// OFF text.
-    pub fn to_off(&self) -> String {
-        let mut s = format!("OFF\n{} {} 0\n", self.points.len(), self.triangles.len());
-        for p in &self.points {
-            s.push_str(&format!("{:.17} {:.17} {:.17}\n", p[0], p[1], p[2]));
-        }
-        for t in &self.triangles {
-            s.push_str(&format!("3 {} {} {}\n", t[0], t[1], t[2]));
-        }
-        s
-    }
-    /// Wavefront OBJ text.
-    pub fn to_obj(&self) -> String {
-        let mut s = String::new();
-        for p in &self.points {
-            s.push_str(&format!("v {:.17} {:.17} {:.17}\n", p[0], p[1], p[2]));
-        }
-        for t in &self.triangles {
-            s.push_str(&format!("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1));
-        }
-        s
+    /// The mesh in `format`, written by the crate's one mesh writer (`mesh::io`); a point
+    /// index beyond u32 is refused (`InvalidData`), never truncated.
+    pub fn encode(&self, format: MeshFormat) -> std::io::Result<Vec<u8>> {
+        let ix = |i: usize| {
+            u32::try_from(i).map_err(|_| {
+                std::io::Error::new(
+                    std::io::ErrorKind::InvalidData,
+                    format!("point index {i} does not fit the mesh writer's u32 indices"),
+                )
+            })
+        };
+        let faces = self
+            .triangles
+            .iter()
+            .map(|t| Ok([ix(t[0])?, ix(t[1])?, ix(t[2])?]))
+            .collect::<std::io::Result<Vec<_>>>()?;
+        let mut out = Vec::new();
+        write_mesh_to(&mut out, &self.points, &faces, format)?;
+        Ok(out)
     }
     /// Euler characteristic, components, boundary loops.
     pub fn topology(&self) -> Topology {

@@ -21,6 +21,7 @@ use super::rules::{cos_sin_2pi, limit_weights};
 use super::stam::{depth_cap, PatchJet};
 use super::surface::{LoopError, LoopSurface, MAX_VALENCE};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
+use crate::numeric::vec3::{add, cross, dot, norm, sub};
 use crate::numeric::Mp;
 use crate::report::{dev_max, Check, CheckResult, OnError, Verdict, Witness};
 use rand::seq::SliceRandom;
@@ -72,26 +73,10 @@ impl Default for LoopCheckOptions {
     }
 }
 
-fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-fn add(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-fn norm(a: [f64; 3]) -> f64 {
-    (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt()
-}
-fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
 /// Angle between two vectors (NaN if either is zero or not finite).
 fn angle(a: [f64; 3], b: [f64; 3]) -> f64 {
     let c = norm(cross(a, b));
-    let d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let d = dot(a, b);
     let r = c.atan2(d);
     if norm(a) > 0.0 && norm(b) > 0.0 {
         r
