@@ -68,7 +68,7 @@ fn check(g: &GChartRounding, m: u32, pts: &[[f64; 2]], plant: f64) -> (usize, f6
             };
             n += 1;
             worst = worst.max(e / b);
-            above += usize::from(!(e <= b));
+            above += usize::from(e > b || e.is_nan());
         }
     }
     (n, worst, above)
