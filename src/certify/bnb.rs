@@ -225,6 +225,7 @@ pub(super) fn finish(
         witness,
         millis: t0.elapsed().as_millis() as u64,
         f64_rounding: None,
+        g_chart: None,
     }
 }
 

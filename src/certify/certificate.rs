@@ -64,6 +64,11 @@ pub struct PropertyResult {
     /// one per edge configuration; absent in certificates written before it existed).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub f64_rounding: Option<F64Rounding>,
+    /// CERT-f64-g-chart: proven bounds on g_v's and g_v⁻¹'s `f64` rounding on the whole chart
+    /// square (on `D4.1.9-lens(cert)`, one per degree; absent in certificates written before
+    /// it existed).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub g_chart: Option<GChartRounding>,
 }
 
 impl PropertyResult {
@@ -182,22 +187,73 @@ impl Certificate {
     }
 }
 
-/// Read a certificate file (the format of [`write_certificate`]).
+/// The two bytes that open every gzip member (RFC 1952, ID1 ID2).
+pub const GZIP_MAGIC: [u8; 2] = [0x1f, 0x8b];
+
+/// Decompressed certificates larger than this are refused (the M = 32 JSON is 28 MB): a
+/// corrupt or hostile file cannot exhaust memory.
+pub const MAX_CERTIFICATE_BYTES: u64 = 1 << 30;
+
+/// Does `path` name a compressed certificate (written gzip by [`write_certificate`])?
+pub fn is_gzip_path(path: &std::path::Path) -> bool {
+    path.extension().is_some_and(|e| e == "gz")
+}
+
+/// Read a certificate file (the format of [`write_certificate`]): JSON, or gzip-compressed
+/// JSON, recognised by its magic bytes whatever the file is called. A `.gz` file without them,
+/// a truncated or corrupt gzip stream (the CRC-32 and length of its trailer are checked) and
+/// malformed JSON are typed errors.
 pub fn read_certificate(path: &std::path::Path) -> Result<Certificate, CertifyError> {
-    let s = std::fs::read_to_string(path).map_err(|source| CertifyError::Io {
-        path: path.display().to_string(),
+    let name = || path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|source| CertifyError::Io {
+        path: name(),
         source,
     })?;
-    let mut c: Certificate = serde_json::from_str(&s).map_err(|source| CertifyError::Json {
-        path: path.display().to_string(),
+    let text = if bytes.starts_with(&GZIP_MAGIC) {
+        gunzip(&bytes).map_err(|source| CertifyError::Compressed {
+            path: name(),
+            source,
+        })?
+    } else if is_gzip_path(path) {
+        return Err(CertifyError::Compressed {
+            path: name(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                "named .gz but does not start with the gzip magic bytes 1f 8b",
+            ),
+        });
+    } else {
+        String::from_utf8(bytes).map_err(|e| CertifyError::Io {
+            path: name(),
+            source: std::io::Error::new(std::io::ErrorKind::InvalidData, e),
+        })?
+    };
+    let mut c: Certificate = serde_json::from_str(&text).map_err(|source| CertifyError::Json {
+        path: name(),
         source,
     })?;
     c.expand();
     Ok(c)
 }
 
+/// Decompress a gzip certificate (one member), at most [`MAX_CERTIFICATE_BYTES`].
+fn gunzip(bytes: &[u8]) -> std::io::Result<String> {
+    use std::io::Read;
+    let mut text = String::new();
+    let mut dec = flate2::read::GzDecoder::new(bytes).take(MAX_CERTIFICATE_BYTES + 1);
+    dec.read_to_string(&mut text)?;
+    if text.len() as u64 > MAX_CERTIFICATE_BYTES {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("decompresses to more than {MAX_CERTIFICATE_BYTES} bytes"),
+        ));
+    }
+    Ok(text)
+}
+
 /// Write a certificate file: compacted ([`Certificate::compact`]), one result per line (small
-/// enough to keep in the repository, still diffable).
+/// enough to keep in the repository, still diffable); gzip-compressed (best compression, no
+/// time stamp: the same certificate gives the same bytes) when `out` ends in `.gz`.
 pub fn write_certificate(cert: &Certificate, out: &std::path::Path) -> Result<(), CertifyError> {
     let mut file = cert.clone();
     file.compact();
@@ -207,7 +263,26 @@ pub fn write_certificate(cert: &Certificate, out: &std::path::Path) -> Result<()
     })?;
     json = json.replace("},{\"key\"", "},\n{\"key\"");
     json.push('\n');
-    write_text(out, &json)
+    if !is_gzip_path(out) {
+        return write_text(out, &json);
+    }
+    let gz = gzip(json.as_bytes()).map_err(|source| CertifyError::Compressed {
+        path: out.display().to_string(),
+        source,
+    })?;
+    std::fs::write(out, gz).map_err(|source| CertifyError::Io {
+        path: out.display().to_string(),
+        source,
+    })
+}
+
+fn gzip(bytes: &[u8]) -> std::io::Result<Vec<u8>> {
+    use std::io::Write;
+    let mut enc = flate2::GzBuilder::new()
+        .mtime(0)
+        .write(Vec::new(), flate2::Compression::best());
+    enc.write_all(bytes)?;
+    enc.finish()
 }
 
 /// Write a text file (certificate or summary), naming it in the error.
@@ -236,6 +311,14 @@ pub enum CertifyError {
         path: String,
         /// The JSON error.
         source: serde_json::Error,
+    },
+    /// A gzip certificate is truncated or corrupt (or named `.gz` without being gzip).
+    #[error("corrupt compressed certificate {path}: {source}")]
+    Compressed {
+        /// The file.
+        path: String,
+        /// What the decompressor found.
+        source: std::io::Error,
     },
     /// Certificates to merge disagree (max degree, model), overlap, or none was given.
     #[error("certificates do not fit together: {0}")]

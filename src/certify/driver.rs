@@ -9,13 +9,20 @@ use super::*;
 /// All provers for one configuration.
 pub fn prove_config(key: ConfigKey, model: &Model, s: &Settings) -> Vec<PropertyResult> {
     match key {
-        ConfigKey::Vertex { m } => vec![
-            prove_lens_agreement(m, model, s),
-            prove_star(m, false, false, model, s),
-            prove_star(m, false, true, model, s),
-            prove_star(m, true, false, model, s),
-            prove_star(m, true, true, model, s),
-        ],
+        ConfigKey::Vertex { m } => {
+            let mut lens = prove_lens_agreement(m, model, s);
+            // As for φ_wu below: the production evaluator's g_v, g_v⁻¹ (the oracle's queries).
+            if model.is_paper() {
+                lens.g_chart = Some(prove_g_chart(m));
+            }
+            vec![
+                lens,
+                prove_star(m, false, false, model, s),
+                prove_star(m, false, true, model, s),
+                prove_star(m, true, false, model, s),
+                prove_star(m, true, true, model, s),
+            ]
+        }
         ConfigKey::Edge { m_u, m_w } => {
             let mut inverse = prove_inverse(m_u, m_w, model, s);
             // The rounding bound is about the production evaluator (the paper's maps at f64).
@@ -225,7 +232,7 @@ pub fn summary_table(cert: &Certificate) -> String {
         cert.jobs
     ));
     s.push_str(&format!(
-        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json --summary CERTIFICATE_SUMMARY_M{}.md` (release build). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements); `max δ` = the largest δ of the results certified outside δ (a refuted result is decided by its witness and has no δ); `f64 rounding bound` = proven max |f64 evaluation − exact value| of φ_wu on all of Ω_uw, all labels (CERT-f64-rounding, section below).\n\n",
+        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json.gz --summary CERTIFICATE_SUMMARY_M{}.md` (release build; `.json.gz`: gzip-compressed, `.json`: plain). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements); `max δ` = the largest δ of the results certified outside δ (a refuted result is decided by its witness and has no δ); `f64 rounding bound` = proven max |f64 evaluation − exact value| of φ_wu on all of Ω_uw, all labels (CERT-f64-rounding, section below).\n\n",
         cert.max_degree, cert.jobs, cert.max_degree, cert.max_degree
     ));
     s.push_str("| property | configurations | certified | certified outside δ | refuted | inconclusive | max bound | max centre bound | max δ | boxes | max depth | time (s, sum) | f64 rounding bound |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -260,6 +267,7 @@ pub fn summary_table(cert: &Certificate) -> String {
         ));
     }
     s.push_str(&f64_rounding_section(cert));
+    s.push_str(&g_chart_section(cert));
     s.push_str("\n## Per configuration (refutations and non-certified results)\n\n| configuration | property | result | bound | δ | boxes | time (ms) | witness |\n|---|---|---|---|---|---|---|---|\n");
     for r in cert.results.iter().filter(|r| {
         !matches!(
@@ -347,4 +355,39 @@ fn f64_rounding_section(cert: &Certificate) -> String {
         fr.iter().map(|f| f.millis).sum::<u64>() as f64 / 1000.0,
         crate::numeric::rounding::LIBM_ASSUMPTION,
     ) + &format!("\n* {}\n", f64_rounding_statement())
+}
+
+/// The CERT-f64-g-chart section of the summary: the worst bounds over the degrees.
+fn g_chart_section(cert: &Certificate) -> String {
+    let g: Vec<(u32, &GChartRounding)> = cert
+        .results
+        .iter()
+        .filter_map(|r| match (r.key, r.g_chart.as_ref()) {
+            (ConfigKey::Vertex { m }, Some(g)) => Some((m, g)),
+            _ => None,
+        })
+        .collect();
+    if g.is_empty() {
+        return String::new();
+    }
+    let worst = |f: &dyn Fn(&GChartRounding) -> Option<f64>| {
+        // A degree without a bound makes the maximum "—" (no claim), never a smaller number.
+        let all: Option<Vec<(f64, u32)>> = g.iter().map(|(m, x)| f(x).map(|b| (b, *m))).collect();
+        all.and_then(|v| {
+            v.into_iter()
+                .reduce(|a, b| if b.0 > a.0 || b.0.is_nan() { b } else { a })
+        })
+        .map(|(b, m)| format!("{b:.2e} (m = {m})"))
+        .unwrap_or_else(|| "—".into())
+    };
+    format!(
+        "\n## g_v and g_v⁻¹ on the whole chart (CERT-f64-g-chart)\n\n{} degrees; max over them of the proven |f64 − exact| (Euclidean) for every f64 point p ≠ 0 with |x|, |y| ≤ {}: g_v {}, g_v⁻¹ {}; pieces {}, unresolved {}; time {:.1} s (sum). Same libm assumption.\n",
+        g.len(),
+        g.iter().map(|(_, x)| x.radius).fold(f64::INFINITY, f64::min),
+        worst(&|x| x.g_v),
+        worst(&|x| x.g_v_inv),
+        g.iter().map(|(_, x)| x.boxes).sum::<u64>(),
+        g.iter().map(|(_, x)| x.unresolved).sum::<u64>(),
+        g.iter().map(|(_, x)| x.millis).sum::<u64>() as f64 / 1000.0,
+    )
 }

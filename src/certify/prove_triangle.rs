@@ -293,6 +293,7 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
             witness: refuted,
             millis: ms,
             f64_rounding: None,
+            g_chart: None,
         }
     };
     let mismatch = model_mismatch > 0;

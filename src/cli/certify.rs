@@ -23,7 +23,7 @@ pub(super) struct CertifyArgs {
     /// Only shard K of N (1-based), e.g. `--shard 2/8`.
     #[arg(long)]
     pub shard: Option<String>,
-    /// Certificate JSON output.
+    /// Certificate output: JSON, gzip-compressed when the name ends in `.gz`.
     #[arg(long, default_value = "certificate.json")]
     pub out: PathBuf,
     /// Readable summary output (Markdown); printed to stdout as well.
@@ -42,9 +42,9 @@ pub(super) struct CertifyArgs {
 pub(super) enum MergeCmd {
     /// Join shard certificates into one.
     Merge {
-        /// Shard certificate files to join.
+        /// Shard certificate files to join (JSON or `*.json.gz`).
         files: Vec<PathBuf>,
-        /// Merged certificate JSON output.
+        /// Merged certificate output: JSON, gzip-compressed when the name ends in `.gz`.
         #[arg(long, default_value = "certificate.json")]
         out: PathBuf,
         /// Readable summary output (Markdown); printed to stdout as well.

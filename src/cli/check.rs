@@ -33,8 +33,9 @@ pub struct Ch4Args {
     /// Check at most this many distinct configurations of each kind (seeded subset).
     #[arg(long, requires = "spec")]
     pub max_configs: Option<usize>,
-    /// Certificate file of `ppm certify`: each Chapter 4 property is marked certified when
-    /// the certificate covers every configuration of the mesh (missing ones are listed).
+    /// Certificate file of `ppm certify` (JSON, or gzip-compressed JSON `*.json.gz`, recognised
+    /// by its magic bytes): each Chapter 4 property is marked certified when the certificate
+    /// covers every configuration of the mesh (missing ones are listed).
     #[arg(long, requires = "spec")]
     pub certificates: Option<std::path::PathBuf>,
     /// Run only the Chapter 3.4–4 checks (skip building the surface of Chapter 5).

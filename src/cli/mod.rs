@@ -77,8 +77,9 @@ enum Command {
         /// S′ (Sec. 6.2): pn | loop; also {"op":"set_surface",...}.
         #[arg(long, default_value = "pn")]
         sprime: String,
-        /// A certificate (`ppm certify`): `phi` answers carry its proven f64 error bound
-        /// (SPEC CERT-f64-rounding); also {"op":"set_certificate","path":...}.
+        /// A certificate (`ppm certify`, JSON or `*.json.gz`): `phi` answers carry its proven
+        /// f64 error bound (SPEC CERT-f64-rounding), `g` and `g_inv` answers on the chart square
+        /// |x|, |y| ≤ 1 theirs (SPEC CERT-f64-g-chart); also {"op":"set_certificate","path":...}.
         #[arg(long)]
         certificate: Option<PathBuf>,
     },

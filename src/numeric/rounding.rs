@@ -224,11 +224,17 @@ impl<L: LibmModel> Scalar for Fe<L> {
         if hx.inf() <= 0.0 && hy.contains(0.0) {
             return Fe::refused(v);
         }
-        let rmin = (pt(mig(hx)).sqr() + pt(mig(hy)).sqr()).sqrt().inf();
-        if rmin.is_nan() || rmin <= 0.0 {
-            return Fe::refused(v);
-        }
-        let prop = ((pt(x.err()) + pt(self.err())) / pt(rmin)).sup();
+        // Exact arguments (a query point itself): nothing propagates, the segment is a point,
+        // and no distance from the origin is needed (it underflows next to it).
+        let prop = if x.err() == 0.0 && self.err() == 0.0 {
+            0.0
+        } else {
+            let rmin = (pt(mig(hx)).sqr() + pt(mig(hy)).sqr()).sqrt().inf();
+            if rmin.is_nan() || rmin <= 0.0 {
+                return Fe::refused(v);
+            }
+            ((pt(x.err()) + pt(self.err())) / pt(rmin)).sup()
+        };
         let wv = self.w().atan2(x.w());
         Fe::new(v, sym(prop) + Self::libm(wv))
     }

@@ -380,8 +380,9 @@ pub struct Session {
     ch5: Option<Ch5>,
     /// The reference of `eval` when it is not the vertex PPS of `ch5`.
     other: Option<Other>,
-    /// φ_wu's proven f64 error bound per edge configuration (m_u, m_w), from `set_certificate`.
-    f64_bounds: std::collections::BTreeMap<(u32, u32), f64>,
+    /// The proven f64 error bounds of φ_wu (per edge configuration) and of g_v, g_v⁻¹ (per
+    /// degree), from `set_certificate`.
+    f64_bounds: super::query::CertBounds,
 }
 
 impl Default for Session {
@@ -558,7 +559,8 @@ impl Session {
                     .map_err(|e| OracleError::Load(e.to_string()))?;
                 self.f64_bounds = super::query::f64_bounds(&cert);
                 Ok(Response::plain(json!({
-                    "edge_configurations": self.f64_bounds.len(),
+                    "edge_configurations": self.f64_bounds.phi.len(),
+                    "degrees": self.f64_bounds.g.len(),
                     "libm_ulps": crate::numeric::rounding::LIBM_ULPS,
                 })))
             }

@@ -256,29 +256,46 @@ impl Request {
     }
 
     /// The certificate's proven bound on the f64 error of a `phi` answer (SPEC
-    /// `CERT-f64-rounding`): 0 for φ_uu = id, the edge configuration's bound otherwise, nothing
-    /// when no certificate was set or it does not cover the configuration.
+    /// `CERT-f64-rounding`): 0 for φ_uu = id, the edge configuration's bound otherwise; of a
+    /// `g` or `g_inv` answer at a point of the chart square the certificate covers (SPEC
+    /// `CERT-f64-g-chart`), the degree's bound; nothing when no certificate was set or it does
+    /// not cover the query.
     pub(crate) fn f64_bound(
         &self,
         k: Option<&crate::mesh::SimplicialSurface>,
-        bounds: &std::collections::BTreeMap<(u32, u32), f64>,
+        bounds: &CertBounds,
     ) -> Option<Value> {
-        let (Request::Phi { u, w, .. }, Some(k)) = (self, k) else {
-            return None;
-        };
-        if bounds.is_empty() {
-            return None;
-        }
+        let k = k?;
         let g = PpmGluing::new(k);
-        let bound = if u == w {
-            0.0
-        } else {
-            let c = g.edge_config(VertexId(*u), VertexId(*w)).ok()?;
-            *bounds.get(&(c.m_u, c.m_w))?
+        let (bound, note) = match self {
+            Request::Phi { u, w, .. } => {
+                if bounds.phi.is_empty() {
+                    return None;
+                }
+                let bound = if u == w {
+                    0.0
+                } else {
+                    let c = g.edge_config(VertexId(*u), VertexId(*w)).ok()?;
+                    *bounds.phi.get(&(c.m_u, c.m_w))?
+                };
+                (bound, "proven |f64 − exact| of φ_wu for p in the boxes covering Ω_uw, any labels (certificate, SPEC CERT-f64-rounding)".to_string())
+            }
+            Request::G { v, p } | Request::GInv { v, p } => {
+                let gc = bounds.g.get(&g.degree(VertexId(*v)).ok()?)?;
+                if !gc.covers(*p) {
+                    return None;
+                }
+                let (name, b) = match self {
+                    Request::G { .. } => ("g_v", gc.g_v),
+                    _ => ("g_v⁻¹", gc.g_v_inv),
+                };
+                (b?, format!("proven |f64 − exact| (Euclidean) of {name} at every f64 point p ≠ 0 with |x|, |y| ≤ {} (certificate, SPEC CERT-f64-g-chart)", gc.radius))
+            }
+            _ => return None,
         };
         Some(json!({
             "f64_error_bound": bound,
-            "f64_error_bound_note": format!("proven |f64 − exact| of φ_wu for p in the boxes covering Ω_uw, any labels (certificate, SPEC CERT-f64-rounding); {}", crate::numeric::rounding::LIBM_ASSUMPTION),
+            "f64_error_bound_note": format!("{note}; {}", crate::numeric::rounding::LIBM_ASSUMPTION),
         }))
     }
 
@@ -359,18 +376,34 @@ pub(crate) fn both_or_note(
     }
 }
 
-/// φ_wu's f64 error bounds of a certificate of the paper's model, by edge configuration.
-pub(crate) fn f64_bounds(
-    cert: &crate::certify::Certificate,
-) -> std::collections::BTreeMap<(u32, u32), f64> {
-    cert.results
-        .iter()
-        .filter(|_| cert.model == "paper")
-        .filter_map(
-            |r| match (r.key, r.f64_rounding.as_ref().and_then(|f| f.phi)) {
-                (crate::certify::ConfigKey::Edge { m_u, m_w }, Some(b)) => Some(((m_u, m_w), b)),
-                _ => None,
-            },
-        )
-        .collect()
+/// The proven f64 error bounds a certificate of the paper's model gives the oracle.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct CertBounds {
+    /// φ_wu's, by edge configuration (m_u, m_w) (SPEC `CERT-f64-rounding`).
+    pub phi: std::collections::BTreeMap<(u32, u32), f64>,
+    /// g_v's and g_v⁻¹'s on the chart square, by degree (SPEC `CERT-f64-g-chart`).
+    pub g: std::collections::BTreeMap<u32, crate::certify::GChartRounding>,
+}
+
+/// The f64 error bounds of a certificate of the paper's model (none for another model).
+pub(crate) fn f64_bounds(cert: &crate::certify::Certificate) -> CertBounds {
+    use crate::certify::ConfigKey;
+    let mut out = CertBounds::default();
+    if cert.model != "paper" {
+        return out;
+    }
+    for r in &cert.results {
+        match (r.key, r.f64_rounding.as_ref().and_then(|f| f.phi)) {
+            (ConfigKey::Edge { m_u, m_w }, Some(b)) => {
+                out.phi.insert((m_u, m_w), b);
+            }
+            (ConfigKey::Vertex { m }, _) => {
+                if let Some(g) = &r.g_chart {
+                    out.g.insert(m, g.clone());
+                }
+            }
+            _ => {}
+        }
+    }
+    out
 }

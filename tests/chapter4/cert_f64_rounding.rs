@@ -330,9 +330,10 @@ fn cert_f64_rounding_committed_m8_certificate_has_the_roundtrip_exact() {
     // The committed M = 8 certificate (SPEC `CERT-f64-rounding`): every edge configuration's
     // round trip certified exact by the stage-wise bound, with g_v and g_v⁻¹ bounded.
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let cert =
-        pseudomanifold::certify::read_certificate(&root.join("certificates/certificate_M8.json"))
-            .expect("certificates/certificate_M8.json");
+    let cert = pseudomanifold::certify::read_certificate(
+        &root.join("certificates/certificate_M8.json.gz"),
+    )
+    .expect("certificates/certificate_M8.json.gz");
     let fr: Vec<_> = cert
         .results
         .iter()

@@ -4,9 +4,11 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod cert_compact;
 mod cert_docs;
 mod cert_exact;
 mod cert_f64_rounding;
+mod cert_g_chart;
 mod certify_provers;
 mod construction_explore;
 mod construction_maps;
