@@ -129,19 +129,17 @@ pub fn embed_keeping(
             blocked: Vec::new(),
         });
     }
-    let maps = floater::map_regions_with(&ov, base, &emb, |f, pieces| {
-        reuse(f, pieces, &ov, &emb)
-    })
-    .map_err(|e| {
-        let floater::FloaterError::Solve { face, .. } = &e;
-        Failure {
-            what: e.to_string(),
-            faces: vec![*face],
-            edge: None,
-            gave_up: None,
-            blocked: Vec::new(),
-        }
-    })?;
+    let maps = floater::map_regions_with(&ov, base, &emb, |f, pieces| reuse(f, pieces, &ov, &emb))
+        .map_err(|e| {
+            let floater::FloaterError::Solve { face, .. } = &e;
+            Failure {
+                what: e.to_string(),
+                faces: vec![*face],
+                edge: None,
+                gave_up: None,
+                blocked: Vec::new(),
+            }
+        })?;
     let params = floater::params(&maps, base, &emb, base.positions().len());
     Ok(Embedded {
         emb,

@@ -118,7 +118,11 @@ pub fn embed_local(
             if !kept.contains_key(&key) {
                 return None;
             }
-            let old_ids = prev.emb.overlay.curve_ids.get(*prev.emb.emb.index.get(&key)?)?;
+            let old_ids = prev
+                .emb
+                .overlay
+                .curve_ids
+                .get(*prev.emb.emb.index.get(&key)?)?;
             let new_ids = ov.curve_ids.get(*emb.index.get(&key)?)?;
             if old_ids.len() != new_ids.len() {
                 return None;

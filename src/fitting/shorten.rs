@@ -293,7 +293,12 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
 /// round, `super::local`): they are obstacles to the others' moves like any curve, and are
 /// not moved themselves (a kept curve converged in its own round; moving it would change the
 /// curved triangles that are not re-mapped).
-pub fn shorten_except(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding, frozen: &[bool]) {
+pub fn shorten_except(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    emb: &mut Embedding,
+    frozen: &[bool],
+) {
     let is_frozen = |ci: usize| frozen.get(ci).copied().unwrap_or(false);
     let mut owner: std::collections::HashMap<u32, usize> = Default::default();
     for (ci, c) in emb.curves.iter().enumerate() {

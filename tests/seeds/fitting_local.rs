@@ -30,14 +30,24 @@ fn param_bits(p: &Param) -> Option<(u32, [u64; 3])> {
     }
 }
 
+/// A refinement at a vertex of S_T on a curve, and its local update.
+struct Refined {
+    /// The refined base mesh.
+    base: BaseMesh,
+    /// The local update.
+    local: Embedded,
+    /// What it kept.
+    st: LocalStats,
+    /// The base edge of the curve.
+    edge: (u32, u32),
+    /// The inserted vertex.
+    x: u32,
+}
+
 /// The first inner vertex node x of a curve C, parametrized by the simplification in one of
 /// C's two faces, whose insertion leaves C's base edge in the mesh and whose local update
-/// holds every check; the refined base mesh, the update and C's edge.
-fn refined_at_a_curve(
-    k: &SimplicialSurface,
-    base: &BaseMesh,
-    prev: &Previous,
-) -> Option<(BaseMesh, Embedded, LocalStats, (u32, u32), u32)> {
+/// holds every check.
+fn refined_at_a_curve(k: &SimplicialSurface, base: &BaseMesh, prev: &Previous) -> Option<Refined> {
     for c in &prev.emb.emb.curves {
         let faces = [base.face_of_edge(c.a, c.b), base.face_of_edge(c.b, c.a)];
         for n in &c.nodes[1..c.nodes.len() - 1] {
@@ -58,7 +68,13 @@ fn refined_at_a_curve(
                 continue;
             };
             if run(k, &b2, &e).iter().all(|r| !r.failed()) {
-                return Some((b2, e, st, (c.a, c.b), x));
+                return Some(Refined {
+                    base: b2,
+                    local: e,
+                    st,
+                    edge: (c.a, c.b),
+                    x,
+                });
             }
         }
     }
@@ -78,17 +94,23 @@ fn af_refine_local_keeps_unchanged_curves_bit_identical_and_passes_the_global_ch
         return;
     };
     let k = pseudomanifold::mesh::load_surface(&dir.join("eight.off")).expect("corpus mesh loads");
-    let fit = fit_surface(&k, &FitOptions::new(1e-2 * diagonal(&k)), |_| {})
-        .expect("eight fits at 1e-2");
+    let fit =
+        fit_surface(&k, &FitOptions::new(1e-2 * diagonal(&k)), |_| {}).expect("eight fits at 1e-2");
     let old = fit.embedded.clone().expect("eight is embedded");
     let prev = Previous::new(&fit.base, old.clone());
-    let (b2, local, st, (a, b), x) = refined_at_a_curve(&k, &fit.base, &prev)
+    let Refined {
+        base: b2,
+        local,
+        st,
+        edge: (a, b),
+        x,
+    } = refined_at_a_curve(&k, &fit.base, &prev)
         .expect("a vertex of S_T on a curve whose insertion is embedded locally");
     // What was kept: every curve whose two faces are unchanged, bit for bit.
     let same = unchanged(&b2, &prev);
     let kept = kept_curves(&b2, &prev, &same);
     assert!(
-        st.kept_curves == kept.len() && 0 < kept.len() && kept.len() < local.emb.curves.len(),
+        st.kept_curves == kept.len() && !kept.is_empty() && kept.len() < local.emb.curves.len(),
         "{st:?}, {} kept of {}",
         kept.len(),
         local.emb.curves.len()
@@ -98,14 +120,20 @@ fn af_refine_local_keeps_unchanged_curves_bit_identical_and_passes_the_global_ch
         "some curved triangles keep their maps, some are mapped again: {st:?}"
     );
     for (e, c) in &kept {
-        let (now, _) = local.emb.curve(e.0, e.1).expect("a kept curve is in the result");
+        let (now, _) = local
+            .emb
+            .curve(e.0, e.1)
+            .expect("a kept curve is in the result");
         assert_eq!(
             now.nodes.iter().map(bits).collect::<Vec<_>>(),
             c.nodes.iter().map(bits).collect::<Vec<_>>(),
             "curve {e:?} kept bit for bit"
         );
     }
-    assert!(!kept.contains_key(&(a, b)), "the curve through {x} is traced again");
+    assert!(
+        !kept.contains_key(&(a, b)),
+        "the curve through {x} is traced again"
+    );
     // The parameters of the vertices of S_T inside the curved triangles kept whole.
     let whole: HashSet<u32> = b2
         .faces()
