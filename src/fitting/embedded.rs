@@ -13,11 +13,12 @@
 
 use super::base::{BaseMesh, Param};
 use super::floater::{self, RegionMap};
-use super::geodesic::{EmbedError, Embedding};
+use super::geodesic::{Curve, EmbedError, Embedding};
 use super::overlay::{self, Overlay};
 use super::route;
 use super::shorten;
 use crate::mesh::SimplicialSurface;
+use std::collections::HashMap;
 
 /// The embedded base mesh and its parametrization.
 #[derive(Debug, Clone)]
@@ -49,7 +50,19 @@ pub struct Failure {
 
 /// Embed, cut, map (module doc).
 pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure> {
-    let mut emb = route::initial_curves(k, base).map_err(|e| {
+    embed_keeping(k, base, &HashMap::new(), |_, _, _, _| None)
+}
+
+/// [`embed`] with the curves in `kept` taken as they are (neither traced nor shortened; the
+/// others are traced and shortened around them) and the maps `reuse` gives for some faces
+/// (`super::local`: given the face slot, its pieces, the overlay and the curves).
+pub fn embed_keeping(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    kept: &HashMap<(u32, u32), Curve>,
+    mut reuse: impl FnMut(u32, &[usize], &Overlay, &Embedding) -> Option<RegionMap>,
+) -> Result<Embedded, Failure> {
+    let mut emb = route::curves_keeping(k, base, kept).map_err(|e| {
         let EmbedError::NoPath { a, b, blocked } = &e;
         let (a, b) = (*a, *b);
         Failure {
@@ -63,7 +76,12 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
             gave_up: None,
         }
     })?;
-    shorten::shorten(k, base, &mut emb);
+    let frozen: Vec<bool> = emb
+        .curves
+        .iter()
+        .map(|c| kept.contains_key(&(c.a, c.b)))
+        .collect();
+    shorten::shorten_except(k, base, &mut emb, &frozen);
     let ov = overlay::build(k, base, &emb).map_err(|e| {
         let fine = match e {
             overlay::OverlayError::OffSurface { curve, .. } => {
@@ -111,16 +129,17 @@ pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure
             blocked: Vec::new(),
         });
     }
-    let maps = floater::map_regions(&ov, base, &emb).map_err(|e| {
-        let floater::FloaterError::Solve { face, .. } = &e;
-        Failure {
-            what: e.to_string(),
-            faces: vec![*face],
-            edge: None,
-            gave_up: None,
-            blocked: Vec::new(),
-        }
-    })?;
+    let maps = floater::map_regions_with(&ov, base, &emb, |f, pieces| reuse(f, pieces, &ov, &emb))
+        .map_err(|e| {
+            let floater::FloaterError::Solve { face, .. } = &e;
+            Failure {
+                what: e.to_string(),
+                faces: vec![*face],
+                edge: None,
+                gave_up: None,
+                blocked: Vec::new(),
+            }
+        })?;
     let params = floater::params(&maps, base, &emb, base.positions().len());
     Ok(Embedded {
         emb,

@@ -77,6 +77,18 @@ pub fn map_regions(
     base: &BaseMesh,
     emb: &Embedding,
 ) -> Result<Vec<RegionMap>, FloaterError> {
+    map_regions_with(ov, base, emb, |_, _| None)
+}
+
+/// [`map_regions`], where `reuse(face, pieces)` may give a face's map instead (a curved
+/// triangle that a refinement round did not change keeps its map, `super::local`); the other
+/// faces are solved.
+pub fn map_regions_with(
+    ov: &Overlay,
+    base: &BaseMesh,
+    emb: &Embedding,
+    mut reuse: impl FnMut(u32, &[usize]) -> Option<RegionMap>,
+) -> Result<Vec<RegionMap>, FloaterError> {
     let mut pieces_of: Vec<Vec<usize>> = vec![Vec::new(); ov.regions];
     for (i, &r) in ov.region.iter().enumerate() {
         pieces_of[r as usize].push(i);
@@ -85,6 +97,10 @@ pub fn map_regions(
     for (r, f) in ov.face_of_region.iter().enumerate() {
         let Some(f) = *f else { continue };
         let Some(c) = base.face(f) else { continue };
+        if let Some(m) = reuse(f, &pieces_of[r]) {
+            out.push(m);
+            continue;
+        }
         let mut uv: HashMap<u32, [f64; 2]> = HashMap::new();
         for i in 0..3 {
             let (u, w) = (c[i], c[(i + 1) % 3]);

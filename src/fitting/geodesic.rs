@@ -200,6 +200,9 @@ pub struct EmbedStats {
     pub moves: usize,
     /// Shortening sweeps.
     pub sweeps: usize,
+    /// Curves kept from the previous round's embedding, neither traced nor shortened again
+    /// ([`super::local`]).
+    pub kept: usize,
 }
 
 /// The embedded base mesh.

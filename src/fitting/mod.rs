@@ -13,7 +13,8 @@
 //! 3. [`fitted`]: the (σ, v) construction over the base mesh with ψ_(σ,v) fitted by least
 //!    squares to the vertices of S_T at those parameters.
 //! 4. [`refine`]: where a vertex misses ε, the base mesh is refined locally (stellar face
-//!    split at the worst vertex, Lawson flips), and 2–3 are repeated (recomputed whole).
+//!    split at the worst vertex, Lawson flips), and 2–3 are repeated: the embedding only where
+//!    the base mesh changed ([`local`]; all of S_T again where that fails), the fit whole.
 //!
 //! Where the slides are silent, the choices are stated at each module and in SPEC.md
 //! (section "Adaptive fitting", rows `AF-…`).
@@ -26,6 +27,7 @@ pub mod fitted;
 pub mod floater;
 pub mod format;
 pub mod geodesic;
+pub mod local;
 pub mod overlay;
 pub mod refine;
 pub mod route;
@@ -124,6 +126,9 @@ pub struct Round {
     pub folds: usize,
     /// Refinement done after the round (None for the last).
     pub refine: Option<refine::RefineStats>,
+    /// What the round's embedding kept from the previous round's (None: all of S_T was
+    /// embedded, [`local`]).
+    pub local: Option<local::LocalStats>,
     /// Seconds spent in the round.
     pub seconds: f64,
 }
@@ -259,6 +264,8 @@ fn fit_once(
     let mut repairs = 0;
     let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
     let mut walk = unblock::Walk::default();
+    // The last embedding whose every check held, kept for the next round's local update.
+    let mut prev: Option<local::Previous> = None;
     loop {
         let tr = std::time::Instant::now();
         let surface = match BaseSurface::new(&base) {
@@ -293,13 +300,46 @@ fn fit_once(
         // holds; otherwise the simplification's parameters are, and the failure is reported
         // (`AF-embedding`, and the checks of the embedding that exists), never passed on.
         // A base mesh whose embedding failed is not embedded again (the failure is kept).
+        // After a refinement, only what changed is embedded again (`local`); the local result
+        // is used only when every check of the embedding holds on all of it, else all of S_T
+        // is embedded again.
         let key = face_key(&base);
+        let mut local_stats = None;
+        let mut checked = None;
         let mut emb = match failed_at.iter().find(|(x, _)| *x == key) {
             Some((_, f)) => {
                 progress("embed: failed at this base mesh before, not tried again");
                 Err(f.clone())
             }
-            None => embedded::embed(k, &base),
+            None => match prev.as_ref().map(|p| local::embed_local(k, &base, p)) {
+                None => embedded::embed(k, &base),
+                Some(Ok((e, st))) => {
+                    let checks = embed_checks::run(k, &base, &e);
+                    let bad: Vec<&str> = checks
+                        .iter()
+                        .filter(|r| r.failed())
+                        .map(|r| r.id.as_str())
+                        .collect();
+                    if bad.is_empty() {
+                        local_stats = Some(st);
+                        checked = Some(checks);
+                        Ok(e)
+                    } else {
+                        progress(&format!(
+                            "embed: the local update fails {}; embedding all of S_T again",
+                            bad.join(", ")
+                        ));
+                        embedded::embed(k, &base)
+                    }
+                }
+                Some(Err(f)) => {
+                    progress(&format!(
+                        "embed: the local update failed ({}); embedding all of S_T again",
+                        f.what
+                    ));
+                    embedded::embed(k, &base)
+                }
+            },
         };
         if let Some(f) = emb.as_ref().err().cloned() {
             let new = !failed_at.iter().any(|(x, _)| *x == key);
@@ -355,9 +395,12 @@ fn fit_once(
                 }
             }
         }
+        let mut all_hold = false;
         let usable = match &emb {
             Ok(e) => {
-                let checks = embed_checks::run(k, &base, e);
+                let checks = checked
+                    .take()
+                    .unwrap_or_else(|| embed_checks::run(k, &base, e));
                 let bad: Vec<&str> = checks
                     .iter()
                     .filter(|r| r.failed())
@@ -366,8 +409,16 @@ fn fit_once(
                 let usable = !checks.iter().any(|r| {
                     (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
                 });
+                all_hold = bad.is_empty();
+                let how = match &local_stats {
+                    Some(st) => format!(
+                        "local update: {} of {} curves kept, {} of {} curved triangles' maps kept; ",
+                        st.kept_curves, st.curves, st.kept_maps, st.maps
+                    ),
+                    None => String::new(),
+                };
                 progress(&format!(
-                    "embed: {} curves ({} along an edge of S_T, {} in their faces' region, {} widened, {} on all of S_T, {} taken up and traced again, {} restarts), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
+                    "embed: {how}{} curves ({} along an edge of S_T, {} in their faces' region, {} widened, {} on all of S_T, {} taken up and traced again, {} restarts), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
                     e.emb.curves.len(),
                     e.emb.stats.on_edges,
                     e.emb.stats.in_region,
@@ -426,6 +477,7 @@ fn fit_once(
             offenders: offenders.len(),
             folds: 0,
             refine: None,
+            local: local_stats,
             seconds: 0.0,
         };
         progress(&format!(
@@ -467,6 +519,10 @@ fn fit_once(
                 folds,
             });
         }
+        prev = match emb {
+            Ok(e) if usable && all_hold => Some(local::Previous::new(&base, e)),
+            _ => None,
+        };
         let mut st = refine::RefineStats::default();
         for x in refine::choose(&base, &errors, &offenders) {
             if !base.is_base(x) {

@@ -4,7 +4,9 @@
 //! offending base face by a stellar face split, then restore the local Delaunay property of the
 //! base triangles' unfolded pairs by Lawson flips (edge flips are stellar: a split then a weld),
 //! which keeps the new triangles' shapes from degenerating. Every operation keeps the
-//! parametrization a bijection (`base` module doc).
+//! parametrization a bijection (`base` module doc). The next round embeds again only the
+//! curves and curved triangles of the faces these operations changed ([`super::local`], SPEC
+//! `AF-refine-local`).
 
 use super::base::{BaseMesh, Param};
 

@@ -27,7 +27,7 @@
 use super::base::{BaseMesh, Param};
 use super::embed_checks::{local, meet, only_at};
 use super::geodesic::{
-    common_faces, dijkstra, dist, Curve, EmbedError, EmbedStats, Embedding, Graph,
+    common_faces, dijkstra, dist, Curve, EmbedError, EmbedStats, Embedding, Graph, Node,
 };
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use rustc_hash::FxHashMap;
@@ -75,6 +75,27 @@ impl Traced {
             }
         }
         self.paths[e] = Some((tier, path));
+    }
+    /// Close a kept curve (`super::local`) to the curves traced after it: its inner vertex
+    /// nodes, and its segments in each triangle they lie on, as [`Traced::commit`] does for
+    /// a path (its edge nodes need not be points of the graph: a step is refused where it
+    /// meets one of the segments, decided exactly, as for any traced curve). Its path stays
+    /// empty: the curve is taken as it is, never taken up.
+    fn commit_kept(&mut self, k: &SimplicialSurface, e: usize, nodes: &[Node]) {
+        for n in nodes.iter().skip(1).take(nodes.len().saturating_sub(2)) {
+            if let Node::Vertex(v) = *n {
+                self.used.insert(v, e);
+            }
+        }
+        for w in nodes.windows(2) {
+            for f in common_faces(k, &w[0], &w[1]) {
+                if let (Some(p), Some(q)) = (local(k, f, &w[0]), local(k, f, &w[1])) {
+                    self.segs.entry(f).or_default().push((e, [p, q]));
+                }
+            }
+        }
+        self.paths[e] = Some((0, Vec::new()));
+        self.fixed[e] = true;
     }
     /// Undo [`Traced::commit`] of e: only the points and triangles of e's own path are
     /// visited (a take-up used to sweep every closed point and triangle of S_T).
@@ -279,11 +300,13 @@ impl<'a> Edge<'a> {
 
 /// One tracing of all base edges (module doc): the edges `first` lead the queue, then the
 /// others in the order of `edges`. Err(e): base edge e has no path.
+#[allow(clippy::too_many_arguments)]
 fn trace_all(
     k: &SimplicialSurface,
     base: &BaseMesh,
     g: &Graph,
     edges: &[(u32, u32)],
+    kept: &[Option<&Curve>],
     first: &[usize],
     collect: bool,
     stats: &mut EmbedStats,
@@ -302,7 +325,17 @@ fn trace_all(
     // never taken up; every other curve then goes around it. Traced later, another curve could
     // cross it (it is short and was often in the way), and nothing but that edge joins its
     // ends inside their faces' region (anchor, bunny: the edge walled off for good).
+    // Kept curves (`super::local`) are closed first, like the edges of S_T: fixed, never
+    // taken up, every later curve traced around them.
+    for (e, c) in kept.iter().enumerate() {
+        if let Some(c) = c {
+            t.commit_kept(k, e, &c.nodes);
+        }
+    }
     for (e, &(a, b)) in edges.iter().enumerate() {
+        if kept[e].is_some() {
+            continue;
+        }
         if k.halfedge(VertexId(a), VertexId(b)).is_some() {
             t.commit(g, k, e, 0, g.along(a, b).to_vec());
             t.fixed[e] = true;
@@ -369,13 +402,26 @@ fn trace_all(
 /// [`base_edges`] (shortest first); when one has no path, the tracing starts again with that
 /// edge first (before the edges promoted earlier), at most [`RESTARTS`] times.
 pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedding, EmbedError> {
+    curves_keeping(k, base, &HashMap::new())
+}
+
+/// [`initial_curves`] with the curves in `kept` (by base edge (a, b), a < b) taken as they
+/// are (a refinement round's unchanged curves, `super::local`): closed before any other is
+/// traced, never taken up; only the other base edges are traced. A kept curve whose edge is
+/// no base edge is ignored.
+pub fn curves_keeping(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    kept: &HashMap<(u32, u32), Curve>,
+) -> Result<Embedding, EmbedError> {
     let g = Graph::new(k);
     let edges = base_edges(base);
+    let kept_of: Vec<Option<&Curve>> = edges.iter().map(|e| kept.get(e)).collect();
     let mut stats = EmbedStats::default();
     let mut first: Vec<usize> = Vec::new();
     let t = loop {
         let mut s = EmbedStats::default();
-        match trace_all(k, base, &g, &edges, &first, false, &mut s) {
+        match trace_all(k, base, &g, &edges, &kept_of, &first, false, &mut s) {
             Ok(t) => {
                 stats.ripped = s.ripped;
                 break t;
@@ -384,7 +430,7 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
                 let e = es[0];
                 if stats.restarts >= RESTARTS || first.first() == Some(&e) {
                     // The same tracing once more, past the blocked edges, to name them all.
-                    let mut all = trace_all(k, base, &g, &edges, &first, true, &mut s)
+                    let mut all = trace_all(k, base, &g, &edges, &kept_of, &first, true, &mut s)
                         .err()
                         .unwrap_or_default();
                     all.retain(|&x| x != e);
@@ -411,6 +457,12 @@ pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embeddin
             b,
             blocked: vec![(a, b)],
         })?;
+        if let Some(c) = kept_of[e] {
+            stats.kept += 1;
+            index.insert((a, b), curves.len());
+            curves.push(c.clone());
+            continue;
+        }
         match tier {
             0..=2 => stats.in_region += 1,
             3 => stats.widened += 1,

@@ -286,6 +286,20 @@ pub fn relative_gain(k: &SimplicialSurface, nodes: &[Node], i: usize) -> f64 {
 
 /// Shorten every curve (module doc); the embedding's stats get the moves and sweeps.
 pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
+    shorten_except(k, base, emb, &[]);
+}
+
+/// [`shorten`], the curves i with `frozen[i]` left as they are (kept from the previous
+/// round, `super::local`): they are obstacles to the others' moves like any curve, and are
+/// not moved themselves (a kept curve converged in its own round; moving it would change the
+/// curved triangles that are not re-mapped).
+pub fn shorten_except(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    emb: &mut Embedding,
+    frozen: &[bool],
+) {
+    let is_frozen = |ci: usize| frozen.get(ci).copied().unwrap_or(false);
     let mut owner: std::collections::HashMap<u32, usize> = Default::default();
     for (ci, c) in emb.curves.iter().enumerate() {
         for n in &c.nodes {
@@ -307,7 +321,7 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
     }
     for sweep in 0..MAX_SWEEPS {
         let mut moved = 0;
-        for ci in 0..emb.curves.len() {
+        for ci in (0..emb.curves.len()).filter(|&ci| !is_frozen(ci)) {
             let mut i = 1;
             while i + 1 < emb.curves[ci].nodes.len() {
                 let nodes = &emb.curves[ci].nodes;
@@ -364,8 +378,8 @@ pub fn shorten(k: &SimplicialSurface, base: &BaseMesh, emb: &mut Embedding) {
                 moved += 1;
             }
         }
-        moved += drop_turns(k, emb, &mut owner, &near);
-        moved += super::straighten::straighten_runs(k, base, emb, &mut owner, &mut near);
+        moved += drop_turns(k, emb, &mut owner, &near, frozen);
+        moved += super::straighten::straighten_runs(k, base, emb, &mut owner, &mut near, frozen);
         emb.stats.moves += moved;
         emb.stats.sweeps = sweep + 1;
         if moved == 0 {
@@ -386,9 +400,10 @@ fn drop_turns(
     emb: &mut Embedding,
     owner: &mut std::collections::HashMap<u32, usize>,
     near: &Near,
+    frozen: &[bool],
 ) -> usize {
     let mut dropped = 0;
-    for ci in 0..emb.curves.len() {
+    for ci in (0..emb.curves.len()).filter(|&ci| !frozen.get(ci).copied().unwrap_or(false)) {
         let mut i = 1;
         while i + 1 < emb.curves[ci].nodes.len() {
             let nodes = &emb.curves[ci].nodes;

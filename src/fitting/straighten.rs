@@ -289,7 +289,8 @@ fn straighten_piece(
     Piece::Replaced(span.1)
 }
 
-/// Replace every run of edge nodes between two vertex nodes by its straightened run
+/// Replace every run of edge nodes between two vertex nodes (of the curves not `frozen`) by
+/// its straightened run
 /// ([`straighten_run`], [`straighten_piece`]). Where the funnel's path wraps a vertex the
 /// curve may not pass through (a base vertex, or a node of another curve), the constrained
 /// shortest curve passes arbitrarily close to it on the side the curve is on: the run's
@@ -303,9 +304,10 @@ pub(super) fn straighten_runs(
     emb: &mut Embedding,
     owner: &mut HashMap<u32, usize>,
     near: &mut Near,
+    frozen: &[bool],
 ) -> usize {
     let mut moved = 0;
-    for ci in 0..emb.curves.len() {
+    for ci in (0..emb.curves.len()).filter(|&ci| !frozen.get(ci).copied().unwrap_or(false)) {
         let mut i = 0;
         while i + 1 < emb.curves[ci].nodes.len() {
             let nodes = &emb.curves[ci].nodes;

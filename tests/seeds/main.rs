@@ -6,6 +6,7 @@
 mod common;
 
 mod fitting;
+mod fitting_local;
 mod fitting_unblock;
 mod msplines;
 mod sdiff_3d;
