@@ -61,7 +61,7 @@ def certify(
 
 def strip_timings(cert: dict) -> dict:
     """A certificate without what depends on the run rather than on the proofs: wall time,
-    per-result milliseconds (the f64 rounding bound's included), thread count, shard tag, the order of the results (a run lists
+    per-result milliseconds (the f64 rounding and whole-chart g_v bounds' included), thread count, shard tag, the order of the results (a run lists
     them in proving order, ``merge`` sorted by configuration and property) and the file's
     shared-statement table (``statements``: a compaction of the files; every result carries
     its statement once read), for comparing two runs."""
@@ -72,6 +72,9 @@ def strip_timings(cert: dict) -> dict:
         if isinstance(r.get("f64_rounding"), dict):
             # The f64 rounding bound's own time (CERT-f64-rounding) is a timing too.
             r["f64_rounding"] = {k: v for k, v in r["f64_rounding"].items() if k != "millis"}
+        if isinstance(r.get("g_chart"), dict):
+            # So is the whole-chart g_v bound's (CERT-f64-g-chart).
+            r["g_chart"] = {k: v for k, v in r["g_chart"].items() if k != "millis"}
         rs.append(r)
     c["results"] = sorted(rs, key=lambda r: json.dumps([r["key"], r["property"]], sort_keys=True))
     return c
