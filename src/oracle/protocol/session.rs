@@ -1,357 +1,18 @@
-//! The `ppm oracle` protocol: one JSON request per line on stdin, one JSON response per line
-//! on stdout. Every numerical answer carries the MPFR value (decimal strings, all digits), the
-//! f64 value, the MPFR precision and |f64 − MPFR|. Bad requests get a typed error, never a
-//! crash. See `docs/oracle.md` for the full list of operations with a worked example.
-//!
-//! Chapter 4 operations (`degree` … `rotate`) work on the validated mesh alone. Chapter 5
-//! operations (`gamma`, `psi`, `psi_control`, `theta`, `theta_derivatives`, `eval`) need the
-//! parametric pseudo-surface [`Pps`] (Defs. 5.4.1–5.4.2), which the session builds lazily on
-//! first use with the current profile (`set_profile`, default `paper`) and S′ = the PN
-//! triangles of the mesh (Sec. 5.1). The shape-function control points are fitted in f64
-//! (Sec. 5.2); the MPFR answers evaluate the construction with *those* control points, so the
-//! difference measures the rounding of the f64 evaluation, not of the fit.
+//! A protocol session: the loaded mesh, precision, profile and the lazily built surfaces;
+//! it answers each request (docs/oracle.md).
 
-use super::choice::{read_fitted, vertex_pps, Choice};
-use super::query::{add_info, both, both_or_note, vertex, Env, Needs, Numeric, OnF64};
-use super::reference::Other;
-use crate::construction::{GluingError, MapError, PpmGluing, P2};
+use super::request::{MemberTest, Request};
+use super::response::{OracleError, Response};
+use crate::construction::{PpmGluing, P2};
 use crate::mesh::{load_surface, FaceId, LoadError, SimplicialSurface, VertexId};
 use crate::numeric::{Mp, Scalar, Trit};
+use crate::oracle::choice::{read_fitted, vertex_pps, Choice};
+use crate::oracle::query::{add_info, both, both_or_note, vertex, Env, Needs, Numeric, OnF64};
+use crate::oracle::reference::Other;
 use crate::surface::jet::Jet;
 use crate::surface::smooth::{MpConsts, SmoothSurface};
 use crate::surface::{Construction, Consts, Pps, Profile, SurfaceError};
-use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
-use std::path::PathBuf;
-use thiserror::Error;
-
-/// Largest accepted MPFR precision (bounded time and memory per request): the end of the one
-/// precision limit [`crate::numeric::PREC_BITS`].
-pub const MAX_BITS: u32 = *crate::numeric::PREC_BITS.end();
-
-/// Membership test for Ω_uw.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, Default)]
-#[serde(rename_all = "snake_case")]
-pub enum MemberTest {
-    /// Def. 4.1.9 literally (the reference).
-    #[default]
-    Literal,
-    /// The canonical-lens test of Sec. 6.1.3 (differs for degree ≥ 11, SPEC.md `D4.1.9-lens`).
-    Lens,
-}
-
-/// One request of the protocol (`{"op": "...", ...}`); `id` (any JSON) is echoed back.
-#[derive(Debug, Clone, Deserialize, Serialize, PartialEq)]
-#[serde(tag = "op", rename_all = "snake_case", deny_unknown_fields)]
-pub enum Request {
-    /// Load and validate a mesh; later queries refer to its vertex ids (file indices). A
-    /// fitted-surface file (`ppm fit -o`, docs/fit-format.md) loads its base mesh, and later
-    /// `eval` requests answer for the fitted surface (until `set_construction` or another
-    /// `load`).
-    Load {
-        /// Mesh file (OFF, OBJ or PLY) or fitted-surface file.
-        path: PathBuf,
-    },
-    /// Read a certificate (`ppm certify`): later `phi` answers of the edge configurations it
-    /// bounds carry `info.f64_error_bound`, its proven bound on |f64 − exact| (SPEC
-    /// `CERT-f64-rounding`).
-    SetCertificate {
-        /// Certificate JSON file.
-        path: PathBuf,
-    },
-    /// Set the MPFR precision of later answers (default 256).
-    SetPrecision {
-        /// Precision in bits, 2..=[`MAX_BITS`].
-        bits: u32,
-    },
-    /// m_v (Def. 4.1.1).
-    Degree {
-        /// Vertex id (0-based file index).
-        v: u32,
-    },
-    /// The labels s_v (Def. 4.1.4 / Sec. 6.1.2): `[[neighbour, i], …]` in label order.
-    Labels {
-        /// Vertex id (0-based file index).
-        v: u32,
-    },
-    /// p ∈ Ω_uw? (Def. 4.1.9 or the Sec. 6.1.3 lens test).
-    Member {
-        /// First vertex of the edge [u, w]: the point lives in Ω_u.
-        u: u32,
-        /// Second vertex of the edge [u, w].
-        w: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-        /// The membership test (default: literal).
-        #[serde(default)]
-        test: MemberTest,
-    },
-    /// φ_wu(p), p ∈ Ω_uw (Def. 4.1.10: from Ω_uw to Ω_wu).
-    Phi {
-        /// First vertex of the edge [u, w]: the point lives in Ω_u.
-        u: u32,
-        /// Second vertex of the edge [u, w].
-        w: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-    },
-    /// g_v(p) (Def. 4.1.6).
-    G {
-        /// Vertex id (0-based file index).
-        v: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-    },
-    /// g_v⁻¹(p) (Def. 4.1.6).
-    GInv {
-        /// Vertex id (0-based file index).
-        v: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-    },
-    /// h(p) = (1 − x, −y) (Def. 4.1.7).
-    H {
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-    },
-    /// R_(u,w)(p): rotation by −2π·s_u(w)/m_u (Def. 4.1.8).
-    Rotate {
-        /// First vertex of the edge [u, w]: the point lives in Ω_u.
-        u: u32,
-        /// Second vertex of the edge [u, w].
-        w: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-    },
-    /// Select S′ (Sec. 6.2): `"pn"` (PN triangles, default) or `"loop"` (the Loop limit
-    /// surface, exact); the pseudo-surface is rebuilt on the next Chapter 5 request.
-    SetSurface {
-        /// `"pn"` or `"loop"`.
-        surface: String,
-    },
-    /// Select the construction later `eval` requests answer for: `"vertex"` (the report's,
-    /// default), `"sigma-v"` (the tutorial's (σ, v)-indexed PPS, SPEC `SV-…`; optional
-    /// `kappa`, default 1/4) or `"manifold-spline"` (seed 003 Secs. 5.5–5.6; no MPFR
-    /// evaluation, so its `eval` is refused). Other Chapter 5 ops stay with the vertex
-    /// construction.
-    SetConstruction {
-        /// `"vertex"`, `"sigma-v"` or `"manifold-spline"`.
-        construction: String,
-        /// κ of r_{v,σ} (sigma-v only).
-        #[serde(default)]
-        kappa: Option<f64>,
-    },
-    /// Select the parameter profile of Chapter 5 (`"paper"` or `"authors-code"`, see
-    /// [`Profile`]); the pseudo-surface is rebuilt on the next Chapter 5 request.
-    SetProfile {
-        /// `"paper"` or `"authors-code"`.
-        profile: String,
-    },
-    /// γ_v(p) = ξ(‖p‖) (Defs. 5.3.1–5.3.2), as a one-element array; 0 outside Ω_v.
-    Gamma {
-        /// Vertex id (0-based file index).
-        v: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-    },
-    /// ψ_v(p), the shape function (Def. 5.2.1), for p in the square □_v = [−L, L]²,
-    /// L = cos(π/m_v).
-    Psi {
-        /// Vertex id (0-based file index).
-        v: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-    },
-    /// The control points of ψ_v (Sec. 5.2 least-squares fit; f64 only).
-    PsiControl {
-        /// Vertex id (0-based file index).
-        v: u32,
-    },
-    /// θ_v(p), p ∈ Ω_v (Def. 5.4.2, Eq. 5.1).
-    Theta {
-        /// Vertex id (0-based file index).
-        v: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-    },
-    /// Every partial derivative ∂^{i+j}θ_v/∂x^i∂y^j at p ∈ Ω_v with i + j ≤ `order` (≤ 3,
-    /// default 3), from order-3 jets (forward-mode differentiation, no finite differences).
-    ThetaDerivatives {
-        /// Vertex id (0-based file index).
-        v: u32,
-        /// The point `[x, y]` in the local coordinates of the first-named p-domain.
-        p: [f64; 2],
-        /// Highest total order i + j, 0..=3 (default 3).
-        #[serde(default)]
-        order: Option<u32>,
-    },
-    /// S′ at (σ, λ, μ, ν) (Sec. 5.1): the session's PN-triangle surface b_σ (normal rule of
-    /// the profile), f64 and MPFR with the same f64 control net.
-    Sprime {
-        /// σ: face id (0-based file index).
-        face: u32,
-        /// (λ, μ, ν) at the corners of σ in file order (≥ 0, sum 1).
-        bary: [f64; 3],
-    },
-    /// eval(σ, λ, μ, ν) (Sec. 6.1.4): the point of M, with the chart and q ∈ Ω_vertex.
-    Eval {
-        /// σ: face id (0-based file index).
-        face: u32,
-        /// (λ, μ, ν) at the corners of σ in file order (≥ 0, sum 1).
-        bary: [f64; 3],
-    },
-}
-
-/// Error kinds of the protocol (see [`OracleError::kind`] for the stable names).
-#[derive(Debug, Error, Clone, PartialEq)]
-pub enum OracleError {
-    /// The line is not JSON, or not a known request with the right fields.
-    #[error("malformed request: {0}")]
-    Malformed(String),
-    /// A query arrived before any mesh was loaded.
-    #[error("no mesh loaded (send {{\"op\":\"load\",\"path\":...}} first)")]
-    NoMesh,
-    /// The mesh could not be read, or is not a simplicial surface (Def. 3.1.6).
-    #[error("cannot load mesh: {0}")]
-    Load(String),
-    /// No such vertex, edge or face in the loaded mesh.
-    #[error("{0}")]
-    Mesh(String),
-    /// The point is outside the domain of the queried map (Ω_v, Ω_uw, □_v, or the
-    /// barycentric simplex).
-    #[error("point not in the domain: {0}")]
-    NotInDomain(String),
-    /// `set_precision` outside 2..=[`MAX_BITS`].
-    #[error("precision {0} bits out of range {min}..={MAX_BITS}", min = crate::numeric::PREC_BITS.start())]
-    Precision(u32),
-    /// NaN or ±∞ in the query.
-    #[error("non-finite coordinate in the query point")]
-    NonFinite,
-    /// The quantity is undefined at this point (Σ_u Γ_uv(p) = 0 in Eq. 5.1).
-    #[error("undefined: {0}")]
-    Undefined(String),
-    /// The loaded mesh is beyond what the construction can be built for (fit memory of
-    /// Sec. 5.2, or coordinates outside the f64 range of normals and curvatures); the session
-    /// continues (Chapter 4 queries still answer).
-    #[error("refused: {0}")]
-    Refused(String),
-}
-
-impl OracleError {
-    /// Stable machine-readable kind.
-    pub fn kind(&self) -> &'static str {
-        match self {
-            OracleError::Malformed(_) => "malformed_request",
-            OracleError::NoMesh => "no_mesh",
-            OracleError::Load(_) => "load_failed",
-            OracleError::Mesh(_) => "no_such_element",
-            OracleError::NotInDomain(_) => "not_in_domain",
-            OracleError::Precision(_) => "bad_precision",
-            OracleError::NonFinite => "non_finite",
-            OracleError::Undefined(_) => "undefined",
-            OracleError::Refused(_) => "refused",
-        }
-    }
-}
-
-impl From<GluingError> for OracleError {
-    fn from(e: GluingError) -> Self {
-        match e {
-            GluingError::Map { .. } => OracleError::NotInDomain(e.to_string()),
-            other => OracleError::Mesh(other.to_string()),
-        }
-    }
-}
-
-impl From<MapError> for OracleError {
-    fn from(e: MapError) -> Self {
-        OracleError::NotInDomain(e.to_string())
-    }
-}
-
-impl From<SurfaceError> for OracleError {
-    fn from(e: SurfaceError) -> Self {
-        match e {
-            SurfaceError::NoSuchVertex(_)
-            | SurfaceError::NoSuchFace(_)
-            | SurfaceError::NoSuchEdge(..)
-            | SurfaceError::MissingDegree(_)
-            | SurfaceError::LevelTooLarge { .. } => OracleError::Mesh(e.to_string()),
-            SurfaceError::NotInOmega { .. }
-            | SurfaceError::BadBarycentric(_)
-            | SurfaceError::Map(_) => OracleError::NotInDomain(e.to_string()),
-            SurfaceError::ZeroWeight(_) => OracleError::Undefined(e.to_string()),
-            SurfaceError::FitTooLarge { .. }
-            | SurfaceError::CoordinateOutOfRange { .. }
-            | SurfaceError::ExtentTooSmall { .. } => OracleError::Refused(e.to_string()),
-        }
-    }
-}
-
-/// One response line.
-#[derive(Debug, Clone, Serialize, Deserialize, PartialEq)]
-pub struct Response {
-    /// `true` for an answer, `false` for an error (then `error` is set).
-    pub ok: bool,
-    /// The request's `id`, echoed.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub id: Option<Value>,
-    /// The request's `op`, echoed.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub op: Option<String>,
-    /// The reference value (MPFR, decimal strings) or a non-numerical answer.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub value: Option<Value>,
-    /// The same quantity computed in f64.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub f64: Option<Value>,
-    /// The MPFR precision of `value`, in bits.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub mp_bits: Option<u32>,
-    /// |f64 − MPFR| (Euclidean, computed in MPFR): the error estimate of the f64 value.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub difference: Option<f64>,
-    /// Auxiliary, non-numerical facts of the answer (eval's chart and q, the layout of
-    /// `theta_derivatives`, notes such as "f64 only").
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub info: Option<Value>,
-    /// `{"kind", "message"}` when `ok` is false (kinds: [`OracleError::kind`]).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub error: Option<Value>,
-}
-
-impl Response {
-    /// The error response to a line that is not a request (no `id` or `op` to echo).
-    pub fn error(e: &OracleError) -> Self {
-        Self::err(None, None, e)
-    }
-    fn err(id: Option<Value>, op: Option<String>, e: &OracleError) -> Self {
-        Response {
-            ok: false,
-            id,
-            op,
-            value: None,
-            f64: None,
-            mp_bits: None,
-            difference: None,
-            info: None,
-            error: Some(json!({"kind": e.kind(), "message": e.to_string()})),
-        }
-    }
-    fn plain(value: Value) -> Self {
-        Response {
-            ok: true,
-            id: None,
-            op: None,
-            value: Some(value),
-            f64: None,
-            mp_bits: None,
-            difference: None,
-            info: None,
-            error: None,
-        }
-    }
-}
 
 /// The Chapter 5 state of a session: the pseudo-surface and its constants per scalar (the
 /// MPFR ones as `eval` takes them through `SmoothSurface`, shared with the other queries).
@@ -382,7 +43,7 @@ pub struct Session {
     other: Option<Other>,
     /// The proven f64 error bounds of φ_wu (per edge configuration) and of g_v, g_v⁻¹ (per
     /// degree), from `set_certificate`.
-    f64_bounds: super::query::CertBounds,
+    f64_bounds: super::super::query::CertBounds,
 }
 
 impl Default for Session {
@@ -557,7 +218,7 @@ impl Session {
             Request::SetCertificate { path } => {
                 let cert = crate::certify::read_certificate(path)
                     .map_err(|e| OracleError::Load(e.to_string()))?;
-                self.f64_bounds = super::query::f64_bounds(&cert);
+                self.f64_bounds = super::super::query::f64_bounds(&cert);
                 Ok(Response::plain(json!({
                     "edge_configurations": self.f64_bounds.phi.len(),
                     "degrees": self.f64_bounds.g.len(),
@@ -650,7 +311,7 @@ impl Session {
                     return Err(OracleError::NonFinite);
                 }
                 let (s, c, named) = self.eval_reference()?;
-                super::reference::answer(s, c, named, FaceId(*face), *bary)
+                super::super::reference::answer(s, c, named, FaceId(*face), *bary)
             }
             Request::Degree { v } => {
                 let g = PpmGluing::new(self.k()?);
