@@ -195,9 +195,7 @@ impl Walk {
         self.log.push(((a, b), ch));
         Ok(ch)
     }
-}
 
-impl Walk {
     /// Where no vertex of S_T is left near a–b (every one nearby is a base vertex), the base
     /// vertex C opposite a–b with the shortest |AC| + |CB| whose removal (the simplification's
     /// weld, with its limits) gives a base mesh never embedded is removed: then the curve of

@@ -105,17 +105,9 @@ pub fn orient3(a: &[f64; 3], b: &[f64; 3], c: &[f64; 3], d: &[f64; 3]) -> Option
 }
 
 /// Sign of det(b − a, c − a) (positive when a, b, c turn counterclockwise), exact for finite
-/// points; `None` when a coordinate is NaN or infinite.
+/// points; `None` when a coordinate is NaN or infinite: the sign of [`orient2_det`].
 pub fn orient2(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<Ordering> {
-    let pts = [a, b, c];
-    if !pts.iter().all(|p| p.iter().all(|x| x.is_finite())) {
-        return None;
-    }
-    if !pts.iter().all(|p| p.iter().all(|&x| safe(x))) {
-        return Some(orient2_exact(a, b, c));
-    }
-    let p = |x: [f64; 2]| Coord { x: x[0], y: x[1] };
-    orient2d(p(a), p(b), p(c)).partial_cmp(&0.0)
+    orient2_det(a, b, c).partial_cmp(&0.0)
 }
 
 /// det(b − a, c − a) as a value: Shewchuk's adaptive orient2d (its sign exact, its magnitude
