@@ -7,7 +7,7 @@
 //! Bernstein conversion over `BigRational`; the operations needed (sum, product, partial
 //! derivatives, composition with an affine map, Bernstein coefficients) are a few dozen lines.
 
-use super::rational::{multinomial, q, to_f64, Q};
+use super::rational::{multinomial, over_common_denominator, q, to_f64, Q};
 use num_bigint::BigInt;
 use num_traits::{One, Zero};
 
@@ -78,10 +78,6 @@ impl Poly2 {
         let d = self.deg;
         self.c[a * (d + 1) + b] = v;
     }
-    fn add_at(&mut self, a: usize, b: usize, v: &Q) {
-        let d = self.deg;
-        self.c[a * (d + 1) + b] += v;
-    }
     /// Every coefficient is zero.
     pub fn is_zero(&self) -> bool {
         self.c.iter().all(|x| x.is_zero())
@@ -110,25 +106,42 @@ impl Poly2 {
     }
     /// self · o.
     pub fn mul(&self, o: &Poly2) -> Poly2 {
+        // Integer products over a common denominator, one reduction per coefficient
+        // (`over_common_denominator`): the same rationals as summing the products in ℚ.
         let d = self.deg + o.deg;
-        let mut r = Poly2::zero(d);
+        let (xa, da) = over_common_denominator(self.c.iter());
+        let (xb, db) = over_common_denominator(o.c.iter());
+        let mut sums = vec![BigInt::zero(); (d + 1) * (d + 1)];
         for a in 0..=self.deg {
             for b in 0..=(self.deg - a) {
-                let x = self.get(a, b);
+                let x = &xa[a * (self.deg + 1) + b];
                 if x.is_zero() {
                     continue;
                 }
                 for c in 0..=o.deg {
                     for e in 0..=(o.deg - c) {
-                        let y = o.get(c, e);
+                        let y = &xb[c * (o.deg + 1) + e];
                         if !y.is_zero() {
-                            r.add_at(a + c, b + e, &(&x * &y));
+                            sums[(a + c) * (d + 1) + b + e] += x * y;
                         }
                     }
                 }
             }
         }
-        r
+        let den = da * db;
+        Poly2 {
+            deg: d,
+            c: sums
+                .into_iter()
+                .map(|v| {
+                    if v.is_zero() {
+                        Q::zero()
+                    } else {
+                        Q::new(v, den.clone())
+                    }
+                })
+                .collect(),
+        }
     }
     /// self^k.
     pub fn pow(&self, k: usize) -> Poly2 {
@@ -286,4 +299,54 @@ pub fn bernstein_basis(i: [usize; 3]) -> Poly2 {
         .mul(&Poly2::s().pow(i[1]))
         .mul(&Poly2::t().pow(i[2]))
         .scale(&Q::from_integer(multinomial(n, &i)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sdiff::common::rational::qr;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    fn random_poly(rng: &mut ChaCha8Rng, deg: usize) -> Poly2 {
+        let mut p = Poly2::zero(deg);
+        for a in 0..=deg {
+            for b in 0..=(deg - a) {
+                // Zeros, integers and fractions with unlike denominators.
+                let v = match rng.gen_range(0..4) {
+                    0 => Q::zero(),
+                    1 => q(rng.gen_range(-9..10)),
+                    _ => qr(rng.gen_range(-999..1000), rng.gen_range(1..64)),
+                };
+                p.set(a, b, v);
+            }
+        }
+        p
+    }
+
+    /// The product over a common denominator is the sum of the products in ℚ, coefficient for
+    /// coefficient (and so equal as a value, reduced form included).
+    #[test]
+    fn sd_poly2_product_over_a_common_denominator_equals_the_sum_in_q() {
+        let mut rng = ChaCha8Rng::seed_from_u64(2);
+        for case in 0..100 {
+            let (da, db) = (rng.gen_range(0..5), rng.gen_range(0..5));
+            let (x, y) = (random_poly(&mut rng, da), random_poly(&mut rng, db));
+            let mut want = Poly2::zero(da + db);
+            for a in 0..=da {
+                for b in 0..=(da - a) {
+                    for c in 0..=db {
+                        for e in 0..=(db - c) {
+                            let v = want.get(a + c, b + e) + x.get(a, b) * y.get(c, e);
+                            want.set(a + c, b + e, v);
+                        }
+                    }
+                }
+            }
+            assert_eq!(x.mul(&y), want, "case {case}");
+        }
+        // A product that cancels to zero keeps the canonical zero.
+        let p = Poly2::s().mul(&Poly2::constant(qr(1, 3)));
+        assert!(p.sub(&p).mul(&p).is_zero());
+    }
 }

@@ -3,6 +3,7 @@
 //! and from f64.
 
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_traits::{One, Signed};
 
 pub use crate::numeric::Q;
@@ -15,6 +16,33 @@ pub fn q(n: i64) -> Q {
 /// `p/d` as a rational (`d ≠ 0`).
 pub fn qr(p: i64, d: i64) -> Q {
     Q::new(BigInt::from(p), BigInt::from(d))
+}
+
+/// The values as integers over one common denominator: `(n, d)` with `xs[i] = n[i] / d` and
+/// `d > 0` the lcm of their denominators. Why: `BigRational` reduces by a gcd after every
+/// operation, which was most of the exact engines' time in sums of products (polynomial
+/// products, determinants); over a common denominator a product of two polynomials needs one
+/// reduction per coefficient of the result, and the values are the same rationals.
+pub(crate) fn over_common_denominator<'a>(
+    xs: impl Iterator<Item = &'a Q> + Clone,
+) -> (Vec<BigInt>, BigInt) {
+    let d = xs.clone().fold(BigInt::one(), |d, x| {
+        if x.denom().is_one() {
+            d
+        } else {
+            d.lcm(x.denom())
+        }
+    });
+    let n = xs
+        .map(|x| {
+            if x.denom() == &d {
+                x.numer().clone()
+            } else {
+                x.numer() * (&d / x.denom())
+            }
+        })
+        .collect();
+    (n, d)
 }
 
 /// The multinomial coefficient n! / (k_0! k_1! …), Σ k = n.

@@ -17,7 +17,8 @@
 //! is *unresolved*, never a guess. Sizes are bounded before any work ([`MAX_DIM`], [`MAX_COEFFICIENTS`]): a typed [`SimplexError`].
 
 use crate::sdiff::common::positivity::{Budget, Cover, Decision, Strictness};
-use crate::sdiff::common::rational::{multinomial, q, qr, to_f64, Q};
+use crate::sdiff::common::rational::{multinomial, over_common_denominator, q, qr, to_f64, Q};
+use num_bigint::BigInt;
 use num_traits::{One, Signed, Zero};
 use std::collections::{BTreeMap, HashMap};
 
@@ -180,13 +181,23 @@ impl SimplexPoly {
     }
     /// self · o.
     pub fn mul(&self, o: &SimplexPoly) -> SimplexPoly {
-        let mut alpha = BTreeMap::new();
-        for (a, x) in &self.alpha {
-            for (b, y) in &o.alpha {
+        // Integer products over a common denominator, one reduction per coefficient
+        // (`over_common_denominator`): the same rationals as summing the products in ℚ.
+        let (xa, da) = over_common_denominator(self.alpha.values());
+        let (xb, db) = over_common_denominator(o.alpha.values());
+        let mut sums: BTreeMap<Vec<usize>, BigInt> = BTreeMap::new();
+        for (a, x) in self.alpha.keys().zip(&xa) {
+            for (b, y) in o.alpha.keys().zip(&xb) {
                 let e: Vec<usize> = a.iter().zip(b).map(|(u, v)| u + v).collect();
-                Self::add_at(&mut alpha, e, x * y);
+                *sums.entry(e).or_default() += x * y;
             }
         }
+        let d = da * db;
+        let alpha = sums
+            .into_iter()
+            .filter(|(_, v)| !v.is_zero())
+            .map(|(e, v)| (e, Q::new(v, d.clone())))
+            .collect();
         SimplexPoly {
             m: self.m,
             n: self.n + o.n,
@@ -617,4 +628,45 @@ pub(crate) fn is_solitary(i: &[usize]) -> bool {
 /// p ≡ 1 (every Bernstein coefficient is 1): the numerator of X = id.
 pub fn is_one(p: &SimplexPoly) -> bool {
     p.bernstein().iter().all(|c| c.is_one())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    fn random_poly(rng: &mut ChaCha8Rng, m: usize, n: usize) -> SimplexPoly {
+        let coeffs: Vec<Q> = indices(m, n)
+            .iter()
+            .map(|_| match rng.gen_range(0..4) {
+                0 => Q::zero(),
+                1 => q(rng.gen_range(-9..10)),
+                _ => qr(rng.gen_range(-999..1000), rng.gen_range(1..64)),
+            })
+            .collect();
+        SimplexPoly::from_bernstein(m, n, &coeffs)
+    }
+
+    /// The product over a common denominator is the sum of the products in ℚ (`add_at`, the
+    /// definition), monomial for monomial, zeros dropped.
+    #[test]
+    fn sd_simplex_poly_product_over_a_common_denominator_equals_the_sum_in_q() {
+        let mut rng = ChaCha8Rng::seed_from_u64(4);
+        for case in 0..60 {
+            let m = rng.gen_range(1..4);
+            let (na, nb) = (rng.gen_range(0..4), rng.gen_range(0..4));
+            let (x, y) = (random_poly(&mut rng, m, na), random_poly(&mut rng, m, nb));
+            let mut want = BTreeMap::new();
+            for (a, u) in &x.alpha {
+                for (b, v) in &y.alpha {
+                    let e: Vec<usize> = a.iter().zip(b).map(|(i, j)| i + j).collect();
+                    SimplexPoly::add_at(&mut want, e, u * v);
+                }
+            }
+            let got = x.mul(&y);
+            assert_eq!((got.m, got.n), (m, x.n + y.n));
+            assert_eq!(got.alpha, want, "case {case}");
+        }
+    }
 }

@@ -7,10 +7,12 @@
 use super::complex::PlanarComplex;
 use super::inverse::newton;
 use super::params::ComplexMap;
+use crate::numeric::predicates::orient2;
 use crate::report::{CheckResult, Witness};
 use crate::sdiff::common::rational::{from_f64, to_f64, Q};
-use num_traits::{Signed, Zero};
+use num_traits::Signed;
 use serde_json::json;
+use std::cmp::Ordering;
 use std::collections::HashMap;
 
 /// Points per linear piece (the paper's "m samples"; see the design note: 8).
@@ -216,13 +218,23 @@ pub fn isocurves(
             )
         });
     }
-    for (i, j) in crossing_segments(&cur) {
-        topo.offend(|| {
+    match crossing_segments(&cur) {
+        Ok(pairs) => {
+            for (i, j) in pairs {
+                topo.offend(|| {
+                    Witness::new(
+                        format!("curved segments {i} and {j} cross"),
+                        json!({"segments": [i, j]}),
+                    )
+                });
+            }
+        }
+        Err(i) => topo.offend(|| {
             Witness::new(
-                format!("curved segments {i} and {j} cross"),
-                json!({"segments": [i, j]}),
+                format!("curved point {i} is not finite: crossings undecided"),
+                json!({"point": i}),
             )
-        });
+        }),
     }
     topo.note = format!("O: {lc} components, {ll} closed; 𝒪: {cc} components, {cl} closed");
     if topo.examined == 0 {
@@ -258,40 +270,152 @@ fn invert_edge(m: &super::maps::SimplexMap, la: usize, lb: usize, u: f64) -> f64
 }
 
 /// Pairs of segments that cross properly (exact orientation signs on the f64 points), other
-/// than neighbours sharing an endpoint.
-fn crossing_segments(p: &Polylines) -> Vec<(usize, usize)> {
-    let q = |x: [f64; 2]| {
-        [
-            from_f64(x[0]).unwrap_or_default(),
-            from_f64(x[1]).unwrap_or_default(),
-        ]
-    };
-    let orient = |a: &[Q; 2], b: &[Q; 2], c: &[Q; 2]| {
-        ((&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])).signum()
-    };
-    let segs: Vec<[[Q; 2]; 2]> = p
+/// than neighbours sharing an endpoint, in lexicographic order; `Err(i)` names a non-finite
+/// point, for which no sign is defined.
+///
+/// A sweep over the segments sorted by their smallest x: a proper crossing is a point inside
+/// both segments, so two segments whose x-ranges (or y-ranges) are disjoint never cross, and
+/// only pairs with overlapping boxes reach the exact predicate (`numeric::predicates`).
+fn crossing_segments(p: &Polylines) -> Result<Vec<(usize, usize)>, usize> {
+    if let Some(i) = p
+        .points
+        .iter()
+        .position(|x| !x.iter().all(|c| c.is_finite()))
+    {
+        return Err(i);
+    }
+    let ends = |e: &[usize; 2]| (p.points[e[0]], p.points[e[1]]);
+    let range = |a: f64, b: f64| (a.min(b), a.max(b));
+    let boxes: Vec<[(f64, f64); 2]> = p
         .segments
         .iter()
-        .map(|e| [q(p.points[e[0]]), q(p.points[e[1]])])
+        .map(|e| {
+            let (a, b) = ends(e);
+            [range(a[0], b[0]), range(a[1], b[1])]
+        })
         .collect();
+    let mut order: Vec<usize> = (0..boxes.len()).collect();
+    order.sort_by(|&i, &j| boxes[i][0].0.total_cmp(&boxes[j][0].0).then(i.cmp(&j)));
+    // c and d strictly on opposite sides of the line ab (the points are finite: every sign is
+    // defined).
+    let apart = |a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]| {
+        matches!(
+            (orient2(a, b, c), orient2(a, b, d)),
+            (Some(Ordering::Less), Some(Ordering::Greater))
+                | (Some(Ordering::Greater), Some(Ordering::Less))
+        )
+    };
     let mut out = Vec::new();
-    // Quadratic, bounded by the isocurve size (a few points per triangle); fine for the
-    // complexes of the paper.
-    for i in 0..segs.len() {
-        for j in (i + 1)..segs.len() {
+    for (k, &i) in order.iter().enumerate() {
+        let x_hi = boxes[i][0].1;
+        for &j in &order[k + 1..] {
+            if boxes[j][0].0 > x_hi {
+                break;
+            }
+            let (yi, yj) = (boxes[i][1], boxes[j][1]);
+            if yi.1 < yj.0 || yj.1 < yi.0 {
+                continue;
+            }
             let (a, b) = (p.segments[i], p.segments[j]);
             if a.iter().any(|x| b.contains(x)) {
                 continue;
             }
-            let (s, t) = (&segs[i], &segs[j]);
-            let d1 = orient(&s[0], &s[1], &t[0]);
-            let d2 = orient(&s[0], &s[1], &t[1]);
-            let d3 = orient(&t[0], &t[1], &s[0]);
-            let d4 = orient(&t[0], &t[1], &s[1]);
-            if d1 * d2 < Q::zero() && d3 * d4 < Q::zero() {
-                out.push((i, j));
+            let (s, t) = (ends(&a), ends(&b));
+            if apart(s.0, s.1, t.0, t.1) && apart(t.0, t.1, s.0, s.1) {
+                out.push((i.min(j), i.max(j)));
             }
         }
     }
-    out
+    out.sort_unstable();
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sdiff::common::rational::from_f64;
+    use num_traits::Zero;
+    use rand::{Rng, SeedableRng};
+    use rand_chacha::ChaCha8Rng;
+
+    /// Every pair, the signs in exact rationals: the definition the sweep must reproduce.
+    fn crossing_all_pairs(p: &Polylines) -> Vec<(usize, usize)> {
+        let q = |x: [f64; 2]| x.map(|c| from_f64(c).unwrap_or_default());
+        let orient = |a: &[Q; 2], b: &[Q; 2], c: &[Q; 2]| {
+            ((&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])).signum()
+        };
+        let mut out = Vec::new();
+        for i in 0..p.segments.len() {
+            for j in (i + 1)..p.segments.len() {
+                let (a, b) = (p.segments[i], p.segments[j]);
+                if a.iter().any(|x| b.contains(x)) {
+                    continue;
+                }
+                let s = [q(p.points[a[0]]), q(p.points[a[1]])];
+                let t = [q(p.points[b[0]]), q(p.points[b[1]])];
+                let d1 = orient(&s[0], &s[1], &t[0]) * orient(&s[0], &s[1], &t[1]);
+                let d2 = orient(&t[0], &t[1], &s[0]) * orient(&t[0], &t[1], &s[1]);
+                if d1 < Q::zero() && d2 < Q::zero() {
+                    out.push((i, j));
+                }
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn sd_l168_crossing_sweep_equals_all_pairs_on_random_polylines() {
+        let mut rng = ChaCha8Rng::seed_from_u64(168);
+        let mut crossings = 0;
+        for case in 0..200 {
+            // Points on a coarse grid (collinear and touching cases are frequent) or anywhere.
+            let grid = case % 2 == 0;
+            let n = rng.gen_range(2..40);
+            let points: Vec<[f64; 2]> = (0..n)
+                .map(|_| {
+                    if grid {
+                        [
+                            rng.gen_range(0..5) as f64 / 4.0,
+                            rng.gen_range(0..5) as f64 / 4.0,
+                        ]
+                    } else {
+                        [rng.gen::<f64>(), rng.gen::<f64>()]
+                    }
+                })
+                .collect();
+            let segments: Vec<[usize; 2]> = (0..rng.gen_range(1..40))
+                .map(|_| [rng.gen_range(0..n), rng.gen_range(0..n)])
+                .collect();
+            let p = Polylines { points, segments };
+            let want = crossing_all_pairs(&p);
+            crossings += want.len();
+            assert_eq!(crossing_segments(&p), Ok(want), "case {case}");
+        }
+        assert!(crossings > 100, "{crossings}");
+    }
+
+    #[test]
+    fn sd_l168_planted_crossing_and_non_finite_point_are_reported() {
+        // Two diagonals of the unit square cross; a touching pair (an endpoint on the other
+        // segment) and a pair sharing an endpoint do not.
+        let points = vec![
+            [0.0, 0.0],
+            [1.0, 1.0],
+            [0.0, 1.0],
+            [1.0, 0.0],
+            [0.5, 0.5],
+            [2.0, 2.0],
+        ];
+        let p = Polylines {
+            points: points.clone(),
+            segments: vec![[0, 1], [2, 3], [4, 5], [1, 5]],
+        };
+        assert_eq!(crossing_segments(&p), Ok(vec![(0, 1)]));
+        let mut bad = Polylines {
+            points,
+            segments: vec![[0, 1], [2, 3]],
+        };
+        bad.points[3] = [f64::NAN, 0.0];
+        assert_eq!(crossing_segments(&bad), Err(3));
+    }
 }
