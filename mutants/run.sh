@@ -34,7 +34,7 @@ surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/
 certify|src/certify/*.rs|lib chapter4
 exact|src/exact/*.rs|lib proofs_appendix_a1 proofs_eval_c6_1_4 proofs_combinatorial
 oracle|src/oracle/*.rs src/oracle/*/*.rs|surface
-report-harness|src/report/harness.rs src/report.rs|lib gluing
+report-harness|src/report/harness.rs src/report/check_result.rs src/report.rs|lib gluing
 conditions|src/conditions/*.rs|lib chapter4 mesh
 loop-subdiv|src/surface/loop_subdiv/*.rs|lib surface|corpus
 sigma-v|src/surface/sigma_v/*.rs|lib surface|corpus
