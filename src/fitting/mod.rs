@@ -21,6 +21,7 @@
 
 pub mod base;
 pub mod checks;
+pub(crate) mod disjoint;
 pub mod embed_checks;
 pub mod embedded;
 pub mod fitted;
