@@ -30,11 +30,11 @@ mesh-validate|src/mesh/validate/*.rs|mesh gluing
 gluing-exact1d|src/gluing/exact1d/*.rs|lib gluing
 gluing-sampled|src/gluing/sampled/*.rs|lib gluing
 construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|lib chapter4 gluing
-surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/admissible.rs|lib surface gluing|corpus
+surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/scalar_ext.rs src/surface/admissible.rs|lib surface gluing|corpus
 certify|src/certify/*.rs|lib chapter4
 exact|src/exact/*.rs|lib proofs_appendix_a1 proofs_eval_c6_1_4 proofs_combinatorial
 oracle|src/oracle/*.rs src/oracle/*/*.rs|surface
-report-harness|src/report/harness.rs src/report.rs|lib gluing
+report-harness|src/report/harness.rs src/report/check_result.rs src/report.rs|lib gluing
 conditions|src/conditions/*.rs|lib chapter4 mesh
 loop-subdiv|src/surface/loop_subdiv/*.rs|lib surface|corpus
 sigma-v|src/surface/sigma_v/*.rs|lib surface|corpus

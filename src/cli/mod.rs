@@ -10,6 +10,7 @@ mod msplines;
 mod oracle;
 mod progress;
 pub(crate) mod render;
+mod results;
 mod sample;
 mod sd;
 mod sd3;

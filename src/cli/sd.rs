@@ -1,6 +1,7 @@
 //! `ppm sd …`: simplicial diffeomorphisms of a planar complex (Mello–Velho; SPEC rows SD-…);
 //! the 3-D subcommands (`check3`, `iso3`, `claims3`) are in `sd3`.
 
+use super::results::{emit, fail};
 use crate::mesh::io::{read_mesh, ReadOptions};
 use crate::report::{render_text, CheckResult};
 use crate::sdiff::common::positivity::Budget;
@@ -156,11 +157,6 @@ fn load(
     Ok((k, spec, cm, rep))
 }
 
-pub(super) fn fail(e: String) -> ExitCode {
-    eprintln!("error: {e}");
-    ExitCode::from(2)
-}
-
 /// The complex, its map and the \[iso\] table (f per vertex, level c) the Secs. 5–6 commands need.
 type IsoInput = (
     complex::PlanarComplex,
@@ -176,25 +172,6 @@ fn load_iso(mesh: &Path, params_path: &Path) -> Result<IsoInput, String> {
         return Err(format!("{}: no [iso] table", params_path.display()));
     };
     Ok((k, spec, cm, f, c))
-}
-
-pub(super) fn emit(results: &[CheckResult], json: bool) -> ExitCode {
-    if json {
-        match serde_json::to_string_pretty(results) {
-            Ok(s) => println!("{s}"),
-            Err(e) => {
-                eprintln!("error: {e}");
-                return ExitCode::from(2);
-            }
-        }
-    } else {
-        print!("{}", render_text(results));
-    }
-    if results.iter().any(|r| r.failed()) {
-        ExitCode::from(1)
-    } else {
-        ExitCode::SUCCESS
-    }
 }
 
 /// Runs `ppm sd …`.

@@ -1,7 +1,7 @@
 //! `ppm sd check3|iso3|claims3`: simplicial diffeomorphisms of a tetrahedral complex
 //! (Mello–Velho with m = 3; SPEC rows `SD-…(3-D)`; the `.tets` format in docs/sdiff-3d.md).
 
-use super::sd::{emit, fail};
+use super::results::{emit, fail};
 use crate::mesh::io::output_format;
 use crate::report::{render_text, CheckResult};
 use crate::sdiff::common::positivity::Budget;

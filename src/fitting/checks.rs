@@ -2,8 +2,8 @@
 //! harness: examined counts, NaN as an offence, nothing examined as skipped.
 
 use super::base::{BaseMesh, Param};
+use super::fit::{rounding_bound, vertex_errors, Fit};
 use super::fitted::CornerFit;
-use super::Fit;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::numeric::{Mp, Scalar};
 use crate::report::harness::dev_max;
@@ -245,8 +245,8 @@ pub fn check_epsilon(
     epsilon: f64,
     seed: u64,
 ) -> CheckResult {
-    let errors = super::vertex_errors(pps, pos, params);
-    let bound = super::rounding_bound(pps);
+    let errors = vertex_errors(pps, pos, params);
+    let bound = rounding_bound(pps);
     let mut r = CheckResult::new(
         "AF-epsilon",
         "every vertex of S_T is within epsilon of the fitted surface at its parameter",

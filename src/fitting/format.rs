@@ -3,8 +3,8 @@
 //! S_T. Numbers are written in Rust's shortest round-trip form, so a file reads back
 //! bit-exactly (SPEC `AF-format-roundtrip`). One writer, one reader.
 
+use super::fit::Fit;
 use super::fitted::SurfaceParam;
-use super::Fit;
 use crate::mesh::raw::RawMesh;
 use crate::mesh::validate::validate;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};

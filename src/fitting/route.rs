@@ -25,7 +25,7 @@
 //! joined its ends (bunny at 10⁻³ of the diagonal, anchor).
 
 use super::base::{BaseMesh, Param};
-use super::embed_checks::{local, meet, only_at};
+use super::disjoint::{local, meet, only_at};
 use super::geodesic::{
     common_faces, dijkstra, dist, Curve, EmbedError, EmbedStats, Embedding, Graph, Node,
 };

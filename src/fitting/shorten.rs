@@ -19,7 +19,7 @@
 //! curve: the curves stay disjoint. Sweeps repeat until no move is made or [`MAX_SWEEPS`].
 
 use super::base::BaseMesh;
-use super::embed_checks::segments_meet_other;
+use super::disjoint::{segments_meet_other, Near};
 use super::geodesic::{common_faces, dist, Embedding, Node};
 use crate::mesh::{SimplicialSurface, VertexId};
 use crate::numeric::vec3::{cross, dot, norm, sub};
@@ -388,9 +388,6 @@ pub fn shorten_except(
     }
     emb.stats.length = emb.curves.iter().map(|c| c.length(k)).sum();
 }
-
-/// The curves touching each triangle of S_T (for [`segments_meet_other`]).
-pub(super) type Near = std::collections::HashMap<crate::mesh::FaceId, Vec<usize>>;
 
 /// Two consecutive segments on one triangle (a turn inside it) would make a piece with its
 /// three corners on one side of the base triangle, which Floater's map flattens: the node

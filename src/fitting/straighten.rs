@@ -10,9 +10,8 @@
 //! sleeve; the shortening alternates both until nothing moves. SPEC `AF-geodesic-shortest`.
 
 use super::base::BaseMesh;
-use super::embed_checks::segments_meet_other;
+use super::disjoint::{segments_meet_other, Near};
 use super::geodesic::{common_faces, dist, Embedding, Node};
-use super::shorten::Near;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::numeric::vec3::{norm, sub};
 use std::collections::HashMap;

@@ -13,15 +13,15 @@
 
 pub mod choice;
 pub mod diff;
+mod mp_values;
 pub mod protocol;
 mod query;
 mod reference;
 pub mod surface_diff;
 pub mod tsv_diff;
 
+pub use mp_values::mp_distance;
 pub use protocol::{OracleError, Request, Response, Session};
-
-use crate::numeric::{Mp, Scalar};
 
 /// Read a text table, naming the line and byte of the first invalid UTF-8 sequence (the
 /// error does not repeat the path).
@@ -33,19 +33,4 @@ pub(crate) fn read_text_table(path: &std::path::Path) -> Result<String, String> 
         let line = 1 + bytes[..at].iter().filter(|&&b| b == b'\n').count();
         format!("line {line}: not valid UTF-8 (byte {at} of the file)")
     })
-}
-
-/// Render a multi-precision value with all its significant decimal digits.
-pub(crate) fn mp_decimal(x: &Mp) -> String {
-    x.to_decimal()
-}
-
-/// Distance between an f64 vector and an MPFR vector, computed in MPFR and rounded up to f64.
-pub fn mp_distance(a: &[f64], b: &[Mp]) -> f64 {
-    let mut s = 0.0f64;
-    for (x, y) in a.iter().zip(b) {
-        let d = y.sub(&Mp::from_f64(*x, y.precision_bits())).to_f64();
-        s += d * d;
-    }
-    s.sqrt()
 }

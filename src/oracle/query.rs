@@ -3,8 +3,8 @@
 //! (`Session::answer`): the query point checked finite, the query evaluated in f64 and in MPFR,
 //! and both values reported with their difference ([`both`], [`both_or_note`]).
 
+use super::mp_values::{mp_decimal, mp_distance};
 use super::protocol::{OracleError, Request};
-use super::{mp_decimal, mp_distance};
 use crate::construction::maps::{g_v, g_v_inv, h};
 use crate::construction::{Paper, Ppm, PpmGluing, P2};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};

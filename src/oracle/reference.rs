@@ -104,7 +104,7 @@ pub(crate) fn answer(
     let mut info = json!({});
     match &b.chart {
         Some(ChartAt::Vertex { chart, vertex, q }) => {
-            let q: Vec<String> = q.iter().map(super::mp_decimal).collect();
+            let q: Vec<String> = q.iter().map(super::mp_values::mp_decimal).collect();
             info = json!({"chart": chart, "vertex": vertex.0, "q": q});
             if let Ok(a) = &a {
                 if let Some(ChartAt::Vertex { chart: ca, q, .. }) = &a.chart {

@@ -24,7 +24,7 @@
 //! explicit tolerance, and its spot checks report its own f64 error without judging it.
 
 use super::diff::Stats;
-use super::mp_distance;
+use super::mp_values::mp_distance;
 use super::protocol::OracleError;
 use crate::mesh::FaceId;
 use crate::report::harness::dev_max;

@@ -1,9 +1,8 @@
 //! Def. 5.2.1: Bernstein polynomials over [−L, L] and tensor-product Bézier patches of
-//! bi-degree (l, l). Control point b_{j,k} is stored at index j·(l+1) + k (the paper's
+//! bi-degree (l, l), in f64 (the generic evaluation, over any [`super::SurfaceScalar`], is
+//! the trait's own, in `scalar_ext`). Control point b_{j,k} is stored at index j·(l+1) + k (the paper's
 //! "j·l + k + 1" would make different (j, k) collide: a bi-degree (l, l) patch has (l+1)²
 //! control points, not l²).
-
-use super::scalar_ext::SurfaceScalar;
 
 /// Binomial coefficient C(n, k) as f64 (exact for n ≤ 56).
 pub fn binomial(n: usize, k: usize) -> f64 {
@@ -20,7 +19,7 @@ pub fn binomial(n: usize, k: usize) -> f64 {
 
 /// Row l of Pascal's triangle as [`binomial`] computes it, for l ≤ [`MAX_FAST_L`] (computed
 /// once: the evaluators of Def. 5.2.1 need it at every point).
-fn binomial_row(l: usize) -> Option<&'static [f64]> {
+pub(super) fn binomial_row(l: usize) -> Option<&'static [f64]> {
     static TABLE: std::sync::OnceLock<Vec<Vec<f64>>> = std::sync::OnceLock::new();
     TABLE
         .get_or_init(|| {
@@ -71,55 +70,6 @@ pub fn bernstein_vec_f64(l: usize, half: f64, t: f64) -> Vec<f64> {
     out
 }
 
-/// Def. 5.2.1, generic: the l+1 Bernstein values at t.
-pub fn bernstein<S: SurfaceScalar>(l: usize, half: &S, t: &S) -> Vec<S> {
-    let prec = t.precision_bits();
-    let two_l = half.mul(&S::from_i64(2, prec));
-    let u = t.add(half).div(&two_l);
-    let w = half.sub(t).div(&two_l);
-    let mut pu = Vec::with_capacity(l + 1);
-    let mut acc = S::from_i64(1, prec);
-    for _ in 0..=l {
-        pu.push(acc.clone());
-        acc = acc.mul(&u);
-    }
-    let mut pw = S::from_i64(1, prec);
-    let row = binomial_row(l);
-    for i in (0..=l).rev() {
-        let c = row.map_or_else(|| binomial(l, i), |r| r[i]);
-        pu[i] = pu[i].mul(&pw).mul(&S::from_f64(c, prec));
-        pw = pw.mul(&w);
-    }
-    pu
-}
-
-/// ψ(x, y) = Σ_{j,k} b_{j,k} B_j^l(x) B_k^l(y) for control points `cp` (length (l+1)²).
-pub fn eval_patch<S: SurfaceScalar>(cp: &[[f64; 3]], l: usize, half: f64, x: &S, y: &S) -> [S; 3] {
-    let prec = x.precision_bits();
-    let h = S::from_f64(half, prec);
-    let bx = bernstein(l, &h, x);
-    let by = bernstein(l, &h, y);
-    let z = S::from_i64(0, prec);
-    let mut out = [z.clone(), z.clone(), z];
-    for (j, bxj) in bx.iter().enumerate() {
-        let mut row = [
-            S::from_i64(0, prec),
-            S::from_i64(0, prec),
-            S::from_i64(0, prec),
-        ];
-        for (k, byk) in by.iter().enumerate() {
-            let c = &cp[j * (l + 1) + k];
-            for d in 0..3 {
-                row[d] = row[d].add(&byk.scale_f64(c[d]));
-            }
-        }
-        for d in 0..3 {
-            out[d] = out[d].add(&row[d].mul(bxj));
-        }
-    }
-    out
-}
-
 /// Largest l for the stack-allocated f64 evaluator.
 pub const MAX_FAST_L: usize = 63;
 
@@ -162,7 +112,7 @@ mod tests {
             for t in [-0.9, -0.3, 0.0, 0.45, 0.99] {
                 let half = 1.0;
                 let f = bernstein_vec_f64(l, half, t);
-                let g = bernstein::<f64>(l, &half, &t);
+                let g = crate::surface::scalar_ext::bernstein::<f64>(l, &half, &t);
                 let sum: f64 = f.iter().sum();
                 assert!((sum - 1.0).abs() < 1e-12, "l {l}, t {t}: Σ = {sum}");
                 for (i, (a, b)) in f.iter().zip(&g).enumerate() {

@@ -17,6 +17,7 @@
 
 pub mod admissible;
 pub(crate) mod authors_fit;
+pub(crate) mod b_sigma;
 pub mod bezier;
 pub mod checks;
 pub(crate) mod consts;
@@ -40,6 +41,7 @@ mod storage;
 pub mod target;
 pub mod weights;
 
+pub use b_sigma::TargetSurface;
 pub use checks::{run_surface_checks, SurfaceCheckOptions};
 pub use consts::Consts;
 pub use eval::{Chart, EvalPoint};
@@ -48,4 +50,4 @@ pub use kind::Construction;
 pub use pps::{Fault, Membership, Pps, PpsOptions, SurfaceError, Term};
 pub use profile::{AuthorsStages, NormalRule, Profile};
 pub use scalar_ext::SurfaceScalar;
-pub use target::{PnTriangles, SPrime, SurfaceKind, TargetSurface};
+pub use target::{PnTriangles, SPrime, SurfaceKind};

@@ -2,7 +2,7 @@
 //! 3(c) the full cocycle condition (with its domain inclusion), and the weaker Grimm–Hughes
 //! "proto-manifold" cocycle condition quoted in App. A.2.
 
-use super::{sampled_k, SampleConfig};
+use super::sampling::{sampled_k, SampleConfig};
 use crate::gluing::data::{dist, fmt_point, norm, point_json, GluingData};
 use crate::gluing::tolerance::tol;
 use crate::report::{Check, CheckResult, OnError, Witness};

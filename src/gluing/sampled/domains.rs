@@ -1,6 +1,6 @@
 //! Sampled checks of Def. 3.4.1(1) (p-domains) and (2) (gluing domains).
 
-use super::SampleConfig;
+use super::sampling::SampleConfig;
 use crate::gluing::data::{fmt_point, norm, point_json, GluingData, Idx, Point};
 use crate::report::{Check, CheckResult, Witness};
 use num_traits::Float;

@@ -10,7 +10,7 @@
 //! reported; it assumes φ_ji is 64-Lipschitz near x). Otherwise the radii (r, m(r)/2) for the
 //! largest r with m(r) clear of that threshold are reported. The exact 1-D backend decides (4).
 
-use super::{sampled_k, SampleConfig};
+use super::sampling::{sampled_k, SampleConfig};
 use crate::gluing::data::{dist, fmt_point, from_f64, point_json, to_f64, GluingData, Idx, Point};
 use crate::report::{Check, CheckResult, Witness};
 use rand::Rng;

@@ -17,6 +17,7 @@
 //! every `Vec::with_capacity` is capped by the number of elements the remaining bytes could
 //! possibly encode and by [`Limits`]. All arithmetic on input-derived values is checked.
 
+mod context;
 pub(crate) mod decimal;
 mod limits;
 mod obj;
@@ -28,24 +29,15 @@ mod write;
 
 use std::path::{Path, PathBuf};
 
+pub use context::ReadOptions;
+pub(crate) use context::{parse_coord, Ctx};
 pub use limits::Limits;
 pub use write::{
     output_format, write_mesh, write_mesh_file, write_mesh_to, write_out, MeshOut, PlyIndex,
 };
 
-use super::error::{Location, MeshError};
+use super::error::MeshError;
 use super::raw::{MeshFormat, RawMesh};
-
-/// How to read a mesh.
-#[derive(Debug, Clone, Default)]
-pub struct ReadOptions {
-    /// Fan-split convex polygons with more than 3 sides (counted in
-    /// [`RawMesh::triangulated_polygons`]); without it such polygons are
-    /// [`MeshError::NotTriangle`].
-    pub triangulate: bool,
-    /// Upper bounds on declared element counts.
-    pub limits: Limits,
-}
 
 /// Reads a mesh file. The format is detected from the content (a `ply` magic line or an OFF
 /// header keyword) and otherwise from the extension (`.off`, `.obj`, `.ply`, case-insensitive).
@@ -115,73 +107,4 @@ fn read_bytes(
         });
     }
     Ok(mesh)
-}
-
-/// The file being read and the options: builds located errors.
-pub(crate) struct Ctx<'a> {
-    pub path: &'a Path,
-    pub opts: &'a ReadOptions,
-}
-
-impl Ctx<'_> {
-    fn path(&self) -> PathBuf {
-        self.path.to_path_buf()
-    }
-
-    pub(crate) fn parse(&self, at: Location, msg: impl Into<String>) -> MeshError {
-        MeshError::Parse {
-            path: self.path(),
-            at,
-            msg: msg.into(),
-        }
-    }
-
-    pub(crate) fn truncated(&self, at: Location, msg: impl Into<String>) -> MeshError {
-        MeshError::Truncated {
-            path: self.path(),
-            at,
-            msg: msg.into(),
-        }
-    }
-
-    pub(crate) fn encoding(&self, at: Location) -> MeshError {
-        MeshError::Encoding {
-            path: self.path(),
-            at,
-        }
-    }
-
-    /// Fails if `count` of `what` exceeds `limit`.
-    pub(crate) fn check_limit(
-        &self,
-        at: Location,
-        what: &'static str,
-        count: u64,
-        limit: u64,
-    ) -> Result<(), MeshError> {
-        if count > limit {
-            return Err(MeshError::TooLarge {
-                path: self.path(),
-                at,
-                what,
-                count,
-                limit,
-            });
-        }
-        Ok(())
-    }
-}
-
-/// Parses a coordinate. Accepts Rust/C decimal syntax and `nan`/`inf`/`infinity` in any case
-/// with an optional sign; every NaN is normalised to [`f64::NAN`] so results are deterministic.
-pub(crate) fn parse_coord(tok: &str) -> Option<f64> {
-    let v: f64 = tok.parse().ok()?;
-    Some(if v.is_nan() { f64::NAN } else { v })
-}
-
-/// A capacity hint that never exceeds what `remaining` bytes could encode at
-/// `min_bytes_each` bytes per element.
-pub(crate) fn capped_capacity(count: u64, remaining: usize, min_bytes_each: usize) -> usize {
-    let fit = remaining / min_bytes_each.max(1);
-    usize::try_from(count).unwrap_or(usize::MAX).min(fit)
 }

@@ -16,9 +16,9 @@
 //! index are parse errors; a positive index beyond the vertex count is not (the validator
 //! reports it).
 
+use super::context::{parse_coord, Ctx};
 use super::polygon::FaceSink;
 use super::text::Lines;
-use super::{parse_coord, Ctx};
 use crate::mesh::error::{Location, MeshError};
 use crate::mesh::raw::{MeshFormat, RawMesh};
 

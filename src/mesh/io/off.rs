@@ -14,9 +14,9 @@
 //! Fewer vertices or faces than declared is [`MeshError::Truncated`]; any content after the
 //! declared faces is a parse error.
 
+use super::context::{capped_capacity, parse_coord, Ctx};
 use super::polygon::FaceSink;
 use super::text::Lines;
-use super::{capped_capacity, parse_coord, Ctx};
 use crate::mesh::error::{Location, MeshError};
 use crate::mesh::raw::{MeshFormat, RawMesh};
 

@@ -16,9 +16,9 @@
 //! Fewer instances than declared is [`MeshError::Truncated`]; data after the last declared
 //! element is a parse error.
 
+use super::context::{capped_capacity, parse_coord, Ctx};
 use super::polygon::FaceSink;
 use super::text::Lines;
-use super::{capped_capacity, parse_coord, Ctx};
 use crate::mesh::error::{Location, MeshError};
 use crate::mesh::raw::{MeshFormat, RawMesh};
 

@@ -1,7 +1,7 @@
 //! Collects faces in file order; with `triangulate`, fan-splits convex polygons once all
 //! positions are known.
 
-use super::Ctx;
+use super::context::Ctx;
 use crate::mesh::error::{Location, MeshError};
 use crate::numeric::vec3::{cross, dot, norm, sub};
 

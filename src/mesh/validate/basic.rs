@@ -1,7 +1,8 @@
 //! Sanity checks that precede the paper's definitions: indices in range, finite coordinates,
 //! repeated corners, duplicate faces, unreferenced vertices.
 
-use super::{ErrorClass, Incidence};
+use super::error_class::ErrorClass;
+use super::incidence::Incidence;
 use crate::mesh::RawMesh;
 use crate::report::{Check, CheckResult, Witness};
 use serde_json::json;

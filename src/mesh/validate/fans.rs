@@ -15,7 +15,7 @@
 //!
 //! Candidate pairs are then decided by the same exact predicates.
 
-use super::intersect::triangles_meet_improperly;
+use super::predicates::triangles_meet_improperly;
 use crate::mesh::RawMesh;
 use rayon::prelude::*;
 use rstar::{PointDistance, RTree, RTreeObject, AABB};
@@ -340,7 +340,7 @@ fn side_of_plane(pos: &[[f64; 3]], t: [u32; 3], o: [u32; 3]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::separated;
-    use crate::mesh::validate::intersect::triangles_meet_improperly;
+    use crate::mesh::validate::predicates::triangles_meet_improperly;
 
     /// D3.1.3(ii): the f64 filter may only skip pairs that meet properly. Pairs sharing a
     /// corner or an edge: skipped exactly when the other corners lie clearly on one side;

@@ -6,9 +6,7 @@
 
 use super::fans::{face_box, fans, search_boxes, separated, star_pairs, FaceBox, HIGH_DEGREE};
 use super::grid::BoxIndex;
-use super::predicates::{
-    in_cone_at, nondegenerate_projection, orient3, segment_meets_triangle, P3,
-};
+pub use super::predicates::triangles_meet_improperly;
 use crate::mesh::RawMesh;
 use crate::report::{Check, CheckResult, Witness};
 use rayon::prelude::*;
@@ -49,74 +47,6 @@ pub fn coincident_vertices(raw: &RawMesh, referenced: &[bool]) -> CheckResult {
         }
     }
     r.finish("")
-}
-
-/// Exact test: does the intersection of triangles t1 and t2 (non-degenerate, distinct vertex
-/// sets) contain a point that is not in a common face?
-pub fn triangles_meet_improperly(pos: &[P3], t1: [u32; 3], t2: [u32; 3]) -> bool {
-    let p = |i: u32| &pos[i as usize];
-    let mut shared = [0u32; 3];
-    let mut n_shared = 0;
-    for &x in &t1 {
-        if t2.contains(&x) {
-            shared[n_shared] = x;
-            n_shared += 1;
-        }
-    }
-    let shared = &shared[..n_shared];
-    match shared.len() {
-        0 => {
-            (0..3).any(|k| {
-                segment_meets_triangle(p(t1[k]), p(t1[(k + 1) % 3]), p(t2[0]), p(t2[1]), p(t2[2]))
-            }) || (0..3).any(|k| {
-                segment_meets_triangle(p(t2[k]), p(t2[(k + 1) % 3]), p(t1[0]), p(t1[1]), p(t1[2]))
-            })
-        }
-        1 => {
-            let v = shared[0];
-            let check = |a: [u32; 3], b: [u32; 3]| -> bool {
-                // Rotate `a` so that a[0] = v.
-                let k = a.iter().position(|&x| x == v).unwrap_or(0);
-                let (a1, a2) = (a[(k + 1) % 3], a[(k + 2) % 3]);
-                let kb = b.iter().position(|&x| x == v).unwrap_or(0);
-                let (b1, b2) = (b[(kb + 1) % 3], b[(kb + 2) % 3]);
-                // The edge of `a` opposite v: any common point is not v.
-                if segment_meets_triangle(p(a1), p(a2), p(v), p(b1), p(b2)) {
-                    return true;
-                }
-                // An edge [v, a_i] meets b beyond v only if it lies in b's plane and points
-                // into b's corner at v.
-                [a1, a2].iter().any(|&ai| {
-                    orient3(p(v), p(b1), p(b2), p(ai)) == Ordering::Equal
-                        && in_cone_at(p(v), p(b1), p(b2), p(ai))
-                })
-            };
-            check(t1, t2) || check(t2, t1)
-        }
-        2 => {
-            // Sharing the edge [s0, s1]: the triangles overlap iff they are coplanar and the
-            // opposite corners lie on the same side of the edge.
-            let (s0, s1) = (shared[0], shared[1]);
-            let o1 = t1
-                .iter()
-                .copied()
-                .find(|x| !shared.contains(x))
-                .unwrap_or(s0);
-            let o2 = t2
-                .iter()
-                .copied()
-                .find(|x| !shared.contains(x))
-                .unwrap_or(s0);
-            if orient3(p(t1[0]), p(t1[1]), p(t1[2]), p(o2)) != Ordering::Equal {
-                return false;
-            }
-            match nondegenerate_projection(p(t1[0]), p(t1[1]), p(t1[2])) {
-                Some(pr) => pr.orient(p(s0), p(s1), p(o1)) == pr.orient(p(s0), p(s1), p(o2)),
-                None => false,
-            }
-        }
-        _ => false,
-    }
 }
 
 /// Def. 3.1.3(ii) is decided by the first improper pair; counting every pair of a badly

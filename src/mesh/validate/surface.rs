@@ -1,7 +1,8 @@
 //! Def. 3.1.6: a 2-complex is a simplicial surface when every edge is a face of exactly two
 //! triangles and the link of every vertex is homeomorphic to S¹ (one simple cycle).
 
-use super::{ErrorClass, Incidence};
+use super::error_class::ErrorClass;
+use super::incidence::Incidence;
 use crate::mesh::RawMesh;
 use crate::report::{Check, CheckResult, Witness};
 use serde_json::json;

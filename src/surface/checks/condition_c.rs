@@ -1,6 +1,8 @@
 //! Condition (C) of Def. 3.5.1 for the PPS (T5.4.1, f64 and multi-precision), its smooth form
 //! C5.4-smooth (jets), and D5.4.1 (production membership and φ vs the literal Defs. 4.1.9/4.1.10).
 
+use super::samples::{overlap_points, random_in_omega};
+use super::tolerance::dist3;
 use super::*;
 
 /// D5.4.1: the production membership test / transition (branch + lens) agrees with the

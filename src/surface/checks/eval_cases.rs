@@ -1,5 +1,6 @@
 //! Sec. 6.1.4: the consistency cases (1)–(4) of eval and the cover t ⊂ int C ∪ int D ∪ int E.
 
+use super::tolerance::dist3;
 use super::*;
 
 /// Sec. 6.1.4 consistency cases (1)–(4): the chart points of q′ in two (three) charts are

@@ -1,6 +1,7 @@
 //! Sec. 5.3–5.4: the fit summary (D5.2.1), the weights ω_uv (C5.4-weights-sum-1), |J_v| ≤ 3,
 //! supp γ_v (C5.3-support) and regularity of θ_v (measured).
 
+use super::samples::random_in_omega;
 use super::*;
 
 /// Sec. 5.2: per-degree least-squares summary (informational; always holds unless a degree

@@ -17,9 +17,10 @@
 //! multiplies rounding errors of the level-n net by 2^{q·n}).
 
 use super::eigen::EigenStructure;
+use super::error::{LoopError, MAX_VALENCE};
 use super::rules::{cos_sin_2pi, limit_weights};
 use super::stam::{depth_cap, PatchJet};
-use super::surface::{LoopError, LoopSurface, MAX_VALENCE};
+use super::surface::LoopSurface;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::numeric::vec3::{add, cross, dot, norm, sub};
 use crate::numeric::Mp;

@@ -7,8 +7,8 @@
 //! `tests/surface/loop_sprime.rs`).
 
 use super::eigen::EigenStructure;
+use super::plan::split_patch_point;
 use super::stam::{depth_cap, regular_point_f64, stam_tile};
-use super::surface::split_patch_point;
 use std::sync::Arc;
 
 /// One patch, ready for f64 evaluation.

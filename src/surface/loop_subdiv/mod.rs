@@ -2,14 +2,18 @@
 //! any (σ, λ, μ, ν) of the base mesh by Stam's method (1998).
 
 pub(crate) mod eigen;
+mod error;
 mod fast;
 mod linear;
 pub(crate) mod patch;
+mod plan;
 pub mod regular;
 pub mod rules;
 pub mod stam;
 pub(crate) mod surface;
 pub mod topology;
+mod valence_weights;
 
-pub use surface::{LoopError, LoopStats, LoopSurface, MAX_VALENCE};
+pub use error::{LoopError, MAX_VALENCE};
+pub use surface::{LoopStats, LoopSurface};
 pub mod checks;

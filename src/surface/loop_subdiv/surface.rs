@@ -11,91 +11,19 @@
 //!   coordinates (2λ − 1, 2μ, 2ν) etc.; S′ stays one function of K's parameters.
 
 use super::eigen::EigenStructure;
+use super::error::{LoopError, MAX_VALENCE};
 use super::fast::{FastPatch, FastPlan, SubNetTable};
-use super::linear::LinearValence;
+use super::plan::{plan_of, split_sub_face, Patch, Plan, PointTable, Stencil};
 use super::rules::vertex_weights;
 use super::stam::{basis_in, extraordinary_jet_as, regular_jet, PatchJet};
-use super::topology::{
-    gather_net, ring, BaseTopology, MissingTriangle, SubPoint, SubTopology, Topology,
-};
+use super::valence_weights::LinearValence;
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::numeric::Scalar;
+use crate::surface::b_sigma::{LinearTarget, TargetSurface};
 use rayon::prelude::*;
 use std::any::Any;
 use std::collections::{BTreeMap, HashMap};
 use std::sync::{Arc, Mutex};
-
-/// Highest valence evaluated; a higher one is [`LoopError::ValenceTooHigh`] (the eigen-
-/// structure is closed-form for any N, but the per-point cost grows as N²).
-pub const MAX_VALENCE: u32 = 512;
-
-/// Why the Loop surface of K cannot be built or evaluated.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum LoopError {
-    /// A vertex has a valence above [`MAX_VALENCE`].
-    #[error(
-        "vertex {vertex} has valence {valence} > {max} (Loop S′ evaluates valences 3..={max})"
-    )]
-    ValenceTooHigh {
-        /// The vertex.
-        vertex: u32,
-        /// Its valence.
-        valence: u32,
-        /// [`MAX_VALENCE`].
-        max: u32,
-    },
-    /// A patch net could not be gathered around a face (K is not a closed simplicial surface).
-    #[error("face {face}: {source}")]
-    Net {
-        /// The face.
-        face: u32,
-        /// What was missing.
-        source: MissingTriangle,
-    },
-    /// The corners given are not the corners of the face.
-    #[error("face {face}: {corners:?} are not its corners")]
-    WrongCorners {
-        /// The face.
-        face: u32,
-        /// The corners given.
-        corners: [u32; 3],
-    },
-    /// A vertex or edge point of one Loop step could not be gathered (K is not a closed
-    /// simplicial surface).
-    #[error("Loop point table: {0}")]
-    PointTable(MissingTriangle),
-    /// The point table of one Loop step would have more than 2³² entries.
-    #[error("K is too large for the Loop point table ({points} entries > 2^32)")]
-    TooLarge {
-        /// Entries needed.
-        points: usize,
-    },
-    /// No such face.
-    #[error("no face {0}")]
-    NoSuchFace(u32),
-    /// Barycentric coordinates not ≥ −1e−12 or not summing to 1 within 1e−9.
-    #[error("barycentric coordinates {0:?} are not a point of the triangle (each ≥ −1e-12, sum 1 ± 1e-9)")]
-    BadBarycentric([f64; 3]),
-    /// The eigen-structure of a valence could not be derived (a defect, reported).
-    #[error("no eigen-structure for valence {0}")]
-    Eigen(usize),
-}
-
-/// A patch: its net (indices into the point table), first point = the patch corner at
-/// (x, y) = (0, 0), and its valence (6 = regular).
-#[derive(Debug, Clone)]
-pub(super) struct Patch {
-    pub(super) valence: u32,
-    pub(super) net: Box<[u32]>,
-}
-
-#[derive(Debug, Clone)]
-pub(super) enum Plan {
-    /// One patch; `rot` = which stored corner is the patch's first corner.
-    Direct { rot: u8, patch: Patch },
-    /// Four sub-patches after one internal step: corner c₀, c₁, c₂, middle.
-    Split(Box<[Patch; 4]>),
-}
 
 /// Counts for reports.
 #[derive(Debug, Clone, Default, serde::Serialize)]
@@ -108,20 +36,6 @@ pub struct LoopStats {
     pub split_faces: usize,
     /// The valences ≠ 6 present, with their vertex counts.
     pub valences: BTreeMap<u32, usize>,
-}
-
-/// How a point of the table is computed.
-#[derive(Debug, Clone)]
-pub(super) enum Stencil {
-    /// A vertex of K.
-    Base,
-    /// An entry of the point table no face uses (the vertex point of an empty vertex slot,
-    /// the edge point of a halfedge a → b with a > b).
-    Unused,
-    /// Vertex point: centre and ring.
-    Vertex(VertexId, Box<[VertexId]>),
-    /// Edge point: [a, b] and the opposite vertices c, d.
-    Edge([VertexId; 4]),
 }
 
 /// The Loop limit surface of K (Loop 1987), evaluated exactly (Stam 1998).
@@ -181,64 +95,6 @@ type ValenceTables = HashMap<u32, (Arc<EigenStructure<f64>>, Arc<SubNetTable>)>;
 /// y = b₀ + b₁u + b₂v (integer coefficients).
 type Affine = [[i64; 3]; 2];
 
-/// The point table of K after one Loop step, indexed by a function of K alone (so faces are
-/// planned in parallel): the vertices of K, then the vertex point of each vertex slot, then
-/// the edge point of each halfedge a → b with a < b (the other halfedges' entries are unused).
-pub(super) struct PointTable<'a> {
-    pub(super) k: &'a SimplicialSurface,
-    pub(super) slots: usize,
-}
-
-impl PointTable<'_> {
-    fn len(&self) -> usize {
-        2 * self.slots + self.k.num_halfedges()
-    }
-
-    pub(super) fn sub_index(&self, p: SubPoint) -> Result<u32, MissingTriangle> {
-        let i = match p {
-            SubPoint::Vertex(v) => self.slots + v.idx(),
-            SubPoint::Edge(a, b) => {
-                let h = self.k.halfedge(a, b).ok_or_else(|| MissingTriangle {
-                    a: format!("{a:?}"),
-                    b: format!("{b:?}"),
-                })?;
-                2 * self.slots + h.idx()
-            }
-        };
-        // `new` checked that the table's length fits in u32.
-        Ok(i as u32)
-    }
-
-    /// The stencil of entry i (`None` for an unused entry).
-    pub(super) fn stencil(&self, i: usize) -> Result<Option<Stencil>, MissingTriangle> {
-        let (k, slots) = (self.k, self.slots);
-        let t = BaseTopology(k);
-        if i < slots {
-            return Ok(Some(Stencil::Base));
-        }
-        if i < 2 * slots {
-            let v = VertexId((i - slots) as u32);
-            let Some(start) = k.link_vertex(v, 0) else {
-                return Ok(None);
-            };
-            let r = ring(&t, v, start, k.num_faces() + 3)?;
-            return Ok(Some(Stencil::Vertex(v, r.into_boxed_slice())));
-        }
-        let h = crate::mesh::HalfedgeId((i - 2 * slots) as u32);
-        let (a, b) = (k.origin(h), k.dest(h));
-        if a >= b {
-            return Ok(None);
-        }
-        let miss = || MissingTriangle {
-            a: format!("{a:?}"),
-            b: format!("{b:?}"),
-        };
-        let c = t.third(a, b).ok_or_else(miss)?;
-        let d = t.third(b, a).ok_or_else(miss)?;
-        Ok(Some(Stencil::Edge([a, b, c, d])))
-    }
-}
-
 /// The position of a stencil point in S.
 fn stencil_point<S: Scalar>(
     st: &Stencil,
@@ -271,52 +127,6 @@ fn stencil_point<S: Scalar>(
         }
     }
     acc
-}
-
-/// The plan of face f of K: one patch (at most one corner of valence ≠ 6) or four
-/// sub-patches after one Loop step, their nets as indices into the [`PointTable`].
-pub(super) fn plan_of(k: &SimplicialSurface, f: FaceId) -> Result<Plan, LoopError> {
-    let table = PointTable {
-        k,
-        slots: k.vertex_slots(),
-    };
-    let cap = MAX_VALENCE as usize + 1;
-    let c = k.face(f);
-    let irregular: Vec<usize> = (0..3).filter(|&i| k.degree(c[i]) != 6).collect();
-    let err = |source| LoopError::Net { face: f.0, source };
-    if irregular.len() <= 1 {
-        let rot = irregular.first().copied().unwrap_or(0);
-        let (v, a, bb) = (c[rot], c[(rot + 1) % 3], c[(rot + 2) % 3]);
-        let net = gather_net(&BaseTopology(k), v, a, bb, cap).map_err(err)?;
-        return Ok(Plan::Direct {
-            rot: rot as u8,
-            patch: Patch {
-                valence: k.degree(v),
-                net: net.iter().map(|p| p.0).collect(),
-            },
-        });
-    }
-    let sub_t = SubTopology(BaseTopology(k));
-    let e = |i: usize, j: usize| SubPoint::edge(c[i], c[j]);
-    let vp = |i: usize| SubPoint::Vertex(c[i]);
-    let tris = [
-        (vp(0), e(0, 1), e(0, 2), k.degree(c[0])),
-        (vp(1), e(1, 2), e(0, 1), k.degree(c[1])),
-        (vp(2), e(0, 2), e(1, 2), k.degree(c[2])),
-        (e(0, 1), e(1, 2), e(0, 2), 6),
-    ];
-    let mut patches = Vec::with_capacity(4);
-    for (v, a, bb, valence) in tris {
-        let net = gather_net(&sub_t, v, a, bb, cap).map_err(err)?;
-        let idx = net
-            .into_iter()
-            .map(|p| table.sub_index(p))
-            .collect::<Result<Box<[u32]>, _>>()
-            .map_err(err)?;
-        patches.push(Patch { valence, net: idx });
-    }
-    let arr: [Patch; 4] = patches.try_into().map_err(|_| LoopError::Eigen(0))?;
-    Ok(Plan::Split(Box::new(arr)))
 }
 
 /// Every face's plan and the point table with f64 positions (in parallel).
@@ -780,7 +590,7 @@ fn reparam<S: Scalar>(jet: PatchJet<S>, m: &Affine, prec: u32) -> PatchJet<S> {
     }
 }
 
-impl crate::surface::TargetSurface for LoopSurface {
+impl TargetSurface for LoopSurface {
     fn name(&self) -> &str {
         "loop-limit"
     }
@@ -790,25 +600,7 @@ impl crate::surface::TargetSurface for LoopSurface {
         self.eval_f64(f, corners, self.profile_bary(f, corners, bary))
             .unwrap_or([f64::NAN; 3])
     }
-    fn linear(&self) -> Option<&dyn crate::surface::target::LinearTarget> {
+    fn linear(&self) -> Option<&dyn LinearTarget> {
         self.authors_origin.is_none().then_some(self as _)
-    }
-}
-
-/// The sub-triangle of one Loop step that holds the point of barycentric coordinates `sb`
-/// (w.r.t. the stored corners): corner triangle c when sb[c] ≥ 1/2 (first such c), else the
-/// middle one, 3. One function for the generic evaluation and the f64 hot path (`fast`).
-pub(super) fn split_sub_face<S: Scalar>(sb: &[S; 3], prec: u32) -> usize {
-    let half = S::from_ratio(1, 2, prec);
-    (0..3).find(|&c| sb[c].lt(&half).is_false()).unwrap_or(3)
-}
-
-/// In f64: the sub-triangle of a split face holding `sb` ([`split_sub_face`]) and the patch
-/// coordinates there, 2·sb of the next two corners, or 1 − 2·sb in the middle (as
-/// `LoopSurface::jet`); one function for the hot path (`fast`) and the weights (`linear`).
-pub(super) fn split_patch_point(sb: &[f64; 3]) -> (usize, f64, f64) {
-    match split_sub_face(sb, 53) {
-        3 => (3, 1.0 - 2.0 * sb[0], 1.0 - 2.0 * sb[1]),
-        c => (c, 2.0 * sb[(c + 1) % 3], 2.0 * sb[(c + 2) % 3]),
     }
 }

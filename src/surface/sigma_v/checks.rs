@@ -3,11 +3,11 @@
 //! that are its own (count, first attempt, emptiness of the declared-empty pairs, eval,
 //! smoothness, fit).
 
-use super::gluing::{g_uw_on_domain, Corner, PairCase, SigmaV, SigmaVError};
+use super::gluing::{g_uw_on_domain, omega_uw_grid, Corner, PairCase, SigmaV, SigmaVError};
 use super::surface::{SigmaVPps, SvConsts};
 use super::view::{SigmaVView, Version};
 use super::wedge::WedgeTable;
-use crate::construction::maps::{g_v_inv, rotate_frac, EdgeConfig, P2};
+use crate::construction::maps::{EdgeConfig, P2};
 use crate::gluing::data::{GluingData, Idx, Point};
 use crate::gluing::sampled::{check_all, SampleConfig};
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
@@ -153,26 +153,6 @@ fn declared_empty_pairs(g: &SigmaV, u: VertexId, w: VertexId) -> Vec<(Corner, Co
         for j in g.corners_at(w) {
             if matches!(g.case(i, j), PairCase::DeclaredEmptyEdge(_)) {
                 out.push((i, j));
-            }
-        }
-    }
-    out
-}
-
-/// Grid points of the report's Ω_uw (plane coordinates of P_u): a `side`² grid over the
-/// canonical lens, pulled back by R_(u,w)⁻¹∘g_u⁻¹.
-pub fn omega_uw_grid(e: &EdgeConfig, side: usize) -> Vec<P2<f64>> {
-    let mut out = Vec::with_capacity(side * side);
-    for a in 0..side {
-        for b in 0..side {
-            let x = 0.1339 + 0.7322 * (a as f64 + 0.5) / side as f64;
-            let y = -0.7072 + 1.4144 * (b as f64 + 0.5) / side as f64;
-            let z = P2::new(x, y);
-            if !crate::construction::maps::in_canonical_lens(&z).is_true() {
-                continue;
-            }
-            if let Ok(p) = g_v_inv(e.m_u, &z) {
-                out.push(rotate_frac(&p, e.i as i64, e.m_u as i64));
             }
         }
     }

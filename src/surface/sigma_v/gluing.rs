@@ -17,7 +17,7 @@
 
 use super::wedge::WedgeTable;
 use crate::construction::maps::{
-    f_v, in_canonical_lens, polar, polar_inv, EdgeConfig, Paper, Ppm, P2,
+    f_v, g_v_inv, in_canonical_lens, polar, polar_inv, rotate_frac, EdgeConfig, Paper, Ppm, P2,
 };
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use crate::numeric::Scalar;
@@ -320,4 +320,24 @@ pub fn g_uw_on_domain<S: Scalar>(e: &EdgeConfig, q: &P2<S>) -> Option<P2<S>> {
     }
     let d = Ppm::<S>::g_v_inv(&Paper, e.m_w, &c).ok()?;
     Some(Ppm::<S>::r_uw_inv(&Paper, &e.reversed(), &d))
+}
+
+/// Grid points of the report's Ω_uw (plane coordinates of P_u): a `side`² grid over the
+/// canonical lens, pulled back by R_(u,w)⁻¹∘g_u⁻¹.
+pub fn omega_uw_grid(e: &EdgeConfig, side: usize) -> Vec<P2<f64>> {
+    let mut out = Vec::with_capacity(side * side);
+    for a in 0..side {
+        for b in 0..side {
+            let x = 0.1339 + 0.7322 * (a as f64 + 0.5) / side as f64;
+            let y = -0.7072 + 1.4144 * (b as f64 + 0.5) / side as f64;
+            let z = P2::new(x, y);
+            if !in_canonical_lens(&z).is_true() {
+                continue;
+            }
+            if let Ok(p) = g_v_inv(e.m_u, &z) {
+                out.push(rotate_frac(&p, e.i as i64, e.m_u as i64));
+            }
+        }
+    }
+    out
 }

@@ -244,7 +244,7 @@ impl<'a> SigmaVView<'a> {
                 return v.clone();
             }
         }
-        let pts: Vec<P2<f64>> = super::checks::omega_uw_grid(&e, LENS_GRID_SIDE)
+        let pts: Vec<P2<f64>> = super::gluing::omega_uw_grid(&e, LENS_GRID_SIDE)
             .into_iter()
             .filter(|q| self.in_gluing_plane(a, b, q))
             .collect();

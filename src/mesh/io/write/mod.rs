@@ -8,61 +8,19 @@
 //! written as `NaN` and read back as NaN). Text lines are formatted in parallel batches and
 //! written in order ([`write_lines`]): the bytes of a sequential loop.
 
+mod lines;
+mod mesh_out;
 mod obj;
 mod off;
 mod ply;
+
+pub use mesh_out::{MeshOut, PlyIndex};
 
 use std::io::Write;
 use std::path::Path;
 
 use crate::mesh::error::MeshError;
 use crate::mesh::raw::MeshFormat;
-use rayon::prelude::*;
-
-/// The integer type of PLY's `vertex_indices` list, as the header names it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum PlyIndex {
-    /// `uint` (a mesh as read).
-    #[default]
-    UInt,
-    /// `int` (the sampled surfaces of Sec. 6.2).
-    Int,
-}
-
-/// A triangle mesh with optional per-vertex attributes, as the writers take it. An attribute
-/// array that is empty is not written; which formats hold which attribute: OBJ positions and
-/// normals (`vn`, faces `a//a`), OFF positions and normals (`NOFF`), PLY everything (with the
-/// mean curvature also as vertex colours, clipped at its 98th percentile).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct MeshOut<'a> {
-    /// Vertex positions.
-    pub positions: &'a [[f64; 3]],
-    /// Unit normals (PLY writes them only when there is one per vertex).
-    pub normals: &'a [[f64; 3]],
-    /// Gaussian curvature per vertex (PLY, with normals and mean curvature).
-    pub gaussian: &'a [f64],
-    /// Mean curvature per vertex (PLY, with normals; also the colours).
-    pub mean: &'a [f64],
-    /// Triangles, 0-based indices into the per-vertex arrays.
-    pub faces: &'a [[u32; 3]],
-    /// A header comment (OBJ `# …`, PLY `comment …`; OFF has none).
-    pub comment: Option<&'a str>,
-    /// PLY's index type.
-    pub ply_index: PlyIndex,
-}
-
-impl<'a> MeshOut<'a> {
-    /// Positions and triangles only, with the header of a mesh as read
-    /// (`comment written by pseudomanifold` in PLY).
-    pub fn plain(positions: &'a [[f64; 3]], faces: &'a [[u32; 3]]) -> Self {
-        MeshOut {
-            positions,
-            faces,
-            comment: None,
-            ..MeshOut::default()
-        }
-    }
-}
 
 /// The PLY comment of [`MeshOut::plain`].
 const PLAIN_PLY_COMMENT: &str = "written by pseudomanifold";
@@ -155,73 +113,9 @@ pub fn write_mesh_file(path: &Path, m: &MeshOut, format: MeshFormat) -> std::io:
     written
 }
 
-/// Writes `n` lines, line i formatted by `line(i, buf)`, in parallel batches written in order:
-/// the same bytes as a sequential loop. Formatting floats was most of `ppm sample`'s serial
-/// time (a level-2 koala writes 800k vertex and 1.6M face lines); the batches bound memory.
-fn write_lines(
-    w: &mut impl Write,
-    n: usize,
-    line: impl Fn(usize, &mut Vec<u8>) -> std::io::Result<()> + Sync,
-) -> std::io::Result<()> {
-    const CHUNK: usize = 4096;
-    const BATCH: usize = 64 * CHUNK;
-    for start in (0..n).step_by(BATCH) {
-        let end = (start + BATCH).min(n);
-        let bufs = (start..end)
-            .step_by(CHUNK)
-            .collect::<Vec<_>>()
-            .into_par_iter()
-            .map(|s| {
-                let mut b = Vec::with_capacity(CHUNK * 48);
-                for i in s..(s + CHUNK).min(end) {
-                    line(i, &mut b)?;
-                }
-                Ok(b)
-            })
-            .collect::<std::io::Result<Vec<Vec<u8>>>>()?;
-        for b in bufs {
-            w.write_all(&b)?;
-        }
-    }
-    Ok(())
-}
-
-/// "3 a b c\n", as `writeln!(b, "3 {} {} {}", ..)` prints it (OFF and PLY faces).
-fn face_line(b: &mut Vec<u8>, f: [u32; 3]) -> std::io::Result<()> {
-    b.push(b'3');
-    for x in f {
-        b.push(b' ');
-        super::decimal::push_uint(b, x.into());
-    }
-    b.push(b'\n');
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The parallel writer gives the bytes of a sequential loop, across chunk and batch
-    /// boundaries, and passes a line's error on.
-    #[test]
-    fn write_lines_is_the_sequential_text() {
-        let n = 2 * 64 * 4096 + 4097;
-        let mut par = Vec::new();
-        write_lines(&mut par, n, |i, b| writeln!(b, "{i} {:?}", i as f64 / 7.0)).expect("vec");
-        let mut seq = Vec::new();
-        for i in 0..n {
-            writeln!(seq, "{i} {:?}", i as f64 / 7.0).expect("vec");
-        }
-        assert!(par == seq);
-        let err = write_lines(&mut Vec::new(), n, |i, b| {
-            if i == n - 1 {
-                Err(std::io::Error::other("line"))
-            } else {
-                writeln!(b, "{i}")
-            }
-        });
-        assert!(err.is_err());
-    }
 
     /// A mesh as read is written byte for byte as `writeln!` with `{:?}` writes it (the
     /// former writer of meshes as read), in every text format, for coordinates of every kind.

@@ -2,7 +2,8 @@
 //! and `f a b c` (1-based; `f a//a b//b c//c` with normals).
 
 use super::super::decimal::{push_f64x3, push_uint};
-use super::{write_lines, MeshOut};
+use super::lines::write_lines;
+use super::mesh_out::MeshOut;
 use std::io::Write;
 
 pub(super) fn write(w: &mut impl Write, m: &MeshOut) -> std::io::Result<()> {

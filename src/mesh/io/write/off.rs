@@ -2,7 +2,8 @@
 //! normal after the position) and `3 a b c` per triangle.
 
 use super::super::decimal::push_f64x3;
-use super::{face_line, write_lines, MeshOut};
+use super::lines::{face_line, write_lines};
+use super::mesh_out::MeshOut;
 use std::io::Write;
 
 pub(super) fn write(w: &mut impl Write, m: &MeshOut) -> std::io::Result<()> {

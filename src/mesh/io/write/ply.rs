@@ -4,7 +4,8 @@
 //! comment) and both curvatures.
 
 use super::super::decimal::{push_f64, push_f64x3, push_uint};
-use super::{face_line, write_lines, MeshOut, PlyIndex};
+use super::lines::{face_line, write_lines};
+use super::mesh_out::{MeshOut, PlyIndex};
 use crate::mesh::raw::MeshFormat;
 use std::io::Write;
 

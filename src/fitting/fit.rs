@@ -1,0 +1,149 @@
+//! A fit: its options, its result with the rounds that reached it, why one fails, and the
+//! errors it is measured by (SPEC `AF-epsilon`).
+
+use super::base::BaseMesh;
+use super::fitted::{BaseSurface, Fitted, SurfaceParam};
+use super::simplify::Hierarchy;
+use super::{embedded, local, refine, unblock};
+use crate::surface::sigma_v::{SigmaVError, SigmaVPps};
+use rayon::prelude::*;
+use serde::Serialize;
+
+/// Options of [`super::fit_surface`].
+#[derive(Debug, Clone, Copy)]
+pub struct FitOptions {
+    /// ε, absolute.
+    pub epsilon: f64,
+    /// The simplification may leave vertices of S_T this many ε from the flat base triangles
+    /// (the smooth fit then closes the gap; refinement where it does not).
+    pub deviation_ratio: f64,
+    /// κ of the (σ, v) construction.
+    pub kappa: f64,
+    /// Patch degree of ψ_(σ,v).
+    pub degree: usize,
+    /// Largest base vertex degree.
+    pub max_degree: usize,
+    /// Refinement rounds at most.
+    pub max_rounds: usize,
+}
+
+impl FitOptions {
+    /// Defaults for a given ε.
+    pub fn new(epsilon: f64) -> Self {
+        FitOptions {
+            epsilon,
+            deviation_ratio: 4.0,
+            kappa: crate::surface::sigma_v::DEFAULT_KAPPA,
+            degree: crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
+            max_degree: 12,
+            max_rounds: 40,
+        }
+    }
+}
+
+/// Why a fit failed.
+#[derive(Debug, thiserror::Error)]
+pub enum FitError {
+    /// ε must be a positive finite number.
+    #[error("epsilon must be positive and finite, got {0}")]
+    BadEpsilon(f64),
+    /// The (σ, v) construction refused the base mesh.
+    #[error("the (sigma, v) construction refused the base mesh: {0}")]
+    SigmaV(#[from] SigmaVError),
+    /// The base mesh stayed invalid (classes) after the repair rounds.
+    #[error("the base mesh is not a simplicial surface after {rounds} repair rounds: {classes}")]
+    BaseInvalid {
+        /// Rounds spent.
+        rounds: usize,
+        /// The validator's defect classes.
+        classes: String,
+    },
+    /// ε was not reached in the allowed rounds.
+    #[error("epsilon {epsilon} not reached after {rounds} refinement rounds: {offenders} vertices still further (worst {worst}), {folds} triangles of S_T folded")]
+    NotReached {
+        /// ε.
+        epsilon: f64,
+        /// Rounds spent.
+        rounds: usize,
+        /// Vertices still beyond ε.
+        offenders: usize,
+        /// Largest error.
+        worst: f64,
+        /// Triangles of S_T still folded in T_v.
+        folds: usize,
+    },
+}
+
+/// One round of fit and refinement.
+#[derive(Debug, Clone, Serialize)]
+pub struct Round {
+    /// Base vertices (charts: one p-domain per corner, |I| = 3·faces; the vertex count is
+    /// what refinement adds to).
+    pub base_vertices: usize,
+    /// Largest ‖S(p_v) − v‖ over the vertices of S_T.
+    pub max_error: f64,
+    /// Its 99th percentile.
+    pub p99_error: f64,
+    /// Vertices beyond ε (error plus rounding bound).
+    pub offenders: usize,
+    /// Pieces of triangles of S_T folded by Floater's maps (`AF-param-bijective`), reported.
+    pub folds: usize,
+    /// Refinement done after the round (None for the last).
+    pub refine: Option<refine::RefineStats>,
+    /// What the round's embedding kept from the previous round's (None: all of S_T was
+    /// embedded, [`local`]).
+    pub local: Option<local::LocalStats>,
+    /// Seconds spent in the round.
+    pub seconds: f64,
+}
+
+/// A fit and how it was reached.
+pub struct Fit {
+    /// ε (absolute).
+    pub epsilon: f64,
+    /// The base mesh with the parametrization of S_T.
+    pub base: BaseMesh,
+    /// The base mesh as a validated surface.
+    pub surface: BaseSurface,
+    /// Parameters of the vertices of S_T in the surface's ids (Floater's).
+    pub params: Vec<SurfaceParam>,
+    /// The embedded base mesh and Floater's maps, or why there are none.
+    pub embedded: Result<embedded::Embedded, embedded::Failure>,
+    /// Whether `params` are Floater's (else the simplification's: the embedding failed).
+    pub floater_params: bool,
+    /// The fitted PPS.
+    pub fitted: Fitted,
+    /// Error of every vertex of S_T.
+    pub errors: Vec<f64>,
+    /// Bound on the f64 rounding of eval (added to each error before comparing with ε).
+    pub rounding_bound: f64,
+    /// The simplification.
+    pub hierarchy: Hierarchy,
+    /// Repair rounds spent on an invalid base mesh.
+    pub repairs: usize,
+    /// The rounds.
+    pub rounds: Vec<Round>,
+    /// The base-mesh changes where a base edge had no curve (the AC·CB rule, `unblock`).
+    pub unblock: unblock::Walk,
+}
+
+/// A bound on |fl(eval) − eval| for the fitted PPS: the operation count of
+/// `surface::eval_bound` (patches of degree d: γ_{8d+8}; maps and blend: `MAP_BOUND_ULPS` ulps)
+/// times the largest control point. An operation count, not a proof; the checks compare it
+/// with 256-bit evaluations on a seeded sample (SPEC `AF-epsilon`).
+pub fn rounding_bound(pps: &SigmaVPps) -> f64 {
+    use crate::surface::eval_bound::{gamma_n, MAP_BOUND_ULPS};
+    (gamma_n(8 * pps.degree + 8) + MAP_BOUND_ULPS * f64::EPSILON) * pps.scale()
+}
+
+/// ‖S(p_x) − x‖ for every vertex x of S_T (NaN when eval fails).
+pub fn vertex_errors(pps: &SigmaVPps, pos: &[[f64; 3]], params: &[SurfaceParam]) -> Vec<f64> {
+    params
+        .par_iter()
+        .zip(pos.par_iter())
+        .map(|(&(f, b), x)| match pps.eval_f64(f, b) {
+            Ok(s) => crate::numeric::robust_norm(&[s[0] - x[0], s[1] - x[1], s[2] - x[2]]),
+            Err(_) => f64::NAN,
+        })
+        .collect()
+}

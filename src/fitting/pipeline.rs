@@ -1,0 +1,458 @@
+//! The stages of the fit run in order, with refinement rounds until ε is reached (the module
+//! doc of `fitting`).
+
+use super::base::{BaseMesh, RemovalLimits};
+use super::fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round};
+use super::fitted::{BaseSurface, BaseSurfaceError};
+use super::simplify::SimplifyOptions;
+use super::{checks, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock};
+use crate::mesh::SimplicialSurface;
+
+fn percentile(v: &[f64], q: f64) -> f64 {
+    let mut s: Vec<f64> = v.to_vec();
+    s.sort_by(f64::total_cmp);
+    s.get(((s.len() as f64 - 1.0) * q).round() as usize)
+        .copied()
+        .unwrap_or(f64::NAN)
+}
+
+/// Repair rounds at most for a base mesh the validator refuses.
+const MAX_REPAIRS: usize = 60;
+
+/// The base faces as sorted vertex triples (which base meshes were embedded already).
+fn face_key(base: &BaseMesh) -> Vec<[u32; 3]> {
+    let mut f: Vec<[u32; 3]> = base.faces().map(|(_, c)| c).collect();
+    f.sort_unstable();
+    f
+}
+
+/// Simplification attempts: a base mesh the repair cannot make valid is simplified again
+/// with half the deviation allowance (closer to S_T, so fewer crossings).
+const ATTEMPTS: usize = 4;
+
+/// The adaptive fit of S_T = `k` (module doc). `progress` receives one line per stage.
+pub fn fit_surface(
+    k: &SimplicialSurface,
+    opts: &FitOptions,
+    mut progress: impl FnMut(&str),
+) -> Result<Fit, FitError> {
+    if !(opts.epsilon > 0.0 && opts.epsilon.is_finite()) {
+        return Err(FitError::BadEpsilon(opts.epsilon));
+    }
+    let mut o = *opts;
+    let mut attempt = 1;
+    loop {
+        match fit_once(k, &o, &mut progress) {
+            Err(FitError::BaseInvalid { .. }) if attempt < ATTEMPTS => {
+                o.deviation_ratio /= 2.0;
+                attempt += 1;
+                progress(&format!(
+                    "simplify again: deviation allowance {} epsilon",
+                    o.deviation_ratio
+                ));
+            }
+            r => return r,
+        }
+    }
+}
+
+fn fit_once(
+    k: &SimplicialSurface,
+    opts: &FitOptions,
+    progress: &mut impl FnMut(&str),
+) -> Result<Fit, FitError> {
+    let t0 = std::time::Instant::now();
+    let mut base = BaseMesh::new(k);
+    let sopts = SimplifyOptions {
+        limits: RemovalLimits {
+            max_deviation: opts.deviation_ratio * opts.epsilon,
+            min_normal_cos: 0.5,
+            min_quality: 0.1,
+            max_degree: opts.max_degree,
+        },
+        min_vertices: 4,
+        max_levels: 200,
+    };
+    let hierarchy = simplify::simplify(&mut base, k, &sopts, |lvl, n| {
+        progress(&format!("simplify: level {lvl}, {n} base vertices"))
+    });
+    progress(&format!(
+        "simplify: {} levels, {} base vertices of {} ({:.1} s)",
+        hierarchy.levels.len(),
+        base.base_vertices().len(),
+        k.num_vertices(),
+        t0.elapsed().as_secs_f64()
+    ));
+    let pos = base.positions().to_vec();
+    let mut rounds: Vec<Round> = Vec::new();
+    let mut repairs = 0;
+    let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
+    let mut walk = unblock::Walk::default();
+    // The last embedding whose every check held, kept for the next round's local update.
+    let mut prev: Option<local::Previous> = None;
+    loop {
+        let tr = std::time::Instant::now();
+        let surface = match BaseSurface::new(&base) {
+            Ok(s) => s,
+            Err(BaseSurfaceError::NotASurface { classes, crossing }) => {
+                repairs += 1;
+                let names: Vec<&str> = classes.iter().map(|c| c.name()).collect();
+                if repairs > MAX_REPAIRS || crossing.is_empty() {
+                    return Err(FitError::BaseInvalid {
+                        rounds: repairs,
+                        classes: names.join(", "),
+                    });
+                }
+                let st = repair(&mut base, &crossing, &pos);
+                progress(&format!(
+                    "repair: base mesh refused ({}), {} vertices inserted, {} edges flipped",
+                    names.join(", "),
+                    st.inserted,
+                    st.flips
+                ));
+                if st.inserted == 0 && st.flips == 0 {
+                    return Err(FitError::BaseInvalid {
+                        rounds: repairs,
+                        classes: names.join(", "),
+                    });
+                }
+                continue;
+            }
+            Err(BaseSurfaceError::SigmaV(e)) => return Err(e.into()),
+        };
+        // The embedding and Floater's parameters are used when every check of theirs
+        // holds; otherwise the simplification's parameters are, and the failure is reported
+        // (`AF-embedding`, and the checks of the embedding that exists), never passed on.
+        // A base mesh whose embedding failed is not embedded again (the failure is kept).
+        // After a refinement, only what changed is embedded again (`local`); the local result
+        // is used only when every check of the embedding holds on all of it, else all of S_T
+        // is embedded again.
+        let key = face_key(&base);
+        let mut local_stats = None;
+        let mut checked = None;
+        let mut emb = match failed_at.iter().find(|(x, _)| *x == key) {
+            Some((_, f)) => {
+                progress("embed: failed at this base mesh before, not tried again");
+                Err(f.clone())
+            }
+            None => match prev.as_ref().map(|p| local::embed_local(k, &base, p)) {
+                None => embedded::embed(k, &base),
+                Some(Ok((e, st))) => {
+                    let checks = embed_checks::run(k, &base, &e);
+                    let bad: Vec<&str> = checks
+                        .iter()
+                        .filter(|r| r.failed())
+                        .map(|r| r.id.as_str())
+                        .collect();
+                    if bad.is_empty() {
+                        local_stats = Some(st);
+                        checked = Some(checks);
+                        Ok(e)
+                    } else {
+                        progress(&format!(
+                            "embed: the local update fails {}; embedding all of S_T again",
+                            bad.join(", ")
+                        ));
+                        embedded::embed(k, &base)
+                    }
+                }
+                Some(Err(f)) => {
+                    progress(&format!(
+                        "embed: the local update failed ({}); embedding all of S_T again",
+                        f.what
+                    ));
+                    embedded::embed(k, &base)
+                }
+            },
+        };
+        if let Some(f) = emb.as_ref().err().cloned() {
+            let new = !failed_at.iter().any(|(x, _)| *x == key);
+            if new {
+                failed_at.push((key.clone(), f.clone()));
+            }
+            // A base edge with no curve: the base mesh is changed there by a stellar operation
+            // (seed 002 Part II: the AC·CB rule, read as the edge split of AB at a vertex C of
+            // S_T; a flip first, once per pair), and embedded again (`unblock`: the walk never
+            // repeats a base mesh and is bounded). When it gives up, the failure names the edge.
+            if let (true, Some(first)) = (new, f.edge) {
+                let blocked = if f.blocked.is_empty() {
+                    vec![first]
+                } else {
+                    f.blocked.clone()
+                };
+                let (before, walk_before) = (base.clone(), walk.clone());
+                let (mut done, mut gave_up) =
+                    unblock_all(&mut base, &mut walk, &blocked, &sopts.limits, &failed_at);
+                // All the blocked edges are changed before embedding again (each embedding
+                // costs the whole of S_T); when the validator refuses the result, only the
+                // first blocked edge is changed, as one at a time did before.
+                if done.len() > 1 && BaseSurface::new(&base).is_err() {
+                    base = before;
+                    walk = walk_before;
+                    (done, gave_up) = unblock_all(
+                        &mut base,
+                        &mut walk,
+                        &blocked[..1],
+                        &sopts.limits,
+                        &failed_at,
+                    );
+                }
+                if !done.is_empty() {
+                    progress(&format!(
+                        "embed: failed ({}; {} base edges without a curve); {}; embedding again",
+                        f.what,
+                        f.blocked.len().max(1),
+                        done.join("; ")
+                    ));
+                    continue;
+                }
+                if let Some(g) = gave_up {
+                    let f = embedded::Failure {
+                        what: format!("{}; {g}", f.what),
+                        gave_up: Some(g),
+                        ..f
+                    };
+                    if let Some(last) = failed_at.last_mut() {
+                        last.1 = f.clone();
+                    }
+                    emb = Err(f);
+                }
+            }
+        }
+        let mut all_hold = false;
+        let usable = match &emb {
+            Ok(e) => {
+                let checks = checked
+                    .take()
+                    .unwrap_or_else(|| embed_checks::run(k, &base, e));
+                let bad: Vec<&str> = checks
+                    .iter()
+                    .filter(|r| r.failed())
+                    .map(|r| r.id.as_str())
+                    .collect();
+                let usable = !checks.iter().any(|r| {
+                    (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
+                });
+                all_hold = bad.is_empty();
+                let how = match &local_stats {
+                    Some(st) => format!(
+                        "local update: {} of {} curves kept, {} of {} curved triangles' maps kept; ",
+                        st.kept_curves, st.curves, st.kept_maps, st.maps
+                    ),
+                    None => String::new(),
+                };
+                progress(&format!(
+                    "embed: {how}{} curves ({} along an edge of S_T, {} in their faces' region, {} widened, {} on all of S_T, {} taken up and traced again, {} restarts), length {:.4e} -> {:.4e} in {} sweeps ({} moves); {} pieces; {}",
+                    e.emb.curves.len(),
+                    e.emb.stats.on_edges,
+                    e.emb.stats.in_region,
+                    e.emb.stats.widened,
+                    e.emb.stats.unrestricted,
+                    e.emb.stats.ripped,
+                    e.emb.stats.restarts,
+                    e.emb.stats.initial_length,
+                    e.emb.stats.length,
+                    e.emb.stats.sweeps,
+                    e.emb.stats.moves,
+                    e.overlay.pieces.len(),
+                    match (bad.is_empty(), usable) {
+                        (true, _) => "Floater's parameters used".to_string(),
+                        (false, true) => format!("failed: {}; Floater's parameters used", bad.join(", ")),
+                        (false, false) => format!("failed: {}; the simplification's parameters used", bad.join(", ")),
+                    }
+                ));
+                usable
+            }
+            Err(f) => {
+                progress(&format!(
+                    "embed: failed ({}); the simplification's parameters used",
+                    f.what
+                ));
+                false
+            }
+        };
+        let params = match &emb {
+            Ok(e) if usable => surface.params_of(&base, &e.params),
+            _ => surface.params(&base),
+        };
+        let fitted = fitted::fit(&surface, &pos, &params, opts.kappa, opts.degree)?;
+        let errors = vertex_errors(&fitted.pps, &pos, &params);
+        let bound = rounding_bound(&fitted.pps);
+        let offenders: Vec<u32> = errors
+            .iter()
+            .enumerate()
+            .filter(|(_, &e)| !(e + bound <= opts.epsilon))
+            .map(|(i, _)| i as u32)
+            .collect();
+        // Pieces folded by Floater's maps are counted per round (SPEC `AF-param-bijective`):
+        // reported by the check, never expected.
+        let folds = match &emb {
+            Ok(e) if usable => embed_checks::check_bijective(&e.overlay, &base, &e.maps).offenders,
+            _ => checks::orientations(k, &base).folded.len() as u64,
+        } as usize;
+        let max_error = errors
+            .iter()
+            .copied()
+            .fold(0.0, crate::report::harness::dev_max);
+        let mut round = Round {
+            base_vertices: surface.fine_of.len(),
+            max_error,
+            p99_error: percentile(&errors, 0.99),
+            offenders: offenders.len(),
+            folds: 0,
+            refine: None,
+            local: local_stats,
+            seconds: 0.0,
+        };
+        progress(&format!(
+            "fit round {}: {} charts (base vertices), max error {:.3e}, p99 {:.3e}, {} vertices beyond epsilon {:.3e}, {} folded triangles",
+            rounds.len() + 1,
+            round.base_vertices,
+            round.max_error,
+            round.p99_error,
+            round.offenders,
+            opts.epsilon,
+            folds
+        ));
+        round.folds = folds;
+        if offenders.is_empty() {
+            round.seconds = tr.elapsed().as_secs_f64();
+            rounds.push(round);
+            return Ok(Fit {
+                epsilon: opts.epsilon,
+                base,
+                surface,
+                params,
+                embedded: emb,
+                floater_params: usable,
+                fitted,
+                errors,
+                rounding_bound: bound,
+                hierarchy,
+                repairs,
+                rounds,
+                unblock: walk,
+            });
+        }
+        if rounds.len() + 1 >= opts.max_rounds {
+            return Err(FitError::NotReached {
+                epsilon: opts.epsilon,
+                rounds: rounds.len() + 1,
+                offenders: offenders.len(),
+                worst: max_error,
+                folds,
+            });
+        }
+        prev = match emb {
+            Ok(e) if usable && all_hold => Some(local::Previous::new(&base, e)),
+            _ => None,
+        };
+        let mut st = refine::RefineStats::default();
+        for x in refine::choose(&base, &errors, &offenders) {
+            if !base.is_base(x) {
+                refine::insert(&mut base, x, &mut st);
+            }
+        }
+        round.refine = Some(st);
+        round.seconds = tr.elapsed().as_secs_f64();
+        rounds.push(round);
+        if st.inserted == 0 {
+            return Err(FitError::NotReached {
+                epsilon: opts.epsilon,
+                rounds: rounds.len(),
+                offenders: offenders.len(),
+                worst: max_error,
+                folds,
+            });
+        }
+    }
+}
+
+/// The walk's change at every blocked edge still in the base mesh: what was done, and the first
+/// reason it gave up at one.
+fn unblock_all(
+    base: &mut BaseMesh,
+    walk: &mut unblock::Walk,
+    blocked: &[(u32, u32)],
+    lim: &RemovalLimits,
+    failed_at: &[(Vec<[u32; 3]>, embedded::Failure)],
+) -> (Vec<String>, Option<unblock::GiveUp>) {
+    let mut done = Vec::new();
+    let mut gave_up = None;
+    for &(a, b) in blocked {
+        // An earlier change of this round may have taken the edge away already.
+        if base.face_of_edge(a, b).is_none() {
+            continue;
+        }
+        let changed = walk.change(base, a, b, lim, |m| {
+            let k = face_key(m);
+            failed_at.iter().any(|(x, _)| *x == k)
+        });
+        match changed {
+            Ok(ch) => done.push(describe(a, b, ch)),
+            Err(g) => {
+                gave_up.get_or_insert(g);
+            }
+        }
+    }
+    (done, gave_up)
+}
+
+/// One line of the progress report for a base-mesh change at edge a–b.
+fn describe(a: u32, b: u32, ch: unblock::Change) -> String {
+    match ch {
+        unblock::Change::Flipped => format!("base edge {a}-{b} flipped"),
+        unblock::Change::Removed { c } => format!(
+            "base vertex {c} opposite edge {a}-{b} removed (AC·CB rule, no vertex of S_T left to split at)"
+        ),
+        unblock::Change::Split { c, edge_split: true } => {
+            format!("base edge {a}-{b} split at vertex {c} of S_T (AC·CB rule)")
+        }
+        unblock::Change::Split { c, edge_split: false } => format!(
+            "a base face at edge {a}-{b} split at vertex {c} of S_T (AC·CB rule; the edge's flip refused)"
+        ),
+    }
+}
+
+/// Refine the base mesh at base face slots `faces` (a refused base mesh's crossing faces):
+/// insert the vertex of S_T furthest from its flat base triangle
+/// among the face's own (else those of the faces around its corners); with none, flip the
+/// face's longest flippable edge.
+fn repair(base: &mut BaseMesh, faces: &[u32], pos: &[[f64; 3]]) -> refine::RefineStats {
+    let mut st = refine::RefineStats::default();
+    for &f in faces {
+        let mut cand: Vec<u32> = base.members(f).to_vec();
+        if cand.is_empty() {
+            if let Some(c) = base.face(f) {
+                for v in c {
+                    for &g in base.faces_around(v) {
+                        cand.extend_from_slice(base.members(g));
+                    }
+                }
+            }
+        }
+        let worst = cand
+            .into_iter()
+            .max_by(|&a, &b| base.flat_deviation(a).total_cmp(&base.flat_deviation(b)));
+        match worst {
+            Some(x) if !base.is_base(x) => {
+                refine::insert(base, x, &mut st);
+            }
+            _ => {
+                if let Some(c) = base.face(f) {
+                    let mut edges: Vec<(f64, u32, u32)> = (0..3)
+                        .map(|i| {
+                            let (a, b) = (c[i], c[(i + 1) % 3]);
+                            (geodesic::dist(pos[a as usize], pos[b as usize]), a, b)
+                        })
+                        .collect();
+                    edges.sort_by(|x, y| y.0.total_cmp(&x.0));
+                    if edges.iter().any(|&(_, a, b)| base.flip(a, b).is_ok()) {
+                        st.flips += 1;
+                    }
+                }
+            }
+        }
+    }
+    st
+}
