@@ -1,29 +1,20 @@
 //! Defs. 4.1.9 / 4.1.10 and Sec. 4.2 at edge level: Ω_uw, φ_wu, P4.2.1, P4.2.3, L4.2.3,
 //! L4.2.4, and the driver running every edge-level check.
 
-use super::*;
+use super::common::*;
+use super::edge_maps::*;
+use super::polar::*;
+use super::samples::*;
+use super::smooth::{smooth_test, SmoothSpec};
+use crate::construction::maps::*;
+use crate::construction::sampling::*;
+use crate::numeric::Scalar;
+use crate::report::{Check, CheckResult, OnError, Witness};
+use serde_json::json;
 
 // =============================================================================================
 // Defs. 4.1.9 / 4.1.10 and Sec. 4.2 (edge level)
 // =============================================================================================
-
-/// Samples of Ω_u for an edge: the disk sampler (cut at the ray opposite u'_i) and the lens
-/// pull-backs, with category labels.
-fn edge_domain_samples<S: Scalar, M: Ppm<S>>(
-    model: &M,
-    e: &EdgeConfig,
-    seed: u64,
-    n: usize,
-    prec: u32,
-) -> Vec<(Category, P2<S>)> {
-    let mut v: Vec<(Category, P2<S>)> = omega_u_samples::<S>(e, seed, n, prec).points;
-    v.extend(
-        lens_pullbacks(model, e, seed ^ 0x1e75, n, prec)
-            .into_iter()
-            .map(|(c, p, _)| (c, p)),
-    );
-    v
-}
 
 /// D4.1.9-lens: Def. 4.1.9 read literally agrees with the Sec. 6.1.3 canonical-lens test.
 /// Disagreements within the rounding margin `ROUNDTRIP_COND·amp·ε` of the lens boundary (in the g_u∘R_(u,w) frame) are
@@ -77,20 +68,6 @@ pub fn check_d4_1_9_lens_agreement<S: Scalar, M: Ppm<S>>(
         });
     }
     m.finish(format!("samples: {}; {inside} in Ω_uw (literal); {ambiguous} disagreements within the rounding margin {tol:.2e} of ∂E ignored", counts_of(&cats)))
-}
-
-/// Points of Ω_uw (literal Def. 4.1.9) from the edge samples.
-pub(super) fn omega_uw_points<S: Scalar, M: Ppm<S>>(
-    model: &M,
-    e: &EdgeConfig,
-    seed: u64,
-    n: usize,
-    prec: u32,
-) -> Vec<(Category, P2<S>)> {
-    edge_domain_samples(model, e, seed, n, prec)
-        .into_iter()
-        .filter(|(_, p)| model.in_omega_uw_literal(e, p).is_true())
-        .collect()
 }
 
 /// P4.2.1: Ω_uw ≠ ∅ ⇔ Ω_wu ≠ ∅ (witnesses searched by sampling both domains).

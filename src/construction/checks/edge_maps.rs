@@ -1,6 +1,13 @@
 //! Def. 4.1.8's running text and Props. 4.1.1–4.1.3: g_(u,w) for one edge configuration.
 
-use super::*;
+use super::common::*;
+use super::samples::*;
+use super::smooth::{smooth_test, SmoothSpec};
+use crate::construction::maps::*;
+use crate::construction::sampling::*;
+use crate::numeric::Scalar;
+use crate::report::{dev_max, Check, CheckResult, OnError, Restricted, Witness};
+use serde_json::json;
 
 // =============================================================================================
 // Claims of Def. 4.1.8's running text

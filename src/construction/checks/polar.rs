@@ -1,7 +1,13 @@
 //! Defs. 4.1.5–4.1.7: Π, the claims about g_v after Def. 4.1.6, and the h-identity of
 //! Appendix A.1 (vertex level: no edge configuration needed).
 
-use super::*;
+use super::common::*;
+use super::smooth::{smooth_test, SmoothSpec};
+use crate::construction::maps::*;
+use crate::construction::sampling::*;
+use crate::numeric::Scalar;
+use crate::report::{dev_max, Check, CheckResult, Restricted, Witness};
+use serde_json::json;
 
 // =============================================================================================
 // Def. 4.1.5 — Π

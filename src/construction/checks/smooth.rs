@@ -1,7 +1,11 @@
 //! The smoothness test shared by every C^∞ claim of Chapter 4 (C4.1.6-gv-smooth, P4.1.1,
 //! L4.2.4): analytic Jacobian vs central differences, and the jump test across a cut.
 
-use super::*;
+use super::common::*;
+use crate::construction::maps::*;
+use crate::numeric::Scalar;
+use crate::report::{dev_max, Check, OnError, Witness};
+use serde_json::json;
 
 /// Generic smoothness test of a map F on sampled points: (a) the analytic Jacobian `jac`
 /// against central differences of `f` with step h = ε^{1/3}·|p|; (b) for each point with a

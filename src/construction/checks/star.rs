@@ -1,6 +1,11 @@
 //! The star of a vertex: C5.4-at-most-two and C4.2-nonadjacent-disjoint (Sec. 4.2, Sec. 5.4).
 
-use super::*;
+use super::common::*;
+use super::samples::*;
+use crate::construction::maps::*;
+use crate::numeric::Scalar;
+use crate::report::{Check, CheckResult, Witness};
+use serde_json::json;
 
 /// The star of a vertex x for C5.4 / non-adjacent disjointness: degree m and, for each label
 /// k = 0..m−1, the neighbour's degree and the label s_n(x) of x in the neighbour's star.

@@ -1,34 +1,16 @@
 //! Sec. 4.2 at triangle level: L4.2.1, L4.2.2 (the cocycle condition) and P4.2.4, and the
 //! driver running every triangle-level check.
 
-use super::*;
+use super::common::*;
+use super::samples::*;
+use crate::construction::maps::*;
+use crate::numeric::Scalar;
+use crate::report::{Check, CheckResult, OnError, Witness};
+use serde_json::json;
 
 // =============================================================================================
 // Triangle level: L4.2.1, L4.2.2, P4.2.4
 // =============================================================================================
-
-/// Points of Ω_x near the gluing domains of the two edges x→a, x→b: disk samples of Ω_x plus
-/// lens pull-backs for both edges.
-pub(super) fn star_samples<S: Scalar, M: Ppm<S>>(
-    model: &M,
-    edges: &[EdgeConfig],
-    seed: u64,
-    n: usize,
-    prec: u32,
-) -> Vec<(Category, P2<S>)> {
-    let mut v: Vec<(Category, P2<S>)> = Vec::new();
-    if let Some(e0) = edges.first() {
-        v.extend(omega_u_samples::<S>(e0, seed, n, prec).points);
-    }
-    for (k, e) in edges.iter().enumerate() {
-        v.extend(
-            lens_pullbacks(model, e, seed ^ (0x51 + k as u64), n, prec)
-                .into_iter()
-                .map(|(c, p, _)| (c, p)),
-        );
-    }
-    v
-}
 
 /// L4.2.1 and L4.2.2 for the triangle [u, w, x]: for t ∈ Ω_xu ∩ Ω_xw and p = φ_xu⁻¹(t)
 /// (= φ_ux(t), with φ_xu(p) = t verified): p ∈ Ω_uw (L4.2.1) and φ_wu(p) = φ_wx(φ_xu(p))
