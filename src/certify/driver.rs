@@ -426,7 +426,11 @@ fn f64_bound_cell(p: &str, rs: &[&PropertyResult]) -> String {
     let has_decided = all.iter().any(|b| b.decided.is_some());
     format!(
         "{what} {worst:.2e}{}",
-        if has_decided && decided { ", decided" } else { "" }
+        if has_decided && decided {
+            ", decided"
+        } else {
+            ""
+        }
     )
 }
 
@@ -458,15 +462,23 @@ fn f64_props_section(
             .iter()
             .filter_map(|(r, b)| b.and_then(|b| b.bound).map(|v| (v, r.key)))
             .reduce(|a, b| if b.0 > a.0 || b.0.is_nan() { b } else { a });
-        let has_decided = bs.iter().any(|(_, b)| b.is_some_and(|b| b.decided.is_some()));
+        let has_decided = bs
+            .iter()
+            .any(|(_, b)| b.is_some_and(|b| b.decided.is_some()));
         s.push_str(&format!(
             "| `{p}` | {} | {without} | {} | {} | {} | {} |\n",
             rs.len(),
             worst
                 .map(|(v, k)| format!("{v:.2e} ({k})"))
                 .unwrap_or_else(|| "—".into()),
-            e2(opt_max(bs.iter().map(|(_, b)| b.and_then(|b| b.lipschitz)).collect())),
-            e2(opt_max(bs.iter().map(|(_, b)| b.and_then(|b| b.band)).collect())),
+            e2(opt_max(
+                bs.iter()
+                    .map(|(_, b)| b.and_then(|b| b.lipschitz))
+                    .collect()
+            )),
+            e2(opt_max(
+                bs.iter().map(|(_, b)| b.and_then(|b| b.band)).collect()
+            )),
             if has_decided {
                 bs.iter()
                     .all(|(_, b)| b.is_some_and(|b| b.decided == Some(true)))

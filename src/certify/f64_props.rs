@@ -2,7 +2,7 @@
 //! property (beyond `P4.2.3(cert)`'s CERT-f64-rounding and the vertices' CERT-f64-g-chart),
 //! derived from those per-edge and per-degree bounds of the same certificate: no box is
 //! evaluated again, so attaching the bounds to a finished certificate costs milliseconds
-//! ([`attach_f64_bounds`]; `ppm certify merge` of one file adds them to an older one).
+//! ([`attach_f64_bounds`]; `ppm certify attach FILE` adds them to an older certificate).
 //!
 //! Notation: φ(a, b) is CERT-f64-rounding's `phi` of the edge configuration (m_u, m_w) =
 //! (a, b), a bound on |φ̂_wu(p) − φ_wu(p)| for every `f64` p of Ω_uw, all labels (hats: the
@@ -91,6 +91,18 @@ pub fn f64_bound_statement(property: &str) -> Option<&'static str> {
 
 fn up(x: I) -> f64 {
     x.sup()
+}
+
+/// `x` rounded up to three significant digits (a larger bound is still proven; the short
+/// numbers keep the certificate files small: 54,000 triangle results at M = 32).
+pub fn round_up_3(x: f64) -> f64 {
+    if !x.is_finite() || x <= 0.0 {
+        return x;
+    }
+    match format!("{:.2e}", x * 1.005).parse::<f64>() {
+        Ok(y) if y >= x => y,
+        _ => x,
+    }
 }
 
 /// ‖J(g_v)‖ = k·max(1, m/6).
@@ -239,9 +251,9 @@ fn bound_of(r: &PropertyResult, src: &Sources, max_degree: u32) -> Option<F64Bou
             ]))
         },
         ("L4.2.3(cert)", ConfigKey::Edge { m_u, m_w }) => F64Bound {
-            bound: src.phi(m_u, m_w).map(|p| {
-                up(c(p) + c(3.0 * UNIT_ROUNDOFF) * (c(1.0) + c(p)))
-            }),
+            bound: src
+                .phi(m_u, m_w)
+                .map(|p| up(c(p) + c(3.0 * UNIT_ROUNDOFF) * (c(1.0) + c(p)))),
             lipschitz: Some(phi_lipschitz(m_u, m_w)),
             ..none.clone()
         },
@@ -303,6 +315,32 @@ pub fn attach_f64_bounds(cert: &mut Certificate) {
             .collect()
     };
     for (r, b) in cert.results.iter_mut().zip(bounds) {
-        r.f64_bound = b;
+        r.f64_bound = b.map(|b| F64Bound {
+            bound: b.bound.map(round_up_3),
+            lipschitz: b.lipschitz.map(round_up_3),
+            band: b.band.map(round_up_3),
+            ..b
+        });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cert_f64_props_round_up_3_never_lowers_a_bound() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand::rngs::StdRng::seed_from_u64(3);
+        for _ in 0..100_000 {
+            let x: f64 = rng.gen_range(0.5..10.0) * 10f64.powi(rng.gen_range(-20..3));
+            let y = round_up_3(x);
+            assert!(y >= x && y <= x * 1.011, "{x:e} → {y:e}");
+            assert!(format!("{y:e}").len() <= 8, "{y:e}");
+        }
+        for x in [1.0, 9.995, 9.999999, 1e-13, 0.0] {
+            assert!(round_up_3(x) >= x);
+        }
+        assert!(round_up_3(f64::NAN).is_nan());
     }
 }

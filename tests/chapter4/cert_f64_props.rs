@@ -203,7 +203,10 @@ fn cert_f64_props_bounds_hold_against_mp256_at_seeded_points() {
         for p in pts {
             let (gap, dl, dr) = cocycle(&t, p, 0.0);
             assert!(gap <= g, "{key} p = {p:?}: f64 gap {gap:e} > {g:e}");
-            assert!(dl <= phi(&c, a, b) && dr <= comp, "{key} p = {p:?}: {dl:e}, {dr:e}");
+            assert!(
+                dl <= phi(&c, a, b) && dr <= comp,
+                "{key} p = {p:?}: {dl:e}, {dr:e}"
+            );
             worst_gap = worst_gap.max(gap / g);
             worst_comp = worst_comp.max(dr / comp);
             // The three literal tests of L4.2.1's check, at p, at q̂ = φ̂_xu(p), at p.
@@ -248,9 +251,13 @@ fn cert_f64_props_bounds_hold_against_mp256_at_seeded_points() {
     // The lens rows: the lens test's quantities at seeded points of Ω_v, every label.
     let mut worst_lens: f64 = 0.0;
     for m in [4u32, 11] {
-        let lb = bound(&c, ConfigKey::Vertex { m }, "C5.4-at-most-two[sec6.1.3](cert)")
-            .bound
-            .expect("lens margin");
+        let lb = bound(
+            &c,
+            ConfigKey::Vertex { m },
+            "C5.4-at-most-two[sec6.1.3](cert)",
+        )
+        .bound
+        .expect("lens margin");
         let db = bound(&c, ConfigKey::Vertex { m }, "D4.1.9-lens(cert)");
         if m == 4 {
             assert!(db.bound.is_some_and(|d| d >= lb), "{db:?}");
@@ -318,7 +325,10 @@ fn cert_f64_props_planted_g_inv_off_by_1e_10_and_shrunk_bounds_are_caught() {
         .map(|p| cocycle(&t, *p, 0.0).0)
         .fold(0.0f64, f64::max);
     let shrunk = g / SHRINK;
-    assert!(worst > shrunk, "worst gap {worst:e} vs bound/{SHRINK} = {shrunk:e}");
+    assert!(
+        worst > shrunk,
+        "worst gap {worst:e} vs bound/{SHRINK} = {shrunk:e}"
+    );
     crate::common::verdicts::record(
         "CERT-f64-props",
         crate::common::verdicts::Seen::Caught,
@@ -330,3 +340,86 @@ fn cert_f64_props_planted_g_inv_off_by_1e_10_and_shrunk_bounds_are_caught() {
 /// over every box and label of three edges, about 1100 times the largest gap measured at these
 /// seeded points (4.5e−16 against 5.0e−13 at (3, 4, 7)).
 const SHRINK: f64 = 4096.0;
+
+#[test]
+fn cert_f64_props_oracle_prints_the_decision_margin_with_member_answers() {
+    use pseudomanifold::certify::write_certificate;
+    use pseudomanifold::oracle::protocol::MemberTest;
+    use pseudomanifold::oracle::{Request, Session};
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    // The octahedron: every degree 4.
+    let s = Settings::default();
+    let results = [
+        ConfigKey::Vertex { m: 4 },
+        ConfigKey::Edge { m_u: 4, m_w: 4 },
+    ]
+    .iter()
+    .flat_map(|k| prove_config(*k, &Model::paper(), &s))
+    .collect();
+    let mut c = Certificate {
+        format: "pseudomanifold-certificate/1".into(),
+        max_degree: 4,
+        model: "paper".into(),
+        shard: None,
+        configs: 2,
+        results,
+        wall_millis: 0,
+        jobs: 1,
+        statements: Default::default(),
+    };
+    attach_f64_bounds(&mut c);
+    let lens = bound(
+        &c,
+        ConfigKey::Vertex { m: 4 },
+        "C5.4-at-most-two[sec6.1.3](cert)",
+    )
+    .bound
+    .expect("lens margin");
+    let path = std::env::temp_dir().join(format!("cert_f64_props_{}.json.gz", std::process::id()));
+    write_certificate(&c, &path).expect("write");
+    let mut o = Session::new();
+    o.handle(&Request::Load {
+        path: root.join("tests/data/octahedron.obj"),
+    })
+    .expect("octahedron");
+    let w = o
+        .handle(&Request::Labels { v: 0 })
+        .ok()
+        .and_then(|r| r.value)
+        .and_then(|v| v[0][0].as_u64())
+        .expect("a neighbour of 0") as u32;
+    let margin_of = |r: &pseudomanifold::oracle::Response| {
+        r.info
+            .as_ref()
+            .and_then(|i| i.get("f64_decision_margin"))
+            .and_then(|b| b.as_f64())
+    };
+    let member = |o: &mut Session, p: [f64; 2], test: MemberTest| {
+        o.handle(&Request::Member { u: 0, w, p, test })
+            .expect("member answer")
+    };
+    assert_eq!(
+        margin_of(&member(&mut o, [0.3, 0.1], MemberTest::Literal)),
+        None
+    );
+    o.handle(&Request::SetCertificate { path: path.clone() })
+        .expect("the certificate reads");
+    let _ = std::fs::remove_file(&path);
+    let mut rng = rand::rngs::StdRng::seed_from_u64(17);
+    let mut answered = 0;
+    for _ in 0..60 {
+        let p = [rng.gen_range(-0.7..0.7), rng.gen_range(-0.7..0.7)];
+        for test in [MemberTest::Literal, MemberTest::Lens] {
+            let r = member(&mut o, p, test);
+            let m = margin_of(&r).expect("a certified configuration carries the margin");
+            assert!(m > 0.0 && m < 1e-11, "{m:e}");
+            if test == MemberTest::Lens {
+                assert_eq!(m, lens);
+            }
+            // Random points miss the margins: f64 and MPFR decide alike.
+            assert_eq!(r.difference, Some(0.0), "{p:?} {test:?}: {r:?}");
+            answered += 1;
+        }
+    }
+    assert_eq!(answered, 120);
+}

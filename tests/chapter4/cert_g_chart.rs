@@ -183,7 +183,15 @@ fn cert_f64_g_chart_planted_bound_divided_by_a_factor_is_caught() {
     // libm model instead was not caught at m = 32, its bound staying above every measured
     // difference there).
     let mut caught = Vec::new();
-    for (m, seed) in [(3u32, 1u64), (4, 2), (6, 3), (7, 2), (11, 4), (26, 5), (32, 6)] {
+    for (m, seed) in [
+        (3u32, 1u64),
+        (4, 2),
+        (6, 3),
+        (7, 2),
+        (11, 4),
+        (26, 5),
+        (32, 6),
+    ] {
         let g = prove_g_chart(m);
         let (_, worst, _) = check(&g, m, &points(300, seed), 0.0);
         let planted = GChartRounding {
@@ -196,7 +204,10 @@ fn cert_f64_g_chart_planted_bound_divided_by_a_factor_is_caught() {
         caught.push((m, worst, above, n));
     }
     for (m, worst, above, n) in caught {
-        assert!(above > 0, "m = {m}: bound/{G_SHRINK} not caught (worst ratio {worst:e})");
+        assert!(
+            above > 0,
+            "m = {m}: bound/{G_SHRINK} not caught (worst ratio {worst:e})"
+        );
         crate::common::verdicts::record(
             "CERT-f64-g-chart",
             crate::common::verdicts::Seen::Caught,
