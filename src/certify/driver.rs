@@ -161,6 +161,11 @@ pub struct PropertyCoverage {
     pub inconclusive: Vec<ConfigKey>,
     /// Largest δ among the covering results (`None`: all certified on the whole set).
     pub max_delta: Option<f64>,
+    /// The largest proven f64 bound of the covering results (`P4.2.3(cert)`: CERT-f64-rounding's
+    /// `phi`; the others: CERT-f64-props' `bound`, meaning per [`f64_bound_statement`]);
+    /// `None` when one of them has none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub f64_bound: Option<f64>,
 }
 
 /// Which properties a key kind carries.
@@ -199,7 +204,9 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Propert
                 refuted: vec![],
                 inconclusive: vec![],
                 max_delta: None,
+                f64_bound: None,
             };
+            let mut bounds: Vec<Option<f64>> = Vec::new();
             for k in configs_needed
                 .iter()
                 .filter(|k| properties_of(k).contains(&prop))
@@ -210,16 +217,28 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Propert
                     .find(|r| r.key == *k && r.property == prop && cert.model == "paper")
                 {
                     None => cov.missing.push(*k),
-                    Some(r) => match r.outcome {
-                        Outcome::Certified => {}
-                        Outcome::CertifiedOutsideDelta => {
-                            cov.max_delta = omax(cov.max_delta, r.delta);
+                    Some(r) => {
+                        bounds.push(if prop == "P4.2.3(cert)" {
+                            r.f64_rounding.as_ref().and_then(|f| f.phi)
+                        } else {
+                            r.f64_bound.as_ref().and_then(|b| b.bound)
+                        });
+                        match r.outcome {
+                            Outcome::Certified => {}
+                            Outcome::CertifiedOutsideDelta => {
+                                cov.max_delta = omax(cov.max_delta, r.delta);
+                            }
+                            Outcome::Refuted => cov.refuted.push(*k),
+                            Outcome::Inconclusive => cov.inconclusive.push(*k),
                         }
-                        Outcome::Refuted => cov.refuted.push(*k),
-                        Outcome::Inconclusive => cov.inconclusive.push(*k),
-                    },
+                    }
                 }
             }
+            // A covering result without a bound makes the whole `None` (no claim).
+            cov.f64_bound = bounds
+                .into_iter()
+                .collect::<Option<Vec<f64>>>()
+                .and_then(|v| v.into_iter().reduce(crate::report::dev_max));
             cov.certified =
                 cov.missing.is_empty() && cov.refuted.is_empty() && cov.inconclusive.is_empty();
             cov
