@@ -38,7 +38,7 @@
 //!   `outer` and `inner` bounds of the tests the property's check runs. For `L4.2.1(cert)` the
 //!   test of q̂ ∈ Ω_xw runs at q̂, a point of Ω_xw under the `band` condition above.
 //! * Lens (Sec. 6.1.3 rows, the lens side of `D4.1.9-lens(cert)`): for p ∈ Ω_v (|p| < 1) and a
-//!   label rotation, â = R̂(p) is an `f64` point of the unit square (|â| < cos(π/32) + 2⁻⁵⁰), so
+//!   label rotation, â = R̂(p) is an `f64` point of the unit square (|â| ≤ |p| + ρ < cos(π/64) + ρ < 1), so
 //!   |ĝ(â) − g(â)| ≤ G(m), and ĉ = h(ĝ(â)) (one rounded subtraction, |ĉ_x| < 3) is within
 //!   e = G(m) + 3u of c = h(g(â)). The tested quantities Q₁ = |c|², Q₂ = |c − (1, 0)|² = |b|²
 //!   (|c| ≤ 1 + k, |b| ≤ k) then differ in `f64` by ≤ e(2(1 + k) + e) + 3u(1 + k + e)², and

@@ -580,7 +580,14 @@ pub fn render(r: &Ch4Report) -> String {
                 };
                 let f64b = p
                     .f64_bound
-                    .map(|b| format!("; f64 bound {b:.2e} (SPEC CERT-f64-props)"))
+                    .map(|b| {
+                        let spec = if p.property == "P4.2.3(cert)" {
+                            "CERT-f64-rounding"
+                        } else {
+                            "CERT-f64-props"
+                        };
+                        format!("; f64 bound {b:.2e} (SPEC {spec})")
+                    })
                     .unwrap_or_default();
                 let _ = writeln!(
                     s,
