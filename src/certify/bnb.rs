@@ -226,6 +226,7 @@ pub(super) fn finish(
         millis: t0.elapsed().as_millis() as u64,
         f64_rounding: None,
         g_chart: None,
+        f64_bound: None,
     }
 }
 

@@ -69,6 +69,11 @@ pub struct PropertyResult {
     /// it existed).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub g_chart: Option<GChartRounding>,
+    /// CERT-f64-props: the proven bound on what the `f64` evaluator computes for this
+    /// property ([`f64_bound_statement`]), derived from the per-edge and per-degree bounds
+    /// ([`attach_f64_bounds`]; absent in certificates written before it existed and in shards).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub f64_bound: Option<F64Bound>,
 }
 
 impl PropertyResult {

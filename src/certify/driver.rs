@@ -81,7 +81,7 @@ pub fn run_with(
             .flatten()
             .collect()
     });
-    Ok(Certificate {
+    let mut cert = Certificate {
         format: "pseudomanifold-certificate/1".into(),
         max_degree,
         model: model.name(),
@@ -91,7 +91,13 @@ pub fn run_with(
         wall_millis: t0.elapsed().as_millis() as u64,
         jobs,
         statements: Default::default(),
-    })
+    };
+    // CERT-f64-props needs the edges' and degrees' bounds, which a shard may not hold: shards
+    // get them at the merge.
+    if shard.is_none() {
+        attach_f64_bounds(&mut cert);
+    }
+    Ok(cert)
 }
 
 /// Join shard certificates (same max degree and model; no configuration twice).
@@ -123,7 +129,7 @@ pub fn merge(parts: Vec<Certificate>) -> Result<Certificate, CertifyError> {
             )));
         }
     }
-    Ok(Certificate {
+    let mut cert = Certificate {
         format: first.format.clone(),
         max_degree: md,
         model,
@@ -133,7 +139,10 @@ pub fn merge(parts: Vec<Certificate>) -> Result<Certificate, CertifyError> {
         wall_millis: wall,
         jobs: first.jobs,
         statements: Default::default(),
-    })
+    };
+    // Derived from the merged results (a merge of one older certificate adds them to it).
+    attach_f64_bounds(&mut cert);
+    Ok(cert)
 }
 
 /// How a certificate covers one property for a mesh: which of the configurations the mesh
@@ -152,6 +161,11 @@ pub struct PropertyCoverage {
     pub inconclusive: Vec<ConfigKey>,
     /// Largest δ among the covering results (`None`: all certified on the whole set).
     pub max_delta: Option<f64>,
+    /// The largest proven f64 bound of the covering results (`P4.2.3(cert)`: CERT-f64-rounding's
+    /// `phi`; the others: CERT-f64-props' `bound`, meaning per [`f64_bound_statement`]);
+    /// `None` when one of them has none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub f64_bound: Option<f64>,
 }
 
 /// Which properties a key kind carries.
@@ -190,7 +204,9 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Propert
                 refuted: vec![],
                 inconclusive: vec![],
                 max_delta: None,
+                f64_bound: None,
             };
+            let mut bounds: Vec<Option<f64>> = Vec::new();
             for k in configs_needed
                 .iter()
                 .filter(|k| properties_of(k).contains(&prop))
@@ -201,16 +217,28 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Propert
                     .find(|r| r.key == *k && r.property == prop && cert.model == "paper")
                 {
                     None => cov.missing.push(*k),
-                    Some(r) => match r.outcome {
-                        Outcome::Certified => {}
-                        Outcome::CertifiedOutsideDelta => {
-                            cov.max_delta = omax(cov.max_delta, r.delta);
+                    Some(r) => {
+                        bounds.push(if prop == "P4.2.3(cert)" {
+                            r.f64_rounding.as_ref().and_then(|f| f.phi)
+                        } else {
+                            r.f64_bound.as_ref().and_then(|b| b.bound)
+                        });
+                        match r.outcome {
+                            Outcome::Certified => {}
+                            Outcome::CertifiedOutsideDelta => {
+                                cov.max_delta = omax(cov.max_delta, r.delta);
+                            }
+                            Outcome::Refuted => cov.refuted.push(*k),
+                            Outcome::Inconclusive => cov.inconclusive.push(*k),
                         }
-                        Outcome::Refuted => cov.refuted.push(*k),
-                        Outcome::Inconclusive => cov.inconclusive.push(*k),
-                    },
+                    }
                 }
             }
+            // A covering result without a bound makes the whole `None` (no claim).
+            cov.f64_bound = bounds
+                .into_iter()
+                .collect::<Option<Vec<f64>>>()
+                .and_then(|v| v.into_iter().reduce(crate::report::dev_max));
             cov.certified =
                 cov.missing.is_empty() && cov.refuted.is_empty() && cov.inconclusive.is_empty();
             cov
@@ -232,7 +260,7 @@ pub fn summary_table(cert: &Certificate) -> String {
         cert.jobs
     ));
     s.push_str(&format!(
-        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json.gz --summary CERTIFICATE_SUMMARY_M{}.md` (release build; `.json.gz`: gzip-compressed, `.json`: plain). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements); `max δ` = the largest δ of the results certified outside δ (a refuted result is decided by its witness and has no δ); `f64 rounding bound` = proven max |f64 evaluation − exact value| of φ_wu on all of Ω_uw, all labels (CERT-f64-rounding, section below).\n\n",
+        "Reproduce: `ppm certify --max-degree {} --jobs {} --out certificate_M{}.json.gz --summary CERTIFICATE_SUMMARY_M{}.md` (release build; `.json.gz`: gzip-compressed, `.json`: plain). \"certified\" = proven on the whole stated set (no δ); \"certified outside δ\" = proven at every point farther than δ from the stated boundary; `max bound` = proven whole-domain bound (0 = exact identity); `max centre bound` = interval enclosures by the model's generic maps at box centres (see Statements); `max δ` = the largest δ of the results certified outside δ (a refuted result is decided by its witness and has no δ); `f64 rounding bound` = the proven bound on what the f64 evaluator computes for the property, worst over its configurations: for `P4.2.3(cert)` max |f64 evaluation − exact value| of φ_wu on all of Ω_uw, all labels (CERT-f64-rounding, section below); for the others (CERT-f64-props, section below) `gap` = the f64 cocycle gap (exact 0), `radius` = |f64 radius of φ_wu − exact| near the arc, `margin` = the f64 membership decisions are exact unless a tested quantity lies within it of its threshold (\"decided\": and every round trip and witness decision is certified exact); \"—\" = not bounded (a certificate written before the bound).\n\n",
         cert.max_degree, cert.jobs, cert.max_degree, cert.max_degree
     ));
     s.push_str("| property | configurations | certified | certified outside δ | refuted | inconclusive | max bound | max centre bound | max δ | boxes | max depth | time (s, sum) | f64 rounding bound |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -263,10 +291,15 @@ pub fn summary_table(cert: &Certificate) -> String {
             rs.iter().map(|r| r.boxes).sum::<u64>(),
             rs.iter().map(|r| r.max_depth).max().unwrap_or(0),
             rs.iter().map(|r| r.millis).sum::<u64>() as f64 / 1000.0,
-            fmt(mx(&|r| r.f64_rounding.as_ref().and_then(|f| f.phi))),
+            if *p == "P4.2.3(cert)" {
+                fmt(mx(&|r| r.f64_rounding.as_ref().and_then(|f| f.phi)))
+            } else {
+                f64_bound_cell(p, rs)
+            },
         ));
     }
     s.push_str(&f64_rounding_section(cert));
+    s.push_str(&f64_props_section(cert, &by));
     s.push_str(&g_chart_section(cert));
     s.push_str("\n## Per configuration (refutations and non-certified results)\n\n| configuration | property | result | bound | δ | boxes | time (ms) | witness |\n|---|---|---|---|---|---|---|---|\n");
     for r in cert.results.iter().filter(|r| {
@@ -390,4 +423,95 @@ fn g_chart_section(cert: &Certificate) -> String {
         g.iter().map(|(_, x)| x.unresolved).sum::<u64>(),
         g.iter().map(|(_, x)| x.millis).sum::<u64>() as f64 / 1000.0,
     )
+}
+
+/// The worst CERT-f64-props bound of a property's results: "—" unless every result carries one
+/// (a missing bound is no claim, never a smaller number).
+fn f64_bound_cell(p: &str, rs: &[&PropertyResult]) -> String {
+    let all: Option<Vec<&F64Bound>> = rs.iter().map(|r| r.f64_bound.as_ref()).collect();
+    let Some(all) = all else {
+        return "—".into();
+    };
+    let worst: Option<Vec<f64>> = all.iter().map(|b| b.bound).collect();
+    let Some(worst) = worst.and_then(|v| v.into_iter().reduce(crate::report::dev_max)) else {
+        return "—".into();
+    };
+    let decided = all.iter().all(|b| b.decided == Some(true));
+    let what = match p {
+        "L4.2.2(cert)" => "gap",
+        "L4.2.3(cert)" => "radius",
+        _ => "margin",
+    };
+    let has_decided = all.iter().any(|b| b.decided.is_some());
+    format!(
+        "{what} {worst:.2e}{}",
+        if has_decided && decided {
+            ", decided"
+        } else {
+            ""
+        }
+    )
+}
+
+/// The CERT-f64-props section of the summary: per property the worst bound, the worst
+/// Lipschitz constant and band, results without a bound, and the statement.
+fn f64_props_section(
+    cert: &Certificate,
+    by: &std::collections::BTreeMap<&str, Vec<&PropertyResult>>,
+) -> String {
+    if !cert.results.iter().any(|r| r.f64_bound.is_some()) {
+        return String::new();
+    }
+    let mut s = String::from("\n## f64 bounds of the properties (CERT-f64-props)\n\nDerived from the per-edge bounds of CERT-f64-rounding (φ(a,b) = `phi` of the edge (a, b), `outer`, `inner`, `roundtrip_exact`) and the per-degree bounds of CERT-f64-g-chart of this certificate (`certify::attach_f64_bounds`; no box evaluated again), with the Lipschitz constants ‖J(φ_ba)‖ ≤ k_a·max(1, a/6)·max(1, 6/b)/k_b on Ω_ab; u = 2⁻⁵³; same libm assumption.\n\n| property | results | without a bound | max bound (configuration) | max Lipschitz | max band | all decided |\n|---|---|---|---|---|---|---|\n");
+    let e2 = |x: Option<f64>| x.map(|v| format!("{v:.2e}")).unwrap_or_else(|| "—".into());
+    let opt_max = |v: Vec<Option<f64>>| -> Option<f64> {
+        v.into_iter().flatten().reduce(crate::report::dev_max)
+    };
+    for (p, rs) in by {
+        if *p == "P4.2.3(cert)" || f64_bound_statement(p).is_none() {
+            continue;
+        }
+        let bs: Vec<(&PropertyResult, Option<&F64Bound>)> =
+            rs.iter().map(|r| (*r, r.f64_bound.as_ref())).collect();
+        let without = bs
+            .iter()
+            .filter(|(_, b)| b.and_then(|b| b.bound).is_none())
+            .count();
+        let worst = bs
+            .iter()
+            .filter_map(|(r, b)| b.and_then(|b| b.bound).map(|v| (v, r.key)))
+            .reduce(|a, b| if b.0 > a.0 || b.0.is_nan() { b } else { a });
+        let has_decided = bs
+            .iter()
+            .any(|(_, b)| b.is_some_and(|b| b.decided.is_some()));
+        s.push_str(&format!(
+            "| `{p}` | {} | {without} | {} | {} | {} | {} |\n",
+            rs.len(),
+            worst
+                .map(|(v, k)| format!("{v:.2e} ({k})"))
+                .unwrap_or_else(|| "—".into()),
+            e2(opt_max(
+                bs.iter()
+                    .map(|(_, b)| b.and_then(|b| b.lipschitz))
+                    .collect()
+            )),
+            e2(opt_max(
+                bs.iter().map(|(_, b)| b.and_then(|b| b.band)).collect()
+            )),
+            if has_decided {
+                bs.iter()
+                    .all(|(_, b)| b.is_some_and(|b| b.decided == Some(true)))
+                    .to_string()
+            } else {
+                "—".into()
+            },
+        ));
+    }
+    s.push('\n');
+    for p in by.keys() {
+        if let Some(st) = f64_bound_statement(p).filter(|_| *p != "P4.2.3(cert)") {
+            s.push_str(&format!("* `{p}`: {st}\n"));
+        }
+    }
+    s
 }

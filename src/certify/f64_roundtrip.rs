@@ -133,7 +133,7 @@ fn err2<L: LibmModel>(p: &P2<Fe<L>>) -> f64 {
 }
 
 /// max over labels k of the Euclidean f64 error of M_{2π·sign·k/m} on [−R, R]².
-fn rotation_error<L: LibmModel>(m: u32, sign: i64) -> f64 {
+pub(super) fn rotation_error<L: LibmModel>(m: u32, sign: i64) -> f64 {
     let unit = Fe::<L>::exact(iv(-ROT_RAD, ROT_RAD));
     let p = P2::new(unit, unit);
     (1..m as i64)

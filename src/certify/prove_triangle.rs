@@ -294,6 +294,7 @@ pub fn prove_triangle(key: ConfigKey, model: &Model, s: &Settings) -> Vec<Proper
             millis: ms,
             f64_rounding: None,
             g_chart: None,
+            f64_bound: None,
         }
     };
     let mismatch = model_mismatch > 0;

@@ -1,8 +1,9 @@
-//! `ppm certify --max-degree M [--jobs N] [--shard K/N]` and `ppm certify merge FILES...`.
+//! `ppm certify --max-degree M [--jobs N] [--shard K/N]`, `ppm certify merge FILES...` and
+//! `ppm certify attach FILE`.
 
 use crate::certify::{
-    all_configs, merge, read_certificate, run_with as prove_all, shard, summary_table,
-    write_certificate, write_text, Certificate, CertifyError, Model, Settings,
+    all_configs, attach_f64_bounds, merge, read_certificate, run_with as prove_all, shard,
+    summary_table, write_certificate, write_text, Certificate, CertifyError, Model, Settings,
 };
 use clap::{Args, Subcommand};
 use std::path::{Path, PathBuf};
@@ -51,6 +52,18 @@ pub(super) enum MergeCmd {
         #[arg(long)]
         summary: Option<PathBuf>,
     },
+    /// Add the derived f64 bounds of every property (SPEC `CERT-f64-props`) to a complete
+    /// certificate written before them: same results in the same order, nothing proven again.
+    Attach {
+        /// The certificate (JSON or `*.json.gz`).
+        file: PathBuf,
+        /// Output: JSON, gzip-compressed when the name ends in `.gz` (may be `file` itself).
+        #[arg(long)]
+        out: PathBuf,
+        /// Readable summary output (Markdown); printed to stdout as well.
+        #[arg(long)]
+        summary: Option<PathBuf>,
+    },
 }
 
 fn emit(cert: &Certificate, out: &Path, summary: Option<&Path>) -> Result<(), CertifyError> {
@@ -75,19 +88,33 @@ fn parse_shard(s: &str) -> Result<(usize, usize), CertifyError> {
 }
 
 fn run_inner(a: CertifyArgs) -> Result<bool, CertifyError> {
-    if let Some(MergeCmd::Merge {
-        files,
-        out,
-        summary,
-    }) = a.merge
-    {
-        let parts = files
-            .iter()
-            .map(|f| read_certificate(f))
-            .collect::<Result<Vec<_>, _>>()?;
-        let cert = merge(parts)?;
-        emit(&cert, &out, summary.as_deref())?;
-        return Ok(true);
+    match a.merge {
+        Some(MergeCmd::Merge {
+            files,
+            out,
+            summary,
+        }) => {
+            let parts = files
+                .iter()
+                .map(|f| read_certificate(f))
+                .collect::<Result<Vec<_>, _>>()?;
+            let cert = merge(parts)?;
+            emit(&cert, &out, summary.as_deref())?;
+            return Ok(true);
+        }
+        Some(MergeCmd::Attach { file, out, summary }) => {
+            let mut cert = read_certificate(&file)?;
+            if cert.shard.is_some() {
+                return Err(CertifyError::BadArg(format!(
+                    "{}: a shard; merge the shards (the merge adds the bounds)",
+                    file.display()
+                )));
+            }
+            attach_f64_bounds(&mut cert);
+            emit(&cert, &out, summary.as_deref())?;
+            return Ok(true);
+        }
+        None => {}
     }
     if a.max_degree < 3 || a.max_degree > 64 {
         return Err(CertifyError::BadArg(format!(

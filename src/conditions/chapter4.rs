@@ -578,9 +578,20 @@ pub fn render(r: &Ch4Report) -> String {
                     None => "on the whole stated sets".to_string(),
                     Some(d) => format!("outside δ-boxes, δ ≤ {d:.1e}"),
                 };
+                let f64b = p
+                    .f64_bound
+                    .map(|b| {
+                        let spec = if p.property == "P4.2.3(cert)" {
+                            "CERT-f64-rounding"
+                        } else {
+                            "CERT-f64-props"
+                        };
+                        format!("; f64 bound {b:.2e} (SPEC {spec})")
+                    })
+                    .unwrap_or_default();
                 let _ = writeln!(
                     s,
-                    "  {id}: CERTIFIED for this mesh, {scope} ({} covers every configuration)",
+                    "  {id}: CERTIFIED for this mesh, {scope} ({} covers every configuration){f64b}",
                     p.property
                 );
             } else {
@@ -695,6 +706,7 @@ mod tests {
             refuted: Vec::new(),
             inconclusive: Vec::new(),
             max_delta: None,
+            f64_bound: None,
         };
         r.certificates = Some(CertCoverage {
             file: "c.json".to_string(),

@@ -291,6 +291,23 @@ impl Request {
                 };
                 (b?, format!("proven |f64 − exact| (Euclidean) of {name} at every f64 point p ≠ 0 with |x|, |y| ≤ {} (certificate, SPEC CERT-f64-g-chart)", gc.radius))
             }
+            Request::Member { u, w, test, .. } => {
+                let c = g.edge_config(VertexId(*u), VertexId(*w)).ok()?;
+                let (margin, note) = match test {
+                    super::protocol::MemberTest::Literal => (
+                        *bounds.literal.get(&(c.m_u, c.m_w))?,
+                        "the literal test's f64 decisions |p|² − r_u² < 0, |q|² − r_w² < 0 are exact unless the exact value lies within this of 0, its round trip is certified exact; at points of the boxes covering Ω_uw, any labels (certificate, SPEC CERT-f64-rounding, CERT-f64-props)",
+                    ),
+                    super::protocol::MemberTest::Lens => (
+                        *bounds.lens.get(&c.m_u)?,
+                        "the lens test's f64 decisions |c|² < 3/4, |c − (1,0)|² < 3/4 (c = h∘g_u∘R_(u,w)(p)) are exact unless the exact value lies within this of 3/4 (of 0 for the punctures); for p ∈ Ω_u, any labels (certificate, SPEC CERT-f64-props)",
+                    ),
+                };
+                return Some(json!({
+                    "f64_decision_margin": margin,
+                    "f64_decision_margin_note": format!("{note}; {}", crate::numeric::rounding::LIBM_ASSUMPTION),
+                }));
+            }
             _ => return None,
         };
         Some(json!({
@@ -383,6 +400,11 @@ pub(crate) struct CertBounds {
     pub phi: std::collections::BTreeMap<(u32, u32), f64>,
     /// g_v's and g_v⁻¹'s on the chart square, by degree (SPEC `CERT-f64-g-chart`).
     pub g: std::collections::BTreeMap<u32, crate::certify::GChartRounding>,
+    /// The literal membership test's decision margin max(`outer`, `inner`), by edge
+    /// configuration, where its round trip is certified exact (SPEC `CERT-f64-rounding`).
+    pub literal: std::collections::BTreeMap<(u32, u32), f64>,
+    /// The lens test's decision margin, by degree (SPEC `CERT-f64-props`).
+    pub lens: std::collections::BTreeMap<u32, f64>,
 }
 
 /// The f64 error bounds of a certificate of the paper's model (none for another model).
@@ -393,6 +415,19 @@ pub(crate) fn f64_bounds(cert: &crate::certify::Certificate) -> CertBounds {
         return out;
     }
     for r in &cert.results {
+        if let (ConfigKey::Edge { m_u, m_w }, Some(f)) = (r.key, &r.f64_rounding) {
+            if let Some(i) = f.inner.filter(|_| f.roundtrip_exact) {
+                out.literal
+                    .insert((m_u, m_w), crate::report::dev_max(f.outer, i));
+            }
+        }
+        if let (ConfigKey::Vertex { m }, Some(b)) =
+            (r.key, r.f64_bound.as_ref().and_then(|b| b.bound))
+        {
+            if r.property == "C5.4-at-most-two[sec6.1.3](cert)" {
+                out.lens.insert(m, b);
+            }
+        }
         match (r.key, r.f64_rounding.as_ref().and_then(|f| f.phi)) {
             (ConfigKey::Edge { m_u, m_w }, Some(b)) => {
                 out.phi.insert((m_u, m_w), b);

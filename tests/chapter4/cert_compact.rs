@@ -132,6 +132,24 @@ fn committed_matches_summary(m: u32) {
             && g.g_v_inv.is_some_and(|b| b < 1e-13)),
         "M = {m}: {g:?}"
     );
+    // SPEC `CERT-f64-props`: every other property of every configuration carries its proven
+    // f64 bound, and every round trip and witness decision it rests on is certified exact.
+    let unbounded: Vec<_> = cert
+        .results
+        .iter()
+        .filter(|r| r.property != "P4.2.3(cert)")
+        .filter(|r| match &r.f64_bound {
+            Some(b) => !b.bound.is_some_and(|v| v < 1e-11) || b.decided == Some(false),
+            None => true,
+        })
+        .map(|r| (r.key, r.property.clone()))
+        .collect();
+    assert!(
+        unbounded.is_empty(),
+        "M = {m}: {} results without a bound, e.g. {:?}",
+        unbounded.len(),
+        unbounded.first()
+    );
     assert!(summary_table(&cert) == summary, "M = {m}: the summary of the committed certificate differs from CERTIFICATE_SUMMARY_M{m}.md");
 }
 

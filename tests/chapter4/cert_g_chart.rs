@@ -171,3 +171,47 @@ fn cert_f64_g_chart_oracle_prints_the_bound_with_g_and_g_inv() {
     let r = g(&mut s, [1.5, 0.25], false);
     assert!(r.f64.is_some() && bound_of(&r).is_none(), "{r:?}");
 }
+
+/// The factor a planted too-small g-chart bound is divided by: the largest measured difference
+/// at the seeded points is 0.070 (m = 7) to 0.110 (m = 26) of the proven bound.
+const G_SHRINK: f64 = 16.0;
+
+#[test]
+fn cert_f64_g_chart_planted_bound_divided_by_a_factor_is_caught() {
+    // A wrong (too small) rounding bound: the proven one divided by G_SHRINK. The measured
+    // 256-bit differences exceed it where they are large (points of the seeded set; a 0-ulp
+    // libm model instead was not caught at m = 32, its bound staying above every measured
+    // difference there).
+    let mut caught = Vec::new();
+    for (m, seed) in [
+        (3u32, 1u64),
+        (4, 2),
+        (6, 3),
+        (7, 2),
+        (11, 4),
+        (26, 5),
+        (32, 6),
+    ] {
+        let g = prove_g_chart(m);
+        let (_, worst, _) = check(&g, m, &points(300, seed), 0.0);
+        let planted = GChartRounding {
+            g_v: g.g_v.map(|b| b / G_SHRINK),
+            g_v_inv: g.g_v_inv.map(|b| b / G_SHRINK),
+            ..g.clone()
+        };
+        let (n, _, above) = check(&planted, m, &points(300, seed), 0.0);
+        eprintln!("m = {m}: worst measured / proven bound {worst:.3e}, {above} of {n} above bound/{G_SHRINK}");
+        caught.push((m, worst, above, n));
+    }
+    for (m, worst, above, n) in caught {
+        assert!(
+            above > 0,
+            "m = {m}: bound/{G_SHRINK} not caught (worst ratio {worst:e})"
+        );
+        crate::common::verdicts::record(
+            "CERT-f64-g-chart",
+            crate::common::verdicts::Seen::Caught,
+            n as u64,
+        );
+    }
+}

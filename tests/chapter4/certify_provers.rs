@@ -318,6 +318,9 @@ fn cert_check_spec_certificates_coverage_of_a_mesh() {
     assert!(!cov.properties.is_empty());
     for p in &cov.properties {
         assert!(p.certified, "{p:?}");
+        // A complete run carries every property's f64 bound (SPEC CERT-f64-props); the
+        // coverage reports the mesh's worst.
+        assert!(p.f64_bound.is_some_and(|b| b > 0.0 && b < 1e-11), "{p:?}");
     }
     crate::common::verdicts::record(
         "CERT-check-spec",

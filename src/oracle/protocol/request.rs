@@ -32,7 +32,8 @@ pub enum Request {
     },
     /// Read a certificate (`ppm certify`): later `phi` answers of the edge configurations it
     /// bounds carry `info.f64_error_bound`, its proven bound on |f64 − exact| (SPEC
-    /// `CERT-f64-rounding`).
+    /// `CERT-f64-rounding`), and `member` answers `info.f64_decision_margin` (SPEC
+    /// `CERT-f64-props`).
     SetCertificate {
         /// Certificate JSON file.
         path: PathBuf,

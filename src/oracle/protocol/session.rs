@@ -344,6 +344,7 @@ impl Session {
                 r.f64 = Some(f(a));
                 r.mp_bits = Some(bits);
                 r.difference = Some(if a == b { 0.0 } else { 1.0 });
+                add_info(&mut r, req.f64_bound(self.k().ok(), &self.f64_bounds));
                 Ok(r)
             }
             _ => Err(OracleError::Malformed(
