@@ -480,7 +480,15 @@ fn f64_props_section(
         let worst = bs
             .iter()
             .filter_map(|(r, b)| b.and_then(|b| b.bound).map(|v| (v, r.key)))
-            .reduce(|a, b| if b.0 > a.0 || b.0.is_nan() { b } else { a });
+            // Ties go to the smallest configuration, so the row does not depend on the
+            // results' order (a merged certificate is sorted, a complete run is not).
+            .reduce(|a, b| {
+                if b.0 > a.0 || b.0.is_nan() || (b.0 == a.0 && b.1 < a.1) {
+                    b
+                } else {
+                    a
+                }
+            });
         let has_decided = bs
             .iter()
             .any(|(_, b)| b.is_some_and(|b| b.decided.is_some()));
