@@ -3,9 +3,8 @@
 //! checked against 256-bit evaluations of the same generic maps at seeded points, and planted
 //! faults (a mutated f64 g_v⁻¹, bounds divided by a factor) that the check must catch.
 
-use pseudomanifold::certify::{
-    attach_f64_bounds, prove_config, Certificate, ConfigKey, F64Bound, Model, Settings,
-};
+use crate::cert_f64_rounding::{dist, qerr};
+use pseudomanifold::certify::{run, Certificate, ConfigKey, F64Bound, Model, Settings};
 use pseudomanifold::construction::maps::{self, omega_radius, EdgeConfig, Ppm, TriangleConfig, P2};
 use pseudomanifold::construction::Paper;
 use pseudomanifold::numeric::{Mp, Scalar};
@@ -36,24 +35,9 @@ fn cert() -> Certificate {
     ]);
     keys.sort();
     keys.dedup();
-    let s = Settings::default();
-    let results = keys
-        .iter()
-        .flat_map(|k| prove_config(*k, &Model::paper(), &s))
-        .collect();
-    let mut c = Certificate {
-        format: "pseudomanifold-certificate/1".into(),
-        max_degree: 11,
-        model: "paper".into(),
-        shard: None,
-        configs: keys.len(),
-        results,
-        wall_millis: 0,
-        jobs: 1,
-        statements: Default::default(),
-    };
-    attach_f64_bounds(&mut c);
-    c
+    // What `ppm certify` runs on these configurations (results in their order, bounds
+    // attached).
+    run(&keys, 11, &Model::paper(), &Settings::default(), 1, None).expect("certify")
 }
 
 fn bound(c: &Certificate, key: ConfigKey, prop: &str) -> F64Bound {
@@ -74,18 +58,6 @@ fn phi(c: &Certificate, m_u: u32, m_w: u32) -> f64 {
 
 fn mp(p: [f64; 2]) -> P2<Mp> {
     P2::<Mp>::from_f64(p[0], p[1], 256)
-}
-
-fn dist(a: &P2<f64>, b: &P2<Mp>) -> f64 {
-    b.sub(&P2::<Mp>::from_f64(a.x, a.y, 256))
-        .norm2()
-        .sqrt()
-        .to_f64()
-}
-
-/// |f64 − exact| of a scalar.
-fn qerr(f: f64, m: &Mp) -> f64 {
-    m.sub(&Mp::from_f64(f, 256)).abs().to_f64()
 }
 
 /// Seeded points of u's chart in Ω_ux ∩ Ω_uw (= φ_xu⁻¹(Ω_xu ∩ Ω_xw), decided at 256 bits).
@@ -348,26 +320,11 @@ fn cert_f64_props_oracle_prints_the_decision_margin_with_member_answers() {
     use pseudomanifold::oracle::{Request, Session};
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
     // The octahedron: every degree 4.
-    let s = Settings::default();
-    let results = [
+    let keys = [
         ConfigKey::Vertex { m: 4 },
         ConfigKey::Edge { m_u: 4, m_w: 4 },
-    ]
-    .iter()
-    .flat_map(|k| prove_config(*k, &Model::paper(), &s))
-    .collect();
-    let mut c = Certificate {
-        format: "pseudomanifold-certificate/1".into(),
-        max_degree: 4,
-        model: "paper".into(),
-        shard: None,
-        configs: 2,
-        results,
-        wall_millis: 0,
-        jobs: 1,
-        statements: Default::default(),
-    };
-    attach_f64_bounds(&mut c);
+    ];
+    let c = run(&keys, 4, &Model::paper(), &Settings::default(), 1, None).expect("certify");
     let lens = bound(
         &c,
         ConfigKey::Vertex { m: 4 },

@@ -29,14 +29,16 @@ impl Ppm<f64> for Sloppy {
     }
 }
 
-fn dist(a: &P2<f64>, b: &P2<Mp>) -> f64 {
+/// |f64 point − exact point| (Euclidean), the exact one at 256 bits (`Mp`).
+pub(crate) fn dist(a: &P2<f64>, b: &P2<Mp>) -> f64 {
     b.sub(&P2::<Mp>::from_f64(a.x, a.y, 256))
         .norm2()
         .sqrt()
         .to_f64()
 }
 
-fn qerr(f: f64, m: &Mp) -> f64 {
+/// |f64 − exact| of a scalar.
+pub(crate) fn qerr(f: f64, m: &Mp) -> f64 {
     m.sub(&Mp::from_f64(f, 256)).abs().to_f64()
 }
 
