@@ -406,12 +406,9 @@ fn g_chart_section(cert: &Certificate) -> String {
     let worst = |f: &dyn Fn(&GChartRounding) -> Option<f64>| {
         // A degree without a bound makes the maximum "—" (no claim), never a smaller number.
         let all: Option<Vec<(f64, u32)>> = g.iter().map(|(m, x)| f(x).map(|b| (b, *m))).collect();
-        all.and_then(|v| {
-            v.into_iter()
-                .reduce(|a, b| if b.0 > a.0 || b.0.is_nan() { b } else { a })
-        })
-        .map(|(b, m)| format!("{b:.2e} (m = {m})"))
-        .unwrap_or_else(|| "—".into())
+        all.and_then(worst_with_key)
+            .map(|(b, m)| format!("{b:.2e} (m = {m})"))
+            .unwrap_or_else(|| "—".into())
     };
     format!(
         "\n## g_v and g_v⁻¹ on the whole chart (CERT-f64-g-chart)\n\n{} degrees; max over them of the proven |f64 − exact| (Euclidean) for every f64 point p ≠ 0 with |x|, |y| ≤ {}: g_v {}, g_v⁻¹ {}; pieces {}, unresolved {}; time {:.1} s (sum). Same libm assumption.\n",
@@ -453,6 +450,19 @@ fn f64_bound_cell(p: &str, rs: &[&PropertyResult]) -> String {
     )
 }
 
+/// The largest value with its key, NaN winning (a NaN bound is no claim, never hidden), ties
+/// to the smallest key, so a summary does not depend on the results' order (a merged
+/// certificate is sorted, a complete run is not).
+fn worst_with_key<K: Ord>(v: impl IntoIterator<Item = (f64, K)>) -> Option<(f64, K)> {
+    v.into_iter().reduce(|a, b| {
+        if b.0 > a.0 || b.0.is_nan() || (b.0 == a.0 && b.1 < a.1) {
+            b
+        } else {
+            a
+        }
+    })
+}
+
 /// The CERT-f64-props section of the summary: per property the worst bound, the worst
 /// Lipschitz constant and band, results without a bound, and the statement.
 fn f64_props_section(
@@ -479,16 +489,8 @@ fn f64_props_section(
             .count();
         let worst = bs
             .iter()
-            .filter_map(|(r, b)| b.and_then(|b| b.bound).map(|v| (v, r.key)))
-            // Ties go to the smallest configuration, so the row does not depend on the
-            // results' order (a merged certificate is sorted, a complete run is not).
-            .reduce(|a, b| {
-                if b.0 > a.0 || b.0.is_nan() || (b.0 == a.0 && b.1 < a.1) {
-                    b
-                } else {
-                    a
-                }
-            });
+            .filter_map(|(r, b)| b.and_then(|b| b.bound).map(|v| (v, r.key)));
+        let worst = worst_with_key(worst);
         let has_decided = bs
             .iter()
             .any(|(_, b)| b.is_some_and(|b| b.decided.is_some()));
