@@ -1,6 +1,12 @@
 //! Branch and bound over polar boxes (θ, r) of a chart, and the prover settings.
 
-use super::*;
+use super::config::ConfigKey;
+use super::interval::{iv, Deg};
+use super::result::{CertWitness, Outcome, PropertyResult};
+use crate::construction::maps::EdgeConfig;
+use crate::numeric::interval::Interval as I;
+use serde::{Deserialize, Serialize};
+use std::time::Instant;
 
 // ---------------------------------------------------------------------------------------------
 // Branch and bound over polar boxes.

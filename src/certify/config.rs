@@ -1,7 +1,8 @@
 //! The configurations a certificate covers: an edge depends only on (m_u, m_w), a triangle on
 //! (m_u, m_w, m_x, orientation), a star on m_x (after the rotations R_(u,w) of Def. 4.1.8).
 
-use super::*;
+use crate::construction::maps::{self, Corner, EdgeConfig, TriangleConfig};
+use serde::{Deserialize, Serialize};
 
 // ---------------------------------------------------------------------------------------------
 // Configurations.

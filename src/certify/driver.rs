@@ -1,6 +1,18 @@
 //! The driver: prove every property of every configuration, merge shards, coverage.
 
-use super::*;
+use super::bnb::{omax, Settings};
+use super::certificate::{Certificate, CertifyError};
+use super::config::ConfigKey;
+use super::f64_bound::{f64_rounding_statement, prove_f64_rounding};
+use super::f64_props::{attach_f64_bounds, f64_bound_statement};
+use super::g_chart::prove_g_chart;
+use super::model::Model;
+use super::prove_edge::{prove_hausdorff, prove_inverse, prove_nonempty};
+use super::prove_triangle::prove_triangle;
+use super::prove_vertex::{prove_lens_agreement, prove_star};
+use super::result::{F64Bound, F64Rounding, GChartRounding, Outcome, PropertyResult};
+use serde::Serialize;
+use std::time::Instant;
 
 // ---------------------------------------------------------------------------------------------
 // Driver.

@@ -22,67 +22,19 @@
 //! by-products.
 
 // Bounds are maxima that must keep a NaN (a NaN bound is no bound), as every deviation does.
-use super::*;
+use super::bnb::{bnb, canon_edge, disk_box, Leaf, PBox, Settings};
+use super::f64_roundtrip::{roundtrip_bound, RoundTripBudget, F64_BOUND_DIAM};
+use super::interval::{c, iv, member_any, Deg, Domain};
+use super::result::{F64Rounding, RoundTripVerdict};
+use crate::construction::maps::Ppm;
 use crate::construction::maps::{omega_radius, rotate_frac, roundtrip_tolerance};
+use crate::construction::maps::{Paper, P2};
+use crate::numeric::interval::Interval as I;
 use crate::numeric::rounding::{mag, Glibc, LibmModel, LIBM_ULPS};
 use crate::numeric::Fe;
+use crate::numeric::Scalar;
 use crate::report::dev_max;
-
-/// The proven `f64` rounding bounds of one edge configuration (m_u, m_w), all labels.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct F64Rounding {
-    /// max |φ_wu(p) in f64 − φ_wu(p)| (Euclidean) over every box meeting Ω_uw, all labels
-    /// (`None`: no box bounded).
-    pub phi: Option<f64>,
-    /// max |f64 − exact| of |p|² − r_u² over |p| ≤ 1: p ∈ Ω_u (Def. 4.1.1) is decided
-    /// exactly unless ||p|² − r_u²| ≤ this.
-    pub outer: f64,
-    /// max |f64 − exact| of |q|² − r_w², q = g_(w,u)⁻¹(p), on the boxes meeting Ω_uw: q ∈ Ω_w
-    /// is decided exactly unless ||q|² − r_w²| ≤ this.
-    pub inner: Option<f64>,
-    /// max |f64 − exact| of the round-trip point g_(w,u)(q) on the boxes meeting Ω_uw
-    /// (stage-wise bound, module `f64_roundtrip`; in certificates written before it, the
-    /// enclosure bound on the winding-0 boxes).
-    pub roundtrip: Option<f64>,
-    /// The literal test's round-trip tolerance at this configuration.
-    pub roundtrip_tol: f64,
-    /// The round-trip decision "close" is certified identical in f64 and exactly on every
-    /// box meeting Ω_uw (f64 |g_(w,u)(q) − p|² ≤ tol² with the exact value 0).
-    pub roundtrip_exact: bool,
-    /// The round-trip verdict with its typed failure (absent in older certificates).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub roundtrip_verdict: Option<RoundTripVerdict>,
-    /// Boxes the round-trip bisection evaluated (absent in older certificates).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub roundtrip_boxes: Option<u64>,
-    /// Boxes meeting Ω_uw the round-trip bisection left unbounded (absent in older
-    /// certificates).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub roundtrip_unresolved: Option<u64>,
-    /// max |g_v(a) in f64 − g_v(a)|, v = u, over the f64 points a = R_(u,w)(p) of the boxes
-    /// (the oracle's `g` query on the label-0 sector of Ω_uw; absent in older certificates).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub g_v: Option<f64>,
-    /// max |g_v⁻¹(c) in f64 − g_v⁻¹(c)|, v = w, over the f64 points c = h(g_u(a)) of the
-    /// boxes (the oracle's `g_inv` query on the canonical lens; absent in older certificates).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub g_v_inv: Option<f64>,
-    /// Boxes evaluated.
-    pub boxes: u64,
-    /// Boxes meeting Ω_uw left unbounded at the depth limit or the budget, or where the
-    /// round trip could not be bounded.
-    pub unresolved: u64,
-    /// Largest diameter of an unresolved box.
-    pub delta: Option<f64>,
-    /// The libm assumption used, in ulps (`numeric::rounding::LIBM_ULPS`).
-    pub libm_ulps: f64,
-    /// Time spent, in ms.
-    pub millis: u64,
-}
-
-/// Boxes are bounded once their diameter is at most this (the bound is a maximum of box-wise
-/// enclosures, which loosen with the box).
-pub const F64_BOUND_DIAM: f64 = 0.05;
+use std::time::Instant;
 
 fn sym(x: f64) -> I {
     iv(-x, x)

@@ -49,30 +49,19 @@
 //!   punctures (c ≠ 0, c ≠ (1, 0)) unless Q₁ or Q₂ lies within it of 0 (a positive rounded
 //!   |ĉ|² means ĉ ≠ 0). Underflow: 8·2⁻¹⁰⁷⁴.
 
+use super::bnb::canon_edge;
+use super::certificate::Certificate;
+use super::config::ConfigKey;
 use super::f64_roundtrip::rotation_error;
-use super::*;
+use super::interval::{c, Deg};
+use super::prove_edge::iv_point;
+use super::result::{F64Bound, F64Rounding, GChartRounding, PropertyResult};
+use crate::construction::maps::Paper;
+use crate::construction::maps::Ppm;
+use crate::numeric::interval::Interval as I;
 use crate::numeric::rounding::{Glibc, UNIT_ROUNDOFF};
+use crate::numeric::Iv;
 use std::collections::BTreeMap;
-
-/// CERT-f64-props: the proven `f64` bound of one result (meaning per property:
-/// [`f64_bound_statement`]).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct F64Bound {
-    /// The proven bound (`None`: not bounded, e.g. a bound it rests on is missing).
-    pub bound: Option<f64>,
-    /// The Lipschitz constant the statement uses (`L4.2.2(cert)`, `L4.2.3(cert)`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub lipschitz: Option<f64>,
-    /// `L4.2.1(cert)`, `L4.2.2(cert)`: the claim is for the points p whose φ_xu(p) is farther
-    /// than this from ∂Ω_xw (the bound on |φ̂_xu(p) − φ_xu(p)|).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub band: Option<f64>,
-    /// Membership rows: every round-trip decision the check runs is certified exact
-    /// (CERT-f64-rounding's `roundtrip_exact`); `P4.2.1(cert)`: and its witness points clear
-    /// the margins, so the `f64` test that accepted them is certified to decide exactly.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub decided: Option<bool>,
-}
 
 /// The statement of CERT-f64-props for one property (`None`: the property has none here).
 pub fn f64_bound_statement(property: &str) -> Option<&'static str> {

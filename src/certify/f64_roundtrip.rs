@@ -45,23 +45,22 @@
 //! (or `AboveTolerance` when every box was evaluated but some bound stayed above), never
 //! `Exact`.
 
-use super::*;
+use super::bnb::{bnb, canon_edge, disk_box, Leaf, PBox, Settings};
+use super::interval;
+use super::interval::{c, iv, member_any, Deg, Domain};
+use super::result::RoundTripVerdict;
+use crate::construction::maps::Ppm;
 use crate::construction::maps::{rotate_frac, roundtrip_tolerance, MapError};
+use crate::construction::maps::{Paper, P2};
 use crate::numeric::rounding::{mag, LibmModel};
 use crate::numeric::Fe;
+use crate::numeric::Iv;
+use crate::numeric::Scalar;
 use crate::report::dev_max;
 
-/// What the round-trip decision of the literal test (Def. 4.1.9) is certified to be.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum RoundTripVerdict {
-    /// On every box meeting Ω_uw, f64 decides "close" exactly as the exact comparison.
-    Exact,
-    /// Every box was bounded, but on some the bound is above what the decision allows.
-    AboveTolerance,
-    /// Some box was left unbounded (budget, minimum diameter, or a failed check).
-    Unresolved,
-}
+/// Boxes are bounded once their diameter is at most this (the bound is a maximum of box-wise
+/// enclosures, which loosen with the box).
+pub const F64_BOUND_DIAM: f64 = 0.05;
 
 /// Limits of the round-trip bisection.
 #[derive(Debug, Clone, Copy)]

@@ -20,11 +20,14 @@
 //! |x|, |y| ≤ 2⁻⁶⁴, bounded in closed form ([`CORE_BOUND`] = 2⁻⁶⁰); what is left is counted
 //! as unresolved and the bound is then not claimed for the whole square.
 
-use super::*;
+use super::interval::{c, iv};
+use super::result::GChartRounding;
+use crate::construction::maps::P2;
 use crate::construction::maps::{g_v, g_v_inv, MapError};
 use crate::numeric::rounding::{Glibc, LibmModel, LIBM_ULPS};
 use crate::numeric::Fe;
 use crate::report::dev_max;
+use std::time::Instant;
 
 /// The chart square |x|, |y| ≤ this is covered. It contains the disk of radius 1, so Ω_v
 /// (radius cos(π/m) < 1, Def. 4.1.1) for `g` and g_v(Ω_v) (radius cos(π/6)) for `g_inv`.
@@ -50,34 +53,6 @@ const G_CHART_BUDGET: u64 = 20_000;
 /// Pieces are not bisected below this diameter (below the core's, which the pieces next to
 /// the origin must reach).
 const G_CHART_MIN_DIAM: f64 = CORE / 4.0;
-
-/// The proven `f64` rounding bounds of g_v and g_v⁻¹ for one degree m (on the
-/// `D4.1.9-lens(cert)` result of the vertex configuration).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct GChartRounding {
-    /// The square |x|, |y| ≤ `radius` is covered.
-    pub radius: f64,
-    /// max |g_v(p) in f64 − g_v(p)| (Euclidean) over every `f64` point p ≠ 0 of the square
-    /// (`None`: some piece was left unbounded).
-    pub g_v: Option<f64>,
-    /// The same for g_v⁻¹.
-    pub g_v_inv: Option<f64>,
-    /// Pieces evaluated (both maps).
-    pub boxes: u64,
-    /// Pieces left unbounded (both maps).
-    pub unresolved: u64,
-    /// The libm assumption used, in ulps (`numeric::rounding::LIBM_ULPS`).
-    pub libm_ulps: f64,
-    /// Time spent, in ms.
-    pub millis: u64,
-}
-
-impl GChartRounding {
-    /// Does the bound cover the query point `p` (in the square, not the origin)?
-    pub fn covers(&self, p: [f64; 2]) -> bool {
-        p[0].abs() <= self.radius && p[1].abs() <= self.radius && (p[0] != 0.0 || p[1] != 0.0)
-    }
-}
 
 /// A box of `f64` inputs [x0, x1] × [y0, y1] on which Π takes one branch.
 #[derive(Debug, Clone, Copy)]

@@ -15,17 +15,6 @@
 
 pub mod interval;
 
-use crate::construction::maps::{
-    self, cos_pi_6, is_nonzero, Corner, EdgeConfig, Paper, Ppm, TriangleConfig, P2,
-};
-use crate::numeric::interval::Interval as I;
-use crate::numeric::{Iv, Mp, Scalar, Trit};
-use crate::report::harness::enclosure_exceeds;
-use crate::report::{CheckResult, Verdict, Witness};
-use interval::{c, iv, member, member_any, phi_polar, ratio, two_pi_frac, Deg, Domain};
-use serde::{Deserialize, Serialize};
-use std::time::Instant;
-
 mod bnb;
 mod certificate;
 mod config;
@@ -38,6 +27,7 @@ mod model;
 mod prove_edge;
 mod prove_triangle;
 mod prove_vertex;
+mod result;
 pub mod sector;
 
 pub use bnb::*;
@@ -52,3 +42,4 @@ pub use model::*;
 pub use prove_edge::*;
 pub use prove_triangle::*;
 pub use prove_vertex::*;
+pub use result::*;

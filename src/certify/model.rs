@@ -1,6 +1,11 @@
 //! The construction under test: the paper's, or one with a planted fault.
 
-use super::*;
+use super::interval;
+use super::interval::c;
+use crate::construction::maps::{self, cos_pi_6, is_nonzero, EdgeConfig, Ppm, P2};
+use crate::numeric::interval::Interval as I;
+use crate::numeric::{Scalar, Trit};
+use serde::{Deserialize, Serialize};
 
 // ---------------------------------------------------------------------------------------------
 // Models (the paper, and planted faults).

@@ -1,6 +1,16 @@
 //! Edge provers: P4.2.1 (non-empty), P4.2.3 (inverse) and L4.2.3 (Hausdorff separation).
 
-use super::*;
+use super::bnb::{bnb, canon_edge, disk_box, finish, Leaf, Settings, Stats, MP_PREC};
+use super::config::ConfigKey;
+use super::interval;
+use super::interval::{c, iv, member_any, phi_polar, ratio, Deg, Domain};
+use super::model::Model;
+use super::result::{CertWitness, Outcome, PropertyResult};
+use crate::construction::maps::{self, EdgeConfig, Ppm, P2};
+use crate::numeric::interval::Interval as I;
+use crate::numeric::{Iv, Mp, Scalar};
+use crate::report::harness::enclosure_exceeds;
+use std::time::Instant;
 
 // ---------------------------------------------------------------------------------------------
 // Edge provers.

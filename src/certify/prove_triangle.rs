@@ -1,6 +1,19 @@
 //! Triangle provers: L4.2.1 and L4.2.2 (the cocycle condition).
 
-use super::*;
+use super::bnb::{bnb, disk_box, omax, Exact, Leaf, PBox, Settings, MP_PREC};
+use super::config::ConfigKey;
+use super::interval;
+use super::interval::{c, member, member_any, phi_polar, two_pi_frac, Deg, Domain};
+use super::model::Model;
+use super::prove_edge::{at_least, cocycle_gap, finite_p2, inclusion_violated, iv_point};
+use super::result::{CertWitness, Outcome, PropertyResult};
+use crate::construction::maps::Ppm;
+use crate::construction::maps::P2;
+use crate::numeric::interval::Interval as I;
+use crate::numeric::Scalar;
+use crate::numeric::{Iv, Mp, Trit};
+use crate::report::harness::enclosure_exceeds;
+use std::time::Instant;
 
 // ---------------------------------------------------------------------------------------------
 // Triangle provers.

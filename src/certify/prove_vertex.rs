@@ -1,6 +1,16 @@
 //! Vertex provers: D4.1.9-lens(cert) and the star conditions (C5.4, C4.2).
 
-use super::*;
+use super::bnb::{bnb, canon_edge, disk_box, finish, Leaf, Settings, MP_PREC};
+use super::config::ConfigKey;
+use super::interval::{member_any, two_pi_frac, Deg, Domain};
+use super::model::Model;
+use super::result::{CertWitness, PropertyResult};
+use super::{interval, sector};
+use crate::construction::maps::Ppm;
+use crate::construction::maps::{EdgeConfig, P2};
+use crate::numeric::interval::Interval as I;
+use crate::numeric::{Mp, Trit};
+use std::time::Instant;
 
 // ---------------------------------------------------------------------------------------------
 // Vertex provers.

@@ -43,7 +43,10 @@
 //! of the box when all their candidates differ by ≥ k. Everything except that last interval
 //! filter is integer arithmetic, so nothing is left to δ at the tangencies.
 
-use super::*;
+use super::interval;
+use super::interval::{member, ratio, two_pi_frac, Deg, Domain};
+use crate::numeric::interval::Interval as I;
+use serde::{Deserialize, Serialize};
 
 /// The sector claim of Lemma A (module docs): D(1, R) ⊂ {|arg z| < kπ/6}, k = `sixths`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]

@@ -869,25 +869,6 @@ fn describe(g: &FileGraph, root: &Path, cycles: &[Vec<Vec<String>>]) -> String {
     s
 }
 
-/// File cycles not yet broken, each a planned move (docs/architecture.md): the files of the
-/// cycle, as module paths. A new cycle fails, and so does a listed one that is gone (the list
-/// only shrinks). It is in a module other work holds at this commit.
-const ALLOWED_CYCLES: &[&[&str]] = &[
-    // `use super::*` in every file: bnb ↔ certificate (finish; CertWitness, Outcome,
-    // PropertyResult), f64_bound ↔ f64_roundtrip (F64_BOUND_DIAM; RoundTripBudget),
-    // certificate ↔ f64_props (F64Bound; Certificate), prove_edge → bnb, certificate. Move:
-    // the certificate's result types (with the bounds they hold) into their own file,
-    // F64_BOUND_DIAM beside the round trip, explicit imports for the globs.
-    &[
-        "certify::bnb",
-        "certify::certificate",
-        "certify::f64_bound",
-        "certify::f64_props",
-        "certify::f64_roundtrip",
-        "certify::prove_edge",
-    ],
-];
-
 #[test]
 fn x_acyclic_files_no_cycle_between_the_files_of_src() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -898,37 +879,18 @@ fn x_acyclic_files_no_cycle_between_the_files_of_src() {
         g.files.len()
     );
     assert!(g.edges.len() > g.files.len(), "{} edges", g.edges.len());
-    let allowed: Vec<Vec<Vec<String>>> = ALLOWED_CYCLES
-        .iter()
-        .map(|c| {
-            let mut c: Vec<Vec<String>> = c.iter().map(|x| m(x)).collect();
-            c.sort();
-            c
-        })
-        .collect();
     let found = cycles(&g);
-    let new: Vec<Vec<Vec<String>>> = found
-        .iter()
-        .filter(|c| !allowed.contains(c))
-        .cloned()
-        .collect();
-    let gone: Vec<&Vec<Vec<String>>> = allowed.iter().filter(|c| !found.contains(c)).collect();
     assert!(
-        new.is_empty(),
+        found.is_empty(),
         "file cycles in src/ ({} files, {} edges):{}",
         g.files.len(),
         g.edges.len(),
-        describe(&g, root, &new)
-    );
-    assert!(
-        gone.is_empty(),
-        "broken: remove from ALLOWED_CYCLES and docs/architecture.md: {gone:?}"
+        describe(&g, root, &found)
     );
     println!(
-        "X-acyclic-files: {} files, {} edges, {} cycles left as planned moves",
+        "X-acyclic-files: {} files, {} edges, no cycle",
         g.files.len(),
-        g.edges.len(),
-        found.len()
+        g.edges.len()
     );
     let scanned = g.files.len() as u64;
     crate::common::verdicts::record(
