@@ -4,14 +4,13 @@
 //! and evaluated through `SmoothSurface` only; what a construction lacks (the manifold
 //! spline's jets) is its typed refusal.
 
+use super::choose::{self, ConstructionArgs};
 use super::load::surface as load;
 use crate::fitting::format::is_fit_file;
 use crate::mesh::FaceId;
-use crate::oracle::choice::{read_fitted, BuildError, Choice};
+use crate::oracle::choice::read_fitted;
 use crate::surface::output::Attributes;
-use crate::surface::profile::Profile;
 use crate::surface::smooth::{ChartAt, SmoothError, SmoothSurface};
-use crate::surface::target::SurfaceKind;
 use crate::surface::Construction;
 use std::path::Path;
 use std::process::ExitCode;
@@ -44,23 +43,6 @@ fn usage(msg: String) -> ExitCode {
     ExitCode::from(2)
 }
 
-/// The vertex construction of the command line, with a note before a large fit (Sec. 5.2).
-fn vertex_choice(
-    k: &crate::mesh::SimplicialSurface,
-    profile: &str,
-    surface: &str,
-) -> Result<Choice, ExitCode> {
-    let profile = Profile::parse(profile).ok_or_else(|| {
-        usage(format!(
-            "unknown profile {profile:?} (paper | authors-code)"
-        ))
-    })?;
-    let sprime = SurfaceKind::parse(surface)
-        .ok_or_else(|| usage(format!("unknown surface {surface:?} (pn | loop)")))?;
-    super::sample::note_large_fit(k, profile);
-    Ok(Choice::Vertex { profile, sprime })
-}
-
 /// The surface of the command line: the FIT file's, or the construction built from K.
 fn surface(a: &EvalArgs) -> Result<Box<dyn SmoothSurface>, ExitCode> {
     if is_fit_file(a.file) {
@@ -75,21 +57,17 @@ fn surface(a: &EvalArgs) -> Result<Box<dyn SmoothSurface>, ExitCode> {
             .map_err(|e| usage(e.to_string()));
     }
     let k = load(a.file)?;
-    let choice = match a.construction.unwrap_or_default() {
-        Construction::Vertex => vertex_choice(&k, a.profile, a.surface)?,
-        Construction::SigmaV => Choice::SigmaV {
+    let choice = choose::choice(
+        &k,
+        &ConstructionArgs {
+            construction: a.construction.unwrap_or_default(),
+            profile: a.profile,
+            surface: a.surface,
             kappa: a.kappa,
             patch_degree: a.patch_degree,
         },
-        c @ Construction::ManifoldSpline => Choice::default_of(c),
-    };
-    choice.build(&k).map_err(|e| {
-        eprintln!("error: {e}");
-        match e {
-            BuildError::Target { .. } => ExitCode::from(1),
-            _ => ExitCode::from(2),
-        }
-    })
+    )?;
+    choose::build(&k, &choice)
 }
 
 /// The chart eval chose, as the JSON fields of the answer (`"chart"` and `"vertex"` for the

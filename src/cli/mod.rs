@@ -3,6 +3,7 @@
 
 mod certify;
 pub mod check;
+mod choose;
 mod eval;
 mod fit;
 mod load;

@@ -1,64 +1,17 @@
 //! `ppm sample` (Sec. 6.2).
 
+use super::choose::{self, ConstructionArgs};
 use super::load::surface as load;
 use super::progress::Line;
 use crate::mesh::SimplicialSurface;
-use crate::oracle::choice::Choice;
 use crate::surface::output::{
     edge_use_counts, write_mesh_with_attributes, Attributes, SampledMesh,
 };
-use crate::surface::pps::{Pps, PpsOptions};
-use crate::surface::profile::Profile;
 use crate::surface::smooth::SmoothSurface;
-use crate::surface::target::{SPrime, SurfaceKind};
 use crate::surface::Construction;
 use std::path::Path;
 use std::process::ExitCode;
 use std::time::Instant;
-
-fn build(k: &SimplicialSurface, profile: &str, surface: &str) -> Result<Pps, ExitCode> {
-    let profile = Profile::parse(profile).ok_or_else(|| {
-        eprintln!("error: unknown profile {profile:?} (paper | authors-code)");
-        ExitCode::from(2)
-    })?;
-    let kind = SurfaceKind::parse(surface).ok_or_else(|| {
-        eprintln!("error: unknown surface {surface:?} (pn | loop)");
-        ExitCode::from(2)
-    })?;
-    let target = SPrime::for_profile(kind, k, profile).map_err(|e| {
-        eprintln!("error: S′ = {}: {e}", kind.name());
-        ExitCode::from(1)
-    })?;
-    note_large_fit(k, profile);
-    Pps::try_build(
-        k,
-        target.as_target(),
-        PpsOptions {
-            profile,
-            ..PpsOptions::default()
-        },
-    )
-    .map_err(|e| {
-        eprintln!("error: {e}");
-        ExitCode::from(2)
-    })
-}
-
-/// Progress for the large fits (Sec. 5.2) that are admitted: say what is being built (shared
-/// by `ppm sample` and `ppm eval`).
-pub(super) fn note_large_fit(k: &SimplicialSurface, profile: Profile) {
-    if let Ok(bytes) = crate::surface::admissible::check_fit_size(k, profile) {
-        if bytes > 1 << 28 {
-            let max_m = k.vertices().map(|v| k.degree(v)).max().unwrap_or(0);
-            eprintln!(
-                "ppm: fitting the shape functions (Sec. 5.2, {} profile, largest degree {max_m}, l = {}): about {} MB; this may take a while",
-                profile.name(),
-                profile.bezier_degree(max_m),
-                bytes >> 20
-            );
-        }
-    }
-}
 
 /// The options of `ppm sample` (see `crate::cli`).
 pub(crate) struct SampleArgs<'a> {
@@ -100,20 +53,20 @@ pub(crate) fn run_sample(a: &SampleArgs) -> ExitCode {
         Ok(k) => k,
         Err(c) => return c,
     };
-    let built: Result<Box<dyn SmoothSurface>, ExitCode> = match a.construction {
-        Construction::Vertex => build_vertex(&k, a, t0).map(|p| Box::new(p) as _),
-        Construction::SigmaV => super::sigma_v::build(&k, a.kappa, a.patch_degree, a.quiet, t0)
-            .map(|p| Box::new(p) as _),
-        // `ppm msplines sample`'s spline (positions only: `--attributes positions`).
-        c @ Construction::ManifoldSpline => Choice::default_of(c).build(&k).map_err(|e| {
-            eprintln!("error: {e}");
-            ExitCode::from(2)
-        }),
+    let args = ConstructionArgs {
+        construction: a.construction,
+        profile: a.profile,
+        surface: a.surface,
+        kappa: a.kappa,
+        patch_degree: a.patch_degree,
     };
-    let surface = match built {
+    let surface = match choose::choice(&k, &args).and_then(|c| choose::build(&k, &c)) {
         Ok(s) => s,
         Err(c) => return c,
     };
+    if !a.quiet {
+        print_summary(&k, surface.as_ref(), t0);
+    }
     let line = Line::new("ppm sample", "points", !a.quiet);
     let hook = line.hook();
     let sampled = surface.sample(a.level, attrs, hook.as_ref().map(|h| h as _));
@@ -128,26 +81,22 @@ pub(crate) fn run_sample(a: &SampleArgs) -> ExitCode {
     write_sampled("ppm sample", a.out, &m, a.quiet, t0)
 }
 
-/// The vertex PPS of `ppm sample`, with its summary (fit per degree, Sec. 5.2).
-fn build_vertex(k: &SimplicialSurface, a: &SampleArgs, t0: Instant) -> Result<Pps, ExitCode> {
-    let pps = build(k, a.profile, a.surface)?;
-    let t_build = t0.elapsed().as_secs_f64();
-    if !a.quiet {
+/// What was built: the construction and its fits per degree (Sec. 5.2, SPEC `SV-D11`).
+fn print_summary(k: &SimplicialSurface, surface: &dyn SmoothSurface, t0: Instant) {
+    eprintln!(
+        "ppm sample: {} vertices, {} faces; {} built in {:.2} s",
+        k.num_vertices(),
+        k.num_faces(),
+        surface.name(),
+        t0.elapsed().as_secs_f64()
+    );
+    for f in surface.fit_summary() {
+        let l = f.l.map_or(String::new(), |l| format!("l = {l:>2}, "));
         eprintln!(
-            "ppm sample: {} vertices, {} faces; PPS ({}, S′ = {}) built in {t_build:.2} s",
-            k.num_vertices(),
-            k.num_faces(),
-            pps.options.profile.name(),
-            pps.target_name()
+            "  degree {:>2}: {l}{} samples, {} unknowns, rank {}, κ = {:.2e}",
+            f.m, f.rows, f.unknowns, f.rank, f.condition
         );
-        for f in pps.fit_info() {
-            eprintln!(
-                "  degree {:>2}: l = {:>2}, {} samples, {} unknowns, rank {}, κ = {:.2e}",
-                f.m, f.l, f.rows, f.unknowns, f.rank, f.condition
-            );
-        }
     }
-    Ok(pps)
 }
 
 /// Writes a sampled surface (atomically, see `write_mesh_with_attributes`) and reports its

@@ -1,12 +1,9 @@
-//! `ppm check --spec --construction sigma-v`, and the surface of `ppm sample --construction
-//! sigma-v`: the tutorial's (σ, v)-indexed construction (seed 002, Parts IV–V; SPEC rows
-//! `SV-…`).
+//! `ppm check --spec --construction sigma-v`: the checks of the tutorial's (σ, v)-indexed
+//! construction (seed 002, Parts IV–V; SPEC rows `SV-…`).
 
 use super::load::surface as load;
-use crate::mesh::SimplicialSurface;
 use crate::report::render_text;
 use crate::surface::sigma_v::checks::{run_sigma_v_checks, sv_erratum, SvCheckOptions};
-use crate::surface::sigma_v::SigmaVPps;
 use crate::surface::PnTriangles;
 use std::path::Path;
 use std::process::ExitCode;
@@ -69,38 +66,4 @@ pub(super) fn run_check(file: &Path, json: bool, o: &SvCheckOptions) -> ExitCode
     } else {
         ExitCode::from(1)
     }
-}
-
-/// The (σ, v) PPS of `ppm sample --construction sigma-v` (S′ = PN triangles), with its
-/// summary (fit per degree, SPEC `SV-D11`).
-pub(crate) fn build(
-    k: &SimplicialSurface,
-    kappa: f64,
-    degree: usize,
-    quiet: bool,
-    t0: Instant,
-) -> Result<SigmaVPps, ExitCode> {
-    let pn = PnTriangles::new(k);
-    let pps = match SigmaVPps::build(k, &pn, kappa, degree) {
-        Ok(p) => p,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return Err(ExitCode::from(2));
-        }
-    };
-    if !quiet {
-        eprintln!(
-            "ppm sample: (σ, v) construction, {} p-domains (3·n_t), κ = {kappa}, patch degree {degree}, S′ = {}, built in {:.2} s",
-            pps.gluing.len(),
-            pps.target_name(),
-            t0.elapsed().as_secs_f64()
-        );
-        for f in pps.fit_info() {
-            eprintln!(
-                "  degree {:>2}: {} samples, {} unknowns, rank {}, κ(A) = {:.2e}",
-                f.m, f.rows, f.unknowns, f.rank, f.condition
-            );
-        }
-    }
-    Ok(pps)
 }

@@ -12,7 +12,9 @@ use crate::report::Progress;
 use crate::surface::geometry::{from_jet, SurfacePoint};
 use crate::surface::jet::Jet;
 use crate::surface::output::{Attributes, SampledMesh};
-use crate::surface::smooth::{ChartAt, GluingView, Located, MpConsts, SmoothError, SmoothSurface};
+use crate::surface::smooth::{
+    ChartAt, FitSummary, GluingView, Located, MpConsts, SmoothError, SmoothSurface,
+};
 
 /// eval's answer as the trait gives it: the point, the corner (σ, v) and q (SPEC `SV-D13`).
 fn located<S>((corner, q, point): (Corner, P2<S>, [S; 3])) -> Located<S> {
@@ -33,6 +35,20 @@ impl SmoothSurface for SigmaVPps {
             self.gluing.kappa,
             self.target_name()
         )
+    }
+
+    fn fit_summary(&self) -> Vec<FitSummary> {
+        self.fit_info()
+            .iter()
+            .map(|f| FitSummary {
+                m: f.m,
+                l: None,
+                rows: f.rows,
+                unknowns: f.unknowns,
+                rank: f.rank,
+                condition: f.condition,
+            })
+            .collect()
     }
 
     fn face_corners(&self) -> Result<Vec<[VertexId; 3]>, SmoothError> {

@@ -88,6 +88,25 @@ pub(crate) type MpEval<'a> =
 /// The gluing data of a set of p-domains (Def. 3.4.1), as the sampled checkers take it.
 pub(crate) type GluingView<'a> = Box<dyn GluingData<2, S = f64> + 'a>;
 
+/// One least-squares fit of a construction's shape functions, as `ppm sample` reports it:
+/// per vertex degree m, the fit of Sec. 5.2 (vertex PPS, Bézier bi-degree `l`) or of SPEC
+/// `SV-D11` ((σ, v) PPS, `l` = `None`: its patch degree is one for all m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FitSummary {
+    /// The vertex degree m.
+    pub m: u32,
+    /// The Bézier bi-degree l (vertex PPS only).
+    pub l: Option<usize>,
+    /// Samples: the rows of A.
+    pub rows: usize,
+    /// Unknowns per coordinate: the columns of A.
+    pub unknowns: usize,
+    /// The numerical rank of A.
+    pub rank: usize,
+    /// κ(A) = σ_max/σ_min.
+    pub condition: f64,
+}
+
 /// A smooth surface built from the triangle mesh K and evaluated from a triangle of K:
 /// eval(σ, λ, μ, ν) of Sec. 6.1.4 for the two PPS, F at the point of M for the manifold
 /// spline (see the module doc for which caller needs which method).
@@ -97,6 +116,12 @@ pub(crate) type GluingView<'a> = Box<dyn GluingData<2, S = f64> + 'a>;
 pub trait SmoothSurface: Send + Sync {
     /// The construction, as reports name it (with its parameters).
     fn name(&self) -> String;
+
+    /// The least-squares fits the construction solved, one per vertex degree (empty when it
+    /// fits nothing, as the manifold spline).
+    fn fit_summary(&self) -> Vec<FitSummary> {
+        Vec::new()
+    }
 
     /// The corners of every face of K in stored order: the input of the Sec. 6.2 sampling
     /// pattern (`surface::output::sample_pattern_faces`).

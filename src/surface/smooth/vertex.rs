@@ -1,7 +1,7 @@
 //! The report's vertex-indexed PPS (Defs. 5.4.1–5.4.2, eval of Sec. 6.1.4) as a
 //! [`SmoothSurface`].
 
-use super::{ChartAt, GluingView, Located, MpConsts, SmoothError, SmoothSurface};
+use super::{ChartAt, FitSummary, GluingView, Located, MpConsts, SmoothError, SmoothSurface};
 use crate::construction::abstract_view::AbstractPpm;
 use crate::construction::PpmGluing;
 use crate::gluing::data::Idx;
@@ -35,6 +35,20 @@ impl SmoothSurface for Pps {
             self.options.profile.name(),
             self.target_name()
         )
+    }
+
+    fn fit_summary(&self) -> Vec<FitSummary> {
+        self.fit_info()
+            .iter()
+            .map(|f| FitSummary {
+                m: f.m,
+                l: Some(f.l),
+                rows: f.rows,
+                unknowns: f.unknowns,
+                rank: f.rank,
+                condition: f.condition,
+            })
+            .collect()
     }
 
     fn face_corners(&self) -> Result<Vec<[VertexId; 3]>, SmoothError> {
