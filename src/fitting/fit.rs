@@ -4,7 +4,7 @@
 use super::base::BaseMesh;
 use super::fitted::{BaseSurface, Fitted, SurfaceParam};
 use super::simplify::Hierarchy;
-use super::{embedded, local, refine, unblock};
+use super::{embedded, local, refine, unblock, unsimplify};
 use crate::surface::sigma_v::{SigmaVError, SigmaVPps};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -125,6 +125,9 @@ pub struct Fit {
     pub rounds: Vec<Round>,
     /// The base-mesh changes where a base edge had no curve (the AC·CB rule, `unblock`).
     pub unblock: unblock::Walk,
+    /// The fallback where the walk could not finish: the vertices of S_T kept as in S_T and the
+    /// simplifications run again (`unsimplify`, SPEC `AF-unsimplify`; no round when unused).
+    pub restore: unsimplify::Restore,
 }
 
 /// A bound on |fl(eval) − eval| for the fitted PPS: the operation count of

@@ -5,7 +5,9 @@ use super::base::{BaseMesh, RemovalLimits};
 use super::fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round};
 use super::fitted::{BaseSurface, BaseSurfaceError};
 use super::simplify::SimplifyOptions;
-use super::{checks, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock};
+use super::{
+    checks, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock, unsimplify,
+};
 use crate::mesh::SimplicialSurface;
 
 fn percentile(v: &[f64], q: f64) -> f64 {
@@ -73,7 +75,7 @@ fn fit_once(
         min_vertices: 4,
         max_levels: 200,
     };
-    let hierarchy = simplify::simplify(&mut base, k, &sopts, |lvl, n| {
+    let mut hierarchy = simplify::simplify(&mut base, k, &sopts, |lvl, n| {
         progress(&format!("simplify: level {lvl}, {n} base vertices"))
     });
     progress(&format!(
@@ -88,6 +90,10 @@ fn fit_once(
     let mut repairs = 0;
     let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
     let mut walk = unblock::Walk::default();
+    // The fallback where the walk cannot finish (`unsimplify`), and the vertices the refinement
+    // made base vertices (kept by it).
+    let mut restore = unsimplify::Restore::default();
+    let mut refined: Vec<u32> = Vec::new();
     // The last embedding whose every check held, kept for the next round's local update.
     let mut prev: Option<local::Previous> = None;
     loop {
@@ -180,30 +186,80 @@ fn fit_once(
                 } else {
                     f.blocked.clone()
                 };
-                let (before, walk_before) = (base.clone(), walk.clone());
-                let (mut done, mut gave_up) =
-                    unblock_all(&mut base, &mut walk, &blocked, &sopts.limits, &failed_at);
-                // All the blocked edges are changed before embedding again (each embedding
-                // costs the whole of S_T); when the validator refuses the result, only the
-                // first blocked edge is changed, as one at a time did before.
-                if done.len() > 1 && BaseSurface::new(&base).is_err() {
-                    base = before;
-                    walk = walk_before;
-                    (done, gave_up) = unblock_all(
-                        &mut base,
-                        &mut walk,
-                        &blocked[..1],
-                        &sopts.limits,
-                        &failed_at,
-                    );
+                // The walk while it can finish: not after the fallback has run, and not with
+                // more blocked edges than changes left (one change per round at worst).
+                let mut gave_up = None;
+                if !restore.active()
+                    && blocked.len() <= unblock::MAX_CHANGES.saturating_sub(walk.changes)
+                {
+                    let (before, walk_before) = (base.clone(), walk.clone());
+                    let done;
+                    (done, gave_up) =
+                        unblock_all(&mut base, &mut walk, &blocked, &sopts.limits, &failed_at);
+                    // All the blocked edges are changed before embedding again (each
+                    // embedding costs the whole of S_T); when the validator refuses the
+                    // result, only the first blocked edge is changed, as one at a time did
+                    // before.
+                    let done = if done.len() > 1 && BaseSurface::new(&base).is_err() {
+                        base = before;
+                        walk = walk_before;
+                        let done;
+                        (done, gave_up) = unblock_all(
+                            &mut base,
+                            &mut walk,
+                            &blocked[..1],
+                            &sopts.limits,
+                            &failed_at,
+                        );
+                        done
+                    } else {
+                        done
+                    };
+                    if !done.is_empty() {
+                        progress(&format!(
+                            "embed: failed ({}; {} base edges without a curve); {}; embedding again",
+                            f.what,
+                            f.blocked.len().max(1),
+                            done.join("; ")
+                        ));
+                        continue;
+                    }
                 }
-                if !done.is_empty() {
+                // The fallback (`unsimplify`, SPEC `AF-unsimplify`): S_T's own triangles
+                // kept around the blocked edges, the rest simplified again.
+                restore.add(pos.len(), refined.iter().copied());
+                let n_before = restore.kept;
+                let sites: Vec<unsimplify::Site> = blocked
+                    .iter()
+                    .map(|&(a, b)| unsimplify::Site::Edge(a, b))
+                    .collect();
+                if let Some((m, h)) = unsimplify::restore(
+                    k,
+                    &base,
+                    &sites,
+                    &sopts,
+                    &mut restore,
+                    |m| {
+                        let key = face_key(m);
+                        failed_at.iter().any(|(x, _)| *x == key)
+                    },
+                ) {
                     progress(&format!(
-                        "embed: failed ({}; {} base edges without a curve); {}; embedding again",
+                        "embed: failed ({}; {} base edges without a curve){}; S_T's own triangles kept around them (AF-unsimplify: {} more vertices of S_T kept as base vertices, {} in all, ring {}), simplified again: {} base vertices; embedding again",
                         f.what,
-                        f.blocked.len().max(1),
-                        done.join("; ")
+                        blocked.len(),
+                        match &gave_up {
+                            Some(g) => format!("; {g}"),
+                            None => String::new(),
+                        },
+                        restore.kept - n_before,
+                        restore.kept,
+                        restore.rings.last().copied().unwrap_or(0),
+                        m.base_vertices().len()
                     ));
+                    base = m;
+                    hierarchy = h;
+                    prev = None;
                     continue;
                 }
                 if let Some(g) = gave_up {
@@ -220,6 +276,9 @@ fn fit_once(
             }
         }
         let mut all_hold = false;
+        // The base faces the checks that make an embedding unusable name (the fallback's
+        // sites when it is).
+        let mut unusable_at: Vec<u32> = Vec::new();
         let usable = match &emb {
             Ok(e) => {
                 let checks = checked
@@ -234,6 +293,19 @@ fn fit_once(
                     (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
                 });
                 all_hold = bad.is_empty();
+                if !usable {
+                    unusable_at = checks
+                        .iter()
+                        .filter(|r| {
+                            (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
+                        })
+                        .flat_map(|r| r.witnesses.iter())
+                        .filter_map(|w| w.data.get("face").and_then(|f| f.as_u64()))
+                        .map(|f| f as u32)
+                        .collect();
+                    unusable_at.sort_unstable();
+                    unusable_at.dedup();
+                }
                 let how = match &local_stats {
                     Some(st) => format!(
                         "local update: {} of {} curves kept, {} of {} curved triangles' maps kept; ",
@@ -271,6 +343,49 @@ fn fit_once(
                 false
             }
         };
+        // An embedding whose map folds (or whose curved triangle is no disk): S_T's own
+        // triangles kept there, the rest simplified again (`unsimplify`, SPEC `AF-unsimplify`).
+        if !unusable_at.is_empty() {
+            restore.add(pos.len(), refined.iter().copied());
+            let n_before = restore.kept;
+            let sites: Vec<unsimplify::Site> = unusable_at
+                .iter()
+                .map(|&f| unsimplify::Site::Face(f))
+                .collect();
+            let key = face_key(&base);
+            if let Some((m, h)) =
+                unsimplify::restore(k, &base, &sites, &sopts, &mut restore, |m| {
+                    let km = face_key(m);
+                    km == key || failed_at.iter().any(|(x, _)| *x == km)
+                })
+            {
+                progress(&format!(
+                    "embed: the embedding's parameters are unusable at base faces {:?}; S_T's own triangles kept there (AF-unsimplify: {} more vertices of S_T kept as base vertices, {} in all, ring {}), simplified again: {} base vertices; embedding again",
+                    unusable_at,
+                    restore.kept - n_before,
+                    restore.kept,
+                    restore.rings.last().copied().unwrap_or(0),
+                    m.base_vertices().len()
+                ));
+                // Not embedded again: the result would be the same.
+                failed_at.push((
+                    key,
+                    embedded::Failure {
+                        what: format!(
+                            "the embedding's parameters are unusable at base faces {unusable_at:?}"
+                        ),
+                        faces: unusable_at.clone(),
+                        edge: None,
+                        blocked: Vec::new(),
+                        gave_up: None,
+                    },
+                ));
+                base = m;
+                hierarchy = h;
+                prev = None;
+                continue;
+            }
+        }
         let params = match &emb {
             Ok(e) if usable => surface.params_of(&base, &e.params),
             _ => surface.params(&base),
@@ -332,6 +447,7 @@ fn fit_once(
                 repairs,
                 rounds,
                 unblock: walk,
+                restore,
             });
         }
         if rounds.len() + 1 >= opts.max_rounds {
@@ -349,8 +465,8 @@ fn fit_once(
         };
         let mut st = refine::RefineStats::default();
         for x in refine::choose(&base, &errors, &offenders) {
-            if !base.is_base(x) {
-                refine::insert(&mut base, x, &mut st);
+            if !base.is_base(x) && refine::insert(&mut base, x, &mut st) {
+                refined.push(x);
             }
         }
         round.refine = Some(st);
