@@ -227,35 +227,20 @@ fn fit_once(
                 }
                 // The fallback (`unsimplify`, SPEC `AF-unsimplify`): S_T's own triangles
                 // kept around the blocked edges, the rest simplified again.
-                restore.add(pos.len(), refined.iter().copied());
-                let n_before = restore.kept;
                 let sites: Vec<unsimplify::Site> = blocked
                     .iter()
                     .map(|&(a, b)| unsimplify::Site::Edge(a, b))
                     .collect();
-                if let Some((m, h)) = unsimplify::restore(
-                    k,
-                    &base,
-                    &sites,
-                    &sopts,
-                    &mut restore,
-                    |m| {
-                        let key = face_key(m);
-                        failed_at.iter().any(|(x, _)| *x == key)
-                    },
-                ) {
+                let r = unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
+                if let Some((m, h, how)) = r {
                     progress(&format!(
-                        "embed: failed ({}; {} base edges without a curve){}; S_T's own triangles kept around them (AF-unsimplify: {} more vertices of S_T kept as base vertices, {} in all, ring {}), simplified again: {} base vertices; embedding again",
+                        "embed: failed ({}; {} base edges without a curve){}; {how}; embedding again",
                         f.what,
                         blocked.len(),
                         match &gave_up {
                             Some(g) => format!("; {g}"),
                             None => String::new(),
                         },
-                        restore.kept - n_before,
-                        restore.kept,
-                        restore.rings.last().copied().unwrap_or(0),
-                        m.base_vertices().len()
                     ));
                     base = m;
                     hierarchy = h;
@@ -272,6 +257,23 @@ fn fit_once(
                         last.1 = f.clone();
                     }
                     emb = Err(f);
+                }
+            } else if new && f.edge.is_none() && !f.faces.is_empty() && restore.active() {
+                // Once the fallback has run, an embedding that fails at base faces without a
+                // blocked edge (a curve leaving the surface after the shortening, a curved
+                // triangle that cannot be mapped) goes to it too.
+                let sites: Vec<unsimplify::Site> =
+                    f.faces.iter().map(|&g| unsimplify::Site::Face(g)).collect();
+                let r = unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
+                if let Some((m, h, how)) = r {
+                    progress(&format!(
+                        "embed: failed ({}; at base faces {:?}); {how}; embedding again",
+                        f.what, f.faces
+                    ));
+                    base = m;
+                    hierarchy = h;
+                    prev = None;
+                    continue;
                 }
             }
         }
@@ -346,29 +348,13 @@ fn fit_once(
         // An embedding whose map folds (or whose curved triangle is no disk): S_T's own
         // triangles kept there, the rest simplified again (`unsimplify`, SPEC `AF-unsimplify`).
         if !unusable_at.is_empty() {
-            restore.add(pos.len(), refined.iter().copied());
-            let n_before = restore.kept;
             let sites: Vec<unsimplify::Site> = unusable_at
                 .iter()
                 .map(|&f| unsimplify::Site::Face(f))
                 .collect();
             let key = face_key(&base);
-            if let Some((m, h)) =
-                unsimplify::restore(k, &base, &sites, &sopts, &mut restore, |m| {
-                    let km = face_key(m);
-                    km == key || failed_at.iter().any(|(x, _)| *x == km)
-                })
-            {
-                progress(&format!(
-                    "embed: the embedding's parameters are unusable at base faces {:?}; S_T's own triangles kept there (AF-unsimplify: {} more vertices of S_T kept as base vertices, {} in all, ring {}), simplified again: {} base vertices; embedding again",
-                    unusable_at,
-                    restore.kept - n_before,
-                    restore.kept,
-                    restore.rings.last().copied().unwrap_or(0),
-                    m.base_vertices().len()
-                ));
-                // Not embedded again: the result would be the same.
-                failed_at.push((
+            // Not embedded again: the result would be the same.
+            failed_at.push((
                     key,
                     embedded::Failure {
                         what: format!(
@@ -377,8 +363,13 @@ fn fit_once(
                         faces: unusable_at.clone(),
                         edge: None,
                         blocked: Vec::new(),
-                        gave_up: None,
-                    },
+                    gave_up: None,
+                },
+            ));
+            let r = unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
+            if let Some((m, h, how)) = r {
+                progress(&format!(
+                    "embed: the embedding's parameters are unusable at base faces {unusable_at:?}; {how}; embedding again"
                 ));
                 base = m;
                 hierarchy = h;
@@ -482,6 +473,35 @@ fn fit_once(
             });
         }
     }
+}
+
+/// One round of the fallback (`unsimplify`) at `sites`: the vertices the refinement inserted
+/// and the sites' neighbourhood kept, S_T simplified again; the new base mesh (never embedded
+/// before), its hierarchy and what was done, or None when every vertex is kept already.
+fn unsimplify_round(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    sites: &[unsimplify::Site],
+    sopts: &SimplifyOptions,
+    restore: &mut unsimplify::Restore,
+    refined: &[u32],
+    failed_at: &[(Vec<[u32; 3]>, embedded::Failure)],
+) -> Option<(BaseMesh, simplify::Hierarchy, String)> {
+    let n = base.positions().len();
+    restore.add(n, refined.iter().copied());
+    let before = restore.kept;
+    let (m, h) = unsimplify::restore(k, base, sites, sopts, restore, |m| {
+        let key = face_key(m);
+        failed_at.iter().any(|(x, _)| *x == key)
+    })?;
+    let how = format!(
+        "S_T's own triangles kept there (AF-unsimplify: {} more vertices of S_T kept as base vertices, {} in all, ring {}), simplified again: {} base vertices",
+        restore.kept - before,
+        restore.kept,
+        restore.rings.last().copied().unwrap_or(0),
+        m.base_vertices().len()
+    );
+    Some((m, h, how))
 }
 
 /// The walk's change at every blocked edge still in the base mesh: what was done, and the first
