@@ -1,9 +1,9 @@
 //! A fit: its options, its result with the rounds that reached it, why one fails, and the
 //! errors it is measured by (SPEC `AF-epsilon`).
 
-use super::base::BaseMesh;
+use super::base::{BaseMesh, RemovalLimits};
 use super::fitted::{BaseSurface, Fitted, SurfaceParam};
-use super::simplify::Hierarchy;
+use super::simplify::{Hierarchy, SimplifyOptions};
 use super::{embedded, local, refine, unblock, unsimplify};
 use crate::surface::sigma_v::{SigmaVError, SigmaVPps};
 use rayon::prelude::*;
@@ -37,6 +37,23 @@ impl FitOptions {
             degree: crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
             max_degree: 12,
             max_rounds: 40,
+        }
+    }
+}
+
+impl FitOptions {
+    /// The simplification's options of the fit (its removal limits are the AC·CB walk's and
+    /// the fallback's too).
+    pub fn simplify_options(&self) -> SimplifyOptions {
+        SimplifyOptions {
+            limits: RemovalLimits {
+                max_deviation: self.deviation_ratio * self.epsilon,
+                min_normal_cos: 0.5,
+                min_quality: 0.1,
+                max_degree: self.max_degree,
+            },
+            min_vertices: 4,
+            max_levels: 200,
         }
     }
 }

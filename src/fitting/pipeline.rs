@@ -65,16 +65,7 @@ fn fit_once(
 ) -> Result<Fit, FitError> {
     let t0 = std::time::Instant::now();
     let mut base = BaseMesh::new(k);
-    let sopts = SimplifyOptions {
-        limits: RemovalLimits {
-            max_deviation: opts.deviation_ratio * opts.epsilon,
-            min_normal_cos: 0.5,
-            min_quality: 0.1,
-            max_degree: opts.max_degree,
-        },
-        min_vertices: 4,
-        max_levels: 200,
-    };
+    let sopts = opts.simplify_options();
     let mut hierarchy = simplify::simplify(&mut base, k, &sopts, |lvl, n| {
         progress(&format!("simplify: level {lvl}, {n} base vertices"))
     });

@@ -39,6 +39,8 @@
 use super::base::BaseMesh;
 use super::simplify::{simplify_keeping, Hierarchy, SimplifyOptions};
 use crate::mesh::{SimplicialSurface, VertexId};
+use crate::report::{CheckResult, Witness};
+use serde_json::json;
 
 /// Rings of growth before every vertex of S_T is kept.
 pub const MAX_RING: usize = 8;
@@ -53,6 +55,9 @@ pub struct Restore {
     pub kept: usize,
     /// The ring of each round (`MAX_RING + 1`: every vertex kept).
     pub rings: Vec<usize>,
+    /// The base mesh the last round returned, before the repair and the refinement change it
+    /// (their flips may take an edge of S_T away again): what [`check_restored`] is run on.
+    pub restored: Option<BaseMesh>,
 }
 
 impl Restore {
@@ -186,8 +191,68 @@ pub fn restore(
         state.rounds += 1;
         state.rings.push(ring);
         if !tried(&m) {
+            state.restored = Some(m.clone());
             return Some((m, h));
         }
         ring += 1;
     }
+}
+
+/// SPEC `AF-unsimplify`: every vertex of S_T the fallback keeps is a base vertex, and every
+/// triangle of S_T with three kept corners is a base face (same orientation) in which no vertex
+/// of S_T is parametrized — the part of S_T restored as it is, whose base edges are edges of
+/// S_T. Nothing kept is nothing examined (skipped).
+pub fn check_restored(k: &SimplicialSurface, base: &BaseMesh, keep: &[bool]) -> CheckResult {
+    let mut r = CheckResult::new(
+        "AF-unsimplify",
+        "every vertex of S_T the fallback keeps is a base vertex and every triangle of S_T with three kept corners is a base face with no vertex of S_T in it",
+    );
+    let kept = |x: u32| keep.get(x as usize).copied().unwrap_or(false);
+    for x in (0..keep.len() as u32).filter(|&x| kept(x)) {
+        r.examined += 1;
+        if !base.is_base(x) {
+            r.offend(|| {
+                Witness::new(
+                    format!("kept vertex {x} of S_T is not a base vertex"),
+                    json!({"vertex": x}),
+                )
+            });
+        }
+    }
+    let mut restored = 0u64;
+    for f in k.faces() {
+        let c = k.face(f).map(|v| v.0);
+        if !c.iter().all(|&x| kept(x)) {
+            continue;
+        }
+        r.examined += 1;
+        restored += 1;
+        let slot = base
+            .face_of_edge(c[0], c[1])
+            .filter(|&g| base.face(g).is_some_and(|t| t.contains(&c[2])));
+        match slot {
+            Some(g) if base.members(g).is_empty() => {}
+            Some(g) => r.offend(|| {
+                Witness::new(
+                    format!(
+                        "triangle {} {c:?} of S_T is base face {g}, with {} vertices of S_T in it",
+                        f.0,
+                        base.members(g).len()
+                    ),
+                    json!({"triangle": f.0, "face": g, "members": base.members(g)}),
+                )
+            }),
+            None => r.offend(|| {
+                Witness::new(
+                    format!("triangle {} {c:?} of S_T has three kept corners and is no base face", f.0),
+                    json!({"triangle": f.0, "corners": c}),
+                )
+            }),
+        }
+    }
+    r.note = format!(
+        "{} vertices of S_T kept, {restored} triangles of S_T with three kept corners",
+        keep.iter().filter(|&&b| b).count()
+    );
+    r
 }
