@@ -222,7 +222,8 @@ fn fit_once(
                     .iter()
                     .map(|&(a, b)| unsimplify::Site::Edge(a, b))
                     .collect();
-                let r = unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
+                let r =
+                    unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
                 if let Some((m, h, how)) = r {
                     progress(&format!(
                         "embed: failed ({}; {} base edges without a curve){}; {how}; embedding again",
@@ -255,7 +256,8 @@ fn fit_once(
                 // triangle that cannot be mapped) goes to it too.
                 let sites: Vec<unsimplify::Site> =
                     f.faces.iter().map(|&g| unsimplify::Site::Face(g)).collect();
-                let r = unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
+                let r =
+                    unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
                 if let Some((m, h, how)) = r {
                     progress(&format!(
                         "embed: failed ({}; at base faces {:?}); {how}; embedding again",
@@ -346,14 +348,14 @@ fn fit_once(
             let key = face_key(&base);
             // Not embedded again: the result would be the same.
             failed_at.push((
-                    key,
-                    embedded::Failure {
-                        what: format!(
-                            "the embedding's parameters are unusable at base faces {unusable_at:?}"
-                        ),
-                        faces: unusable_at.clone(),
-                        edge: None,
-                        blocked: Vec::new(),
+                key,
+                embedded::Failure {
+                    what: format!(
+                        "the embedding's parameters are unusable at base faces {unusable_at:?}"
+                    ),
+                    faces: unusable_at.clone(),
+                    edge: None,
+                    blocked: Vec::new(),
                     gave_up: None,
                 },
             ));

@@ -244,7 +244,10 @@ pub fn check_restored(k: &SimplicialSurface, base: &BaseMesh, keep: &[bool]) -> 
             }),
             None => r.offend(|| {
                 Witness::new(
-                    format!("triangle {} {c:?} of S_T has three kept corners and is no base face", f.0),
+                    format!(
+                        "triangle {} {c:?} of S_T has three kept corners and is no base face",
+                        f.0
+                    ),
                     json!({"triangle": f.0, "corners": c}),
                 )
             }),

@@ -47,7 +47,10 @@ fn edges_embedded_as_themselves(
             if u < w && st.contains(&(u, w)) {
                 let (curve, _) = e.emb.curve(u, w).expect("the base edge has a curve");
                 assert_eq!(curve.nodes.len(), 2, "{u}-{w}: the edge of S_T itself");
-                assert!(curve.nodes.contains(&Node::Vertex(u)) && curve.nodes.contains(&Node::Vertex(w)));
+                assert!(
+                    curve.nodes.contains(&Node::Vertex(u))
+                        && curve.nodes.contains(&Node::Vertex(w))
+                );
                 n += 1;
             }
         }
@@ -182,7 +185,11 @@ fn af_unsimplify_ends_at_s_t_itself_with_every_check_holding() {
     )
     .expect("S_T itself is the last round");
     // Each round tried grows the ring (at most to every vertex kept, past MAX_RING).
-    assert!(state.rings.windows(2).all(|w| w[0] < w[1]), "{:?}", state.rings);
+    assert!(
+        state.rings.windows(2).all(|w| w[0] < w[1]),
+        "{:?}",
+        state.rings
+    );
     assert!(state.rings.last().is_some_and(|&r| r <= MAX_RING + 1));
     assert_eq!(state.kept, k.num_vertices());
     let mut faces: Vec<[u32; 3]> = m.faces().map(|(_, c)| c).collect();
