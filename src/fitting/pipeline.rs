@@ -271,9 +271,11 @@ fn fit_once(
             }
         }
         let mut all_hold = false;
-        // The base faces the checks that make an embedding unusable name (the fallback's
-        // sites when it is).
-        let mut unusable_at: Vec<u32> = Vec::new();
+        // Where the checks that make an embedding unusable fail (base faces named by their
+        // witnesses), and, once the fallback has run, where any check of the embedding fails
+        // (the base edges of the curves named): the fallback's sites.
+        let mut check_sites: Vec<unsimplify::Site> = Vec::new();
+        let mut check_failed: Vec<String> = Vec::new();
         let usable = match &emb {
             Ok(e) => {
                 let checks = checked
@@ -288,18 +290,23 @@ fn fit_once(
                     (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
                 });
                 all_hold = bad.is_empty();
-                if !usable {
-                    unusable_at = checks
-                        .iter()
-                        .filter(|r| {
-                            (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
-                        })
-                        .flat_map(|r| r.witnesses.iter())
-                        .filter_map(|w| w.data.get("face").and_then(|f| f.as_u64()))
-                        .map(|f| f as u32)
-                        .collect();
-                    unusable_at.sort_unstable();
-                    unusable_at.dedup();
+                if !usable || (restore.active() && !all_hold) {
+                    for r in checks.iter().filter(|r| r.failed()) {
+                        for w in &r.witnesses {
+                            if let Some(f) = w.data.get("face").and_then(|f| f.as_u64()) {
+                                check_sites.push(unsimplify::Site::Face(f as u32));
+                            } else if let Some(c) = w
+                                .data
+                                .get("curve")
+                                .and_then(|c| c.as_u64())
+                                .and_then(|c| e.emb.curves.get(c as usize))
+                            {
+                                check_sites.push(unsimplify::Site::Edge(c.a, c.b));
+                            }
+                        }
+                        check_failed.push(r.id.clone());
+                    }
+                    check_sites.dedup();
                 }
                 let how = match &local_stats {
                     Some(st) => format!(
@@ -338,32 +345,39 @@ fn fit_once(
                 false
             }
         };
-        // An embedding whose map folds (or whose curved triangle is no disk): S_T's own
-        // triangles kept there, the rest simplified again (`unsimplify`, SPEC `AF-unsimplify`).
-        if !unusable_at.is_empty() {
-            let sites: Vec<unsimplify::Site> = unusable_at
-                .iter()
-                .map(|&f| unsimplify::Site::Face(f))
-                .collect();
+        // An embedding whose map folds (or whose curved triangle is no disk), or, once the
+        // fallback has run, any check of the embedding failing: S_T's own triangles kept
+        // there, the rest simplified again (`unsimplify`, SPEC `AF-unsimplify`).
+        if !check_sites.is_empty() {
             let key = face_key(&base);
+            let at: Vec<String> = check_sites.iter().map(|x| x.to_string()).collect();
+            let what = format!(
+                "the embedding fails {} at {}",
+                check_failed.join(", "),
+                at.join(", ")
+            );
             // Not embedded again: the result would be the same.
             failed_at.push((
                 key,
                 embedded::Failure {
-                    what: format!(
-                        "the embedding's parameters are unusable at base faces {unusable_at:?}"
-                    ),
-                    faces: unusable_at.clone(),
+                    what: what.clone(),
+                    faces: Vec::new(),
                     edge: None,
                     blocked: Vec::new(),
                     gave_up: None,
                 },
             ));
-            let r = unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
+            let r = unsimplify_round(
+                k,
+                &base,
+                &check_sites,
+                &sopts,
+                &mut restore,
+                &refined,
+                &failed_at,
+            );
             if let Some((m, h, how)) = r {
-                progress(&format!(
-                    "embed: the embedding's parameters are unusable at base faces {unusable_at:?}; {how}; embedding again"
-                ));
+                progress(&format!("embed: {what}; {how}; embedding again"));
                 base = m;
                 hierarchy = h;
                 prev = None;

@@ -100,6 +100,15 @@ pub enum Site {
     Face(u32),
 }
 
+impl std::fmt::Display for Site {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Site::Edge(a, b) => write!(f, "base edge {a}-{b}"),
+            Site::Face(g) => write!(f, "base face {g}"),
+        }
+    }
+}
+
 /// The neighbourhood of a site at `ring` (module doc; a face's ring 0 is its corners and the
 /// vertices of S_T in it, ring r ≥ 1 starts from the faces around its corners), as vertices of
 /// S_T.
