@@ -35,6 +35,13 @@
 //! a vertex of S_T not kept yet and gives a base mesh never embedded; past [`MAX_RING`] every
 //! vertex is kept. The vertices the refinement inserted are kept too (so a later round does not
 //! lose them).
+//!
+//! **When** (`super::fit_surface`): where the AC·CB walk cannot finish (it gives up, or one
+//! tracing leaves more blocked edges than it has changes left), where an embedding's parameters
+//! are unusable, and, once the fallback has run, at every later failure of the embedding: a
+//! failure at base faces without a blocked edge, and a failing `AF-geodesic-*` check (the base
+//! edges of the curves its witnesses name are the sites). Meshes that need none of this are
+//! untouched.
 
 use super::base::BaseMesh;
 use super::simplify::{simplify_keeping, Hierarchy, SimplifyOptions};
