@@ -327,6 +327,11 @@ pub fn run_fit_checks(k: &SimplicialSurface, fit: &Fit, seed: u64) -> Vec<CheckR
         }
         Err(_) => out.push(check_param_orientation(k, &fit.base)),
     }
+    // Where the fallback ran, the part of S_T it restored (SPEC `AF-unsimplify`), on the base
+    // mesh it returned last.
+    if let Some(b) = &fit.restore.restored {
+        out.push(super::unsimplify::check_restored(k, b, fit.restore.keep()));
+    }
     out.extend([
         check_fit_rank(&fit.fitted.corners, fit.fitted.pps.degree),
         check_epsilon(

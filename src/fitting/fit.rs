@@ -1,10 +1,10 @@
 //! A fit: its options, its result with the rounds that reached it, why one fails, and the
 //! errors it is measured by (SPEC `AF-epsilon`).
 
-use super::base::BaseMesh;
+use super::base::{BaseMesh, RemovalLimits};
 use super::fitted::{BaseSurface, Fitted, SurfaceParam};
-use super::simplify::Hierarchy;
-use super::{embedded, local, refine, unblock};
+use super::simplify::{Hierarchy, SimplifyOptions};
+use super::{embedded, local, refine, unblock, unsimplify};
 use crate::surface::sigma_v::{SigmaVError, SigmaVPps};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -37,6 +37,23 @@ impl FitOptions {
             degree: crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
             max_degree: 12,
             max_rounds: 40,
+        }
+    }
+}
+
+impl FitOptions {
+    /// The simplification's options of the fit (its removal limits are the AC·CB walk's and
+    /// the fallback's too).
+    pub fn simplify_options(&self) -> SimplifyOptions {
+        SimplifyOptions {
+            limits: RemovalLimits {
+                max_deviation: self.deviation_ratio * self.epsilon,
+                min_normal_cos: 0.5,
+                min_quality: 0.1,
+                max_degree: self.max_degree,
+            },
+            min_vertices: 4,
+            max_levels: 200,
         }
     }
 }
@@ -125,6 +142,9 @@ pub struct Fit {
     pub rounds: Vec<Round>,
     /// The base-mesh changes where a base edge had no curve (the AC·CB rule, `unblock`).
     pub unblock: unblock::Walk,
+    /// The fallback where the walk could not finish: the vertices of S_T kept as in S_T and the
+    /// simplifications run again (`unsimplify`, SPEC `AF-unsimplify`; no round when unused).
+    pub restore: unsimplify::Restore,
 }
 
 /// A bound on |fl(eval) − eval| for the fitted PPS: the operation count of

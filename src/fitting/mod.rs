@@ -38,6 +38,7 @@ pub mod shorten;
 pub mod simplify;
 pub mod straighten;
 pub mod unblock;
+pub mod unsimplify;
 
 pub use fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round};
 pub use pipeline::fit_surface;

@@ -5,7 +5,9 @@ use super::base::{BaseMesh, RemovalLimits};
 use super::fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round};
 use super::fitted::{BaseSurface, BaseSurfaceError};
 use super::simplify::SimplifyOptions;
-use super::{checks, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock};
+use super::{
+    checks, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock, unsimplify,
+};
 use crate::mesh::SimplicialSurface;
 
 fn percentile(v: &[f64], q: f64) -> f64 {
@@ -63,17 +65,8 @@ fn fit_once(
 ) -> Result<Fit, FitError> {
     let t0 = std::time::Instant::now();
     let mut base = BaseMesh::new(k);
-    let sopts = SimplifyOptions {
-        limits: RemovalLimits {
-            max_deviation: opts.deviation_ratio * opts.epsilon,
-            min_normal_cos: 0.5,
-            min_quality: 0.1,
-            max_degree: opts.max_degree,
-        },
-        min_vertices: 4,
-        max_levels: 200,
-    };
-    let hierarchy = simplify::simplify(&mut base, k, &sopts, |lvl, n| {
+    let sopts = opts.simplify_options();
+    let mut hierarchy = simplify::simplify(&mut base, k, &sopts, |lvl, n| {
         progress(&format!("simplify: level {lvl}, {n} base vertices"))
     });
     progress(&format!(
@@ -88,6 +81,10 @@ fn fit_once(
     let mut repairs = 0;
     let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
     let mut walk = unblock::Walk::default();
+    // The fallback where the walk cannot finish (`unsimplify`), and the vertices the refinement
+    // made base vertices (kept by it).
+    let mut restore = unsimplify::Restore::default();
+    let mut refined: Vec<u32> = Vec::new();
     // The last embedding whose every check held, kept for the next round's local update.
     let mut prev: Option<local::Previous> = None;
     loop {
@@ -180,30 +177,66 @@ fn fit_once(
                 } else {
                     f.blocked.clone()
                 };
-                let (before, walk_before) = (base.clone(), walk.clone());
-                let (mut done, mut gave_up) =
-                    unblock_all(&mut base, &mut walk, &blocked, &sopts.limits, &failed_at);
-                // All the blocked edges are changed before embedding again (each embedding
-                // costs the whole of S_T); when the validator refuses the result, only the
-                // first blocked edge is changed, as one at a time did before.
-                if done.len() > 1 && BaseSurface::new(&base).is_err() {
-                    base = before;
-                    walk = walk_before;
-                    (done, gave_up) = unblock_all(
-                        &mut base,
-                        &mut walk,
-                        &blocked[..1],
-                        &sopts.limits,
-                        &failed_at,
-                    );
+                // The walk while it can finish: not after the fallback has run, and not with
+                // more blocked edges than changes left (one change per round at worst).
+                let mut gave_up = None;
+                if !restore.active()
+                    && blocked.len() <= unblock::MAX_CHANGES.saturating_sub(walk.changes)
+                {
+                    let (before, walk_before) = (base.clone(), walk.clone());
+                    let done;
+                    (done, gave_up) =
+                        unblock_all(&mut base, &mut walk, &blocked, &sopts.limits, &failed_at);
+                    // All the blocked edges are changed before embedding again (each
+                    // embedding costs the whole of S_T); when the validator refuses the
+                    // result, only the first blocked edge is changed, as one at a time did
+                    // before.
+                    let done = if done.len() > 1 && BaseSurface::new(&base).is_err() {
+                        base = before;
+                        walk = walk_before;
+                        let done;
+                        (done, gave_up) = unblock_all(
+                            &mut base,
+                            &mut walk,
+                            &blocked[..1],
+                            &sopts.limits,
+                            &failed_at,
+                        );
+                        done
+                    } else {
+                        done
+                    };
+                    if !done.is_empty() {
+                        progress(&format!(
+                            "embed: failed ({}; {} base edges without a curve); {}; embedding again",
+                            f.what,
+                            f.blocked.len().max(1),
+                            done.join("; ")
+                        ));
+                        continue;
+                    }
                 }
-                if !done.is_empty() {
+                // The fallback (`unsimplify`, SPEC `AF-unsimplify`): S_T's own triangles
+                // kept around the blocked edges, the rest simplified again.
+                let sites: Vec<unsimplify::Site> = blocked
+                    .iter()
+                    .map(|&(a, b)| unsimplify::Site::Edge(a, b))
+                    .collect();
+                let r =
+                    unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
+                if let Some((m, h, how)) = r {
                     progress(&format!(
-                        "embed: failed ({}; {} base edges without a curve); {}; embedding again",
+                        "embed: failed ({}; {} base edges without a curve){}; {how}; embedding again",
                         f.what,
-                        f.blocked.len().max(1),
-                        done.join("; ")
+                        blocked.len(),
+                        match &gave_up {
+                            Some(g) => format!("; {g}"),
+                            None => String::new(),
+                        },
                     ));
+                    base = m;
+                    hierarchy = h;
+                    prev = None;
                     continue;
                 }
                 if let Some(g) = gave_up {
@@ -217,9 +250,32 @@ fn fit_once(
                     }
                     emb = Err(f);
                 }
+            } else if new && f.edge.is_none() && !f.faces.is_empty() && restore.active() {
+                // Once the fallback has run, an embedding that fails at base faces without a
+                // blocked edge (a curve leaving the surface after the shortening, a curved
+                // triangle that cannot be mapped) goes to it too.
+                let sites: Vec<unsimplify::Site> =
+                    f.faces.iter().map(|&g| unsimplify::Site::Face(g)).collect();
+                let r =
+                    unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
+                if let Some((m, h, how)) = r {
+                    progress(&format!(
+                        "embed: failed ({}; at base faces {:?}); {how}; embedding again",
+                        f.what, f.faces
+                    ));
+                    base = m;
+                    hierarchy = h;
+                    prev = None;
+                    continue;
+                }
             }
         }
         let mut all_hold = false;
+        // Where the checks that make an embedding unusable fail (base faces named by their
+        // witnesses), and, once the fallback has run, where any check of the embedding fails
+        // (the base edges of the curves named): the fallback's sites.
+        let mut check_sites: Vec<unsimplify::Site> = Vec::new();
+        let mut check_failed: Vec<String> = Vec::new();
         let usable = match &emb {
             Ok(e) => {
                 let checks = checked
@@ -234,6 +290,24 @@ fn fit_once(
                     (r.id == "AF-param-bijective" || r.id == "AF-curved-disk") && r.failed()
                 });
                 all_hold = bad.is_empty();
+                if !usable || (restore.active() && !all_hold) {
+                    for r in checks.iter().filter(|r| r.failed()) {
+                        for w in &r.witnesses {
+                            if let Some(f) = w.data.get("face").and_then(|f| f.as_u64()) {
+                                check_sites.push(unsimplify::Site::Face(f as u32));
+                            } else if let Some(c) = w
+                                .data
+                                .get("curve")
+                                .and_then(|c| c.as_u64())
+                                .and_then(|c| e.emb.curves.get(c as usize))
+                            {
+                                check_sites.push(unsimplify::Site::Edge(c.a, c.b));
+                            }
+                        }
+                        check_failed.push(r.id.clone());
+                    }
+                    check_sites.dedup();
+                }
                 let how = match &local_stats {
                     Some(st) => format!(
                         "local update: {} of {} curves kept, {} of {} curved triangles' maps kept; ",
@@ -271,6 +345,45 @@ fn fit_once(
                 false
             }
         };
+        // An embedding whose map folds (or whose curved triangle is no disk), or, once the
+        // fallback has run, any check of the embedding failing: S_T's own triangles kept
+        // there, the rest simplified again (`unsimplify`, SPEC `AF-unsimplify`).
+        if !check_sites.is_empty() {
+            let key = face_key(&base);
+            let at: Vec<String> = check_sites.iter().map(|x| x.to_string()).collect();
+            let what = format!(
+                "the embedding fails {} at {}",
+                check_failed.join(", "),
+                at.join(", ")
+            );
+            // Not embedded again: the result would be the same.
+            failed_at.push((
+                key,
+                embedded::Failure {
+                    what: what.clone(),
+                    faces: Vec::new(),
+                    edge: None,
+                    blocked: Vec::new(),
+                    gave_up: None,
+                },
+            ));
+            let r = unsimplify_round(
+                k,
+                &base,
+                &check_sites,
+                &sopts,
+                &mut restore,
+                &refined,
+                &failed_at,
+            );
+            if let Some((m, h, how)) = r {
+                progress(&format!("embed: {what}; {how}; embedding again"));
+                base = m;
+                hierarchy = h;
+                prev = None;
+                continue;
+            }
+        }
         let params = match &emb {
             Ok(e) if usable => surface.params_of(&base, &e.params),
             _ => surface.params(&base),
@@ -332,6 +445,7 @@ fn fit_once(
                 repairs,
                 rounds,
                 unblock: walk,
+                restore,
             });
         }
         if rounds.len() + 1 >= opts.max_rounds {
@@ -349,8 +463,8 @@ fn fit_once(
         };
         let mut st = refine::RefineStats::default();
         for x in refine::choose(&base, &errors, &offenders) {
-            if !base.is_base(x) {
-                refine::insert(&mut base, x, &mut st);
+            if !base.is_base(x) && refine::insert(&mut base, x, &mut st) {
+                refined.push(x);
             }
         }
         round.refine = Some(st);
@@ -366,6 +480,35 @@ fn fit_once(
             });
         }
     }
+}
+
+/// One round of the fallback (`unsimplify`) at `sites`: the vertices the refinement inserted
+/// and the sites' neighbourhood kept, S_T simplified again; the new base mesh (never embedded
+/// before), its hierarchy and what was done, or None when every vertex is kept already.
+fn unsimplify_round(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    sites: &[unsimplify::Site],
+    sopts: &SimplifyOptions,
+    restore: &mut unsimplify::Restore,
+    refined: &[u32],
+    failed_at: &[(Vec<[u32; 3]>, embedded::Failure)],
+) -> Option<(BaseMesh, simplify::Hierarchy, String)> {
+    let n = base.positions().len();
+    restore.add(n, refined.iter().copied());
+    let before = restore.kept;
+    let (m, h) = unsimplify::restore(k, base, sites, sopts, restore, |m| {
+        let key = face_key(m);
+        failed_at.iter().any(|(x, _)| *x == key)
+    })?;
+    let how = format!(
+        "S_T's own triangles kept there (AF-unsimplify: {} more vertices of S_T kept as base vertices, {} in all, ring {}), simplified again: {} base vertices",
+        restore.kept - before,
+        restore.kept,
+        restore.rings.last().copied().unwrap_or(0),
+        m.base_vertices().len()
+    );
+    Some((m, h, how))
 }
 
 /// The walk's change at every blocked edge still in the base mesh: what was done, and the first

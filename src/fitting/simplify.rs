@@ -96,6 +96,20 @@ pub fn simplify(
     base: &mut BaseMesh,
     k: &SimplicialSurface,
     opts: &SimplifyOptions,
+    progress: impl FnMut(usize, usize),
+) -> Hierarchy {
+    simplify_keeping(base, k, opts, &[], progress)
+}
+
+/// [`simplify`] with the vertices x of S_T with `keep[x]` never removed (ids past the slice's
+/// end are not kept). A triangle of S_T whose three corners are kept stays a base face with no
+/// vertex of S_T parametrized in it: a removal only replaces the faces around the removed
+/// vertex (`super::unsimplify`).
+pub fn simplify_keeping(
+    base: &mut BaseMesh,
+    k: &SimplicialSurface,
+    opts: &SimplifyOptions,
+    keep: &[bool],
     mut progress: impl FnMut(usize, usize),
 ) -> Hierarchy {
     let n = base.positions().len();
@@ -116,6 +130,7 @@ pub fn simplify(
         let mut cand: Vec<(f64, u32)> = base
             .base_vertices()
             .into_iter()
+            .filter(|&v| !keep.get(v as usize).copied().unwrap_or(false))
             .filter_map(|v| {
                 let (us, _) = base.ring(v)?;
                 let pos = base.positions();

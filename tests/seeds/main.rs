@@ -8,6 +8,7 @@ mod common;
 mod fitting;
 mod fitting_local;
 mod fitting_unblock;
+mod fitting_unsimplify;
 mod msplines;
 mod sdiff_3d;
 mod sdiff_sec6;
