@@ -166,10 +166,7 @@ fn cert_f64_rounding_nbhd_and_outside_bounds_hold_against_mp256() {
     }
     // Not vacuous: the band points exercise the bounds, the sheets occur (m_u ≥ 11).
     assert!(band_n >= 200 && off_n >= 1800, "{band_n} {off_n}");
-    assert!(
-        sheet_n > 20 && near_n > 5,
-        "sheets {sheet_n}, near {near_n}"
-    );
+    assert!(sheet_n > 20, "sheets {sheet_n}");
     assert!(
         phi_ratio > 1e-4 && inner_ratio > 1e-5,
         "{phi_ratio:e} {inner_ratio:e}"
@@ -184,13 +181,13 @@ fn cert_f64_rounding_nbhd_and_outside_bounds_hold_against_mp256() {
 
 #[test]
 fn cert_f64_rounding_planted_map_perturbed_just_outside_omega_uw_exceeds_the_bound() {
-    /// h off by 1e−12 in f64 only where h's argument b has |b − (1,0)|² ≥ 3/4 (q ∉ Ω_w:
-    /// outside Ω_uw); the paper's h elsewhere.
+    /// h off by 1e−12 in f64 only where h's argument b lies outside the lens E (|b|² ≥ 3/4:
+    /// p ∉ Ω_u, or |b − (1,0)|² ≥ 3/4: q ∉ Ω_w, both outside Ω_uw); the paper's h elsewhere.
     struct OffOutside;
     impl Ppm<f64> for OffOutside {
         fn h(&self, p: &P2<f64>) -> P2<f64> {
             let q = maps::h(p);
-            if q.norm2() >= 0.75 {
+            if q.norm2() >= 0.75 || p.norm2() >= 0.75 {
                 P2::new(q.x + 1e-12, q.y)
             } else {
                 q
@@ -208,9 +205,9 @@ fn cert_f64_rounding_planted_map_perturbed_just_outside_omega_uw_exceeds_the_bou
         let qm = Paper.g_uw_formula(e, &mp(*p)).expect("mp φ");
         caught += (dist(&qf, &qm) > phi) as usize;
     }
-    // Every band point outside Ω_uw by q ∉ Ω_w sees the fault; the bound is exceeded there.
+    // Every band point sees the fault; the bound is exceeded there.
     assert!(
-        pts.len() >= 40 && caught * 2 >= pts.len(),
+        pts.len() >= 40 && caught == pts.len(),
         "{caught} of {}",
         pts.len()
     );
