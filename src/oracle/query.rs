@@ -278,7 +278,7 @@ impl Request {
                     let c = g.edge_config(VertexId(*u), VertexId(*w)).ok()?;
                     *bounds.phi.get(&(c.m_u, c.m_w))?
                 };
-                (bound, "proven |f64 − exact| of φ_wu for p in the boxes covering Ω_uw, any labels (certificate, SPEC CERT-f64-rounding)".to_string())
+                (bound, "proven |f64 − exact| of φ_wu for p in the boxes covering the closed 1e−9-neighbourhood of Ω_uw, any labels (certificate, SPEC CERT-f64-rounding)".to_string())
             }
             Request::G { v, p } | Request::GInv { v, p } => {
                 let gc = bounds.g.get(&g.degree(VertexId(*v)).ok()?)?;
