@@ -368,3 +368,70 @@ pub(super) fn winding0_box(du: &Deg, b: &PBox) -> bool {
         .iter()
         .all(|p| du.winding0(*p).is_true())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A thin polar box at angle θ, radii [r, r + 1e−15].
+    fn thin(th: f64, r: f64) -> PBox {
+        PBox {
+            th: (th, th),
+            r: (r, r + 1e-15),
+        }
+    }
+
+    /// The neighbourhood test never refuses a box within ε of Ω_uw (radially 0.5·ε beyond the
+    /// last point of Ω_uw on a ray), and the ε matters: a planted ε = 0 refuses such boxes (they
+    /// lie outside Ω_uw); boxes far from Ω_uw are refused.
+    #[test]
+    fn cert_f64_rounding_outside_nbhd_test_sound_and_planted_zero_eps_refuses() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand::rngs::StdRng::seed_from_u64(23);
+        let (mut checked, mut refused_at_zero) = (0, 0);
+        for m in [3u32, 8, 13, 32] {
+            let du = Deg::new(m);
+            let wmax = 2.0 * std::f64::consts::PI / m as f64;
+            for _ in 0..200 {
+                let th: f64 = rng.gen_range(-wmax..wmax);
+                let inside = |r: f64| member_any(&du, c(th), c(r), Domain::Literal).is_true();
+                let r0: f64 = rng.gen_range(0.1..1.0) * du.rm.inf();
+                if !inside(r0) {
+                    continue;
+                }
+                // The last point of Ω_uw on the ray (bisection on the closed form).
+                let (mut lo, mut hi) = (r0, 1.0);
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    if inside(mid) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                let b = thin(th, lo + 0.5 * F64_NBHD);
+                assert!(
+                    !meets_nbhd(&du, &b, F64_NBHD).is_false(),
+                    "m = {m}: {b:?} is within ε of Ω_uw"
+                );
+                checked += 1;
+                refused_at_zero += meets_nbhd(&du, &b, 0.0).is_false() as u32;
+            }
+            // Around the origin (|b − (1,0)| ≈ 1 there) and on the far side of the chart.
+            for b in [
+                PBox {
+                    th: (-3.0, 3.0),
+                    r: (0.0, 0.01),
+                },
+                thin(3.0, 0.5),
+            ] {
+                assert!(meets_nbhd(&du, &b, F64_NBHD).is_false(), "m = {m}: {b:?}");
+            }
+        }
+        assert!(checked > 400, "{checked}");
+        assert!(
+            refused_at_zero * 2 > checked,
+            "{refused_at_zero} of {checked}"
+        );
+    }
+}
