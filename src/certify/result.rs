@@ -259,8 +259,9 @@ pub struct F64Bound {
     /// The Lipschitz constant the statement uses (`L4.2.2(cert)`, `L4.2.3(cert)`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lipschitz: Option<f64>,
-    /// `L4.2.1(cert)`, `L4.2.2(cert)`: the claim is for the points p whose φ_xu(p) is farther
-    /// than this from ∂Ω_xw (the bound on |φ̂_xu(p) − φ_xu(p)|).
+    /// Read from older certificates only: their `L4.2.1(cert)`, `L4.2.2(cert)` claims excluded
+    /// the points p whose φ_xu(p) lies within this of ∂Ω_xw. Certificates with CERT-f64-rounding
+    /// on the ε-neighbourhood (`F64Rounding::nbhd`) have no band.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub band: Option<f64>,
     /// Membership rows: every round-trip decision the check runs is certified exact
