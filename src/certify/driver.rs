@@ -10,7 +10,7 @@ use super::model::Model;
 use super::prove_edge::{prove_hausdorff, prove_inverse, prove_nonempty};
 use super::prove_triangle::prove_triangle;
 use super::prove_vertex::{prove_lens_agreement, prove_star};
-use super::result::{F64Bound, F64Rounding, GChartRounding, Outcome, PropertyResult};
+use super::result::{F64Bound, F64Outside, F64Rounding, GChartRounding, Outcome, PropertyResult};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -379,8 +379,29 @@ fn f64_rounding_section(cert: &Certificate) -> String {
             .unwrap_or_else(|| "—".into())
     };
     let unbounded = fr.iter().filter(|f| f.phi.is_none()).count();
+    // The neighbourhood and the pass off it (absent from older certificates: no sentence).
+    let outside: Vec<&F64Outside> = fr.iter().filter_map(|f| f.outside.as_ref()).collect();
+    let off = if outside.len() == fr.len() {
+        let inner = outside
+            .iter()
+            .map(|o| o.inner)
+            .collect::<Option<Vec<f64>>>()
+            .and_then(|v| v.into_iter().reduce(crate::report::dev_max))
+            .map(|x| format!("{x:.2e}"))
+            .unwrap_or_else(|| "—".into());
+        format!(
+            " Bounds on the closed ε-neighbourhood of Ω_uw, ε = {}; on the rest of Ω_u (exact answer \"out\") the literal test's f64 answer is \"out\" unless |q|² − r_w² ∈ [0, {inner}] (max over them), boxes decided by value {}, by margin {}, by round trip {}, unresolved {}.",
+            mx(&|f| f.nbhd),
+            outside.iter().map(|o| o.by_value).sum::<u64>(),
+            outside.iter().map(|o| o.by_margin).sum::<u64>(),
+            outside.iter().map(|o| o.by_roundtrip).sum::<u64>(),
+            outside.iter().map(|o| o.unresolved).sum::<u64>(),
+        )
+    } else {
+        String::new()
+    };
     format!(
-        "\n## f64 rounding (CERT-f64-rounding)\n\n{} edge configurations; max over them: φ_wu {} (Euclidean), |p|² − r_u² {}, |q|² − r_w² {}, round-trip point {} (the literal test's tolerance ≥ {:.2e}); round trip certified exact on every box: {} (round-trip boxes {}, unresolved {}); g_v alone {}, g_v⁻¹ alone {}; configurations without a bound: {unbounded}; unresolved boxes: {} (max δ {}); boxes: {}; time {:.1} s (sum). The libm {}\n",
+        "\n## f64 rounding (CERT-f64-rounding)\n\n{} edge configurations; max over them: φ_wu {} (Euclidean), |p|² − r_u² {}, |q|² − r_w² {}, round-trip point {} (the literal test's tolerance ≥ {:.2e}); round trip certified exact on every box: {} (round-trip boxes {}, unresolved {}); g_v alone {}, g_v⁻¹ alone {}; configurations without a bound: {unbounded}; unresolved boxes: {} (max δ {}); boxes: {}; time {:.1} s (sum).{off} The libm {}\n",
         fr.len(),
         mx(&|f| f.phi),
         mx(&|f| Some(f.outer)),
@@ -476,7 +497,7 @@ fn worst_with_key<K: Ord>(v: impl IntoIterator<Item = (f64, K)>) -> Option<(f64,
 }
 
 /// The CERT-f64-props section of the summary: per property the worst bound, the worst
-/// Lipschitz constant and band, results without a bound, and the statement.
+/// Lipschitz constant, results without a bound, and the statement.
 fn f64_props_section(
     cert: &Certificate,
     by: &std::collections::BTreeMap<&str, Vec<&PropertyResult>>,
@@ -484,7 +505,7 @@ fn f64_props_section(
     if !cert.results.iter().any(|r| r.f64_bound.is_some()) {
         return String::new();
     }
-    let mut s = String::from("\n## f64 bounds of the properties (CERT-f64-props)\n\nDerived from the per-edge bounds of CERT-f64-rounding (φ(a,b) = `phi` of the edge (a, b), `outer`, `inner`, `roundtrip_exact`) and the per-degree bounds of CERT-f64-g-chart of this certificate (`certify::attach_f64_bounds`; no box evaluated again), with the Lipschitz constants ‖J(φ_ba)‖ ≤ k_a·max(1, a/6)·max(1, 6/b)/k_b on Ω_ab; u = 2⁻⁵³; same libm assumption.\n\n| property | results | without a bound | max bound (configuration) | max Lipschitz | max band | all decided |\n|---|---|---|---|---|---|---|\n");
+    let mut s = String::from("\n## f64 bounds of the properties (CERT-f64-props)\n\nDerived from the per-edge bounds of CERT-f64-rounding (φ(a,b) = `phi` of the edge (a, b) on the ε-neighbourhood of Ω_ab, `outer`, `inner`, the margin off that neighbourhood, `roundtrip_exact`) and the per-degree bounds of CERT-f64-g-chart of this certificate (`certify::attach_f64_bounds`; no box evaluated again), with the Lipschitz constants ‖J(φ_ba)‖ ≤ k_a·max(1, a/6)·max(1, 6/b)/k_b on Ω_ab; u = 2⁻⁵³; same libm assumption.\n\n| property | results | without a bound | max bound (configuration) | max Lipschitz | all decided |\n|---|---|---|---|---|---|\n");
     let e2 = |x: Option<f64>| x.map(|v| format!("{v:.2e}")).unwrap_or_else(|| "—".into());
     let opt_max = |v: Vec<Option<f64>>| -> Option<f64> {
         v.into_iter().flatten().reduce(crate::report::dev_max)
@@ -507,7 +528,7 @@ fn f64_props_section(
             .iter()
             .any(|(_, b)| b.is_some_and(|b| b.decided.is_some()));
         s.push_str(&format!(
-            "| `{p}` | {} | {without} | {} | {} | {} | {} |\n",
+            "| `{p}` | {} | {without} | {} | {} | {} |\n",
             rs.len(),
             worst
                 .map(|(v, k)| format!("{v:.2e} ({k})"))
@@ -516,9 +537,6 @@ fn f64_props_section(
                 bs.iter()
                     .map(|(_, b)| b.and_then(|b| b.lipschitz))
                     .collect()
-            )),
-            e2(opt_max(
-                bs.iter().map(|(_, b)| b.and_then(|b| b.band)).collect()
             )),
             if has_decided {
                 bs.iter()

@@ -23,8 +23,10 @@
 
 // Bounds are maxima that must keep a NaN (a NaN bound is no bound), as every deviation does.
 use super::bnb::{bnb, canon_edge, disk_box, Leaf, PBox, Settings};
+use super::f64_outside::{finish, meets_nbhd, outside_box, winding0_box};
+use super::f64_outside::{Outside, OutsideLeaf, OutsideStats, F64_NBHD};
 use super::f64_roundtrip::{roundtrip_bound, RoundTripBudget, F64_BOUND_DIAM};
-use super::interval::{c, iv, member_any, Deg, Domain};
+use super::interval::{c, iv, Deg};
 use super::result::{F64Rounding, RoundTripVerdict};
 use crate::construction::maps::Ppm;
 use crate::construction::maps::{omega_radius, rotate_frac, roundtrip_tolerance};
@@ -121,18 +123,27 @@ pub fn prove_f64_rounding_budget<L: LibmModel>(
         .norm2()
         .sub(&omega_radius::<Fe<L>>(m_u, 53).sqr())
         .err();
-    // Pass 1: d = g_w⁻¹∘h∘g_u(a) on every box meeting Ω_uw (canonical labels: both rotations
-    // are the identity), a = R_(u,w)(p) with the input rotation's error.
+    // Pass 1: d = g_w⁻¹∘h∘g_u(a) on every box meeting the ε-neighbourhood of Ω_uw (canonical
+    // labels: both rotations are the identity), a = R_(u,w)(p) with the input rotation's error;
+    // the other boxes of Ω_u go to the pass off the neighbourhood (module `f64_outside`).
     let mut leaves: Vec<(PBox, P2<Fe<L>>)> = Vec::new();
     let mut dh = ErrHull::new();
-    let st = bnb(disk_box(m_u), s.max_depth, s.budget, |b| {
-        let (th, r) = (b.ith(), b.ir());
-        if member_any(&du, th, r, Domain::Literal).is_false() {
-            return Leaf::Proven(None, None);
+    let ok = Outside::new::<L>(m_u, m_w);
+    let mut ost = OutsideStats::default();
+    let mut root = disk_box(m_u);
+    root.r.1 = (c(root.r.1) + c(F64_NBHD)).sup();
+    let st = bnb(root, s.max_depth, s.budget, |b| {
+        if meets_nbhd(&du, b, F64_NBHD).is_false() {
+            return match outside_box::<L>(&ok, b, &mut ost) {
+                OutsideLeaf::Done => Leaf::Proven(None, None),
+                OutsideLeaf::Split => Leaf::Split,
+            };
         }
-        if b.diam() > F64_BOUND_DIAM {
+        // Leaves have winding 0 certified: their points off Ω_uw are "out" by a sign alone.
+        if b.diam() > F64_BOUND_DIAM || !winding0_box(&du, b) {
             return Leaf::Split;
         }
+        let (th, r) = (b.ith(), b.ir());
         let a = P2::new(
             Fe::<L>::new(r * th.cos(), sym(eps_in)),
             Fe::new(r * th.sin(), sym(eps_in)),
@@ -179,13 +190,15 @@ pub fn prove_f64_rounding_budget<L: LibmModel>(
         delta: (st.unresolved > 0).then_some(st.delta),
         libm_ulps: L::LIBM_ULPS,
         millis: t0.elapsed().as_millis() as u64,
+        nbhd: Some(F64_NBHD),
+        outside: Some(finish(&ok, &ost, st.boxes)),
     }
 }
 
 /// The statement of CERT-f64-rounding (certificate summary).
 pub fn f64_rounding_statement() -> String {
     format!(
-        "CERT-f64-rounding: per edge configuration (m_u, m_w), for every label pair and every p in a polar box of u's chart meeting Ω_uw (the boxes cover the closure of Ω_uw; diameter ≤ {F64_BOUND_DIAM}): |φ_wu(p) evaluated in f64 by the generic maps (`construction::maps`, what the oracle runs) − φ_wu(p)| ≤ `phi`; the literal membership test (Def. 4.1.9) decides p ∈ Ω_u exactly unless ||p|² − r_u²| ≤ `outer`, q ∈ Ω_w exactly unless ||q|² − r_w²| ≤ `inner` (q = g_(w,u)⁻¹(p)), the f64 round-trip point g_(w,u)(q) errs by ≤ `roundtrip` (stage-wise: each stage's rounding, enclosed alone, times the norm of the exact Jacobian of the rest of the chain; boxes bisected within a budget, what is left counted in `roundtrip_unresolved`), and where `roundtrip_exact` holds (that bound, rounded through the comparison, below the literal test's tolerance tol on every box) the round-trip decision is exact too; g_u alone errs by ≤ `g_v` at the f64 points R_(u,w)(p), g_w⁻¹ alone by ≤ `g_v_inv` at the f64 points h(g_u(R_(u,w)(p))); outside these boxes (exactly not in Ω_uw) the f64 answer is not bounded here. Model: IEEE-754 binary64, round to nearest, + − × ÷ √ correctly rounded, {LIBM_ULPS} ulp for libm sin, cos, atan2 ({})",
+        "CERT-f64-rounding: per edge configuration (m_u, m_w), for every label pair and every p in a polar box of u's chart that may meet the closed ε-neighbourhood of Ω_uw (ε = `nbhd` = {F64_NBHD:e}, ≥ every `phi`; the boxes cover that neighbourhood; diameter ≤ {F64_BOUND_DIAM}, winding 0 certified): |φ_wu(p) evaluated in f64 by the generic maps (`construction::maps`, what the oracle runs) − φ_wu(p)| ≤ `phi`; the literal membership test (Def. 4.1.9) decides p ∈ Ω_u exactly unless ||p|² − r_u²| ≤ `outer`, q ∈ Ω_w exactly unless ||q|² − r_w²| ≤ `inner` (q = g_(w,u)⁻¹(p)), the f64 round-trip point g_(w,u)(q) errs by ≤ `roundtrip` (stage-wise: each stage's rounding, enclosed alone, times the norm of the exact Jacobian of the rest of the chain; boxes bisected within a budget, what is left counted in `roundtrip_unresolved`), and where `roundtrip_exact` holds (that bound, rounded through the comparison, below the literal test's tolerance tol on every box) the round-trip decision is exact too; g_u alone errs by ≤ `g_v` at the f64 points R_(u,w)(p), g_w⁻¹ alone by ≤ `g_v_inv` at the f64 points h(g_u(R_(u,w)(p))) (round trip, g_v, g_v_inv: on the boxes meeting Ω_uw). On the rest of Ω_u (no point within ε of Ω_uw, exact answer 'out'; `outside`) the f64 literal test answers 'out' at every f64 point unless ||p|² − r_u²| ≤ `outer` or |q|² − r_w² ∈ [0, `outside.inner`]: box by box, either the f64 |q|² − r_w² is certified > 0 (`by_value`, with a closed-form core around the origin), or the exact |q|² ≥ r_w² and its f64 error is ≤ `outside.inner` (`by_margin`), or the winding is ≠ 0 and the f64 round-trip point is certified ≥ 2·tol from p (`by_roundtrip`); `outside.unresolved` boxes left (then no `outside.inner`). Model: IEEE-754 binary64, round to nearest, + − × ÷ √ correctly rounded, {LIBM_ULPS} ulp for libm sin, cos, atan2 ({})",
         crate::numeric::rounding::LIBM_ASSUMPTION
     )
 }

@@ -20,23 +20,33 @@
 //!   max(1, 6/b)/k_b on Ω_ab, and the mean value theorem applies on every segment inside it.
 //! * `L4.2.2(cert)` (triangle u, w, x): at an `f64` point p of φ_xu⁻¹(Ω_xu ∩ Ω_xw) = Ω_ux ∩ Ω_uw
 //!   the check computes |φ̂_wu(p) − φ̂_wx(q̂)|, q̂ = φ̂_xu(p), whose exact value is 0 (the
-//!   cocycle). |q̂ − q| ≤ φ(u, x), q = φ_xu(p) ∈ Ω_xw. If q is farther than `band` = φ(u, x)
-//!   from ∂Ω_xw, the segment [q, q̂] lies in Ω_xw, so q̂ ∈ Ω_xw (CERT-f64-rounding covers the
-//!   `f64` point q̂) and |φ̂_wx(q̂) − φ_wx(q)| ≤ φ(x, w) + L(x→w)·φ(u, x); with
+//!   cocycle). |q̂ − q| ≤ φ(u, x), q = φ_xu(p) ∈ Ω_xw. CERT-f64-rounding's φ(x, w) holds on
+//!   the closed ε-neighbourhood N_ε(Ω_xw) (module `f64_outside`), and ε ≥ φ(u, x) is checked
+//!   (else no bound): the segment [q, q̂] lies in the ball of radius φ(u, x) about q, inside
+//!   N_ε(Ω_xw), where the exact chain is C¹ (every box the φ pass bounded there had `Fe`
+//!   decide Π's branch for the exact values) with ‖J(φ_wx)‖ ≤ L(x→w) (point-independent
+//!   norms), so |φ̂_wx(q̂) − φ_wx(q)| ≤ φ(x, w) + L(x→w)·φ(u, x); with
 //!   |φ̂_wu(p) − φ_wu(p)| ≤ φ(u, w) and φ_wu(p) = φ_wx(q) the exact gap of the two `f64`
 //!   points is ≤ S = φ(u, w) + φ(x, w) + L(x→w)·φ(u, x); the `f64` distance (two subtractions,
 //!   two squares, a sum, a square root) adds at most a factor 1 + 4u, and 2⁻⁵³⁰ for gradual
-//!   underflow (√ of a few 2⁻¹⁰⁷⁴).
+//!   underflow (√ of a few 2⁻¹⁰⁷⁴). A certificate written before the neighbourhood existed
+//!   gets no bound (its former claim excluded a band along ∂Ω_xw).
 //! * `L4.2.3(cert)`: for an `f64` point p of Ω_uw at distance d from the inner arc, the `f64`
 //!   radius fl(|φ̂_wu(p)|) differs from |φ_wu(p)| by ≤ φ(u, w) + 3u(1 + φ(u, w)) (|φ_wu(p)| <
 //!   r_w < 1; the radius rounds by < 2.6u relatively), and |φ_wu(p)| from r_w (its value on the
 //!   arc) by ≤ L(u→w)·d (the segment to the nearest arc point lies in Ω_uw).
 //! * Membership (`L4.2.1(cert)`, `P4.2.1(cert)`, the literal star rows and the literal side of
-//!   `D4.1.9-lens(cert)`): the `f64` literal test at an `f64` point of Ω_uw decides as the exact
-//!   one unless one of its tested quantities lies within its bound of 0, the round trip exactly
-//!   where CERT-f64-rounding says `roundtrip_exact` (`decided`); `bound` is the largest of the
-//!   `outer` and `inner` bounds of the tests the property's check runs. For `L4.2.1(cert)` the
-//!   test of q̂ ∈ Ω_xw runs at q̂, a point of Ω_xw under the `band` condition above.
+//!   `D4.1.9-lens(cert)`): the `f64` literal test at an `f64` point of Ω_u decides as the exact
+//!   one unless one of its tested quantities lies within its bound of 0: on N_ε(Ω_uw) by
+//!   `outer`, `inner` (its leaves have winding 0, so off Ω_uw the exact "out" is a sign), the
+//!   round trip exactly on Ω_uw where CERT-f64-rounding says `roundtrip_exact` (`decided`); on
+//!   the rest of Ω_u (exact answer "out") by the pass off the neighbourhood (`outside`: the
+//!   `f64` |q̂|² − r_w² certified positive, or its margin, or the `f64` round trip certified
+//!   far); `bound` is the largest of these margins of the tests the property's check runs.
+//!   For `L4.2.1(cert)` the test of q̂ ∈ Ω_xw runs at q̂ ∈ N_ε(Ω_xw): its quantities there
+//!   differ from those at q by ≤ 2.02·max(1, L(x→w))·φ(u, x) (gradients 2|z| and
+//!   2|φ_wx(z)|·L(x→w) on the segment [q, q̂], |z|, |φ_wx(z)| ≤ 1 + Lε), which `bound` adds;
+//!   if they clear it, q̂ ∈ Ω_xw and its round trip is certified too.
 //! * Lens (Sec. 6.1.3 rows, the lens side of `D4.1.9-lens(cert)`): for p ∈ Ω_v (|p| < 1) and a
 //!   label rotation, â = R̂(p) is an `f64` point of the unit square (|â| ≤ |p| + ρ < cos(π/64) + ρ < 1), so
 //!   |ĝ(â) − g(â)| ≤ G(m), and ĉ = h(ĝ(â)) (one rounded subtraction, |ĉ_x| < 3) is within
@@ -66,12 +76,12 @@ use std::collections::BTreeMap;
 /// The statement of CERT-f64-props for one property (`None`: the property has none here).
 pub fn f64_bound_statement(property: &str) -> Option<&'static str> {
     Some(match property {
-        "L4.2.2(cert)" => "for every f64 point p of φ_xu⁻¹(Ω_xu ∩ Ω_xw) whose φ_xu(p) is farther than `band` (= φ(u,x)) from ∂Ω_xw: the f64 cocycle gap |φ̂_wu(p) − φ̂_wx(φ̂_xu(p))| (exact value 0) is ≤ `bound` = (φ(u,w) + φ(x,w) + L·φ(u,x))(1 + 4u) + 2⁻⁵³⁰, L = `lipschitz` = ‖J(φ_wx)‖ on Ω_xw",
+        "L4.2.2(cert)" => "for every f64 point p of φ_xu⁻¹(Ω_xu ∩ Ω_xw) (no band: φ(x,w) holds on the ε-neighbourhood of Ω_xw, ε ≥ φ(u,x) checked, else no bound): the f64 cocycle gap |φ̂_wu(p) − φ̂_wx(φ̂_xu(p))| (exact value 0) is ≤ `bound` = (φ(u,w) + φ(x,w) + L·φ(u,x))(1 + 4u) + 2⁻⁵³⁰, L = `lipschitz` = ‖J(φ_wx)‖ on that neighbourhood",
         "L4.2.3(cert)" => "for every f64 point p of Ω_uw at distance d from the inner arc: |fl(|φ̂_wu(p)|) − r_w| ≤ `bound` + `lipschitz`·d, `bound` = φ(u,w) + 3u(1 + φ(u,w)) (r_w = |φ_wu| on the arc)",
-        "L4.2.1(cert)" => "for every f64 point p of Ω_ux ∩ Ω_uw whose φ_xu(p) is farther than `band` from ∂Ω_xw: the three f64 literal tests of the check (p ∈ Ω_ux, φ̂_xu(p) ∈ Ω_xw, p ∈ Ω_uw) answer exactly ('in') unless a tested |·|² − r² lies within `bound` of 0; round trips exact where `decided`",
+        "L4.2.1(cert)" => "for every f64 point p of Ω_ux ∩ Ω_uw (no band): the three f64 literal tests of the check (p ∈ Ω_ux, φ̂_xu(p) ∈ Ω_xw, p ∈ Ω_uw) answer exactly ('in') unless a tested |·|² − r² (at p, resp. at q = φ_xu(p)) lies within `bound` of 0: `bound` = the tests' largest margin + `lipschitz`·φ(u,x), `lipschitz` = 2.02·max(1, ‖J(φ_wx)‖) bounding the gradients of |q|² − r_x² and |φ_wx(q)|² − r_w² on the ε-neighbourhood of Ω_xw (ε ≥ φ(u,x) checked, else no bound); round trips exact where `decided`",
         "P4.2.1(cert)" => "the f64 literal test that accepted the witness point of each direction decides exactly: its tested |·|² − r² clear `bound` (their f64 errors) and the round trip is certified exact (`decided`)",
-        "D4.1.9-lens(cert)" => "for every f64 point p of Ω_u: the lens test's f64 decisions |c|² < 3/4, |c − (1,0)|² < 3/4 are exact unless those quantities lie within `bound` of 3/4, and its punctures c ≠ 0, c ≠ (1,0) unless they lie within `bound` of 0; the literal test's (any m_w ≤ M) at points of the boxes covering Ω_uw unless |·|² − r² lies within `bound` of 0, round trips exact where `decided`",
-        "C5.4-at-most-two(cert)" | "C4.2-nonadjacent-disjoint(cert)" => "for every f64 point p of Ω_x and every label k: the f64 literal test p ∈ Ω_xk (m_w = m_x) decides exactly at points of the boxes covering Ω_xk unless a tested |·|² − r² lies within `bound` of 0; round trips exact where `decided`",
+        "D4.1.9-lens(cert)" => "for every f64 point p of Ω_u: the lens test's f64 decisions |c|² < 3/4, |c − (1,0)|² < 3/4 are exact unless those quantities lie within `bound` of 3/4, and its punctures c ≠ 0, c ≠ (1,0) unless they lie within `bound` of 0; the literal test's (any m_w ≤ M) answers exactly unless |p|² − r_u² or |q|² − r_w² lies within `bound` of 0 (on Ω_uw and its ε-neighbourhood by CERT-f64-rounding's `outer`, `inner`; on the rest of Ω_u, where the exact answer is 'out', by its pass off the neighbourhood: value, margin or round trip), round trips exact on Ω_uw where `decided`",
+        "C5.4-at-most-two(cert)" | "C4.2-nonadjacent-disjoint(cert)" => "for every f64 point p of Ω_x and every label k: the f64 literal test p ∈ Ω_xk (m_w = m_x) decides exactly unless a tested |·|² − r² lies within `bound` of 0 (on all of Ω_x: the margins on Ω_xk's ε-neighbourhood and off it, CERT-f64-rounding); round trips exact on Ω_xk where `decided`",
         "C5.4-at-most-two[sec6.1.3](cert)" | "C4.2-nonadjacent-disjoint[sec6.1.3](cert)" => "for every f64 point p of Ω_x and every label k: the lens test's f64 decisions |c|² < 3/4, |c − (1,0)|² < 3/4 (c = h∘g_x∘R_(x,k)(p)) are exact unless those quantities lie within `bound` of 3/4, and its punctures unless they lie within `bound` of 0",
         "P4.2.3(cert)" => "CERT-f64-rounding: |φ̂_wu(p) − φ_wu(p)| ≤ `phi` on Ω_uw (section below)",
         _ => return None,
@@ -141,10 +151,18 @@ impl<'a> Sources<'a> {
     fn phi(&self, a: u32, b: u32) -> Option<f64> {
         self.edges.get(&(a, b)).and_then(|f| f.phi)
     }
-    /// max(outer, inner) of the edge and its round-trip verdict.
+    /// ε of the neighbourhood of Ω_ab on which φ(a, b) holds (`None`: an older certificate,
+    /// on Ω_ab only).
+    fn nbhd(&self, a: u32, b: u32) -> Option<f64> {
+        self.edges.get(&(a, b)).and_then(|f| f.nbhd)
+    }
+    /// max(outer, inner, the margin off the neighbourhood) of the edge and its round-trip
+    /// verdict: the literal test at every `f64` point of Ω_a (module docs). An older
+    /// certificate without the pass off the neighbourhood has none.
     fn margin(&self, a: u32, b: u32) -> Option<(f64, bool)> {
         let f = self.edges.get(&(a, b))?;
-        let m = crate::report::dev_max(f.outer, f.inner?);
+        let off = f.outside.as_ref()?.inner?;
+        let m = crate::report::dev_max(crate::report::dev_max(f.outer, f.inner?), off);
         m.is_finite().then_some((m, f.roundtrip_exact))
     }
 }
@@ -175,6 +193,16 @@ fn lens_margin(m: u32, g: &GChartRounding) -> Option<f64> {
     let own = e * (c(2.0) * cmax + e) + c(3.0) * u * (cmax + e).sqr();
     let b = up(own + lip * rho + c(4e-323));
     b.is_finite().then_some(b)
+}
+
+/// Does the neighbourhood ε of Ω_xw on which φ(x, w) holds contain every q̂ = φ̂_xu(p)
+/// (|q̂ − q| ≤ φ(u, x), q ∈ Ω_xw)? No for an older certificate (no neighbourhood); no
+/// refuses the bound.
+pub fn covers_band(nbhd: Option<f64>, phi_ux: Option<f64>) -> bool {
+    match (nbhd, phi_ux) {
+        (Some(eps), Some(x)) => x.is_finite() && x <= eps,
+        _ => false,
+    }
 }
 
 /// P4.2.1's witness point of the direction (a, b) clears the literal test's margins.
@@ -216,8 +244,9 @@ fn bound_of(r: &PropertyResult, src: &Sources, max_degree: u32) -> Option<F64Bou
     Some(match (r.property.as_str(), r.key) {
         ("L4.2.2(cert)", ConfigKey::Triangle { m_u, m_w, m_x, .. }) => {
             let l = phi_lipschitz(m_x, m_w);
+            let covered = covers_band(src.nbhd(m_x, m_w), src.phi(m_u, m_x));
             let b = match (src.phi(m_u, m_w), src.phi(m_x, m_w), src.phi(m_u, m_x)) {
-                (Some(a), Some(b), Some(x)) => {
+                (Some(a), Some(b), Some(x)) if covered => {
                     let s = (c(a) + c(b) + c(l) * c(x)) * (c(1.0) + c(4.0 * UNIT_ROUNDOFF))
                         + c(2f64.powi(-530));
                     Some(up(s)).filter(|v| v.is_finite())
@@ -227,18 +256,31 @@ fn bound_of(r: &PropertyResult, src: &Sources, max_degree: u32) -> Option<F64Bou
             F64Bound {
                 bound: b,
                 lipschitz: Some(l),
-                band: src.phi(m_u, m_x),
+                band: None,
                 decided: None,
             }
         }
-        ("L4.2.1(cert)", ConfigKey::Triangle { m_u, m_w, m_x, .. }) => F64Bound {
-            band: src.phi(m_u, m_x),
-            ..membership(margins(&[
+        ("L4.2.1(cert)", ConfigKey::Triangle { m_u, m_w, m_x, .. }) => {
+            let covered = covers_band(src.nbhd(m_x, m_w), src.phi(m_u, m_x));
+            let m = margins(&[
                 src.margin(m_u, m_x),
                 src.margin(m_x, m_w),
                 src.margin(m_u, m_w),
-            ]))
-        },
+            ]);
+            // The test at q̂ answers as the exact one at q = φ_xu(p) unless a quantity at q
+            // lies within its margin plus the quantities' Lipschitz constant times φ(u, x).
+            let m = match (covered, m, src.phi(m_u, m_x)) {
+                (true, Some((b, d)), Some(x)) => {
+                    let lq = c(2.02) * c(phi_lipschitz(m_x, m_w)).max(c(1.0));
+                    Some((up(c(b) + lq * c(x)), d)).filter(|v| v.0.is_finite())
+                }
+                _ => None,
+            };
+            F64Bound {
+                lipschitz: Some(up(c(2.02) * c(phi_lipschitz(m_x, m_w)).max(c(1.0)))),
+                ..membership(m)
+            }
+        }
         ("L4.2.3(cert)", ConfigKey::Edge { m_u, m_w }) => F64Bound {
             bound: src
                 .phi(m_u, m_w)

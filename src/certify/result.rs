@@ -180,6 +180,34 @@ pub struct F64Rounding {
     pub libm_ulps: f64,
     /// Time spent, in ms.
     pub millis: u64,
+    /// ε: `phi` and `inner` hold on every box meeting the closed ε-neighbourhood of Ω_uw
+    /// (module `f64_outside`; absent in older certificates: on the boxes meeting Ω_uw).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub nbhd: Option<f64>,
+    /// The literal test's `f64` answer on the rest of Ω_u (absent in older certificates).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub outside: Option<F64Outside>,
+}
+
+/// CERT-f64-rounding off the ε-neighbourhood of Ω_uw, on the rest of Ω_u (exact answer of the
+/// literal test: "out"): the `f64` literal test answers "out" at every `f64` point there unless
+/// ||p|² − r_u²| ≤ `outer` or |q|² − r_w² ∈ [0, `inner`] (module `f64_outside`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct F64Outside {
+    /// The margin of |q|² − r_w² there (`None`: some box was left unresolved, no claim).
+    pub inner: Option<f64>,
+    /// ε of the neighbourhood left to the φ pass.
+    pub eps: f64,
+    /// Boxes where the `f64` value of |q̂|² − r_w² is certified > 0 (no margin needed).
+    pub by_value: u64,
+    /// Boxes where the exact |q|² ≥ r_w² and the margin `inner` bounds the `f64` error.
+    pub by_margin: u64,
+    /// Boxes with winding ≠ 0 where the `f64` round trip is certified far from p.
+    pub by_roundtrip: u64,
+    /// Boxes left undecided at the minimum diameter.
+    pub unresolved: u64,
+    /// Boxes of the whole branch and bound (both regions).
+    pub boxes: u64,
 }
 
 /// What the round-trip decision of the literal test (Def. 4.1.9) is certified to be.
@@ -231,8 +259,9 @@ pub struct F64Bound {
     /// The Lipschitz constant the statement uses (`L4.2.2(cert)`, `L4.2.3(cert)`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub lipschitz: Option<f64>,
-    /// `L4.2.1(cert)`, `L4.2.2(cert)`: the claim is for the points p whose φ_xu(p) is farther
-    /// than this from ∂Ω_xw (the bound on |φ̂_xu(p) − φ_xu(p)|).
+    /// Read from older certificates only: their `L4.2.1(cert)`, `L4.2.2(cert)` claims excluded
+    /// the points p whose φ_xu(p) lies within this of ∂Ω_xw. Certificates with CERT-f64-rounding
+    /// on the ε-neighbourhood (`F64Rounding::nbhd`) have no band.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub band: Option<f64>,
     /// Membership rows: every round-trip decision the check runs is certified exact

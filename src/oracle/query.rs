@@ -278,7 +278,7 @@ impl Request {
                     let c = g.edge_config(VertexId(*u), VertexId(*w)).ok()?;
                     *bounds.phi.get(&(c.m_u, c.m_w))?
                 };
-                (bound, "proven |f64 − exact| of φ_wu for p in the boxes covering Ω_uw, any labels (certificate, SPEC CERT-f64-rounding)".to_string())
+                (bound, "proven |f64 − exact| of φ_wu for p in the boxes covering the closed 1e−9-neighbourhood of Ω_uw, any labels (certificate, SPEC CERT-f64-rounding)".to_string())
             }
             Request::G { v, p } | Request::GInv { v, p } => {
                 let gc = bounds.g.get(&g.degree(VertexId(*v)).ok()?)?;
@@ -296,7 +296,7 @@ impl Request {
                 let (margin, note) = match test {
                     super::protocol::MemberTest::Literal => (
                         *bounds.literal.get(&(c.m_u, c.m_w))?,
-                        "the literal test's f64 decisions |p|² − r_u² < 0, |q|² − r_w² < 0 are exact unless the exact value lies within this of 0, its round trip is certified exact; at points of the boxes covering Ω_uw, any labels (certificate, SPEC CERT-f64-rounding, CERT-f64-props)",
+                        "the literal test's f64 decisions |p|² − r_u² < 0, |q|² − r_w² < 0 are exact unless the exact value lies within this of 0, its round trip is certified exact on Ω_uw; at every point of Ω_u (off Ω_uw the exact answer is 'out' and the f64 one too unless |q|² − r_w² lies within this of 0), any labels (certificate, SPEC CERT-f64-rounding, CERT-f64-props)",
                     ),
                     super::protocol::MemberTest::Lens => (
                         *bounds.lens.get(&c.m_u)?,
@@ -400,8 +400,8 @@ pub(crate) struct CertBounds {
     pub phi: std::collections::BTreeMap<(u32, u32), f64>,
     /// g_v's and g_v⁻¹'s on the chart square, by degree (SPEC `CERT-f64-g-chart`).
     pub g: std::collections::BTreeMap<u32, crate::certify::GChartRounding>,
-    /// The literal membership test's decision margin max(`outer`, `inner`), by edge
-    /// configuration, where its round trip is certified exact (SPEC `CERT-f64-rounding`).
+    /// The literal membership test's decision margin max(`outer`, `inner`, `outside.inner`), by
+    /// edge configuration, where its round trip is certified exact (SPEC `CERT-f64-rounding`).
     pub literal: std::collections::BTreeMap<(u32, u32), f64>,
     /// The lens test's decision margin, by degree (SPEC `CERT-f64-props`).
     pub lens: std::collections::BTreeMap<u32, f64>,
@@ -416,9 +416,14 @@ pub(crate) fn f64_bounds(cert: &crate::certify::Certificate) -> CertBounds {
     }
     for r in &cert.results {
         if let (ConfigKey::Edge { m_u, m_w }, Some(f)) = (r.key, &r.f64_rounding) {
-            if let Some(i) = f.inner.filter(|_| f.roundtrip_exact) {
-                out.literal
-                    .insert((m_u, m_w), crate::report::dev_max(f.outer, i));
+            // On all of Ω_u: the margins on Ω_uw's ε-neighbourhood and off it (a certificate
+            // without the pass off it gives no margin).
+            let off = f.outside.as_ref().and_then(|o| o.inner);
+            if let (Some(i), Some(o)) = (f.inner.filter(|_| f.roundtrip_exact), off) {
+                out.literal.insert(
+                    (m_u, m_w),
+                    crate::report::dev_max(crate::report::dev_max(f.outer, i), o),
+                );
             }
         }
         if let (ConfigKey::Vertex { m }, Some(b)) =

@@ -7,6 +7,7 @@ mod common;
 mod cert_compact;
 mod cert_docs;
 mod cert_exact;
+mod cert_f64_band;
 mod cert_f64_props;
 mod cert_f64_rounding;
 mod cert_g_chart;
