@@ -25,8 +25,8 @@
 use super::bnb::{bnb, canon_edge, disk_box, Leaf, PBox, Settings};
 use super::f64_outside::{finish, meets_nbhd, outside_box, winding0_box};
 use super::f64_outside::{Outside, OutsideLeaf, OutsideStats, F64_NBHD};
-use super::f64_roundtrip::{roundtrip_bound, RoundTripBudget, F64_BOUND_DIAM};
-use super::interval::{c, iv, Deg};
+use super::f64_roundtrip::{err2, roundtrip_bound, RoundTripBudget, F64_BOUND_DIAM};
+use super::interval::{c, iv, sym, Deg};
 use super::result::{F64Rounding, RoundTripVerdict};
 use crate::construction::maps::Ppm;
 use crate::construction::maps::{omega_radius, rotate_frac, roundtrip_tolerance};
@@ -37,16 +37,6 @@ use crate::numeric::Fe;
 use crate::numeric::Scalar;
 use crate::report::dev_max;
 use std::time::Instant;
-
-fn sym(x: f64) -> I {
-    iv(-x, x)
-}
-
-/// The Euclidean error of a point.
-fn err2(p: &P2<Fe<impl LibmModel>>) -> f64 {
-    let (x, y) = (c(p.x.err()), c(p.y.err()));
-    (x.sqr() + y.sqr()).sqrt().sup()
-}
 
 /// max over labels i of the f64 error of R_(u,w)(p) = M_{−2πi/m_u}(p), |p_x|, |p_y| ≤ 1.
 fn input_rotation_error<L: LibmModel>(m_u: u32) -> f64 {

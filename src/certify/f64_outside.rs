@@ -42,8 +42,8 @@
 //! `None`: no claim).
 
 use super::bnb::{canon_edge, PBox};
-use super::f64_roundtrip::{rotation_error, F64_BOUND_DIAM, ROT_RAD};
-use super::interval::{c, iv, lt, member_any, principal_pieces, ratio, Deg, Domain};
+use super::f64_roundtrip::{err2, rotation_error, rotation_error_on, F64_BOUND_DIAM, ROT_RAD};
+use super::interval::{c, iv, lt, member_any, principal_pieces, ratio, sym, Deg, Domain};
 use super::result::F64Outside;
 use crate::construction::maps::{f_v_radial_factor, omega_radius, polar_inv, Polar};
 use crate::construction::maps::{rotate_frac, roundtrip_tolerance};
@@ -83,25 +83,6 @@ pub fn meets_nbhd(du: &Deg, b: &PBox, eps: f64) -> Trit {
     member_any(du, th, r, Domain::Literal)
 }
 
-/// Euclidean `f64` error of a point (sup).
-fn err2<L: LibmModel>(p: &P2<Fe<L>>) -> f64 {
-    let (x, y) = (c(p.x.err()), c(p.y.err()));
-    (x.sqr() + y.sqr()).sqrt().sup()
-}
-
-fn sym(x: f64) -> I {
-    iv(-x, x)
-}
-
-/// max over labels of the Euclidean `f64` error of M_{2π·sign·k/m} on [−rad, rad]².
-fn rotation_error_on<L: LibmModel>(m: u32, sign: i64, rad: f64) -> f64 {
-    let s = Fe::<L>::exact(iv(-rad, rad));
-    let p = P2::new(s, s);
-    (0..m as i64)
-        .map(|k| err2(&rotate_frac(&p, sign * k, m as i64)))
-        .fold(0.0, dev_max)
-}
-
 /// Per-configuration constants of the pass off the neighbourhood.
 pub(super) struct Outside {
     du: Deg,
@@ -112,7 +93,7 @@ pub(super) struct Outside {
     /// δ₅ + δ₆ and δ₁₀ (module `f64_roundtrip`).
     d56: f64,
     d10: f64,
-    /// ρ: R_(w,u)⁻¹ on |x|, |y| ≤ 4 (all labels j, including 0).
+    /// ρ: R_(w,u)⁻¹ on |x|, |y| ≤ 4 (all labels j; label 0 is the identity, exact).
     rho: f64,
     /// The `f64` value of r_w² (enclosed).
     rw2: I,

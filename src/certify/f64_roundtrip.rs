@@ -126,15 +126,20 @@ struct Consts {
 }
 
 /// Euclidean f64 error of a point (sup).
-fn err2<L: LibmModel>(p: &P2<Fe<L>>) -> f64 {
+pub(super) fn err2<L: LibmModel>(p: &P2<Fe<L>>) -> f64 {
     let (x, y) = (c(p.x.err()), c(p.y.err()));
     (x.sqr() + y.sqr()).sqrt().sup()
 }
 
 /// max over labels k of the Euclidean f64 error of M_{2π·sign·k/m} on [−R, R]².
 pub(super) fn rotation_error<L: LibmModel>(m: u32, sign: i64) -> f64 {
-    let unit = Fe::<L>::exact(iv(-ROT_RAD, ROT_RAD));
-    let p = P2::new(unit, unit);
+    rotation_error_on::<L>(m, sign, ROT_RAD)
+}
+
+/// [`rotation_error`] on [−rad, rad]² (label 0 is the identity: exact, not evaluated).
+pub(super) fn rotation_error_on<L: LibmModel>(m: u32, sign: i64, rad: f64) -> f64 {
+    let s = Fe::<L>::exact(iv(-rad, rad));
+    let p = P2::new(s, s);
     (1..m as i64)
         .map(|k| err2(&rotate_frac(&p, sign * k, m as i64)))
         .fold(0.0, dev_max)

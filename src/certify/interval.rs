@@ -28,6 +28,10 @@ pub fn c(x: f64) -> I {
 pub fn iv(lo: f64, hi: f64) -> I {
     I::try_from((lo, hi)).unwrap_or(I::ENTIRE)
 }
+/// `[−x, x]`: an error of magnitude at most `x`.
+pub fn sym(x: f64) -> I {
+    iv(-x, x)
+}
 /// Enclosure of p/q.
 pub fn ratio(p: i64, q: i64) -> I {
     c(p as f64) / c(q as f64)
