@@ -222,9 +222,16 @@ fn fit_once(
                     .iter()
                     .map(|&(a, b)| unsimplify::Site::Edge(a, b))
                     .collect();
-                let r =
-                    unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
-                if let Some((m, h, how)) = r {
+                let r = unsimplify_round(
+                    k,
+                    (&mut base, &mut hierarchy, &mut prev),
+                    &sites,
+                    &sopts,
+                    &mut restore,
+                    &refined,
+                    &failed_at,
+                );
+                if let Some(how) = r {
                     progress(&format!(
                         "embed: failed ({}; {} base edges without a curve){}; {how}; embedding again",
                         f.what,
@@ -234,9 +241,6 @@ fn fit_once(
                             None => String::new(),
                         },
                     ));
-                    base = m;
-                    hierarchy = h;
-                    prev = None;
                     continue;
                 }
                 if let Some(g) = gave_up {
@@ -256,16 +260,20 @@ fn fit_once(
                 // triangle that cannot be mapped) goes to it too.
                 let sites: Vec<unsimplify::Site> =
                     f.faces.iter().map(|&g| unsimplify::Site::Face(g)).collect();
-                let r =
-                    unsimplify_round(k, &base, &sites, &sopts, &mut restore, &refined, &failed_at);
-                if let Some((m, h, how)) = r {
+                let r = unsimplify_round(
+                    k,
+                    (&mut base, &mut hierarchy, &mut prev),
+                    &sites,
+                    &sopts,
+                    &mut restore,
+                    &refined,
+                    &failed_at,
+                );
+                if let Some(how) = r {
                     progress(&format!(
                         "embed: failed ({}; at base faces {:?}); {how}; embedding again",
                         f.what, f.faces
                     ));
-                    base = m;
-                    hierarchy = h;
-                    prev = None;
                     continue;
                 }
             }
@@ -369,18 +377,15 @@ fn fit_once(
             ));
             let r = unsimplify_round(
                 k,
-                &base,
+                (&mut base, &mut hierarchy, &mut prev),
                 &check_sites,
                 &sopts,
                 &mut restore,
                 &refined,
                 &failed_at,
             );
-            if let Some((m, h, how)) = r {
+            if let Some(how) = r {
                 progress(&format!("embed: {what}; {how}; embedding again"));
-                base = m;
-                hierarchy = h;
-                prev = None;
                 continue;
             }
         }
@@ -483,17 +488,22 @@ fn fit_once(
 }
 
 /// One round of the fallback (`unsimplify`) at `sites`: the vertices the refinement inserted
-/// and the sites' neighbourhood kept, S_T simplified again; the new base mesh (never embedded
-/// before), its hierarchy and what was done, or None when every vertex is kept already.
+/// and the sites' neighbourhood kept, S_T simplified again. On success the fit continues from
+/// the new base mesh (never embedded before) and its hierarchy, with no previous embedding to
+/// update locally, and what was done is returned; None when every vertex is kept already.
 fn unsimplify_round(
     k: &SimplicialSurface,
-    base: &BaseMesh,
+    (base, hierarchy, prev): (
+        &mut BaseMesh,
+        &mut simplify::Hierarchy,
+        &mut Option<local::Previous>,
+    ),
     sites: &[unsimplify::Site],
     sopts: &SimplifyOptions,
     restore: &mut unsimplify::Restore,
     refined: &[u32],
     failed_at: &[(Vec<[u32; 3]>, embedded::Failure)],
-) -> Option<(BaseMesh, simplify::Hierarchy, String)> {
+) -> Option<String> {
     let n = base.positions().len();
     restore.add(n, refined.iter().copied());
     let before = restore.kept;
@@ -508,7 +518,10 @@ fn unsimplify_round(
         restore.rings.last().copied().unwrap_or(0),
         m.base_vertices().len()
     );
-    Some((m, h, how))
+    *base = m;
+    *hierarchy = h;
+    *prev = None;
+    Some(how)
 }
 
 /// The walk's change at every blocked edge still in the base mesh: what was done, and the first
