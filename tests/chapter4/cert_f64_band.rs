@@ -2,7 +2,7 @@
 //! the bounds at f64 points in the band just outside Ω_uw and on the rest of Ω_u, checked
 //! against 256-bit evaluations; planted faults the new arguments must refuse or catch.
 
-use crate::cert_f64_rounding::{dist, qerr};
+use crate::cert_f64_rounding::{dist, labelled_disk_point, qerr};
 use pseudomanifold::certify::{
     attach_f64_bounds, prove_f64_rounding, run, ConfigKey, F64Rounding, Model, Settings, F64_NBHD,
 };
@@ -45,18 +45,11 @@ fn quantities(e: &EdgeConfig, p: [f64; 2]) -> Option<[(f64, Mp); 2]> {
 /// of at most 0.9·ε.
 fn band_points(m_u: u32, m_w: u32, n: usize, seed: u64) -> Vec<(EdgeConfig, [f64; 2])> {
     let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
-    let r_u = (std::f64::consts::PI / m_u as f64).cos();
     let mut out = Vec::new();
     let mut tries = 0;
     while out.len() < n && tries < 50 * n {
         tries += 1;
-        let e = EdgeConfig::new(m_u, rng.gen_range(0..m_u), m_w, rng.gen_range(0..m_w))
-            .expect("labels");
-        let (t, r) = (
-            rng.gen_range(-std::f64::consts::PI..std::f64::consts::PI),
-            r_u * rng.gen_range(0.0f64..1.0).sqrt(),
-        );
-        let p0 = [r * t.cos(), r * t.sin()];
+        let (e, p0) = labelled_disk_point(&mut rng, m_u, m_w);
         if !in_uw(&e, p0) {
             continue;
         }
@@ -90,16 +83,9 @@ fn band_points(m_u: u32, m_w: u32, n: usize, seed: u64) -> Vec<(EdgeConfig, [f64
 /// of Ω_uw's boundary (a point of Ω_u pushed out of Ω_uw along a random direction).
 fn off_points(m_u: u32, m_w: u32, n: usize, seed: u64) -> Vec<(EdgeConfig, [f64; 2])> {
     let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
-    let r_u = (std::f64::consts::PI / m_u as f64).cos();
     let mut out = Vec::new();
     while out.len() < n {
-        let e = EdgeConfig::new(m_u, rng.gen_range(0..m_u), m_w, rng.gen_range(0..m_w))
-            .expect("labels");
-        let (t, r) = (
-            rng.gen_range(-std::f64::consts::PI..std::f64::consts::PI),
-            r_u * rng.gen_range(0.0f64..1.0).sqrt(),
-        );
-        let p = [r * t.cos(), r * t.sin()];
+        let (e, p) = labelled_disk_point(&mut rng, m_u, m_w);
         let pm = mp(p);
         if maps::in_omega_v(m_u, &pm).is_true() && Paper.in_omega_uw_literal(&e, &pm).is_false() {
             out.push((e, p));

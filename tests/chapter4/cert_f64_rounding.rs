@@ -42,19 +42,29 @@ pub(crate) fn qerr(f: f64, m: &Mp) -> f64 {
     m.sub(&Mp::from_f64(f, 256)).abs().to_f64()
 }
 
+/// One seeded draw: an edge configuration with random labels and an f64 point of the disk of
+/// radius r_u (uniform by area).
+pub(crate) fn labelled_disk_point(
+    rng: &mut rand::rngs::StdRng,
+    m_u: u32,
+    m_w: u32,
+) -> (EdgeConfig, [f64; 2]) {
+    let r_u = (std::f64::consts::PI / m_u as f64).cos();
+    let e = EdgeConfig::new(m_u, rng.gen_range(0..m_u), m_w, rng.gen_range(0..m_w))
+        .expect("valid labels");
+    let (t, r) = (
+        rng.gen_range(-std::f64::consts::PI..std::f64::consts::PI),
+        r_u * rng.gen_range(0.0f64..1.0).sqrt(),
+    );
+    (e, [r * t.cos(), r * t.sin()])
+}
+
 /// Seeded points of Ω_uw (decided at 256 bits), random labels: (edge, point).
 fn points(m_u: u32, m_w: u32, n: usize, seed: u64) -> Vec<(EdgeConfig, [f64; 2])> {
     let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
-    let r_u = (std::f64::consts::PI / m_u as f64).cos();
     let mut out = Vec::new();
     while out.len() < n {
-        let e = EdgeConfig::new(m_u, rng.gen_range(0..m_u), m_w, rng.gen_range(0..m_w))
-            .expect("valid labels");
-        let (t, r) = (
-            rng.gen_range(-std::f64::consts::PI..std::f64::consts::PI),
-            r_u * rng.gen_range(0.0f64..1.0).sqrt(),
-        );
-        let p = [r * t.cos(), r * t.sin()];
+        let (e, p) = labelled_disk_point(&mut rng, m_u, m_w);
         if Paper
             .in_omega_uw_literal(&e, &P2::<Mp>::from_f64(p[0], p[1], 256))
             .is_true()
