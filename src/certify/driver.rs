@@ -247,10 +247,7 @@ pub fn coverage(cert: &Certificate, configs_needed: &[ConfigKey]) -> Vec<Propert
                 }
             }
             // A covering result without a bound makes the whole `None` (no claim).
-            cov.f64_bound = bounds
-                .into_iter()
-                .collect::<Option<Vec<f64>>>()
-                .and_then(|v| v.into_iter().reduce(crate::report::dev_max));
+            cov.f64_bound = max_of_all(bounds);
             cov.certified =
                 cov.missing.is_empty() && cov.refuted.is_empty() && cov.inconclusive.is_empty();
             cov
@@ -382,11 +379,7 @@ fn f64_rounding_section(cert: &Certificate) -> String {
     // The neighbourhood and the pass off it (absent from older certificates: no sentence).
     let outside: Vec<&F64Outside> = fr.iter().filter_map(|f| f.outside.as_ref()).collect();
     let off = if outside.len() == fr.len() {
-        let inner = outside
-            .iter()
-            .map(|o| o.inner)
-            .collect::<Option<Vec<f64>>>()
-            .and_then(|v| v.into_iter().reduce(crate::report::dev_max))
+        let inner = max_of_all(outside.iter().map(|o| o.inner))
             .map(|x| format!("{x:.2e}"))
             .unwrap_or_else(|| "—".into());
         format!(
@@ -462,8 +455,7 @@ fn f64_bound_cell(p: &str, rs: &[&PropertyResult]) -> String {
     let Some(all) = all else {
         return "—".into();
     };
-    let worst: Option<Vec<f64>> = all.iter().map(|b| b.bound).collect();
-    let Some(worst) = worst.and_then(|v| v.into_iter().reduce(crate::report::dev_max)) else {
+    let Some(worst) = max_of_all(all.iter().map(|b| b.bound)) else {
         return "—".into();
     };
     let decided = all.iter().all(|b| b.decided == Some(true));
@@ -481,6 +473,15 @@ fn f64_bound_cell(p: &str, rs: &[&PropertyResult]) -> String {
             ""
         }
     )
+}
+
+/// The largest of bounds that must all be present: `None` when one is missing (no claim, never
+/// a smaller number) or there are none; a NaN wins (`dev_max`).
+fn max_of_all(v: impl IntoIterator<Item = Option<f64>>) -> Option<f64> {
+    v.into_iter()
+        .collect::<Option<Vec<f64>>>()?
+        .into_iter()
+        .reduce(crate::report::dev_max)
 }
 
 /// The largest value with its key, NaN winning (a NaN bound is no claim, never hidden), ties
