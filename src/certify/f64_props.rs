@@ -160,10 +160,7 @@ impl<'a> Sources<'a> {
     /// verdict: the literal test at every `f64` point of Ω_a (module docs). An older
     /// certificate without the pass off the neighbourhood has none.
     fn margin(&self, a: u32, b: u32) -> Option<(f64, bool)> {
-        let f = self.edges.get(&(a, b))?;
-        let off = f.outside.as_ref()?.inner?;
-        let m = crate::report::dev_max(crate::report::dev_max(f.outer, f.inner?), off);
-        m.is_finite().then_some((m, f.roundtrip_exact))
+        self.edges.get(&(a, b))?.literal_margin()
     }
 }
 

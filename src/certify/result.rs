@@ -189,6 +189,18 @@ pub struct F64Rounding {
     pub outside: Option<F64Outside>,
 }
 
+impl F64Rounding {
+    /// The literal membership test's decision margin at every `f64` point of Ω_u:
+    /// max(`outer`, `inner`, the margin off the neighbourhood), with `roundtrip_exact` (its
+    /// round trip decided exactly on Ω_uw); `None` for a certificate without the pass off the
+    /// neighbourhood or a margin that is not finite.
+    pub fn literal_margin(&self) -> Option<(f64, bool)> {
+        let off = self.outside.as_ref()?.inner?;
+        let m = crate::report::dev_max(crate::report::dev_max(self.outer, self.inner?), off);
+        m.is_finite().then_some((m, self.roundtrip_exact))
+    }
+}
+
 /// CERT-f64-rounding off the ε-neighbourhood of Ω_uw, on the rest of Ω_u (exact answer of the
 /// literal test: "out"): the `f64` literal test answers "out" at every `f64` point there unless
 /// ||p|² − r_u²| ≤ `outer` or |q|² − r_w² ∈ [0, `inner`] (module `f64_outside`).

@@ -416,14 +416,10 @@ pub(crate) fn f64_bounds(cert: &crate::certify::Certificate) -> CertBounds {
     }
     for r in &cert.results {
         if let (ConfigKey::Edge { m_u, m_w }, Some(f)) = (r.key, &r.f64_rounding) {
-            // On all of Ω_u: the margins on Ω_uw's ε-neighbourhood and off it (a certificate
-            // without the pass off it gives no margin).
-            let off = f.outside.as_ref().and_then(|o| o.inner);
-            if let (Some(i), Some(o)) = (f.inner.filter(|_| f.roundtrip_exact), off) {
-                out.literal.insert(
-                    (m_u, m_w),
-                    crate::report::dev_max(crate::report::dev_max(f.outer, i), o),
-                );
+            // On all of Ω_u, where the round trip is decided exactly (a certificate without the
+            // pass off the neighbourhood gives no margin).
+            if let Some((m, true)) = f.literal_margin() {
+                out.literal.insert((m_u, m_w), m);
             }
         }
         if let (ConfigKey::Vertex { m }, Some(b)) =
