@@ -9,7 +9,9 @@ use pseudomanifold::fitting::embed_checks::{check_curved_disk, run};
 use pseudomanifold::fitting::embedded::embed;
 use pseudomanifold::fitting::geodesic::Node;
 use pseudomanifold::fitting::overlay;
-use pseudomanifold::fitting::unsimplify::{check_restored, restore, Restore, Site, MAX_RING};
+use pseudomanifold::fitting::unsimplify::{
+    check_restored, restore, strip, Restore, Site, MAX_RING,
+};
 use pseudomanifold::fitting::{fit_surface, FitOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{generate, SimplicialSurface};
@@ -60,7 +62,8 @@ fn edges_embedded_as_themselves(
 
 /// One round forced on the generated torus's fit at 10⁻² (which needs none): the base edge
 /// a–b (the first not an edge of S_T with vertices of S_T in its faces) is taken as blocked.
-/// The returned base mesh keeps a, b and every vertex of S_T in a–b's faces as base vertices,
+/// The returned base mesh keeps a, b and the strip (ring 0: their triangles of S_T and those
+/// a–b crosses) as base vertices,
 /// the triangles of S_T with three kept corners are base faces with nothing in them
 /// (`AF-unsimplify`), their base edges are embedded as themselves, and every check of the
 /// embedding holds. Planted: a kept vertex removed again (caught by `AF-unsimplify`), and the
@@ -85,11 +88,17 @@ fn af_unsimplify_restores_s_t_around_a_blocked_edge_and_planted_stitches_are_cau
                     .any(|g| !f.base.members(g).is_empty())
         })
         .expect("a base edge off S_T with vertices of S_T in its faces");
-    let region: Vec<u32> = [(a, b), (b, a)]
+    let members: Vec<u32> = [(a, b), (b, a)]
         .iter()
         .filter_map(|&(u, w)| f.base.face_of_edge(u, w))
         .flat_map(|g| f.base.members(g).to_vec())
         .collect();
+    // Ring 0: a, b, their triangles of S_T and those a-b crosses (corners in both faces).
+    let region = strip(&k, &f.base, a, b);
+    assert!(
+        region.contains(&a) && region.contains(&b) && region.iter().any(|x| members.contains(x)),
+        "strip {region:?}, {members:?} in a-b's faces"
+    );
     let mut state = Restore::default();
     let (m, _) = restore(
         &k,
@@ -102,7 +111,7 @@ fn af_unsimplify_restores_s_t_around_a_blocked_edge_and_planted_stitches_are_cau
     .expect("one round of the fallback");
     assert_eq!(state.rings, vec![0]);
     for &x in region.iter().chain([a, b].iter()) {
-        assert!(m.is_base(x), "vertex {x} of a-b's faces is a base vertex");
+        assert!(m.is_base(x), "vertex {x} of a-b's strip is a base vertex");
     }
     let r = check_restored(&k, &m, state.keep());
     assert_holds_for("the torus restored around a-b", &r);
@@ -160,8 +169,9 @@ fn af_unsimplify_restores_s_t_around_a_blocked_edge_and_planted_stitches_are_cau
 }
 
 /// The fallback ends: on a small torus, with every base mesh short of S_T counted as tried,
-/// the rounds grow the kept set ring by ring until every vertex is kept (ring 5 there: the
-/// rings of S_T cover the 12 × 6 torus before `MAX_RING`), and the base mesh is
+/// the rounds grow the kept set ring by ring (the strip, the edge's two faces, then the faces
+/// around its ends grown by rings of S_T, which cover the 12 × 6 torus before `MAX_RING`) until
+/// every vertex is kept, and the base mesh is
 /// then S_T itself, every base edge embedded as itself and every check holding.
 #[test]
 fn af_unsimplify_ends_at_s_t_itself_with_every_check_holding() {
