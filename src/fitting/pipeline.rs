@@ -488,7 +488,8 @@ fn fit_once(
 }
 
 /// One round of the fallback (`unsimplify`) at `sites`: the vertices the refinement inserted
-/// and the sites' neighbourhood kept — after a fit round every current base vertex too — S_T
+/// and the sites' neighbourhood kept — from the second round on, and after a fit round, every
+/// current base vertex too — S_T
 /// simplified again. On success the fit continues from the new base mesh (never embedded
 /// before) and its hierarchy, the previous embedding (if any) re-slotted to it for the local
 /// update, and what was done is returned; None when every vertex is kept already.
@@ -507,10 +508,10 @@ fn unsimplify_round(
 ) -> Option<String> {
     let n = base.positions().len();
     restore.add(n, refined.iter().copied());
-    // After a fit round (there is an embedding whose every check held) every current base
-    // vertex is kept too, so the round changes the base mesh only near the sites and the
-    // vertices inserted since the last simplification (`unsimplify` module doc).
-    let held = fitted.then(|| restore.keep_base(base));
+    // From the second round on, and after a fit round, every current base vertex is kept too,
+    // so the round changes the base mesh only near the sites and the vertices inserted since
+    // the last simplification (`unsimplify` module doc).
+    let held = (fitted || restore.active()).then(|| restore.keep_base(base));
     let before = restore.kept;
     let (m, h) = unsimplify::restore(k, base, sites, sopts, restore, |m| {
         let key = face_key(m);

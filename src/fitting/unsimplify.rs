@@ -39,17 +39,19 @@
 //! vertex is kept. The vertices the refinement inserted are kept too (so a later round does not
 //! lose them).
 //!
-//! **After refinement** (a round once a fit round has run): every current base vertex is kept
-//! as well ([`Restore::keep_base`]: the refined ones, the repair's, and those the last
-//! simplification left), so the base mesh simplified again has the current base vertices and
-//! the sites' neighbourhoods as base vertices, and its faces differ from the current ones only
-//! near the vertices kept since the last simplification (the sites' and the inserted ones:
-//! a vertex that last simplification left was never removed by it, and a refused removal
-//! changes nothing, so elsewhere the same removals are done in the same order). Without it every such
-//! round simplified all of S_T again with only the kept and refined vertices fixed, so the base
-//! mesh changed away from the sites and new blocked edges appeared there (boot at 3·10⁻³: 45
-//! rounds). The previous embedding is then updated locally (`super::local::Previous::reslot`).
-//! The kept set still grows every round by a vertex of S_T not kept before, so the loop ends.
+//! **After the first round** (every round once the fallback has run or a fit round has):
+//! every current base vertex is kept as well ([`Restore::keep_base`]: the refined ones, the
+//! repair's, and those the last simplification left), so the base mesh simplified again has
+//! the current base vertices and the sites' neighbourhoods as base vertices, and its faces
+//! differ from the current ones only where the newly kept vertices change the removals (a
+//! vertex the last simplification left was never removed by it and a refused removal changes
+//! nothing, so elsewhere the same removals are done in the same order; the change spreads from
+//! the new vertices level by level). Without it every round simplified all of S_T again with
+//! only the kept and refined vertices fixed, so the base mesh changed away from the sites and
+//! new blocked edges appeared there (boot at 3·10⁻³: 45 rounds). After a fit round the previous
+//! embedding is updated locally (`super::local::Previous::reslot`). The first round simplifies
+//! all of S_T again: it is the base mesh of the first simplification that failed. The kept set
+//! still grows every round by a vertex of S_T not kept before, so the loop ends.
 //!
 //! **When** (`super::fit_surface`): where the AC·CB walk cannot finish (it gives up, or one
 //! tracing leaves more blocked edges than it has changes left), where an embedding's parameters
@@ -111,9 +113,9 @@ impl Restore {
         added
     }
 
-    /// Keep every base vertex of `base`; returns how many were not kept before. Called before a
-    /// round after a fit round (module doc, "After refinement"), so that S_T simplified again
-    /// keeps the current base vertices and changes only the sites' neighbourhoods.
+    /// Keep every base vertex of `base`; returns how many were not kept before. Called before
+    /// every round but the first (module doc, "After the first round"), so that S_T simplified
+    /// again keeps the current base vertices and changes only near the sites.
     pub fn keep_base(&mut self, base: &BaseMesh) -> usize {
         let n = base.positions().len();
         self.add(n, base.base_vertices())
