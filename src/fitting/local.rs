@@ -46,6 +46,35 @@ impl Previous {
             emb,
         }
     }
+
+    /// The same embedding for `base`, a base mesh simplified again by the fallback
+    /// (`super::unsimplify`), whose face slots are numbered afresh: a face of `base` with the
+    /// corners, in the same order, of a face embedded before takes that face's place (with its
+    /// Floater map, whose corner images follow the order); the others count as changed. So a
+    /// fallback round after refinement re-embeds only where the base mesh changed, and every
+    /// check still runs on the whole result.
+    pub fn reslot(self, base: &BaseMesh) -> Previous {
+        let new: HashMap<[u32; 3], u32> = base.faces().map(|(f, c)| (c, f)).collect();
+        let to: HashMap<u32, u32> = self
+            .faces
+            .iter()
+            .filter_map(|(&old, c)| Some((old, *new.get(c)?)))
+            .collect();
+        let faces = self
+            .faces
+            .iter()
+            .filter_map(|(old, &c)| Some((*to.get(old)?, c)))
+            .collect();
+        let mut emb = self.emb;
+        emb.maps.retain_mut(|m| match to.get(&m.face) {
+            Some(&f) => {
+                m.face = f;
+                true
+            }
+            None => false,
+        });
+        Previous { faces, emb }
+    }
 }
 
 /// What a local update kept and what it did again.

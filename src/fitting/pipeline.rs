@@ -228,7 +228,7 @@ fn fit_once(
                     &sites,
                     &sopts,
                     &mut restore,
-                    &refined,
+                    (&refined, !rounds.is_empty()),
                     &failed_at,
                 );
                 if let Some(how) = r {
@@ -266,7 +266,7 @@ fn fit_once(
                     &sites,
                     &sopts,
                     &mut restore,
-                    &refined,
+                    (&refined, !rounds.is_empty()),
                     &failed_at,
                 );
                 if let Some(how) = r {
@@ -381,7 +381,7 @@ fn fit_once(
                 &check_sites,
                 &sopts,
                 &mut restore,
-                &refined,
+                (&refined, !rounds.is_empty()),
                 &failed_at,
             );
             if let Some(how) = r {
@@ -488,9 +488,11 @@ fn fit_once(
 }
 
 /// One round of the fallback (`unsimplify`) at `sites`: the vertices the refinement inserted
-/// and the sites' neighbourhood kept, S_T simplified again. On success the fit continues from
-/// the new base mesh (never embedded before) and its hierarchy, with no previous embedding to
-/// update locally, and what was done is returned; None when every vertex is kept already.
+/// and the sites' neighbourhood kept — from the second round on, and after a fit round, every
+/// current base vertex too — S_T
+/// simplified again. On success the fit continues from the new base mesh (never embedded
+/// before) and its hierarchy, the previous embedding (if any) re-slotted to it for the local
+/// update, and what was done is returned; None when every vertex is kept already.
 fn unsimplify_round(
     k: &SimplicialSurface,
     (base, hierarchy, prev): (
@@ -501,26 +503,36 @@ fn unsimplify_round(
     sites: &[unsimplify::Site],
     sopts: &SimplifyOptions,
     restore: &mut unsimplify::Restore,
-    refined: &[u32],
+    (refined, fitted): (&[u32], bool),
     failed_at: &[(Vec<[u32; 3]>, embedded::Failure)],
 ) -> Option<String> {
     let n = base.positions().len();
     restore.add(n, refined.iter().copied());
+    // From the second round on, and after a fit round, every current base vertex is kept too,
+    // so the round changes the base mesh only near the sites and the vertices inserted since
+    // the last simplification (`unsimplify` module doc).
+    let held = (fitted || restore.active()).then(|| restore.keep_base(base));
     let before = restore.kept;
     let (m, h) = unsimplify::restore(k, base, sites, sopts, restore, |m| {
         let key = face_key(m);
         failed_at.iter().any(|(x, _)| *x == key)
     })?;
     let how = format!(
-        "S_T's own triangles kept there (AF-unsimplify: {} more vertices of S_T kept as base vertices, {} in all, ring {}), simplified again: {} base vertices",
+        "S_T's own triangles kept there (AF-unsimplify: {} more vertices of S_T kept as base vertices{}, {} in all, ring {}), simplified again: {} base vertices",
         restore.kept - before,
+        match held {
+            Some(h) => format!(" and every current base vertex ({h} not kept before)"),
+            None => String::new(),
+        },
         restore.kept,
         restore.rings.last().copied().unwrap_or(0),
         m.base_vertices().len()
     );
+    // The last embedding whose every check held is updated locally where the faces are the
+    // same (`local::Previous::reslot`); before a fit round there is none.
+    *prev = prev.take().map(|p| p.reslot(&m));
     *base = m;
     *hierarchy = h;
-    *prev = None;
     Some(how)
 }
 

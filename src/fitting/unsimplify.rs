@@ -23,10 +23,13 @@
 //! unchanged. The cost is that the rest of the base mesh is simplified again too (the
 //! independent sets change near the kept vertices); the walk's changes are dropped.
 //!
-//! **The neighbourhood.** For a blocked base edge a–b, ring 0 is a, b, the corners of a–b's two
-//! base faces and the vertices of S_T the simplification parametrizes in them (the part of S_T
-//! the edge's curve was to cross); ring r ≥ 1 is the corners and vertices of S_T of every base
-//! face around a and b, grown by r − 1 rings of S_T. The same where the embedding exists but a
+//! **The neighbourhood.** For a blocked base edge a–b, ring 0 is the strip ([`strip`]): a, b,
+//! their triangles of S_T, and every triangle of S_T with corners parametrized in both of a–b's
+//! base faces (the triangles the straight edge a–b crosses as the simplification maps S_T onto
+//! the two faces, the part of S_T the edge's curve was to cross); ring 1 is a, b, the corners of
+//! a–b's two base faces and all the vertices of S_T the simplification parametrizes in them;
+//! ring r ≥ 2 is the corners and vertices of S_T of every base face around a and b, grown by
+//! r − 2 rings of S_T. The same where the embedding exists but a
 //! curved triangle is no disk or Floater's map folds it (`AF-curved-disk`,
 //! `AF-param-bijective`, whose witnesses name the base face; the embedding's parameters are
 //! then unusable): ring 0 is the face's corners and its vertices of S_T, ring r ≥ 1 starts from
@@ -36,6 +39,20 @@
 //! vertex is kept. The vertices the refinement inserted are kept too (so a later round does not
 //! lose them).
 //!
+//! **After the first round** (every round once the fallback has run or a fit round has):
+//! every current base vertex is kept as well ([`Restore::keep_base`]: the refined ones, the
+//! repair's, and those the last simplification left), so the base mesh simplified again has
+//! the current base vertices and the sites' neighbourhoods as base vertices, and its faces
+//! differ from the current ones only where the newly kept vertices change the removals (a
+//! vertex the last simplification left was never removed by it and a refused removal changes
+//! nothing, so elsewhere the same removals are done in the same order; the change spreads from
+//! the new vertices level by level). Without it every round simplified all of S_T again with
+//! only the kept and refined vertices fixed, so the base mesh changed away from the sites and
+//! new blocked edges appeared there (boot at 3·10⁻³: 45 rounds). After a fit round the previous
+//! embedding is updated locally (`super::local::Previous::reslot`). The first round simplifies
+//! all of S_T again: it is the base mesh of the first simplification that failed. The kept set
+//! still grows every round by a vertex of S_T not kept before, so the loop ends.
+//!
 //! **When** (`super::fit_surface`): where the AC·CB walk cannot finish (it gives up, or one
 //! tracing leaves more blocked edges than it has changes left), where an embedding's parameters
 //! are unusable, and, once the fallback has run, at every later failure of the embedding: a
@@ -43,7 +60,7 @@
 //! edges of the curves its witnesses name are the sites). Meshes that need none of this are
 //! untouched.
 
-use super::base::BaseMesh;
+use super::base::{BaseMesh, Param};
 use super::simplify::{simplify_keeping, Hierarchy, SimplifyOptions};
 use crate::mesh::{SimplicialSurface, VertexId};
 use crate::report::{CheckResult, Witness};
@@ -95,6 +112,14 @@ impl Restore {
         self.kept += added;
         added
     }
+
+    /// Keep every base vertex of `base`; returns how many were not kept before. Called before
+    /// every round but the first (module doc, "After the first round"), so that S_T simplified
+    /// again keeps the current base vertices and changes only near the sites.
+    pub fn keep_base(&mut self, base: &BaseMesh) -> usize {
+        let n = base.positions().len();
+        self.add(n, base.base_vertices())
+    }
 }
 
 /// Where the embedding failed.
@@ -116,10 +141,18 @@ impl std::fmt::Display for Site {
     }
 }
 
-/// The neighbourhood of a site at `ring` (module doc; a face's ring 0 is its corners and the
+/// The neighbourhood of a site at `ring` (module doc; an edge's ring 0 is its strip and its
+/// ring r ≥ 1 a face's ring r − 1 around its two faces; a face's ring 0 is its corners and the
 /// vertices of S_T in it, ring r ≥ 1 starts from the faces around its corners), as vertices of
 /// S_T.
 pub fn region(k: &SimplicialSurface, base: &BaseMesh, site: Site, ring: usize) -> Vec<u32> {
+    // An edge's ring 0 is the strip; its ring r ≥ 1 is ring r − 1 of the code below (its two
+    // faces at 1, the faces around its ends from 2 on).
+    let ring = match site {
+        Site::Edge(a, b) if ring == 0 => return strip(k, base, a, b),
+        Site::Edge(..) => ring - 1,
+        Site::Face(_) => ring,
+    };
     let (ends, own): (Vec<u32>, Vec<u32>) = match site {
         Site::Edge(a, b) => (
             vec![a, b],
@@ -167,6 +200,54 @@ pub fn region(k: &SimplicialSurface, base: &BaseMesh, site: Site, ring: usize) -
         }
         out.extend_from_slice(&next);
         front = next;
+    }
+    out
+}
+
+/// Ring 0 of a blocked base edge a–b (module doc): a, b, the corners of their triangles of S_T,
+/// and the corners of every triangle of S_T with corners parametrized in both of a–b's base
+/// faces — the triangles of S_T that the edge's curve was to cross, as the simplification maps
+/// S_T onto the two faces.
+pub fn strip(k: &SimplicialSurface, base: &BaseMesh, a: u32, b: u32) -> Vec<u32> {
+    let n = k.vertex_slots();
+    let fs: Vec<u32> = [(a, b), (b, a)]
+        .iter()
+        .filter_map(|&(u, w)| base.face_of_edge(u, w))
+        .collect();
+    let side = |x: VertexId| match base.params().get(x.idx()) {
+        Some(Param::Face { f, .. }) => fs.iter().position(|g| g == f),
+        _ => None,
+    };
+    let mut seen = vec![false; n];
+    let mut out = Vec::new();
+    let mut take = |c: [VertexId; 3], out: &mut Vec<u32>| {
+        for y in c {
+            if let Some(s) = seen.get_mut(y.idx()) {
+                if !*s {
+                    *s = true;
+                    out.push(y.0);
+                }
+            }
+        }
+    };
+    for x in [a, b].into_iter().filter(|&x| (x as usize) < n) {
+        for &t in k.faces_around(VertexId(x)) {
+            take(k.face(t), &mut out);
+        }
+    }
+    for &g in &fs {
+        for &x in base.members(g) {
+            if (x as usize) >= n {
+                continue;
+            }
+            for &t in k.faces_around(VertexId(x)) {
+                let c = k.face(t);
+                let sides = c.map(side);
+                if sides.contains(&Some(0)) && sides.contains(&Some(1)) {
+                    take(c, &mut out);
+                }
+            }
+        }
     }
     out
 }

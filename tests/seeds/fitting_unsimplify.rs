@@ -9,7 +9,9 @@ use pseudomanifold::fitting::embed_checks::{check_curved_disk, run};
 use pseudomanifold::fitting::embedded::embed;
 use pseudomanifold::fitting::geodesic::Node;
 use pseudomanifold::fitting::overlay;
-use pseudomanifold::fitting::unsimplify::{check_restored, restore, Restore, Site, MAX_RING};
+use pseudomanifold::fitting::unsimplify::{
+    check_restored, restore, strip, Restore, Site, MAX_RING,
+};
 use pseudomanifold::fitting::{fit_surface, FitOptions};
 use pseudomanifold::mesh::validate::validate;
 use pseudomanifold::mesh::{generate, SimplicialSurface};
@@ -60,7 +62,8 @@ fn edges_embedded_as_themselves(
 
 /// One round forced on the generated torus's fit at 10⁻² (which needs none): the base edge
 /// a–b (the first not an edge of S_T with vertices of S_T in its faces) is taken as blocked.
-/// The returned base mesh keeps a, b and every vertex of S_T in a–b's faces as base vertices,
+/// The returned base mesh keeps a, b and the strip (ring 0: their triangles of S_T and those
+/// a–b crosses) as base vertices,
 /// the triangles of S_T with three kept corners are base faces with nothing in them
 /// (`AF-unsimplify`), their base edges are embedded as themselves, and every check of the
 /// embedding holds. Planted: a kept vertex removed again (caught by `AF-unsimplify`), and the
@@ -85,11 +88,17 @@ fn af_unsimplify_restores_s_t_around_a_blocked_edge_and_planted_stitches_are_cau
                     .any(|g| !f.base.members(g).is_empty())
         })
         .expect("a base edge off S_T with vertices of S_T in its faces");
-    let region: Vec<u32> = [(a, b), (b, a)]
+    let members: Vec<u32> = [(a, b), (b, a)]
         .iter()
         .filter_map(|&(u, w)| f.base.face_of_edge(u, w))
         .flat_map(|g| f.base.members(g).to_vec())
         .collect();
+    // Ring 0: a, b, their triangles of S_T and those a-b crosses (corners in both faces).
+    let region = strip(&k, &f.base, a, b);
+    assert!(
+        region.contains(&a) && region.contains(&b) && region.iter().any(|x| members.contains(x)),
+        "strip {region:?}, {members:?} in a-b's faces"
+    );
     let mut state = Restore::default();
     let (m, _) = restore(
         &k,
@@ -102,7 +111,7 @@ fn af_unsimplify_restores_s_t_around_a_blocked_edge_and_planted_stitches_are_cau
     .expect("one round of the fallback");
     assert_eq!(state.rings, vec![0]);
     for &x in region.iter().chain([a, b].iter()) {
-        assert!(m.is_base(x), "vertex {x} of a-b's faces is a base vertex");
+        assert!(m.is_base(x), "vertex {x} of a-b's strip is a base vertex");
     }
     let r = check_restored(&k, &m, state.keep());
     assert_holds_for("the torus restored around a-b", &r);
@@ -160,8 +169,9 @@ fn af_unsimplify_restores_s_t_around_a_blocked_edge_and_planted_stitches_are_cau
 }
 
 /// The fallback ends: on a small torus, with every base mesh short of S_T counted as tried,
-/// the rounds grow the kept set ring by ring until every vertex is kept (ring 5 there: the
-/// rings of S_T cover the 12 × 6 torus before `MAX_RING`), and the base mesh is
+/// the rounds grow the kept set ring by ring (the strip, the edge's two faces, then the faces
+/// around its ends grown by rings of S_T, which cover the 12 × 6 torus before `MAX_RING`) until
+/// every vertex is kept, and the base mesh is
 /// then S_T itself, every base edge embedded as itself and every check holding.
 #[test]
 fn af_unsimplify_ends_at_s_t_itself_with_every_check_holding() {
@@ -219,4 +229,91 @@ fn af_unsimplify_ends_at_s_t_itself_with_every_check_holding() {
         |_| true
     )
     .is_none());
+}
+
+/// A round after refinement (`Restore::keep_base`): on the generated torus's fit at 10⁻², a few
+/// vertices of S_T are inserted as a refinement round does, and a round is forced at a base
+/// edge. Every base vertex of the refined base mesh stays a base vertex (`AF-unsimplify`: they
+/// are kept), the previous embedding re-slotted to the new base mesh keeps the curves of the
+/// faces that did not change, and every check of the embedding holds on the local update.
+/// Planted: the round without the current base vertices kept (as before `keep_base`) loses some
+/// of them, caught by `AF-unsimplify` against the kept set that names them.
+#[test]
+fn af_unsimplify_after_refinement_keeps_every_base_vertex_and_updates_locally() {
+    use pseudomanifold::fitting::local::{embed_local, Previous};
+    use pseudomanifold::fitting::refine::{insert, RefineStats};
+    let k = torus(24, 12);
+    let opts = FitOptions::new(1e-2 * diagonal(&k));
+    let f = fit_surface(&k, &opts, |_| {}).expect("the fit succeeds");
+    let prev = Previous::new(&f.base, f.embedded.clone().expect("the torus is embedded"));
+    // The refinement: the first vertex of S_T in every eighth base face.
+    let mut base = f.base.clone();
+    let xs: Vec<u32> = f
+        .base
+        .faces()
+        .step_by(8)
+        .filter_map(|(g, _)| f.base.members(g).first().copied())
+        .collect();
+    let mut refined = Vec::new();
+    for x in xs {
+        if insert(&mut base, x, &mut RefineStats::default()) {
+            refined.push(x);
+        }
+    }
+    assert!(!refined.is_empty(), "vertices of S_T inserted");
+    let st = edges_of(&k);
+    let (a, b) = base
+        .faces()
+        .flat_map(|(_, c)| (0..3).map(move |i| (c[i], c[(i + 1) % 3])))
+        .find(|&(a, b)| {
+            !st.contains(&(a.min(b), a.max(b)))
+                && [(a, b), (b, a)]
+                    .iter()
+                    .filter_map(|&(u, w)| base.face_of_edge(u, w))
+                    .any(|g| !base.members(g).is_empty())
+        })
+        .expect("a base edge off S_T with vertices of S_T in its faces");
+    let n = base.positions().len();
+    let round = |keep_base: bool| {
+        let mut state = Restore::default();
+        state.add(n, refined.iter().copied());
+        if keep_base {
+            assert!(state.keep_base(&base) > 0, "base vertices not kept before");
+        }
+        let (m, _) = restore(
+            &k,
+            &base,
+            &[Site::Edge(a, b)],
+            &opts.simplify_options(),
+            &mut state,
+            |_| false,
+        )
+        .expect("one round of the fallback");
+        (m, state)
+    };
+    let (m, state) = round(true);
+    for v in base.base_vertices() {
+        assert!(m.is_base(v), "base vertex {v} of the refined mesh kept");
+    }
+    let r = check_restored(&k, &m, state.keep());
+    assert_holds_for("the refined torus restored around a-b", &r);
+    let prev = prev.reslot(&m);
+    assert!(
+        !prev.faces.is_empty() && prev.faces.iter().all(|(&g, &c)| m.face(g) == Some(c)),
+        "the re-slotted faces are faces of the new base mesh, corners in order"
+    );
+    let (e, ls) = embed_local(&k, &m, &prev).expect("the local update after the round");
+    assert!(
+        0 < ls.kept_curves && ls.kept_curves < ls.curves && ls.kept_maps > 0,
+        "{ls:?}"
+    );
+    for r in run(&k, &m, &e) {
+        assert_holds_for("the local update after the round", &r);
+    }
+
+    // Planted: the round without the current base vertices kept.
+    let (m_old, _) = round(false);
+    let r = check_restored(&k, &m_old, state.keep());
+    assert_caught(&r);
+    record("AF-planted", Seen::Caught, r.examined);
 }
