@@ -75,27 +75,25 @@ pub fn bernstein_tri(d: usize, l: [f64; 3], coef: &[f64], out: &mut [f64]) {
 /// ψ at barycentric coordinates λ (generic scalar: f64, Mp, jets).
 pub fn eval_tri<S: SurfaceScalar>(d: usize, cps: &[[f64; 3]], coef: &[f64], l: &[S; 3]) -> [S; 3] {
     let prec = l[0].precision_bits();
-    let one = S::from_i64(1, prec);
-    let pw: Vec<Vec<S>> = l
-        .iter()
-        .map(|x| {
-            let mut v = Vec::with_capacity(d + 1);
-            v.push(one.clone());
-            for e in 1..=d {
-                let next = v[e - 1].mul(x);
-                v.push(next);
-            }
-            v
-        })
-        .collect();
+    // λ_t^e (e = 0..=d) of the three coordinates in one buffer, t major: one allocation per
+    // patch instead of four.
+    let n = d + 1;
+    let mut pw: Vec<S> = Vec::with_capacity(3 * n);
+    for x in l {
+        pw.push(S::from_i64(1, prec));
+        for _ in 1..=d {
+            let next = pw[pw.len() - 1].mul(x);
+            pw.push(next);
+        }
+    }
     let z = S::from_i64(0, prec);
     let mut acc = [z.clone(), z.clone(), z];
     let mut i = 0;
     for a in 0..=d {
         for b in 0..=d - a {
-            let bern = pw[0][a]
-                .mul(&pw[1][b])
-                .mul(&pw[2][d - a - b])
+            let bern = pw[a]
+                .mul(&pw[n + b])
+                .mul(&pw[2 * n + d - a - b])
                 .scale_f64(coef[i]);
             for (t, slot) in acc.iter_mut().enumerate() {
                 *slot = slot.add(&bern.scale_f64(cps[i][t]));
