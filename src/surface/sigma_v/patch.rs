@@ -74,6 +74,40 @@ pub fn bernstein_tri(d: usize, l: [f64; 3], coef: &[f64], out: &mut [f64]) {
 
 /// ψ at barycentric coordinates λ (generic scalar: f64, Mp, jets).
 pub fn eval_tri<S: SurfaceScalar>(d: usize, cps: &[[f64; 3]], coef: &[f64], l: &[S; 3]) -> [S; 3] {
+    use crate::surface::jet::Jet;
+    use std::any::TypeId;
+    let t = TypeId::of::<S>();
+    if t == TypeId::of::<Jet<f64, 6>>()
+        || t == TypeId::of::<Jet<f64, 3>>()
+        || t == TypeId::of::<Jet<f64>>()
+    {
+        // Jets of f64 (the sampling's normals and curvatures): the same operations compiled
+        // for the CPU's vector extensions, which widen the coefficient-wise products and
+        // sums of the jets; products and sums stay separate (never fused), so the bits do
+        // not depend on the CPU.
+        return pulp::Arch::new().dispatch(EvalTri { d, cps, coef, l });
+    }
+    eval_tri_body(d, cps, coef, l)
+}
+
+/// [`eval_tri`] as a [`pulp::WithSimd`] operation.
+struct EvalTri<'a, S> {
+    d: usize,
+    cps: &'a [[f64; 3]],
+    coef: &'a [f64],
+    l: &'a [S; 3],
+}
+
+impl<S: SurfaceScalar> pulp::WithSimd for EvalTri<'_, S> {
+    type Output = [S; 3];
+    #[inline(always)]
+    fn with_simd<V: pulp::Simd>(self, _: V) -> [S; 3] {
+        eval_tri_body(self.d, self.cps, self.coef, self.l)
+    }
+}
+
+#[inline(always)]
+fn eval_tri_body<S: SurfaceScalar>(d: usize, cps: &[[f64; 3]], coef: &[f64], l: &[S; 3]) -> [S; 3] {
     let prec = l[0].precision_bits();
     // λ_t^e (e = 0..=d) of the three coordinates in one buffer, t major: one allocation per
     // patch instead of four.
