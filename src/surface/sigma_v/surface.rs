@@ -486,7 +486,8 @@ impl SigmaVPps {
         let points = &pat.points;
         match attrs {
             Attributes::Positions => {
-                let res = self.map_points(points, |s| Ok(self.eval(s.face, &s.bary, &self.consts)?.2));
+                let res =
+                    self.map_points(points, |s| Ok(self.eval(s.face, &s.bary, &self.consts)?.2));
                 // The first error in point order, on every run.
                 out.positions = res.into_iter().collect::<Result<_, _>>()?;
             }
@@ -518,9 +519,9 @@ impl SigmaVPps {
         let keys: Vec<u32> = points
             .iter()
             .map(|s| {
-                self.gluing
-                    .face_corners(s.face)
-                    .map_or(u32::MAX, |c| c.iter().map(|v| v.0).min().unwrap_or(u32::MAX))
+                self.gluing.face_corners(s.face).map_or(u32::MAX, |c| {
+                    c.iter().map(|v| v.0).min().unwrap_or(u32::MAX)
+                })
             })
             .collect();
         crate::surface::pps::map_in_key_order(&keys, |i| f(&points[i]))
