@@ -100,6 +100,9 @@ pub struct SigmaVPps {
     consts: SvConsts<f64>,
 }
 
+/// What the sampling keeps of each point: the point, the normal, K and H.
+type Kept = ([f64; 3], [f64; 3], f64, f64);
+
 /// Corners fitted per matrix product (bounds memory: 10·m_v·3·BATCH doubles).
 const BATCH: usize = 2048;
 
@@ -529,10 +532,7 @@ impl SigmaVPps {
 
     /// Point, normal and curvatures at each sample from jets of θ of `L` coefficients (what
     /// the output keeps of each point: half a [`SurfacePoint`]).
-    fn geometry<const L: usize>(
-        &self,
-        points: &[SamplePoint],
-    ) -> Result<Vec<([f64; 3], [f64; 3], f64, f64)>, SigmaVError>
+    fn geometry<const L: usize>(&self, points: &[SamplePoint]) -> Result<Vec<Kept>, SigmaVError>
     where
         Jet<f64, L>: SurfaceScalar,
     {
