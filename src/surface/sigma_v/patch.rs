@@ -74,28 +74,60 @@ pub fn bernstein_tri(d: usize, l: [f64; 3], coef: &[f64], out: &mut [f64]) {
 
 /// ψ at barycentric coordinates λ (generic scalar: f64, Mp, jets).
 pub fn eval_tri<S: SurfaceScalar>(d: usize, cps: &[[f64; 3]], coef: &[f64], l: &[S; 3]) -> [S; 3] {
+    use crate::surface::jet::Jet;
+    use std::any::TypeId;
+    let t = TypeId::of::<S>();
+    if t == TypeId::of::<Jet<f64, 6>>()
+        || t == TypeId::of::<Jet<f64, 3>>()
+        || t == TypeId::of::<Jet<f64>>()
+    {
+        // Jets of f64 (the sampling's normals and curvatures): the same operations compiled
+        // for the CPU's vector extensions, which widen the coefficient-wise products and
+        // sums of the jets; products and sums stay separate (never fused), so the bits do
+        // not depend on the CPU.
+        return pulp::Arch::new().dispatch(EvalTri { d, cps, coef, l });
+    }
+    eval_tri_body(d, cps, coef, l)
+}
+
+/// [`eval_tri`] as a [`pulp::WithSimd`] operation.
+struct EvalTri<'a, S> {
+    d: usize,
+    cps: &'a [[f64; 3]],
+    coef: &'a [f64],
+    l: &'a [S; 3],
+}
+
+impl<S: SurfaceScalar> pulp::WithSimd for EvalTri<'_, S> {
+    type Output = [S; 3];
+    #[inline(always)]
+    fn with_simd<V: pulp::Simd>(self, _: V) -> [S; 3] {
+        eval_tri_body(self.d, self.cps, self.coef, self.l)
+    }
+}
+
+#[inline(always)]
+fn eval_tri_body<S: SurfaceScalar>(d: usize, cps: &[[f64; 3]], coef: &[f64], l: &[S; 3]) -> [S; 3] {
     let prec = l[0].precision_bits();
-    let one = S::from_i64(1, prec);
-    let pw: Vec<Vec<S>> = l
-        .iter()
-        .map(|x| {
-            let mut v = Vec::with_capacity(d + 1);
-            v.push(one.clone());
-            for e in 1..=d {
-                let next = v[e - 1].mul(x);
-                v.push(next);
-            }
-            v
-        })
-        .collect();
+    // λ_t^e (e = 0..=d) of the three coordinates in one buffer, t major: one allocation per
+    // patch instead of four.
+    let n = d + 1;
+    let mut pw: Vec<S> = Vec::with_capacity(3 * n);
+    for x in l {
+        pw.push(S::from_i64(1, prec));
+        for _ in 1..=d {
+            let next = pw[pw.len() - 1].mul(x);
+            pw.push(next);
+        }
+    }
     let z = S::from_i64(0, prec);
     let mut acc = [z.clone(), z.clone(), z];
     let mut i = 0;
     for a in 0..=d {
         for b in 0..=d - a {
-            let bern = pw[0][a]
-                .mul(&pw[1][b])
-                .mul(&pw[2][d - a - b])
+            let bern = pw[a]
+                .mul(&pw[n + b])
+                .mul(&pw[2 * n + d - a - b])
                 .scale_f64(coef[i]);
             for (t, slot) in acc.iter_mut().enumerate() {
                 *slot = slot.add(&bern.scale_f64(cps[i][t]));

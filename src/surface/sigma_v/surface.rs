@@ -100,6 +100,9 @@ pub struct SigmaVPps {
     consts: SvConsts<f64>,
 }
 
+/// What the sampling keeps of each point: the point, the normal, K and H.
+type Kept = ([f64; 3], [f64; 3], f64, f64);
+
 /// Corners fitted per matrix product (bounds memory: 10·m_v·3·BATCH doubles).
 const BATCH: usize = 2048;
 
@@ -483,52 +486,64 @@ impl SigmaVPps {
             title: "ppm sample: C-infinity PPS surface, (sigma, v)-indexed construction (tutorial, Part IV)",
             ..SampledMesh::default()
         };
+        let points = &pat.points;
         match attrs {
             Attributes::Positions => {
-                let res: Vec<Result<_, SigmaVError>> = pat
-                    .points
-                    .par_iter()
-                    .map(|s| Ok(self.eval(s.face, &s.bary, &self.consts)?.2))
-                    .collect();
+                let res =
+                    self.map_points(points, |s| Ok(self.eval(s.face, &s.bary, &self.consts)?.2));
                 // The first error in point order, on every run.
                 out.positions = res.into_iter().collect::<Result<_, _>>()?;
             }
             Attributes::Normals => {
-                for g in self.geometry::<3>(&pat.points)? {
-                    out.positions.push(g.point);
-                    out.normals.push(g.normal);
-                }
+                let g = self.geometry::<3>(points)?;
+                out.positions = g.iter().map(|g| g.0).collect();
+                out.normals = g.iter().map(|g| g.1).collect();
             }
             Attributes::Curvature => {
-                for g in self.geometry::<6>(&pat.points)? {
-                    out.positions.push(g.point);
-                    out.normals.push(g.normal);
-                    out.gaussian.push(g.gaussian);
-                    out.mean.push(g.mean);
-                }
+                let g = self.geometry::<6>(points)?;
+                out.positions = g.iter().map(|g| g.0).collect();
+                out.normals = g.iter().map(|g| g.1).collect();
+                out.gaussian = g.iter().map(|g| g.2).collect();
+                out.mean = g.iter().map(|g| g.3).collect();
             }
         }
         Ok(out)
     }
 
-    /// Point, normal and curvatures at each sample from jets of θ of `L` coefficients.
-    fn geometry<const L: usize>(
+    /// `f` at every sample point, evaluated in parallel in the storage order of the control
+    /// points (by the smallest vertex id of the point's face: the corners of v are stored
+    /// together, in vertex order), so that neighbouring evaluations share their ψ_j in cache;
+    /// the results in point order (as `surface::output` does for the vertex construction).
+    fn map_points<T: Send>(
         &self,
         points: &[SamplePoint],
-    ) -> Result<Vec<SurfacePoint>, SigmaVError>
+        f: impl Fn(&SamplePoint) -> T + Sync + Send,
+    ) -> Vec<T> {
+        let keys: Vec<u32> = points
+            .iter()
+            .map(|s| {
+                self.gluing.face_corners(s.face).map_or(u32::MAX, |c| {
+                    c.iter().map(|v| v.0).min().unwrap_or(u32::MAX)
+                })
+            })
+            .collect();
+        crate::surface::pps::map_in_key_order(&keys, |i| f(&points[i]))
+    }
+
+    /// Point, normal and curvatures at each sample from jets of θ of `L` coefficients (what
+    /// the output keeps of each point: half a [`SurfacePoint`]).
+    fn geometry<const L: usize>(&self, points: &[SamplePoint]) -> Result<Vec<Kept>, SigmaVError>
     where
         Jet<f64, L>: SurfaceScalar,
     {
         let cj = self.consts::<Jet<f64, L>>(53);
-        let res: Vec<Result<_, SigmaVError>> = points
-            .par_iter()
-            .map(|s| {
-                let (corner, q) = self.eval_chart(s.face, &s.bary, &self.consts)?;
-                let (x, y) = Jet::<f64, L>::variables(q.x, q.y);
-                let t = self.theta_plane(corner, &P2::new(x, y), &cj)?;
-                Ok(from_jet(&t))
-            })
-            .collect();
+        let res = self.map_points(points, |s| {
+            let (corner, q) = self.eval_chart(s.face, &s.bary, &self.consts)?;
+            let (x, y) = Jet::<f64, L>::variables(q.x, q.y);
+            let t = self.theta_plane(corner, &P2::new(x, y), &cj)?;
+            let g: SurfacePoint = from_jet(&t);
+            Ok((g.point, g.normal, g.gaussian, g.mean))
+        });
         // The first error in point order, on every run.
         res.into_iter().collect()
     }

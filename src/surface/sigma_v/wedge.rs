@@ -123,9 +123,11 @@ impl<S: Scalar> WedgeConsts<S> {
 
     /// Barycentric coordinates (λ_r, λ_A, λ_B) of a local point w.r.t. E = [r, A, B].
     pub fn envelope_bary(&self, p: &P2<S>) -> [S; 3] {
-        self.bary
-            .clone()
-            .map(|(a, b, c)| a.mul(&p.x).add(&b.mul(&p.y)).add(&c))
+        // By reference: a clone of the constants was a copy of nine jets per ψ on jets.
+        std::array::from_fn(|t| {
+            let (a, b, c) = &self.bary[t];
+            a.mul(&p.x).add(&b.mul(&p.y)).add(c)
+        })
     }
 
     /// The vertices r, A, B of the envelope triangle, local coordinates, as f64.
