@@ -171,7 +171,11 @@ fn oracle_self_test_f64_path_agrees_with_mp_and_planted_sign_flip_is_caught() {
             .flat_map(|l| [l, "\n"])
             .collect();
         let r = diff_table(&mut s, &bad, F64_TOL, 5);
-        assert!(r.stats.count > 5, "{} planted lines compared", r.stats.count);
+        assert!(
+            r.stats.count > 5,
+            "{} planted lines compared",
+            r.stats.count
+        );
         assert!(!r.within_tolerance);
         assert!(
             r.stats.max > 1e-3,
