@@ -489,8 +489,7 @@ fn fit_once(
 
 /// One round of the fallback (`unsimplify`) at `sites`: the vertices the refinement inserted
 /// and the sites' neighbourhood kept — from the second round on, and after a fit round, every
-/// current base vertex too — S_T
-/// simplified again. On success the fit continues from the new base mesh (never embedded
+/// current base vertex too — S_T simplified again. On success the fit continues from the new base mesh (never embedded
 /// before) and its hierarchy, the previous embedding (if any) re-slotted to it for the local
 /// update, and what was done is returned; None when every vertex is kept already.
 fn unsimplify_round(

@@ -60,6 +60,22 @@ fn edges_embedded_as_themselves(
     n
 }
 
+/// The first base edge a–b (in face order) that is not an edge of S_T (`st`, [`edges_of`]) and
+/// has vertices of S_T parametrized in its faces: the edge a forced fallback round takes as
+/// blocked.
+fn edge_off_s_t(st: &HashSet<(u32, u32)>, base: &BaseMesh) -> (u32, u32) {
+    base.faces()
+        .flat_map(|(_, c)| (0..3).map(move |i| (c[i], c[(i + 1) % 3])))
+        .find(|&(a, b)| {
+            !st.contains(&(a.min(b), a.max(b)))
+                && [(a, b), (b, a)]
+                    .iter()
+                    .filter_map(|&(u, w)| base.face_of_edge(u, w))
+                    .any(|g| !base.members(g).is_empty())
+        })
+        .expect("a base edge off S_T with vertices of S_T in its faces")
+}
+
 /// One round forced on the generated torus's fit at 10⁻² (which needs none): the base edge
 /// a–b (the first not an edge of S_T with vertices of S_T in its faces) is taken as blocked.
 /// The returned base mesh keeps a, b and the strip (ring 0: their triangles of S_T and those
@@ -76,18 +92,7 @@ fn af_unsimplify_restores_s_t_around_a_blocked_edge_and_planted_stitches_are_cau
     let f = fit_surface(&k, &opts, |_| {}).expect("the fit succeeds");
     assert!(!f.restore.active(), "the torus needs no fallback");
     let st = edges_of(&k);
-    let (a, b) = f
-        .base
-        .faces()
-        .flat_map(|(_, c)| (0..3).map(move |i| (c[i], c[(i + 1) % 3])))
-        .find(|&(a, b)| {
-            !st.contains(&(a.min(b), a.max(b)))
-                && [(a, b), (b, a)]
-                    .iter()
-                    .filter_map(|&(u, w)| f.base.face_of_edge(u, w))
-                    .any(|g| !f.base.members(g).is_empty())
-        })
-        .expect("a base edge off S_T with vertices of S_T in its faces");
+    let (a, b) = edge_off_s_t(&st, &f.base);
     let members: Vec<u32> = [(a, b), (b, a)]
         .iter()
         .filter_map(|&(u, w)| f.base.face_of_edge(u, w))
@@ -261,18 +266,7 @@ fn af_unsimplify_after_refinement_keeps_every_base_vertex_and_updates_locally() 
         }
     }
     assert!(!refined.is_empty(), "vertices of S_T inserted");
-    let st = edges_of(&k);
-    let (a, b) = base
-        .faces()
-        .flat_map(|(_, c)| (0..3).map(move |i| (c[i], c[(i + 1) % 3])))
-        .find(|&(a, b)| {
-            !st.contains(&(a.min(b), a.max(b)))
-                && [(a, b), (b, a)]
-                    .iter()
-                    .filter_map(|&(u, w)| base.face_of_edge(u, w))
-                    .any(|g| !base.members(g).is_empty())
-        })
-        .expect("a base edge off S_T with vertices of S_T in its faces");
+    let (a, b) = edge_off_s_t(&edges_of(&k), &base);
     let n = base.positions().len();
     let round = |keep_base: bool| {
         let mut state = Restore::default();
