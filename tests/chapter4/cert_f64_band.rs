@@ -2,7 +2,7 @@
 //! the bounds at f64 points in the band just outside Ω_uw and on the rest of Ω_u, checked
 //! against 256-bit evaluations; planted faults the new arguments must refuse or catch.
 
-use crate::cert_f64_rounding::{dist, labelled_disk_point, qerr};
+use super::cert_f64_rounding::{dist, labelled_disk_point, qerr};
 use pseudomanifold::certify::{
     attach_f64_bounds, prove_f64_rounding, run, ConfigKey, F64Rounding, Model, Settings, F64_NBHD,
 };

@@ -3,7 +3,7 @@
 //! checked against 256-bit evaluations of the same generic maps at seeded points, and planted
 //! faults (a mutated f64 g_v⁻¹, bounds divided by a factor) that the check must catch.
 
-use crate::cert_f64_rounding::{dist, qerr};
+use super::cert_f64_rounding::{dist, qerr};
 use pseudomanifold::certify::{run, Certificate, ConfigKey, F64Bound, Model, Settings};
 use pseudomanifold::construction::maps::{self, omega_radius, EdgeConfig, Ppm, TriangleConfig, P2};
 use pseudomanifold::construction::Paper;

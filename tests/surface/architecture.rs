@@ -5,7 +5,7 @@
 //! docs/architecture.md); a new upward import fails, and so does a listed one that is gone
 //! (the list only shrinks).
 
-use crate::spec_sync::rust_files;
+use super::spec_sync::rust_files;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 

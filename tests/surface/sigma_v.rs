@@ -649,7 +649,7 @@ fn sv_h_consequence_condition_c_fails_where_declared_empty_pairs_meet() {
 }
 
 /// Timing probe for SPEC `SV-bench` (the bench proper is `benches/sigma_v.rs`): run with
-/// `PPM_SV_BENCH_MESH=../shared/meshes/good/koala.obj cargo test --test surface sigma_v:: -- --ignored`.
+/// `PPM_SV_BENCH_MESH=../shared/meshes/good/koala.obj cargo test --test suite surface::sigma_v:: -- --ignored`.
 #[test]
 #[ignore]
 fn sv_bench_timing_probe() {

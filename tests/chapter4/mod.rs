@@ -1,8 +1,4 @@
-//! Integration tests, one binary per theme (each test binary links the whole crate, so
-//! fewer binaries build faster): Chapter 4: the maps, the mesh-wide runs, the certificate provers, the multi-precision backends.
-
-#[path = "../common/mod.rs"]
-mod common;
+//! The conformance suite's theme: Chapter 4: the maps, the mesh-wide runs, the certificate provers, the multi-precision backends.
 
 mod cert_compact;
 mod cert_docs;
