@@ -395,3 +395,38 @@ fn x_planted_certify_nan_error_and_empty_domain_are_reported() {
         3,
     );
 }
+
+/// `Iv::atan2` on a box that meets the negative x-axis with y straddling 0: Π's range is
+/// (−π, π] (Def. 4.1.5), so the enclosure must hold the angles just above −π (y < 0) and
+/// those up to π (y ≥ 0); a box off the cut stays in its own half-plane.
+#[test]
+fn bk_iv_enclose_iv_atan2_over_the_cut_holds_both_branches() {
+    use pseudomanifold::numeric::interval::Interval;
+    use pseudomanifold::numeric::scalar::Scalar;
+    use pseudomanifold::numeric::Iv;
+    let iv = |lo: f64, hi: f64| Iv(Interval::try_from((lo, hi)).expect("valid interval"));
+    let (y, x) = (iv(-1e-3, 1e-3), iv(-1.0, -0.5));
+    let r = y.atan2(&x);
+    let mut examined = 0u64;
+    for (py, px) in [
+        (-1e-3, -1.0),
+        (-1e-3, -0.5),
+        (0.0, -1.0),
+        (1e-3, -0.5),
+        (1e-3, -1.0),
+    ] {
+        let a = f64::atan2(py, px);
+        assert!(
+            r.0.inf() <= a && a <= r.0.sup(),
+            "atan2({py}, {px}) = {a} outside [{}, {}]",
+            r.0.inf(),
+            r.0.sup()
+        );
+        examined += 1;
+    }
+    let off = iv(0.1, 0.2).atan2(&x);
+    assert!(
+        off.0.inf() > std::f64::consts::FRAC_PI_2 && off.0.sup() <= std::f64::consts::PI + 1e-15
+    );
+    assert_eq!(examined, 5);
+}
