@@ -6,7 +6,8 @@ use super::fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round
 use super::fitted::{BaseSurface, BaseSurfaceError};
 use super::simplify::SimplifyOptions;
 use super::{
-    checks, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock, unsimplify,
+    checks, crossing, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock,
+    unsimplify,
 };
 use crate::mesh::SimplicialSurface;
 
@@ -412,12 +413,29 @@ fn fit_once(
             .iter()
             .copied()
             .fold(0.0, crate::report::harness::dev_max);
+        // Is S embedded (SPEC `AF-embedded`)? Its sample's offending triangles, located at
+        // base faces, are refinement sites beside the vertices beyond ε (`AF-refine-embedded`).
+        let cross = opts
+            .embed_level
+            .map(|l| crossing::check_embedded(&fitted.pps, l));
+        let crosses = cross.as_ref().is_some_and(|c| c.crosses());
+        let cross_slots: Vec<u32> = cross
+            .as_ref()
+            .map(|c| {
+                c.faces
+                    .iter()
+                    .filter_map(|&f| surface.slot_of.get(f as usize).copied())
+                    .collect()
+            })
+            .unwrap_or_default();
         let mut round = Round {
             base_vertices: surface.fine_of.len(),
             max_error,
             p99_error: percentile(&errors, 0.99),
             offenders: offenders.len(),
             folds: 0,
+            crossing_triangles: cross.as_ref().map(|c| c.offending_triangles),
+            crossing_faces: cross.as_ref().map(|c| c.faces.len()),
             refine: None,
             local: local_stats,
             seconds: 0.0,
@@ -432,8 +450,36 @@ fn fit_once(
             opts.epsilon,
             folds
         ));
+        if let Some(c) = &cross {
+            progress(&format!(
+                "embedded (AF-embedded): level-{} sample of S, {} of {} triangles offend at {} base faces{}",
+                c.level,
+                c.offending_triangles,
+                c.triangles,
+                c.faces.len(),
+                if c.crosses() && c.faces.is_empty() {
+                    " (not located)"
+                } else {
+                    ""
+                }
+            ));
+        }
         round.folds = folds;
-        if offenders.is_empty() {
+        let not_embedded = |rounds: usize| match &cross {
+            Some(c) => FitError::NotEmbedded {
+                rounds,
+                level: c.level,
+                triangles: c.offending_triangles,
+                faces: c.faces.len(),
+            },
+            None => FitError::NotEmbedded {
+                rounds,
+                level: 0,
+                triangles: 0,
+                faces: 0,
+            },
+        };
+        if offenders.is_empty() && !crosses {
             round.seconds = tr.elapsed().as_secs_f64();
             rounds.push(round);
             return Ok(Fit {
@@ -444,6 +490,7 @@ fn fit_once(
                 embedded: emb,
                 floater_params: usable,
                 fitted,
+                embed_level: opts.embed_level,
                 errors,
                 rounding_bound: bound,
                 hierarchy,
@@ -453,21 +500,48 @@ fn fit_once(
                 restore,
             });
         }
+        let crossing_faces = cross.as_ref().map_or(0, |c| c.faces.len());
+        let give_up = |rounds: usize| {
+            if offenders.is_empty() {
+                not_embedded(rounds)
+            } else {
+                FitError::NotReached {
+                    epsilon: opts.epsilon,
+                    rounds,
+                    offenders: offenders.len(),
+                    worst: max_error,
+                    folds,
+                    crossing_faces,
+                }
+            }
+        };
         if rounds.len() + 1 >= opts.max_rounds {
-            return Err(FitError::NotReached {
-                epsilon: opts.epsilon,
-                rounds: rounds.len() + 1,
-                offenders: offenders.len(),
-                worst: max_error,
-                folds,
-            });
+            return Err(give_up(rounds.len() + 1));
         }
         prev = match emb {
             Ok(e) if usable && all_hold => Some(local::Previous::new(&base, e)),
             _ => None,
         };
         let mut st = refine::RefineStats::default();
-        for x in refine::choose(&base, &errors, &offenders) {
+        // Both kinds of site are chosen on the base mesh of this round, then inserted.
+        let mut sites = refine::choose(&base, &errors, &offenders);
+        let (at_crossings, no_candidate) = refine::choose_crossing(&base, &cross_slots);
+        if !cross_slots.is_empty() {
+            progress(&format!(
+                "refine (AF-refine-embedded): {} vertices of S_T chosen at {} crossing base faces{}",
+                at_crossings.len(),
+                cross_slots.len(),
+                if no_candidate > 0 {
+                    format!(", {no_candidate} faces with no vertex of S_T near")
+                } else {
+                    String::new()
+                }
+            ));
+        }
+        sites.extend(at_crossings);
+        let mut seen = std::collections::HashSet::new();
+        sites.retain(|&x| seen.insert(x));
+        for x in sites {
             if !base.is_base(x) && refine::insert(&mut base, x, &mut st) {
                 refined.push(x);
             }
@@ -476,13 +550,7 @@ fn fit_once(
         round.seconds = tr.elapsed().as_secs_f64();
         rounds.push(round);
         if st.inserted == 0 {
-            return Err(FitError::NotReached {
-                epsilon: opts.epsilon,
-                rounds: rounds.len(),
-                offenders: offenders.len(),
-                worst: max_error,
-                folds,
-            });
+            return Err(give_up(rounds.len()));
         }
     }
 }

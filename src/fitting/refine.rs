@@ -96,3 +96,35 @@ pub fn choose(base: &BaseMesh, err: &[f64], offenders: &[u32]) -> Vec<u32> {
     }
     best.into_values().map(|(_, x)| x).collect()
 }
+
+/// The vertices to insert where S crosses itself (SPEC `AF-refine-embedded`): per base face
+/// slot whose sample crosses, the vertex of S_T parametrized in it furthest from its flat base
+/// triangle (where the fit bends most: the crossings are where the patches follow a curved
+/// S_T over a large chart); a face with none takes the furthest among the faces around its
+/// corners (the repair's rule for a crossing base mesh). Sorted, unique; the faces with no
+/// candidate at all are counted.
+pub fn choose_crossing(base: &BaseMesh, slots: &[u32]) -> (Vec<u32>, usize) {
+    let mut out = Vec::new();
+    let mut none = 0;
+    for &f in slots {
+        let mut cand: Vec<u32> = base.members(f).to_vec();
+        if cand.is_empty() {
+            for v in base.face(f).into_iter().flatten() {
+                for &g in base.faces_around(v) {
+                    cand.extend_from_slice(base.members(g));
+                }
+            }
+        }
+        let worst = cand
+            .into_iter()
+            .filter(|&x| !base.is_base(x))
+            .max_by(|&a, &b| base.flat_deviation(a).total_cmp(&base.flat_deviation(b)));
+        match worst {
+            Some(x) => out.push(x),
+            None => none += 1,
+        }
+    }
+    out.sort_unstable();
+    out.dedup();
+    (out, none)
+}

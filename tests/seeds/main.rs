@@ -6,6 +6,7 @@
 mod common;
 
 mod fitting;
+mod fitting_embedded;
 mod fitting_local;
 mod fitting_unblock;
 mod fitting_unsimplify;
