@@ -113,21 +113,18 @@ fn af_planted_nan_sample_position_is_caught_by_af_embedded() {
     let per = triangles_per_face(2);
     let clean = check_sample(&m.positions, &m.faces, nf, 2);
     assert_holds_for("torus sample", &clean.result);
-    // Base face 5's sample triangle 4 (level 2: the middle row) has a corner inside the face.
-    let t = 5 * per + 4;
+    // A sample point used only by base face 5's triangles (inside that face).
     let mut pos = m.positions.clone();
-    let inside = m.faces[t]
+    let inside = m.faces[5 * per..6 * per]
         .iter()
+        .flatten()
         .copied()
-        .find(|&p| m.faces.iter().filter(|tri| tri.contains(&p)).count() == 6)
-        .and_then(|p| {
-            // A point used only by face 5's triangles lies inside it.
+        .find(|&p| {
             m.faces
                 .iter()
                 .enumerate()
                 .filter(|(_, tri)| tri.contains(&p))
                 .all(|(i, _)| i / per == 5)
-                .then_some(p)
         })
         .expect("an inner sample point of base face 5");
     pos[inside as usize] = [f64::NAN; 3];
@@ -139,4 +136,40 @@ fn af_planted_nan_sample_position_is_caught_by_af_embedded() {
     assert_caught(&wrong.result);
     assert!(wrong.faces.is_empty());
     record("AF-planted", Seen::Caught, c.result.examined);
+}
+
+/// The refinement at crossing base faces (SPEC `AF-refine-embedded`): spot_low_resolution at
+/// ε = 10⁻² of the diagonal meets ε in its first round but the level-2 sample of that S
+/// crosses (`AF-embedded` fails on it: the fit without the check, one round); the loop
+/// refines at the crossing faces and ends with ε at every vertex and the sample embedded.
+#[test]
+fn af_refine_embedded_ends_with_af_embedded_holding_on_spot() {
+    let Some(dir) = crate::common::shared_path("af_refine_embedded", "meshes/good") else {
+        return;
+    };
+    let k = pseudomanifold::mesh::load_surface(&dir.join("spot_low_resolution.obj"))
+        .expect("corpus mesh loads");
+    let eps = 1e-2 * diagonal(&k);
+    let mut o = FitOptions::new(eps);
+    o.embed_level = None;
+    let plain = fit_surface(&k, &o, |_| {}).expect("the fit without the check");
+    assert_eq!(plain.rounds.len(), 1, "ε holds in the first round");
+    let before = check_embedded(&plain.fitted.pps, 2);
+    assert!(
+        before.result.failed() && !before.faces.is_empty(),
+        "the first round's S crosses at level 2"
+    );
+    let f = fit_surface(&k, &FitOptions::new(eps), |_| {}).expect("the fit");
+    let first = &f.rounds[0];
+    assert_eq!(first.crossing_faces, Some(before.faces.len()));
+    assert_eq!(first.crossing_triangles, Some(before.offending_triangles));
+    assert!(first.refine.is_some_and(|r| r.inserted > 0));
+    let last = f.rounds.last().expect("a round");
+    assert_eq!((last.offenders, last.crossing_faces), (0, Some(0)));
+    let after = check_embedded(&f.fitted.pps, 2);
+    assert_holds_for("spot at 1e-2", &after.result);
+    for r in pseudomanifold::fitting::checks::run_fit_checks(&k, &f, 1) {
+        assert_holds_for("spot at 1e-2", &r);
+    }
+    record("AF-embedded", Seen::Holds, after.result.examined);
 }
