@@ -6,7 +6,7 @@ use super::fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round
 use super::fitted::{BaseSurface, BaseSurfaceError};
 use super::simplify::SimplifyOptions;
 use super::{
-    checks, crossing, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock,
+    checks, crossing, embed_checks, embedded, fitted, local, refine, simplify, unblock,
     unsimplify,
 };
 use crate::mesh::SimplicialSurface;
@@ -526,15 +526,28 @@ fn fit_once(
         // Both kinds of site are chosen on the base mesh of this round, then inserted.
         let mut sites = refine::choose(&base, &errors, &offenders);
         let (at_crossings, no_candidate) = refine::choose_crossing(&base, &cross_slots);
+        // Where no vertex of S_T is left near a crossing face (S_T's own triangles, e.g. a
+        // sliver at a crease), its longest flippable edge is flipped, before the insertions
+        // (the slots are this round's).
+        let mut flipped = 0;
+        for &f in &no_candidate {
+            if refine::flip_longest(&mut base, f, &pos) {
+                flipped += 1;
+            }
+        }
+        st.flips += flipped;
         if !cross_slots.is_empty() {
             progress(&format!(
                 "refine (AF-refine-embedded): {} vertices of S_T chosen at {} crossing base faces{}",
                 at_crossings.len(),
                 cross_slots.len(),
-                if no_candidate > 0 {
-                    format!(", {no_candidate} faces with no vertex of S_T near")
-                } else {
+                if no_candidate.is_empty() {
                     String::new()
+                } else {
+                    format!(
+                        ", {} faces with no vertex of S_T near: {flipped} edges flipped there",
+                        no_candidate.len()
+                    )
                 }
             ));
         }
@@ -549,7 +562,7 @@ fn fit_once(
         round.refine = Some(st);
         round.seconds = tr.elapsed().as_secs_f64();
         rounds.push(round);
-        if st.inserted == 0 {
+        if st.inserted == 0 && flipped == 0 {
             return Err(give_up(rounds.len()));
         }
     }
@@ -674,17 +687,8 @@ fn repair(base: &mut BaseMesh, faces: &[u32], pos: &[[f64; 3]]) -> refine::Refin
                 refine::insert(base, x, &mut st);
             }
             _ => {
-                if let Some(c) = base.face(f) {
-                    let mut edges: Vec<(f64, u32, u32)> = (0..3)
-                        .map(|i| {
-                            let (a, b) = (c[i], c[(i + 1) % 3]);
-                            (geodesic::dist(pos[a as usize], pos[b as usize]), a, b)
-                        })
-                        .collect();
-                    edges.sort_by(|x, y| y.0.total_cmp(&x.0));
-                    if edges.iter().any(|&(_, a, b)| base.flip(a, b).is_ok()) {
-                        st.flips += 1;
-                    }
+                if refine::flip_longest(base, f, pos) {
+                    st.flips += 1;
                 }
             }
         }

@@ -101,11 +101,11 @@ pub fn choose(base: &BaseMesh, err: &[f64], offenders: &[u32]) -> Vec<u32> {
 /// slot whose sample crosses, the vertex of S_T parametrized in it furthest from its flat base
 /// triangle (where the fit bends most: the crossings are where the patches follow a curved
 /// S_T over a large chart); a face with none takes the furthest among the faces around its
-/// corners (the repair's rule for a crossing base mesh). Sorted, unique; the faces with no
-/// candidate at all are counted.
-pub fn choose_crossing(base: &BaseMesh, slots: &[u32]) -> (Vec<u32>, usize) {
+/// corners (the repair's rule for a crossing base mesh). Sorted, unique; and the slots with no
+/// candidate at all (S_T's own triangles, e.g. slivers at a crease: the caller flips there).
+pub fn choose_crossing(base: &BaseMesh, slots: &[u32]) -> (Vec<u32>, Vec<u32>) {
     let mut out = Vec::new();
-    let mut none = 0;
+    let mut none = Vec::new();
     for &f in slots {
         let mut cand: Vec<u32> = base.members(f).to_vec();
         if cand.is_empty() {
@@ -121,10 +121,30 @@ pub fn choose_crossing(base: &BaseMesh, slots: &[u32]) -> (Vec<u32>, usize) {
             .max_by(|&a, &b| base.flat_deviation(a).total_cmp(&base.flat_deviation(b)));
         match worst {
             Some(x) => out.push(x),
-            None => none += 1,
+            None => none.push(f),
         }
     }
     out.sort_unstable();
     out.dedup();
     (out, none)
+}
+
+/// Flip the longest edge of base face slot `f` that can be flipped (the repair's rule where
+/// no vertex of S_T is left to insert). Whether one was.
+pub fn flip_longest(base: &mut BaseMesh, f: u32, pos: &[[f64; 3]]) -> bool {
+    let Some(c) = base.face(f) else {
+        return false;
+    };
+    let mut edges: Vec<(f64, u32, u32)> = (0..3)
+        .map(|i| {
+            let (a, b) = (c[i], c[(i + 1) % 3]);
+            (
+                super::geodesic::dist(pos[a as usize], pos[b as usize]),
+                a,
+                b,
+            )
+        })
+        .collect();
+    edges.sort_by(|x, y| y.0.total_cmp(&x.0));
+    edges.iter().any(|&(_, a, b)| base.flip(a, b).is_ok())
 }
