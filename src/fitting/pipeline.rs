@@ -6,8 +6,7 @@ use super::fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round
 use super::fitted::{BaseSurface, BaseSurfaceError};
 use super::simplify::SimplifyOptions;
 use super::{
-    checks, crossing, embed_checks, embedded, fitted, local, refine, simplify, unblock,
-    unsimplify,
+    checks, crossing, embed_checks, embedded, fitted, local, refine, simplify, unblock, unsimplify,
 };
 use crate::mesh::SimplicialSurface;
 
@@ -523,12 +522,14 @@ fn fit_once(
             _ => None,
         };
         let mut st = refine::RefineStats::default();
-        // Both kinds of site are chosen on the base mesh of this round, then inserted.
-        let mut sites = refine::choose(&base, &errors, &offenders);
+        // The vertices beyond ε are chosen on this round's base mesh; the crossing faces are
+        // refined first, each insertion kept only if the base mesh stays valid, then the ε
+        // sites are inserted as before (`AF-refine-rule`).
+        let eps_sites = refine::choose(&base, &errors, &offenders);
         let (at_crossings, no_candidate) = refine::choose_crossing(&base, &cross_slots);
         // Where no vertex of S_T is left near a crossing face (S_T's own triangles, e.g. a
-        // sliver at a crease), its longest flippable edge is flipped, before the insertions
-        // (the slots are this round's).
+        // sliver at a crease), its longest flippable edge is flipped (the slots are this
+        // round's, so before any insertion).
         let mut flipped = 0;
         for &f in &no_candidate {
             if refine::flip_longest(&mut base, f, &pos) {
@@ -536,11 +537,20 @@ fn fit_once(
             }
         }
         st.flips += flipped;
+        let mut crossing_inserted = 0;
+        for cands in &at_crossings {
+            if let Some(x) =
+                refine::insert_valid(&mut base, cands, &mut st, |b| BaseSurface::new(b).is_ok())
+            {
+                refined.push(x);
+                crossing_inserted += 1;
+            }
+        }
         if !cross_slots.is_empty() {
             progress(&format!(
-                "refine (AF-refine-embedded): {} vertices of S_T chosen at {} crossing base faces{}",
-                at_crossings.len(),
+                "refine (AF-refine-embedded): {crossing_inserted} vertices of S_T inserted at {} crossing base faces ({} insertions undone: the base mesh would cross){}",
                 cross_slots.len(),
+                st.refused,
                 if no_candidate.is_empty() {
                     String::new()
                 } else {
@@ -551,10 +561,7 @@ fn fit_once(
                 }
             ));
         }
-        sites.extend(at_crossings);
-        let mut seen = std::collections::HashSet::new();
-        sites.retain(|&x| seen.insert(x));
-        for x in sites {
+        for x in eps_sites {
             if !base.is_base(x) && refine::insert(&mut base, x, &mut st) {
                 refined.push(x);
             }
