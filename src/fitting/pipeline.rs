@@ -538,12 +538,14 @@ fn fit_once(
         }
         st.flips += flipped;
         let mut crossing_inserted = 0;
+        let mut undone: Vec<u32> = Vec::new();
         for cands in &at_crossings {
-            if let Some(x) =
-                refine::insert_valid(&mut base, cands, &mut st, |b| BaseSurface::new(b).is_ok())
-            {
-                refined.push(x);
-                crossing_inserted += 1;
+            match refine::insert_valid(&mut base, cands, &mut st, |b| BaseSurface::new(b).is_ok()) {
+                Some(x) => {
+                    refined.push(x);
+                    crossing_inserted += 1;
+                }
+                None => undone.extend(cands.first()),
             }
         }
         if !cross_slots.is_empty() {
@@ -564,6 +566,22 @@ fn fit_once(
         for x in eps_sites {
             if !base.is_base(x) && refine::insert(&mut base, x, &mut st) {
                 refined.push(x);
+            }
+        }
+        // A round that would change nothing: the undone insertions are made after all, and a
+        // base mesh the validator refuses goes to the repair (`AF-refine-rule`; the anchor's
+        // creases at 10⁻² need it).
+        if st.inserted == 0 && flipped == 0 {
+            for x in undone {
+                if !base.is_base(x) && refine::insert(&mut base, x, &mut st) {
+                    refined.push(x);
+                }
+            }
+            if st.inserted > 0 {
+                progress(&format!(
+                    "refine (AF-refine-embedded): no other change this round: {} undone insertions made, the repair's rule follows",
+                    st.inserted
+                ));
             }
         }
         round.refine = Some(st);
