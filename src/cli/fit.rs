@@ -40,6 +40,11 @@ pub(super) struct FitArgs {
     /// Refinement rounds at most.
     #[arg(long, default_value_t = 40)]
     pub max_rounds: usize,
+    /// S is sampled at this level and the sample validated (SPEC AF-embedded); base faces
+    /// whose sample crosses are refined until it does not (SPEC AF-refine-embedded).
+    #[arg(long, default_value_t = crate::fitting::crossing::DEFAULT_EMBED_LEVEL,
+          value_parser = clap::value_parser!(u32).range(0..=6))]
+    pub embed_level: u32,
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
@@ -69,6 +74,7 @@ pub(super) fn run(a: FitArgs) -> ExitCode {
     o.degree = a.patch_degree;
     o.deviation_ratio = a.deviation_ratio;
     o.max_rounds = a.max_rounds;
+    o.embed_level = Some(a.embed_level);
     let quiet = a.quiet;
     let fit = match fit_surface(&k, &o, |line| {
         if !quiet {
@@ -105,6 +111,7 @@ pub(super) fn run(a: FitArgs) -> ExitCode {
         "rounding_bound": fit.rounding_bound,
         "hierarchy": fit.hierarchy,
         "repairs": fit.repairs,
+        "embed_level": fit.embed_level,
         "rounds": fit.rounds,
         "snaps": fit.base.snaps,
         "checks": checks,
@@ -231,13 +238,21 @@ pub(super) fn sample_fit(
 }
 
 /// `ppm check --spec FIT`: the (σ, v) checks (Def. 3.4.1, condition (C), smoothness, eval) on
-/// the fitted PPS read back; the ε statement needs S_T and is checked by `ppm fit`.
+/// the fitted PPS read back, and S embedded at the default sample level (SPEC `AF-embedded`);
+/// the ε statement needs S_T and is checked by `ppm fit`.
 pub(super) fn check_fit_file(file: &std::path::Path, json: bool, seed: u64) -> ExitCode {
     let f = match read(file) {
         Ok(f) => f,
         Err(c) => return c,
     };
-    let checks = sv_checks(&f.k, &f.pps, seed);
+    let mut checks = sv_checks(&f.k, &f.pps, seed);
+    checks.push(
+        crate::fitting::crossing::check_embedded(
+            &f.pps,
+            crate::fitting::crossing::DEFAULT_EMBED_LEVEL,
+        )
+        .result,
+    );
     let unexpected = unexpected(&checks);
     if json {
         let out = serde_json::json!({"fit": file.display().to_string(), "checks": checks, "unexpected_failures": unexpected});

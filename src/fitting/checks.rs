@@ -342,5 +342,9 @@ pub fn run_fit_checks(k: &SimplicialSurface, fit: &Fit, seed: u64) -> Vec<CheckR
             seed,
         ),
     ]);
+    // S embedded at the sample level the fit was made with (SPEC `AF-embedded`).
+    if let Some(level) = fit.embed_level {
+        out.push(super::crossing::check_embedded(&fit.fitted.pps, level).result);
+    }
     out
 }

@@ -25,6 +25,10 @@ pub struct FitOptions {
     pub max_degree: usize,
     /// Refinement rounds at most.
     pub max_rounds: usize,
+    /// The level at which S is sampled to check that it is embedded (SPEC `AF-embedded`);
+    /// base faces whose sample crosses are refined like vertices beyond ε
+    /// (`AF-refine-embedded`). None: not checked in the loop.
+    pub embed_level: Option<u32>,
 }
 
 impl FitOptions {
@@ -37,6 +41,7 @@ impl FitOptions {
             degree: crate::surface::sigma_v::DEFAULT_PATCH_DEGREE,
             max_degree: 12,
             max_rounds: 40,
+            embed_level: Some(super::crossing::DEFAULT_EMBED_LEVEL),
         }
     }
 }
@@ -76,7 +81,7 @@ pub enum FitError {
         classes: String,
     },
     /// ε was not reached in the allowed rounds.
-    #[error("epsilon {epsilon} not reached after {rounds} refinement rounds: {offenders} vertices still further (worst {worst}), {folds} triangles of S_T folded")]
+    #[error("epsilon {epsilon} not reached after {rounds} refinement rounds: {offenders} vertices still further (worst {worst}), {folds} triangles of S_T folded, {crossing_faces} base faces whose sample crosses (AF-embedded)")]
     NotReached {
         /// ε.
         epsilon: f64,
@@ -88,6 +93,20 @@ pub enum FitError {
         worst: f64,
         /// Triangles of S_T still folded in T_v.
         folds: usize,
+        /// Base faces whose sample still crosses (SPEC `AF-embedded`; 0 when not checked).
+        crossing_faces: usize,
+    },
+    /// ε holds, but S is not embedded at the sample level after the allowed rounds.
+    #[error("the fitted surface is not embedded after {rounds} refinement rounds: its level-{level} sample has {triangles} offending triangles at {faces} base faces (AF-embedded)")]
+    NotEmbedded {
+        /// Rounds spent.
+        rounds: usize,
+        /// The sample level.
+        level: u32,
+        /// Offending sample triangles.
+        triangles: usize,
+        /// Base faces they sample.
+        faces: usize,
     },
 }
 
@@ -105,6 +124,10 @@ pub struct Round {
     pub offenders: usize,
     /// Pieces of triangles of S_T folded by Floater's maps (`AF-param-bijective`), reported.
     pub folds: usize,
+    /// Offending triangles of the round's sample of S (SPEC `AF-embedded`; None: not checked).
+    pub crossing_triangles: Option<usize>,
+    /// The base faces they sample.
+    pub crossing_faces: Option<usize>,
     /// Refinement done after the round (None for the last).
     pub refine: Option<refine::RefineStats>,
     /// What the round's embedding kept from the previous round's (None: all of S_T was
@@ -130,6 +153,8 @@ pub struct Fit {
     pub floater_params: bool,
     /// The fitted PPS.
     pub fitted: Fitted,
+    /// The sample level of `AF-embedded` (None: not checked).
+    pub embed_level: Option<u32>,
     /// Error of every vertex of S_T.
     pub errors: Vec<f64>,
     /// Bound on the f64 rounding of eval (added to each error before comparing with ε).

@@ -21,6 +21,7 @@
 
 pub mod base;
 pub mod checks;
+pub mod crossing;
 pub(crate) mod disjoint;
 pub mod embed_checks;
 pub mod embedded;

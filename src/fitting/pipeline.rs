@@ -6,7 +6,7 @@ use super::fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round
 use super::fitted::{BaseSurface, BaseSurfaceError};
 use super::simplify::SimplifyOptions;
 use super::{
-    checks, embed_checks, embedded, fitted, geodesic, local, refine, simplify, unblock, unsimplify,
+    checks, crossing, embed_checks, embedded, fitted, local, refine, simplify, unblock, unsimplify,
 };
 use crate::mesh::SimplicialSurface;
 
@@ -412,12 +412,29 @@ fn fit_once(
             .iter()
             .copied()
             .fold(0.0, crate::report::harness::dev_max);
+        // Is S embedded (SPEC `AF-embedded`)? Its sample's offending triangles, located at
+        // base faces, are refinement sites beside the vertices beyond ε (`AF-refine-embedded`).
+        let cross = opts
+            .embed_level
+            .map(|l| crossing::check_embedded(&fitted.pps, l));
+        let crosses = cross.as_ref().is_some_and(|c| c.crosses());
+        let cross_slots: Vec<u32> = cross
+            .as_ref()
+            .map(|c| {
+                c.faces
+                    .iter()
+                    .filter_map(|&f| surface.slot_of.get(f as usize).copied())
+                    .collect()
+            })
+            .unwrap_or_default();
         let mut round = Round {
             base_vertices: surface.fine_of.len(),
             max_error,
             p99_error: percentile(&errors, 0.99),
             offenders: offenders.len(),
             folds: 0,
+            crossing_triangles: cross.as_ref().map(|c| c.offending_triangles),
+            crossing_faces: cross.as_ref().map(|c| c.faces.len()),
             refine: None,
             local: local_stats,
             seconds: 0.0,
@@ -432,8 +449,36 @@ fn fit_once(
             opts.epsilon,
             folds
         ));
+        if let Some(c) = &cross {
+            progress(&format!(
+                "embedded (AF-embedded): level-{} sample of S, {} of {} triangles offend at {} base faces{}",
+                c.level,
+                c.offending_triangles,
+                c.triangles,
+                c.faces.len(),
+                if c.crosses() && c.faces.is_empty() {
+                    " (not located)"
+                } else {
+                    ""
+                }
+            ));
+        }
         round.folds = folds;
-        if offenders.is_empty() {
+        let not_embedded = |rounds: usize| match &cross {
+            Some(c) => FitError::NotEmbedded {
+                rounds,
+                level: c.level,
+                triangles: c.offending_triangles,
+                faces: c.faces.len(),
+            },
+            None => FitError::NotEmbedded {
+                rounds,
+                level: 0,
+                triangles: 0,
+                faces: 0,
+            },
+        };
+        if offenders.is_empty() && !crosses {
             round.seconds = tr.elapsed().as_secs_f64();
             rounds.push(round);
             return Ok(Fit {
@@ -444,6 +489,7 @@ fn fit_once(
                 embedded: emb,
                 floater_params: usable,
                 fitted,
+                embed_level: opts.embed_level,
                 errors,
                 rounding_bound: bound,
                 hierarchy,
@@ -453,36 +499,96 @@ fn fit_once(
                 restore,
             });
         }
+        let crossing_faces = cross.as_ref().map_or(0, |c| c.faces.len());
+        let give_up = |rounds: usize| {
+            if offenders.is_empty() {
+                not_embedded(rounds)
+            } else {
+                FitError::NotReached {
+                    epsilon: opts.epsilon,
+                    rounds,
+                    offenders: offenders.len(),
+                    worst: max_error,
+                    folds,
+                    crossing_faces,
+                }
+            }
+        };
         if rounds.len() + 1 >= opts.max_rounds {
-            return Err(FitError::NotReached {
-                epsilon: opts.epsilon,
-                rounds: rounds.len() + 1,
-                offenders: offenders.len(),
-                worst: max_error,
-                folds,
-            });
+            return Err(give_up(rounds.len() + 1));
         }
         prev = match emb {
             Ok(e) if usable && all_hold => Some(local::Previous::new(&base, e)),
             _ => None,
         };
         let mut st = refine::RefineStats::default();
-        for x in refine::choose(&base, &errors, &offenders) {
+        // The vertices beyond ε are chosen on this round's base mesh; the crossing faces are
+        // refined first, each insertion kept only if the base mesh stays valid, then the ε
+        // sites are inserted as before (`AF-refine-rule`).
+        let eps_sites = refine::choose(&base, &errors, &offenders);
+        let (at_crossings, no_candidate) = refine::choose_crossing(&base, &cross_slots);
+        // Where no vertex of S_T is left near a crossing face (S_T's own triangles, e.g. a
+        // sliver at a crease), its longest flippable edge is flipped (the slots are this
+        // round's, so before any insertion).
+        let mut flipped = 0;
+        for &f in &no_candidate {
+            if refine::flip_longest(&mut base, f, &pos) {
+                flipped += 1;
+            }
+        }
+        st.flips += flipped;
+        let mut crossing_inserted = 0;
+        let mut undone: Vec<u32> = Vec::new();
+        for cands in &at_crossings {
+            match refine::insert_valid(&mut base, cands, &mut st, |b| BaseSurface::new(b).is_ok()) {
+                Some(x) => {
+                    refined.push(x);
+                    crossing_inserted += 1;
+                }
+                None => undone.extend(cands.first()),
+            }
+        }
+        if !cross_slots.is_empty() {
+            progress(&format!(
+                "refine (AF-refine-embedded): {crossing_inserted} vertices of S_T inserted at {} crossing base faces ({} insertions undone: the base mesh would cross){}",
+                cross_slots.len(),
+                st.refused,
+                if no_candidate.is_empty() {
+                    String::new()
+                } else {
+                    format!(
+                        ", {} faces with no vertex of S_T near: {flipped} edges flipped there",
+                        no_candidate.len()
+                    )
+                }
+            ));
+        }
+        for x in eps_sites {
             if !base.is_base(x) && refine::insert(&mut base, x, &mut st) {
                 refined.push(x);
+            }
+        }
+        // A round that would change nothing: the undone insertions are made after all, and a
+        // base mesh the validator refuses goes to the repair (`AF-refine-rule`; the anchor's
+        // creases at 10⁻² need it).
+        if st.inserted == 0 && flipped == 0 {
+            for x in undone {
+                if !base.is_base(x) && refine::insert(&mut base, x, &mut st) {
+                    refined.push(x);
+                }
+            }
+            if st.inserted > 0 {
+                progress(&format!(
+                    "refine (AF-refine-embedded): no other change this round: {} undone insertions made, the repair's rule follows",
+                    st.inserted
+                ));
             }
         }
         round.refine = Some(st);
         round.seconds = tr.elapsed().as_secs_f64();
         rounds.push(round);
-        if st.inserted == 0 {
-            return Err(FitError::NotReached {
-                epsilon: opts.epsilon,
-                rounds: rounds.len(),
-                offenders: offenders.len(),
-                worst: max_error,
-                folds,
-            });
+        if st.inserted == 0 && flipped == 0 {
+            return Err(give_up(rounds.len()));
         }
     }
 }
@@ -606,17 +712,8 @@ fn repair(base: &mut BaseMesh, faces: &[u32], pos: &[[f64; 3]]) -> refine::Refin
                 refine::insert(base, x, &mut st);
             }
             _ => {
-                if let Some(c) = base.face(f) {
-                    let mut edges: Vec<(f64, u32, u32)> = (0..3)
-                        .map(|i| {
-                            let (a, b) = (c[i], c[(i + 1) % 3]);
-                            (geodesic::dist(pos[a as usize], pos[b as usize]), a, b)
-                        })
-                        .collect();
-                    edges.sort_by(|x, y| y.0.total_cmp(&x.0));
-                    if edges.iter().any(|&(_, a, b)| base.flip(a, b).is_ok()) {
-                        st.flips += 1;
-                    }
+                if refine::flip_longest(base, f, pos) {
+                    st.flips += 1;
                 }
             }
         }

@@ -96,3 +96,96 @@ pub fn choose(base: &BaseMesh, err: &[f64], offenders: &[u32]) -> Vec<u32> {
     }
     best.into_values().map(|(_, x)| x).collect()
 }
+
+/// How far vertex x's parameter is from the centroid of its base face (max |b_i − 1/3|).
+fn off_centre(base: &BaseMesh, x: u32) -> f64 {
+    match base.params()[x as usize] {
+        Param::Face { b, .. } => b.iter().map(|t| (t - 1.0 / 3.0).abs()).fold(0.0, f64::max),
+        Param::Vertex => f64::INFINITY,
+    }
+}
+
+/// Candidates tried per crossing base face, at most (see [`insert_valid`]).
+pub const CROSSING_CANDIDATES: usize = 4;
+
+/// The vertices to insert where S crosses itself (SPEC `AF-refine-embedded`): per base face
+/// slot whose sample crosses, the vertices of S_T parametrized in it, nearest the centroid of
+/// the face first (the chart is split evenly: the crossings are where a chart is large against
+/// the curvature or the distance to another sheet; the vertex furthest from the flat triangle
+/// was tried first and sent armadillo at 10⁻² through many blocked embeddings), at most
+/// [`CROSSING_CANDIDATES`]; a face with none takes
+/// those of the faces around its corners (the repair's rule for a crossing base mesh). And
+/// the slots with no candidate at all (S_T's own triangles, e.g. slivers at a crease: the
+/// caller flips there).
+pub fn choose_crossing(base: &BaseMesh, slots: &[u32]) -> (Vec<Vec<u32>>, Vec<u32>) {
+    let mut out = Vec::new();
+    let mut none = Vec::new();
+    for &f in slots {
+        let mut cand: Vec<u32> = base.members(f).to_vec();
+        if cand.is_empty() {
+            for v in base.face(f).into_iter().flatten() {
+                for &g in base.faces_around(v) {
+                    cand.extend_from_slice(base.members(g));
+                }
+            }
+        }
+        cand.retain(|&x| !base.is_base(x));
+        cand.sort_unstable();
+        cand.dedup();
+        cand.sort_by(|&a, &b| off_centre(base, a).total_cmp(&off_centre(base, b)));
+        cand.truncate(CROSSING_CANDIDATES);
+        if cand.is_empty() {
+            none.push(f);
+        } else {
+            out.push(cand);
+        }
+    }
+    (out, none)
+}
+
+/// Insert the first of `cands` whose insertion leaves a base mesh `valid` accepts (the
+/// validator: an insertion at a crossing of S must not make the base mesh cross, which the
+/// repair would then undo by many flips); the refused ones are undone and counted. The vertex
+/// inserted, if any.
+pub fn insert_valid(
+    base: &mut BaseMesh,
+    cands: &[u32],
+    stats: &mut RefineStats,
+    valid: impl Fn(&BaseMesh) -> bool,
+) -> Option<u32> {
+    for &x in cands {
+        if base.is_base(x) {
+            continue;
+        }
+        let mut trial = base.clone();
+        let mut st = RefineStats::default();
+        if insert(&mut trial, x, &mut st) && valid(&trial) {
+            *base = trial;
+            stats.inserted += st.inserted;
+            stats.flips += st.flips;
+            return Some(x);
+        }
+        stats.refused += 1;
+    }
+    None
+}
+
+/// Flip the longest edge of base face slot `f` that can be flipped (the repair's rule where
+/// no vertex of S_T is left to insert). Whether one was.
+pub fn flip_longest(base: &mut BaseMesh, f: u32, pos: &[[f64; 3]]) -> bool {
+    let Some(c) = base.face(f) else {
+        return false;
+    };
+    let mut edges: Vec<(f64, u32, u32)> = (0..3)
+        .map(|i| {
+            let (a, b) = (c[i], c[(i + 1) % 3]);
+            (
+                super::geodesic::dist(pos[a as usize], pos[b as usize]),
+                a,
+                b,
+            )
+        })
+        .collect();
+    edges.sort_by(|x, y| y.0.total_cmp(&x.0));
+    edges.iter().any(|&(_, a, b)| base.flip(a, b).is_ok())
+}

@@ -2,6 +2,7 @@
 //! 004 (simplicial diffeomorphisms).
 
 mod fitting;
+mod fitting_embedded;
 mod fitting_local;
 mod fitting_unblock;
 mod fitting_unsimplify;

@@ -67,6 +67,16 @@ type SearchFace = (u32, [u32; 3], Vec<AABB<[f64; 3]>>);
 /// are reported by their own checks; exact predicates on a degenerate triangle answer a
 /// different question). Pairs with identical vertex sets are duplicates, reported elsewhere.
 pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult {
+    triangles_meet_properly_pairs(raw, eligible).0
+}
+
+/// [`triangles_meet_properly`] with every offending pair it found (the result lists only the
+/// first few as witnesses; a caller that locates them, SPEC `AF-embedded`, needs all, up to
+/// [`MAX_COUNTED_INTERSECTIONS`]).
+pub fn triangles_meet_properly_pairs(
+    raw: &RawMesh,
+    eligible: &[bool],
+) -> (CheckResult, Vec<(u32, u32)>) {
     let mut r = Check::new(
         "D3.1.3(ii)(triangles)",
         "triangles meet only in common faces (no self-intersection)",
@@ -224,7 +234,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
         start = end;
         block = (2 * block).min(MAX_BLOCK);
     }
-    for (a, b) in hits {
+    for &(a, b) in &hits {
         r.offend(|| {
             Witness::new(
                 format!(
@@ -245,7 +255,7 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
             "exact orientation predicates; search stopped in the stars of vertices of degree ≥ {HIGH_DEGREE} after {} offending pairs (cap {MAX_COUNTED_INTERSECTIONS}): the count is a lower bound",
             r.offenders
         );
-        return r.finish("");
+        return (r.finish(""), hits);
     }
     if let Some(last) = stopped_at {
         r.note = format!(
@@ -253,10 +263,10 @@ pub fn triangles_meet_properly(raw: &RawMesh, eligible: &[bool]) -> CheckResult 
             r.offenders,
             raw.describe_face(last as usize)
         );
-        return r.finish("");
+        return (r.finish(""), hits);
     }
     r.note = format!(
         "exact orientation predicates; {broad} candidate pairs: {tested} decided exactly (after a certified f64 plane-separation filter; {high} stars of degree ≥ {HIGH_DEGREE} searched by corner directions)"
     );
-    r.finish("")
+    (r.finish(""), hits)
 }

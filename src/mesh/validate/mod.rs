@@ -44,6 +44,10 @@ pub struct ValidationReport {
     pub degree_histogram: BTreeMap<u32, u64>,
     /// Def. 3.1.6 holds (and with it Lemma 3.1.1: |K| is a topological surface).
     pub is_simplicial_surface: bool,
+    /// Every pair of triangles the Def. 3.1.3(ii) search found meeting outside a common face
+    /// (up to its cap; the check lists only the first few), for callers that locate them.
+    #[serde(skip)]
+    pub crossing_pairs: Vec<(u32, u32)>,
 }
 
 /// Result of validation: the report, and the validated surface when every check passed.
@@ -122,7 +126,7 @@ pub fn validate(raw: &RawMesh) -> Validation {
     }
     // The geometric search and the combinatorial checks are independent: side by side.
     let (crossing, ((edges, c_edges), (links, c_links), (orientation, orient_check))) = rayon::join(
-        || intersect::triangles_meet_properly(raw, &nondegenerate),
+        || intersect::triangles_meet_properly_pairs(raw, &nondegenerate),
         || {
             (
                 surface::edges_in_two_triangles(raw, &inc),
@@ -133,6 +137,7 @@ pub fn validate(raw: &RawMesh) -> Validation {
             )
         },
     );
+    let (crossing, crossing_pairs) = crossing;
     if crossing.failed() {
         classes.push(ErrorClass::SelfIntersection);
     }
@@ -228,6 +233,7 @@ pub fn validate(raw: &RawMesh) -> Validation {
         components,
         degree_histogram,
         is_simplicial_surface: ok,
+        crossing_pairs,
     };
     Validation { report, surface }
 }
