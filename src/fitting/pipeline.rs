@@ -464,20 +464,6 @@ fn fit_once(
             ));
         }
         round.folds = folds;
-        let not_embedded = |rounds: usize| match &cross {
-            Some(c) => FitError::NotEmbedded {
-                rounds,
-                level: c.level,
-                triangles: c.offending_triangles,
-                faces: c.faces.len(),
-            },
-            None => FitError::NotEmbedded {
-                rounds,
-                level: 0,
-                triangles: 0,
-                faces: 0,
-            },
-        };
         if offenders.is_empty() && !crosses {
             round.seconds = tr.elapsed().as_secs_f64();
             rounds.push(round);
@@ -499,20 +485,22 @@ fn fit_once(
                 restore,
             });
         }
-        let crossing_faces = cross.as_ref().map_or(0, |c| c.faces.len());
-        let give_up = |rounds: usize| {
-            if offenders.is_empty() {
-                not_embedded(rounds)
-            } else {
-                FitError::NotReached {
-                    epsilon: opts.epsilon,
-                    rounds,
-                    offenders: offenders.len(),
-                    worst: max_error,
-                    folds,
-                    crossing_faces,
-                }
-            }
+        // With ε reached, the round goes on only because the sample crosses.
+        let give_up = |rounds: usize| match &cross {
+            Some(c) if offenders.is_empty() => FitError::NotEmbedded {
+                rounds,
+                level: c.level,
+                triangles: c.offending_triangles,
+                faces: c.faces.len(),
+            },
+            _ => FitError::NotReached {
+                epsilon: opts.epsilon,
+                rounds,
+                offenders: offenders.len(),
+                worst: max_error,
+                folds,
+                crossing_faces: cross.as_ref().map_or(0, |c| c.faces.len()),
+            },
         };
         if rounds.len() + 1 >= opts.max_rounds {
             return Err(give_up(rounds.len() + 1));
