@@ -14,13 +14,15 @@ use pseudomanifold::mesh::{generate, SimplicialSurface};
 use pseudomanifold::oracle::tsv_diff::diagonal;
 use pseudomanifold::report::Verdict;
 
-fn torus() -> SimplicialSurface {
+/// The generated 24 × 12 torus, the fitting tests' small closed mesh.
+pub(super) fn torus() -> SimplicialSurface {
     validate(&generate::torus(24, 12))
         .surface
         .expect("the generated torus is a simplicial surface")
 }
 
-fn fit(k: &SimplicialSurface, rel: f64) -> Fit {
+/// `ppm fit` of `k` at `rel` times its bounding-box diagonal, default options.
+pub(super) fn fit(k: &SimplicialSurface, rel: f64) -> Fit {
     fit_surface(k, &FitOptions::new(rel * diagonal(k)), |_| {}).expect("the fit succeeds")
 }
 

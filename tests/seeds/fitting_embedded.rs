@@ -2,24 +2,14 @@
 //! where it crosses (SPEC `AF-refine-embedded`): S sampled at a stated level, the sample
 //! validated as `ppm check` does, each offending sample triangle located at its base face.
 
+use super::fitting::{fit, torus};
 use crate::common::verdicts::{assert_caught, assert_holds_for, record, Seen};
 use pseudomanifold::fitting::crossing::{check_embedded, check_sample, triangles_per_face};
-use pseudomanifold::fitting::{fit_surface, Fit, FitOptions};
-use pseudomanifold::mesh::validate::validate;
-use pseudomanifold::mesh::{generate, SimplicialSurface, VertexId};
+use pseudomanifold::fitting::{fit_surface, FitOptions};
+use pseudomanifold::mesh::VertexId;
 use pseudomanifold::oracle::tsv_diff::diagonal;
 use pseudomanifold::report::Verdict;
 use pseudomanifold::surface::output::Attributes;
-
-fn torus() -> SimplicialSurface {
-    validate(&generate::torus(24, 12))
-        .surface
-        .expect("the generated torus is a simplicial surface")
-}
-
-fn fit(k: &SimplicialSurface, rel: f64) -> Fit {
-    fit_surface(k, &FitOptions::new(rel * diagonal(k)), |_| {}).expect("the fit succeeds")
-}
 
 /// The torus's fit at 10⁻² is embedded at level 2 (the fit's own check, run again here), and
 /// its last round records no crossing.

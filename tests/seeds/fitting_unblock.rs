@@ -2,21 +2,17 @@
 //! edge AB has no curve, it is split at a vertex C of S_T and embedded as the concatenation of
 //! the curves of AC and CB (`fitting::unblock`; SPEC `AF-embedding`).
 
+use super::fitting::fit;
 use crate::common::verdicts::{assert_caught, assert_holds, assert_holds_for, record, Seen};
 use pseudomanifold::fitting::base::BaseMesh;
+use pseudomanifold::fitting::base::RemovalLimits;
 use pseudomanifold::fitting::checks::run_fit_checks;
 use pseudomanifold::fitting::embed_checks::{check_disjoint, check_on_surface, run};
 use pseudomanifold::fitting::embedded::embed;
 use pseudomanifold::fitting::geodesic::{Curve, Embedding, Node};
 use pseudomanifold::fitting::unblock::{Change, Walk};
-use pseudomanifold::fitting::{base::RemovalLimits, fit_surface, Fit, FitOptions};
+use pseudomanifold::mesh::generate;
 use pseudomanifold::mesh::validate::validate;
-use pseudomanifold::mesh::{generate, SimplicialSurface};
-use pseudomanifold::oracle::tsv_diff::diagonal;
-
-fn fit(k: &SimplicialSurface, rel: f64) -> Fit {
-    fit_surface(k, &FitOptions::new(rel * diagonal(k)), |_| {}).expect("the fit succeeds")
-}
 
 /// The curve of base edge u–w as it runs from u to w.
 fn oriented(e: &Embedding, u: u32, w: u32) -> Vec<Node> {
