@@ -111,13 +111,20 @@ impl Ppm<f64> for SignFlip {
 /// A model of φ: its answer for one edge configuration and point, if defined there.
 type PhiModel<'a> = &'a dyn Fn(&EdgeConfig, &P2<f64>) -> Option<P2<f64>>;
 
-/// The table of φ answers another implementation would produce, as JSON lines.
+/// The table of φ answers another implementation would produce, as JSON lines: one oriented
+/// edge per edge configuration. φ_(u,w) depends only on (m_u, i, m_w, j) (Sec. 6.1.3), so a
+/// second edge of the same configuration asks both paths the same questions again (bob_small's
+/// 1,500 oriented edges have far fewer configurations; the MPFR side is the test's time).
 fn phi_table(k: &SimplicialSurface, model: PhiModel<'_>) -> String {
     let g = PpmGluing::new(k);
     let mut t = String::new();
+    let mut seen = std::collections::HashSet::new();
     for (a, b) in k.edges() {
         for (u, w) in [(a, b), (b, a)] {
             let e = g.edge_config(u, w).expect("config");
+            if !seen.insert(e) {
+                continue;
+            }
             for p in domain_points(&e) {
                 if let Some(q) = model(&e, &p) {
                     t.push_str(&format!(
