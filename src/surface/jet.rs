@@ -285,4 +285,13 @@ impl<S: SurfaceScalar, const L: usize> SurfaceScalar for Jet<S, L> {
             c: std::array::from_fn(|i| self.c[i].scale_f64(k)),
         }
     }
+    /// Jets of f64 (the sampling's normals and curvatures) evaluate ψ on the CPU's vector
+    /// extensions, with the same operations in the same order (the output is byte-identical).
+    fn patch(cp: &[[f64; 3]], l: usize, half: f64, x: &Self, y: &Self) -> [Self; 3] {
+        if std::any::TypeId::of::<S>() == std::any::TypeId::of::<f64>() {
+            super::scalar_ext::eval_patch_simd(cp, l, half, x, y)
+        } else {
+            super::scalar_ext::eval_patch(cp, l, half, x, y)
+        }
+    }
 }

@@ -53,6 +53,7 @@ impl SurfaceScalar for crate::numeric::MpMpfr {
 }
 
 /// Def. 5.2.1, generic: the l+1 Bernstein values at t.
+#[inline(always)]
 pub(crate) fn bernstein<S: SurfaceScalar>(l: usize, half: &S, t: &S) -> Vec<S> {
     let prec = t.precision_bits();
     let two_l = half.mul(&S::from_i64(2, prec));
@@ -82,6 +83,42 @@ pub(crate) fn eval_patch<S: SurfaceScalar>(
     x: &S,
     y: &S,
 ) -> [S; 3] {
+    eval_patch_body(cp, l, half, x, y)
+}
+
+/// [`eval_patch`] compiled for the CPU's vector extensions (runtime dispatch). The jets of
+/// f64 take it (`jet.rs`): their coefficient-wise products and sums widen; products and sums
+/// stay separate (never fused), so the bits do not depend on the CPU. The (σ, v) patches do
+/// the same (`sigma_v::patch::eval_tri`).
+pub(crate) fn eval_patch_simd<S: SurfaceScalar>(
+    cp: &[[f64; 3]],
+    l: usize,
+    half: f64,
+    x: &S,
+    y: &S,
+) -> [S; 3] {
+    pulp::Arch::new().dispatch(EvalPatch { cp, l, half, x, y })
+}
+
+/// [`eval_patch`] as a [`pulp::WithSimd`] operation.
+struct EvalPatch<'a, S> {
+    cp: &'a [[f64; 3]],
+    l: usize,
+    half: f64,
+    x: &'a S,
+    y: &'a S,
+}
+
+impl<S: SurfaceScalar> pulp::WithSimd for EvalPatch<'_, S> {
+    type Output = [S; 3];
+    #[inline(always)]
+    fn with_simd<V: pulp::Simd>(self, _: V) -> [S; 3] {
+        eval_patch_body(self.cp, self.l, self.half, self.x, self.y)
+    }
+}
+
+#[inline(always)]
+fn eval_patch_body<S: SurfaceScalar>(cp: &[[f64; 3]], l: usize, half: f64, x: &S, y: &S) -> [S; 3] {
     let prec = x.precision_bits();
     let h = S::from_f64(half, prec);
     let bx = bernstein(l, &h, x);
