@@ -547,7 +547,7 @@ pub fn check_smooth_views_with(
                             }
                         },
                         Stencil::Measured(d) => {
-                            if d.is_nan() || best.is_none_or(|(b, _)| d < b) {
+                            if d.is_nan() || best.map_or(true, |(b, _)| d < b) {
                                 best = Some((d, h));
                             }
                             if !(d > 1.0) {
