@@ -66,6 +66,7 @@ pub struct Check {
     r: CheckResult,
     worst: Option<f64>,
     first_skip: Option<String>,
+    skipped: u64,
 }
 
 impl Check {
@@ -75,6 +76,7 @@ impl Check {
             r: CheckResult::new(id, name),
             worst: None,
             first_skip: None,
+            skipped: 0,
         }
     }
 
@@ -86,6 +88,7 @@ impl Check {
             r,
             worst,
             first_skip: None,
+            skipped: 0,
         }
     }
 
@@ -183,6 +186,7 @@ impl Check {
                 self.r.offend(w);
             }
             OnError::Skip => {
+                self.skipped += 1;
                 if self.first_skip.is_none() {
                     self.first_skip = Some(err.to_string());
                 }
@@ -233,7 +237,7 @@ impl Check {
         if let Some(first) = &self.first_skip {
             let skipped = format!(
                 "{} sample(s) skipped: evaluation outside the statement's domain (first: {first})",
-                self.r.eval_errors
+                self.skipped
             );
             note = if note.is_empty() {
                 skipped
@@ -366,6 +370,14 @@ mod tests {
         let mut c = Check::sampled("X", "x", 1, 1.0);
         c.error(OnError::Skip, "outside", w);
         assert!(matches!(c.finish("").verdict(), Verdict::Skipped { .. }));
+
+        // The note counts the skipped samples only, not the errors that were offences.
+        let mut c = Check::sampled("X", "x", 1, 1.0);
+        c.error(OnError::Offence, "boom", w);
+        c.error(OnError::Skip, "outside", w);
+        let r = c.finish("");
+        assert_eq!(r.eval_errors, 2);
+        assert!(r.note.contains("1 sample(s) skipped"), "{}", r.note);
     }
 
     /// SPEC X-harness, rule 1 for enclosures (used by the certify provers).

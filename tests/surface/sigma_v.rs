@@ -298,6 +298,17 @@ impl ThetaJets for ThetaFault<'_> {
             2 => t[2].c[idx(0, 2)] = f64::NAN,
             // An error where θ must be defined (Σγ not positive): an offence.
             3 => return Err(SigmaVError::ZeroWeight(0)),
+            // Still C^∞, jets exact: a ripple 10⁻⁶·sin(πy/10⁻³) added to θ's first
+            // coordinate, so θ''' changes sign between the stencil points at h = 10⁻³ and
+            // their third derivatives do not bound the segment's.
+            5 => {
+                use pseudomanifold::numeric::Scalar;
+                use pseudomanifold::surface::SurfaceScalar;
+                let k = std::f64::consts::PI / SMOOTH_H0;
+                t[0] = t[0].add(&q.y.scale_f64(k).sin().scale_f64(1e-6));
+            }
+            // A second derivative off by 0.1 (θ_xx of the first coordinate): not the jet of θ.
+            6 => t[0].c[idx(2, 0)] += 0.05,
             // "Outside Ω_i": a skipped sample.
             _ => {
                 return Err(SigmaVError::NotInOmega {
@@ -375,6 +386,52 @@ fn sv_smooth_planted_nan_error_and_empty_sample() {
         pseudomanifold::report::Verdict::Skipped { .. }
     ));
     assert_eq!((r.examined, r.eval_errors), (0, 0));
+}
+
+/// `SV-smooth`'s tolerance is Taylor's bound h·max|θ'''|/3 over [p − h, p + h], with the max
+/// estimated at the five stencil points. A smooth θ whose θ''' changes sign between them (a
+/// ripple of half-period h) failed at the fixed h = 10⁻³ (the anchor fit's degree-34 vertex
+/// did so at one sample); the stencil is now halved there and it holds. A second derivative
+/// off by 0.1 still fails at every h, the corner named.
+#[test]
+fn sv_smooth_unresolved_third_derivative_refines_and_wrong_jet_fails() {
+    let k = surface(&icosahedron());
+    let pps = build(&k);
+    let f = k.face(FaceId(3));
+    let view = SigmaVView::at_vertices(&pps.gluing, &f, Version::Fixed);
+    let clean = check_smooth(&pps, &view, &CFG);
+    holds(&clean);
+    let at = pps
+        .gluing
+        .corners_at(f[0])
+        .next()
+        .expect("a corner at f[0]");
+    let ripple = ThetaFault {
+        inner: PpsJets::new(&pps),
+        at: Some(at),
+        kind: 5,
+    };
+    let r = check_smooth_with(&ripple, &view, &CFG);
+    holds(&r);
+    assert_eq!(r.examined, clean.examined);
+    // Refined where the five-point bound was exceeded (the fixed h failed these samples).
+    let by_bound: u64 = r
+        .note
+        .split("bound is exceeded (")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(0);
+    assert!(by_bound > 0, "{}", r.note);
+    let wrong = ThetaFault {
+        inner: PpsJets::new(&pps),
+        at: Some(at),
+        kind: 6,
+    };
+    let r = check_smooth_with(&wrong, &view, &CFG);
+    fails(&r);
+    assert_eq!(r.witnesses[0].data["i"], pps.gluing.id(at).0);
+    assert!(r.worst_deviation.is_some_and(|d| d > 1.0 && d.is_finite()));
 }
 
 /// `SV-D13` and `SV-H` under the harness: no sample examined is skipped, never holds.
