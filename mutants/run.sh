@@ -20,10 +20,12 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 results="$here/mutants/results.tsv"
 
-# name | file globs (space separated) | test binaries (space separated; `lib` = the unit tests)
+# name | file globs (space separated) | tests (space separated): `lib` = the library's unit
+#        tests, `proofs_*` = those test binaries, any other name a theme of the suite binary
+#        (tests/suite: `mesh`, `gluing`, `chapter4`, `surface`, `seeds`)
 #      | test names to skip (optional: the corpus-wide tests, minutes per mutant)
 #      | test-name filters (optional, space separated: only tests whose path contains one of
-#        them, e.g. the module's own tests in a binary that also holds slow engines)
+#        them, e.g. the module's own tests in a theme that also holds slow engines)
 modules() {
     cat <<'EOF'
 mesh-validate|src/mesh/validate/*.rs|mesh gluing
@@ -81,9 +83,24 @@ for g in $globs; do files+=(-f "$g"); done
 outdir="$tree/target/mutants-$module${again:+-again}"
 mkdir -p "$tree/target" # a fresh worktree has no target directory yet
 args=(--in-place --profile mutants --output "$outdir" "${files[@]}")
+themes=() haslib=0
 for t in $tests; do
-    if [[ "$t" == lib ]]; then args+=(-C --lib); else args+=(-C "--test=$t"); fi
+    case "$t" in
+        lib) haslib=1 args+=(-C --lib) ;;
+        proofs_*) args+=(-C "--test=$t") ;;
+        *) themes+=("$t::") ;;
+    esac
 done
+if [[ ${#themes[@]} -gt 0 ]]; then
+    args+=(-C --test=suite)
+    # libtest's filters apply to every binary of the run. Without a row filter, the themes (and
+    # `tests::`, the module every unit test of the library sits in) select what the row's
+    # binaries held before the themes became one suite binary.
+    if [[ -z "${filter:-}" ]]; then
+        filter="${themes[*]}"
+        if [[ $haslib == 1 ]]; then filter="tests:: $filter"; fi
+    fi
+fi
 if [[ "$again" == again ]]; then
     # Exactly the mutants the last run of the module missed (their names are stable while the
     # module's files are unchanged, e.g. after adding tests).
