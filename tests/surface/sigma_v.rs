@@ -558,12 +558,12 @@ fn sv_d1_sv_d5_sv_d8_run_sigma_v_checks_on_fixtures() {
             .map(|m| m.path),
     );
     for p in paths {
-        let Ok(raw) = read_mesh(&p, &ReadOptions::default()) else {
-            continue;
-        };
-        let Some(k) = validate(&raw).surface else {
-            continue;
-        };
+        // Every path here is a good mesh: one that does not load is a failure, not a skip.
+        let raw = read_mesh(&p, &ReadOptions::default())
+            .unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+        let k = validate(&raw)
+            .surface
+            .unwrap_or_else(|| panic!("{}: a good mesh the validator refuses", p.display()));
         let o = SvCheckOptions {
             samples: 8,
             max_views: 1,
@@ -591,6 +591,11 @@ fn sv_d1_sv_d5_sv_d8_run_sigma_v_checks_on_fixtures() {
         assert!(
             rs.iter().any(|r| r.id == "SV-first" && r.failed()),
             "first attempt must fail"
+        );
+        assert!(
+            rs.iter().any(|r| r.holds_with_evidence()),
+            "{}: no check examined anything",
+            p.display()
         );
     }
 }

@@ -75,7 +75,8 @@ impl Default for SvCheckOptions {
 
 /// Merge `b` into `a` (same check on another view): counts (examined, offenders, evaluation
 /// errors) add, the worst deviation is the NaN-propagating maximum, a failure anywhere fails
-/// the merge, and a view that examined something replaces a skipped verdict.
+/// the merge, a view that examined something replaces a skipped verdict, and distinct notes
+/// are joined with ` | `.
 fn merge(a: &mut CheckResult, b: CheckResult) {
     let b_verdict = b.stored_verdict().clone();
     a.examined += b.examined;
@@ -101,8 +102,12 @@ fn merge(a: &mut CheckResult, b: CheckResult) {
     {
         a.adopt_verdict(b_verdict);
     }
+    // Each view's note (its skips, its tolerance) is kept: distinct notes are joined.
     if a.note.is_empty() {
         a.note = b.note;
+    } else if !b.note.is_empty() && !a.note.split(" | ").any(|n| n == b.note) {
+        a.note.push_str(" | ");
+        a.note.push_str(&b.note);
     }
 }
 
@@ -713,4 +718,28 @@ pub fn check_built(
     out.push(check_smooth_views(pps, &views, &cfg));
     out.push(check_eval(pps, 2000, o.seed));
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn merge_adds_counts_and_keeps_every_views_note() {
+        let view = |note: &str, examined: u64| {
+            let mut r = CheckResult::new("SV-x", "one check on one view");
+            r.note = note.to_string();
+            r.examined = examined;
+            r
+        };
+        let mut a = view("view 1: 2 samples skipped", 3);
+        merge(&mut a, view("view 2: 5 samples skipped", 4));
+        merge(&mut a, view("view 2: 5 samples skipped", 1));
+        merge(&mut a, view("", 1));
+        assert_eq!(
+            a.note,
+            "view 1: 2 samples skipped | view 2: 5 samples skipped"
+        );
+        assert_eq!(a.examined, 9);
+    }
 }
