@@ -183,17 +183,20 @@ fn fit_once(
                 if !restore.active()
                     && blocked.len() <= unblock::MAX_CHANGES.saturating_sub(walk.changes)
                 {
-                    let (before, walk_before) = (base.clone(), walk.clone());
                     let done;
-                    (done, gave_up) =
-                        unblock_all(&mut base, &mut walk, &blocked, &sopts.limits, &failed_at);
-                    // All the blocked edges are changed before embedding again (each
-                    // embedding costs the whole of S_T); when the validator refuses the
-                    // result, only the first blocked edge is changed, as one at a time did
-                    // before.
-                    let done = if done.len() > 1 && BaseSurface::new(&base).is_err() {
-                        base = before;
-                        walk = walk_before;
+                    (done, gave_up) = unblock_all(
+                        &mut base,
+                        &mut walk,
+                        &blocked,
+                        &sopts.limits,
+                        &failed_at,
+                        |m| BaseSurface::new(m).is_ok(),
+                    );
+                    // Every blocked edge whose change the validator accepts is changed before
+                    // embedding again (each embedding costs the whole of S_T). When it accepts
+                    // none, the first blocked edge is changed alone, as one at a time did
+                    // before (the refused base mesh then goes to `repair`).
+                    let done = if done.is_empty() {
                         let done;
                         (done, gave_up) = unblock_all(
                             &mut base,
@@ -201,6 +204,7 @@ fn fit_once(
                             &blocked[..1],
                             &sopts.limits,
                             &failed_at,
+                            |_| true,
                         );
                         done
                     } else {
@@ -629,33 +633,24 @@ fn unsimplify_round(
     Some(how)
 }
 
-/// The walk's change at every blocked edge still in the base mesh: what was done, and the first
-/// reason it gave up at one.
+/// The walk's changes at the blocked edges ([`unblock::Walk::change_all`]), as progress lines.
 fn unblock_all(
     base: &mut BaseMesh,
     walk: &mut unblock::Walk,
     blocked: &[(u32, u32)],
     lim: &RemovalLimits,
     failed_at: &[(Vec<[u32; 3]>, embedded::Failure)],
+    valid: impl Fn(&BaseMesh) -> bool,
 ) -> (Vec<String>, Option<unblock::GiveUp>) {
-    let mut done = Vec::new();
-    let mut gave_up = None;
-    for &(a, b) in blocked {
-        // An earlier change of this round may have taken the edge away already.
-        if base.face_of_edge(a, b).is_none() {
-            continue;
-        }
-        let changed = walk.change(base, a, b, lim, |m| {
-            let k = face_key(m);
-            failed_at.iter().any(|(x, _)| *x == k)
-        });
-        match changed {
-            Ok(ch) => done.push(describe(a, b, ch)),
-            Err(g) => {
-                gave_up.get_or_insert(g);
-            }
-        }
-    }
+    let tried = |m: &BaseMesh| {
+        let k = face_key(m);
+        failed_at.iter().any(|(x, _)| *x == k)
+    };
+    let (done, gave_up) = walk.change_all(base, blocked, lim, tried, valid);
+    let done = done
+        .into_iter()
+        .map(|((a, b), ch)| describe(a, b, ch))
+        .collect();
     (done, gave_up)
 }
 

@@ -135,3 +135,66 @@ fn af_embedding_holds_on_bunny_at_1e_2() {
         assert_holds_for("bunny at 1e-2", &r);
     }
 }
+
+/// All blocked edges in one pass (`Walk::change_all`): a change the validator refuses is
+/// undone (base mesh and walk state), the others are kept. Planted: the validator refuses the
+/// first change; the first edge is still a base edge, the second one's change is kept.
+#[test]
+fn af_embedding_change_all_undoes_a_refused_change_and_keeps_the_others() {
+    let k = validate(&generate::torus(24, 12))
+        .surface
+        .expect("the generated torus is a simplicial surface");
+    let f = fit(&k, 1e-2);
+    let mut base: BaseMesh = f.base.clone();
+    let mut edges: Vec<(u32, u32)> = Vec::new();
+    for (_, c) in base.faces() {
+        // One edge per base face, of faces sharing no vertex: the two changes are independent.
+        if edges
+            .iter()
+            .all(|&(a, b)| !c.contains(&a) && !c.contains(&b))
+        {
+            edges.push((c[0], c[1]));
+        }
+    }
+    assert!(edges.len() >= 2, "two base edges apart");
+    let (first, second) = (edges[0], edges[1]);
+    let lim = RemovalLimits {
+        max_deviation: f.epsilon,
+        min_normal_cos: 0.5,
+        min_quality: 0.1,
+        max_degree: 12,
+    };
+    let calls = std::cell::Cell::new(0);
+    let mut walk = Walk::default();
+    let (done, gave_up) = walk.change_all(
+        &mut base,
+        &[first, second],
+        &lim,
+        |_| false,
+        |_| {
+            calls.set(calls.get() + 1);
+            calls.get() > 1
+        },
+    );
+    assert_eq!(calls.get(), 2, "the validator saw both changes");
+    assert!(gave_up.is_none());
+    assert_eq!(
+        done.len(),
+        1,
+        "the refused change is not reported: {done:?}"
+    );
+    assert_eq!(done[0].0, second);
+    assert!(
+        base.face_of_edge(first.0, first.1).is_some(),
+        "the refused change was undone"
+    );
+    assert_eq!(walk.changes, 1);
+    assert_eq!(walk.log, done);
+    // Nothing refused: both kept.
+    let mut base2: BaseMesh = f.base.clone();
+    let mut walk2 = Walk::default();
+    let (done2, _) = walk2.change_all(&mut base2, &[first, second], &lim, |_| false, |_| true);
+    assert_eq!(done2.len(), 2);
+    assert_eq!(walk2.changes, 2);
+    record("AF-embedding", Seen::Holds, 2);
+}
