@@ -1092,3 +1092,58 @@ fn x_planted_msplines_nan_error_and_empty_domain_are_reported() {
     );
     common::verdicts::record("X-planted-msplines", common::verdicts::Seen::Caught, 4);
 }
+
+/// `MS-D4`'s exact overlap test on its own: one face image of a chart moved inside another
+/// (still positively oriented, so the orientation test passes it) is caught as an overlap.
+#[test]
+fn ms_d4_planted_overlapping_face_images_are_caught() {
+    let k = torus(12, 8);
+    let (mut at, _) = spline(&k, 0, 3, 2, 0x5eed).expect("spline builds");
+    let clean = ac::check_charts_injective(&at);
+    assert!(clean.holds_with_evidence(), "{clean:?}");
+    let ch = &mut at.charts[0];
+    let mut faces = ch.faces.keys().copied();
+    let (f, g) = match (faces.next(), faces.next()) {
+        (Some(f), Some(g)) => (f, g),
+        _ => panic!("chart 0 has two faces"),
+    };
+    let t = ch.faces[&f];
+    let c = [
+        (t[0][0] + t[1][0] + t[2][0]) / 3.0,
+        (t[0][1] + t[1][1] + t[2][1]) / 3.0,
+    ];
+    // g's image: f's image halved about its centroid (inside it, same orientation).
+    let inside = t.map(|p| [c[0] + 0.5 * (p[0] - c[0]), c[1] + 0.5 * (p[1] - c[1])]);
+    ch.faces.insert(g, inside);
+    let d4 = ac::check_charts_injective(&at);
+    assert!(d4.failed() && d4.examined > 0, "{d4:?}");
+    assert!(
+        d4.witnesses.iter().any(|w| w.data["kind"] == "overlap"),
+        "{d4:?}"
+    );
+    common::verdicts::record("X-planted-msplines", common::verdicts::Seen::Caught, 1);
+}
+
+/// `MS-D5` (as written) fails at a point of φ_x(U_x ∩ U_y ∩ U_z): its witness p lies in
+/// Ω_xz and φ_xy(p) in Ω_yz, where the corrected order φ_yz∘φ_xy = φ_xz is defined, and the
+/// literal φ_yz(p) is not.
+#[test]
+fn ms_d5_witness_lies_in_the_triple_overlap() {
+    use pseudomanifold::gluing::exact1d::Q;
+    let paper = CircleSplines::example(9, 2);
+    let r = circle::check_def5_literal(&paper);
+    common::assert_fails_as_written(&r);
+    let w = r.witnesses.first().expect("a witness");
+    let idx = |key: &str| w.data[key].as_u64().expect("an index") as u32;
+    let (x, y, z) = (idx("x"), idx("y"), idx("z"));
+    let p: Q = w.data["p"]
+        .as_str()
+        .and_then(|s| s.parse().ok())
+        .expect("p is a rational");
+    let g = paper.gluing();
+    let py = g.phi(y, x, &p).expect("φ_xy(p) is defined");
+    assert!(g.in_omega_ij(x, z, &p), "p ∈ Ω_xz: {w:?}");
+    assert!(g.in_omega_ij(y, z, &py), "φ_xy(p) ∈ Ω_yz: {w:?}");
+    assert!(g.phi(z, y, &p).is_none(), "the literal φ_yz(p) is undefined");
+    assert_eq!(g.phi(z, y, &py), g.phi(z, x, &p), "φ_yz∘φ_xy(p) = φ_xz(p)");
+}
