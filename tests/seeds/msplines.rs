@@ -1144,6 +1144,35 @@ fn ms_d5_witness_lies_in_the_triple_overlap() {
     let py = g.phi(y, x, &p).expect("φ_xy(p) is defined");
     assert!(g.in_omega_ij(x, z, &p), "p ∈ Ω_xz: {w:?}");
     assert!(g.in_omega_ij(y, z, &py), "φ_xy(p) ∈ Ω_yz: {w:?}");
-    assert!(g.phi(z, y, &p).is_none(), "the literal φ_yz(p) is undefined");
+    assert!(
+        g.phi(z, y, &p).is_none(),
+        "the literal φ_yz(p) is undefined"
+    );
     assert_eq!(g.phi(z, y, &py), g.phi(z, x, &p), "φ_yz∘φ_xy(p) = φ_xz(p)");
+}
+
+/// c·ω is the complex product (a + ib)(ω_x + iω_y) on every halfedge (the pipeline scales by a
+/// real c only; a rotation exercises the imaginary part).
+#[test]
+fn ms_5_2_scaled_one_form_is_the_complex_product() {
+    let k = torus(6, 4);
+    let fm = forms(&k).expect("torus");
+    let om = fm.omega(0).expect("ω");
+    let c = [0.6, 0.8];
+    let s = om.scaled(c);
+    let mut examined = 0;
+    for v in k.vertices() {
+        for &h in k.outgoing(v) {
+            let [x, y] = om.at(&fm.ei, h);
+            let want = [c[0] * x - c[1] * y, c[1] * x + c[0] * y];
+            let got = s.at(&fm.ei, h);
+            assert!(
+                (got[0] - want[0]).abs() <= 1e-15 * (1.0 + x.abs() + y.abs())
+                    && (got[1] - want[1]).abs() <= 1e-15 * (1.0 + x.abs() + y.abs()),
+                "halfedge {h:?}: {got:?} ≠ {want:?}"
+            );
+            examined += 1;
+        }
+    }
+    assert!(examined > 0 && om.x.iter().chain(&om.y).any(|v| v.abs() > 1e-3));
 }
