@@ -857,3 +857,29 @@ fn sd_cli_3_d_check3_iso3_claims3_exit_codes() {
     assert!(out.contains("SD-L161(3-D)"));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The witness of an index out of range names, as data, the tetrahedron, its line in the file
+/// and the vertex it names (not only in its text).
+#[test]
+fn sd_k_3_d_indices_witness_data_names_the_tet_its_line_and_the_vertex() {
+    let raw = tets_file::parse(&format!("{CORNER}t 0 1 2 9\n"), Path::new("inline.tets"))
+        .expect("the file parses");
+    let Err(TetComplexError::Invalid(rep)) = tet_complex::validate(&raw) else {
+        panic!("an index out of range is refused");
+    };
+    let r = rep
+        .iter()
+        .find(|r| r.id == "SD-K(3-D)-indices")
+        .expect("the indices check ran");
+    assert!(r.failed() && r.examined > 0, "{r:?}");
+    let d = &r.witnesses[0].data;
+    assert_eq!(
+        (&d["tet"], &d["line"], &d["vertex"]),
+        (
+            &serde_json::json!(0),
+            &serde_json::json!(6),
+            &serde_json::json!(9)
+        ),
+        "{d}"
+    );
+}
