@@ -1605,3 +1605,50 @@ fn x_planted_sdiff_nan_error_and_empty_domain_are_reported() {
     );
     common::verdicts::record("X-planted-sdiff", common::verdicts::Seen::Caught, 3);
 }
+
+/// The planar validator's witness of an index out of range names the triangle (by its face)
+/// and the vertex it names.
+#[test]
+fn sd_k_indices_witness_names_the_face_and_the_vertex() {
+    use pseudomanifold::mesh::raw::RawMesh;
+    let raw = RawMesh::from_arrays(
+        vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        vec![[0, 1, 7]],
+    );
+    match validate(&raw) {
+        Err(ComplexError::Invalid(r)) => {
+            let o = by_id(&r, "SD-K-indices");
+            assert!(o.failed() && o.examined > 0, "{o:?}");
+            let text = &o.witnesses[0].text;
+            assert!(
+                text.starts_with("face 0 ") && text.contains("vertex 7"),
+                "{text}"
+            );
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+/// The interval route never certifies an orientation-reversing map written as a rational one:
+/// the identity net with s and t swapped (det DX ≡ −1), with unit weights (D ≡ 1, so only the
+/// quotient rule's determinant decides) and with weights 1, 2, 3. The exact route refutes both.
+#[test]
+fn sd_l101_interval_route_never_certifies_a_reflection_written_as_a_rational_map() {
+    use pseudomanifold::sdiff::common::interval::IntervalVerdict;
+    let swapped: Vec<[Q; 3]> = SimplexMap::fixed_control(1)
+        .into_iter()
+        .map(|[a, b, c]| [a, c, b])
+        .collect();
+    for weights in [vec![q(1); 3], vec![q(1), q(2), q(3)]] {
+        let m = SimplexMap::rational(1, swapped.clone(), weights.clone());
+        assert!(
+            !claims::det_decision(&m, Budget::default()).certified(),
+            "weights {weights:?}: the reflection is refuted exactly"
+        );
+        let iv = interval::certify_det(&m, 2_000);
+        assert!(
+            !matches!(iv, IntervalVerdict::Certified { .. }),
+            "weights {weights:?}: {iv:?}"
+        );
+    }
+}
