@@ -80,6 +80,17 @@ pub enum FitError {
         /// The validator's defect classes.
         classes: String,
     },
+    /// The AC·CB walk made more base edges lose their curve than it found (`unblock`): the
+    /// base mesh is simplified again with half the deviation allowance (`fit_surface`).
+    #[error(
+        "the AC·CB walk diverges: {before} base edges without a curve, {after} after its changes"
+    )]
+    WalkDiverges {
+        /// Base edges without a curve before the walk's changes.
+        before: usize,
+        /// After them.
+        after: usize,
+    },
     /// ε was not reached in the allowed rounds.
     #[error("epsilon {epsilon} not reached after {rounds} refinement rounds: {offenders} vertices still further (worst {worst}), {folds} triangles of S_T folded, {crossing_faces} base faces whose sample crosses (AF-embedded)")]
     NotReached {

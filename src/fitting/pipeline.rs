@@ -44,12 +44,14 @@ pub fn fit_surface(
     let mut o = *opts;
     let mut attempt = 1;
     loop {
-        match fit_once(k, &o, &mut progress) {
-            Err(FitError::BaseInvalid { .. }) if attempt < ATTEMPTS => {
+        match fit_once(k, &o, attempt == ATTEMPTS, &mut progress) {
+            Err(e @ (FitError::BaseInvalid { .. } | FitError::WalkDiverges { .. }))
+                if attempt < ATTEMPTS =>
+            {
                 o.deviation_ratio /= 2.0;
                 attempt += 1;
                 progress(&format!(
-                    "simplify again: deviation allowance {} epsilon",
+                    "simplify again ({e}): deviation allowance {} epsilon",
                     o.deviation_ratio
                 ));
             }
@@ -61,6 +63,7 @@ pub fn fit_surface(
 fn fit_once(
     k: &SimplicialSurface,
     opts: &FitOptions,
+    last_attempt: bool,
     progress: &mut impl FnMut(&str),
 ) -> Result<Fit, FitError> {
     let t0 = std::time::Instant::now();
@@ -81,6 +84,8 @@ fn fit_once(
     let mut repairs = 0;
     let mut failed_at: Vec<(Vec<[u32; 3]>, embedded::Failure)> = Vec::new();
     let mut walk = unblock::Walk::default();
+    // Base edges without a curve at the walk's last failed embedding (`WalkDiverges`).
+    let mut last_blocked: Option<usize> = None;
     // The fallback where the walk cannot finish (`unsimplify`), and the vertices the refinement
     // made base vertices (kept by it).
     let mut restore = unsimplify::Restore::default();
@@ -177,6 +182,19 @@ fn fit_once(
                 } else {
                     f.blocked.clone()
                 };
+                // A walk whose changes leave more base edges without a curve than it found
+                // diverges (koala at 10⁻²: 17, then 40, then 60, and the fallback then keeps
+                // S_T's triangles at all of them): before the last attempt, the fit starts
+                // again from a closer simplification instead (`fit_surface`).
+                if let Some(before) = last_blocked.filter(|&b| blocked.len() > b) {
+                    if !last_attempt && !restore.active() {
+                        return Err(FitError::WalkDiverges {
+                            before,
+                            after: blocked.len(),
+                        });
+                    }
+                }
+                last_blocked = Some(blocked.len());
                 // The walk while it can finish: not after the fallback has run, and not with
                 // more blocked edges than changes left (one change per round at worst).
                 let mut gave_up = None;
@@ -281,6 +299,9 @@ fn fit_once(
                     continue;
                 }
             }
+        }
+        if emb.is_ok() {
+            last_blocked = None;
         }
         let mut all_hold = false;
         // Where the checks that make an embedding unusable fail (base faces named by their
