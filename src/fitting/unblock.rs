@@ -60,6 +60,9 @@ pub enum Change {
     },
 }
 
+/// One change of the walk: the blocked edge and what was done there.
+pub type Step = ((u32, u32), Change);
+
 /// Why the walk stopped with an edge still without a curve.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum GiveUp {
@@ -104,7 +107,7 @@ pub struct Walk {
     /// Of them, splits.
     pub splits: usize,
     /// Every change: the blocked edge and what was done.
-    pub log: Vec<((u32, u32), Change)>,
+    pub log: Vec<Step>,
     /// Vertices of S_T the walk made base vertices (never removed again).
     inserted: HashSet<u32>,
     /// Base vertices the walk removed (never inserted again).
@@ -209,7 +212,7 @@ impl Walk {
         lim: &RemovalLimits,
         tried: impl Fn(&BaseMesh) -> bool,
         valid: impl Fn(&BaseMesh) -> bool,
-    ) -> (Vec<((u32, u32), Change)>, Option<GiveUp>) {
+    ) -> (Vec<Step>, Option<GiveUp>) {
         let mut done = Vec::new();
         let mut gave_up = None;
         for &(a, b) in blocked {
