@@ -41,13 +41,37 @@ pub fn fit_surface(
     if !(opts.epsilon > 0.0 && opts.epsilon.is_finite()) {
         return Err(FitError::BadEpsilon(opts.epsilon));
     }
+    let (r, restarted) = attempts(k, opts, true, &mut progress);
+    let embeds =
+        |r: &Result<Fit, FitError>| matches!(r, Ok(f) if f.embedded.is_ok() && f.floater_params);
+    if restarted && !embeds(&r) {
+        // The restart is a chance, never a loss: where it does not end in an embedding, the
+        // fit runs again without it (anchor at 10⁻³: after the restart a curve leaves the
+        // surface before the fallback has run).
+        progress("the restart after the walk's divergence did not embed: fitting again without the restart");
+        return attempts(k, opts, false, &mut progress).0;
+    }
+    r
+}
+
+/// The simplification attempts (`ATTEMPTS`), each with half the deviation allowance of the one
+/// before when the base mesh stays invalid or, if `restart`, when the walk diverges; whether a
+/// divergence restarted the fit.
+fn attempts(
+    k: &SimplicialSurface,
+    opts: &FitOptions,
+    restart: bool,
+    progress: &mut impl FnMut(&str),
+) -> (Result<Fit, FitError>, bool) {
     let mut o = *opts;
     let mut attempt = 1;
+    let mut restarted = false;
     loop {
-        match fit_once(k, &o, attempt == ATTEMPTS, &mut progress) {
+        match fit_once(k, &o, restart && attempt < ATTEMPTS, progress) {
             Err(e @ (FitError::BaseInvalid { .. } | FitError::WalkDiverges { .. }))
                 if attempt < ATTEMPTS =>
             {
+                restarted |= matches!(e, FitError::WalkDiverges { .. });
                 o.deviation_ratio /= 2.0;
                 attempt += 1;
                 progress(&format!(
@@ -55,7 +79,7 @@ pub fn fit_surface(
                     o.deviation_ratio
                 ));
             }
-            r => return r,
+            r => return (r, restarted),
         }
     }
 }
@@ -63,7 +87,7 @@ pub fn fit_surface(
 fn fit_once(
     k: &SimplicialSurface,
     opts: &FitOptions,
-    last_attempt: bool,
+    may_restart: bool,
     progress: &mut impl FnMut(&str),
 ) -> Result<Fit, FitError> {
     let t0 = std::time::Instant::now();
@@ -185,9 +209,9 @@ fn fit_once(
                 // A walk whose changes leave more base edges without a curve than it found
                 // diverges (koala at 10⁻²: 17, then 40, then 60, and the fallback then keeps
                 // S_T's triangles at all of them): before the last attempt, the fit starts
-                // again from a closer simplification instead (`fit_surface`).
+                // again from a closer simplification instead (`attempts`, `fit_surface`).
                 if let Some(before) = last_blocked.filter(|&b| blocked.len() > b) {
-                    if !last_attempt && !restore.active() {
+                    if may_restart && !restore.active() {
                         return Err(FitError::WalkDiverges {
                             before,
                             after: blocked.len(),
