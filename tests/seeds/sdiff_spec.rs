@@ -1652,3 +1652,35 @@ fn sd_l101_interval_route_never_certifies_a_reflection_written_as_a_rational_map
         );
     }
 }
+
+/// `PlanarComplex::point` and `barycentric` are inverse, exactly: on every triangle of
+/// square.off and of a triangle whose coordinates are not 0 or ±1 (where a product and a
+/// quotient by a coordinate differ), a point's barycentric coordinates give the point back, and
+/// the unit vectors give the corners.
+#[test]
+fn sd_k_point_and_barycentric_are_exact_inverses() {
+    use pseudomanifold::mesh::raw::RawMesh;
+    let square = read_mesh(&data("square.off"), &ReadOptions::default()).expect("square.off");
+    let skew = RawMesh::from_arrays(
+        vec![[0.5, 0.25, 0.0], [2.0, 0.5, 0.0], [0.75, 3.0, 0.0]],
+        vec![[0, 1, 2]],
+    );
+    for raw in [square, skew] {
+        let (k, _) = validate(&raw).expect("a complex");
+        let p = [qr(2, 7), qr(3, 11)];
+        for (f, t) in k.triangles.iter().enumerate() {
+            let w = k.barycentric(f, &p);
+            assert_eq!(k.point(f, &w), p, "triangle {f}");
+            for (i, &v) in t.iter().enumerate() {
+                let mut e = [q(0), q(0), q(0)];
+                e[i] = q(1);
+                assert_eq!(
+                    k.point(f, &e),
+                    k.points[v as usize],
+                    "triangle {f}, corner {i}"
+                );
+            }
+        }
+        assert!(!k.triangles.is_empty());
+    }
+}
