@@ -11,8 +11,25 @@ use pseudomanifold::fitting::embed_checks::{check_disjoint, check_on_surface, ru
 use pseudomanifold::fitting::embedded::embed;
 use pseudomanifold::fitting::geodesic::{Curve, Embedding, Node};
 use pseudomanifold::fitting::unblock::{Change, Walk};
-use pseudomanifold::mesh::generate;
+use pseudomanifold::fitting::Fit;
 use pseudomanifold::mesh::validate::validate;
+use pseudomanifold::mesh::{generate, SimplicialSurface};
+
+/// The generated 24 × 12 torus, its fit at 10⁻² of the diagonal, and the walk's removal limits
+/// for it.
+fn torus_fit() -> (SimplicialSurface, Fit, RemovalLimits) {
+    let k = validate(&generate::torus(24, 12))
+        .surface
+        .expect("the generated torus is a simplicial surface");
+    let f = fit(&k, 1e-2);
+    let lim = RemovalLimits {
+        max_deviation: f.epsilon,
+        min_normal_cos: 0.5,
+        min_quality: 0.1,
+        max_degree: 12,
+    };
+    (k, f, lim)
+}
 
 /// The curve of base edge u–w as it runs from u to w.
 fn oriented(e: &Embedding, u: u32, w: u32) -> Vec<Node> {
@@ -40,10 +57,7 @@ fn concatenation(e: &Embedding, a: u32, c: u32, b: u32) -> Curve {
 /// it is made of (AF-geodesic-disjoint: it runs along them and through the base vertex C).
 #[test]
 fn af_embedding_ac_cb_split_concatenation_holds_and_wrong_concatenations_are_caught() {
-    let k = validate(&generate::torus(24, 12))
-        .surface
-        .expect("the generated torus is a simplicial surface");
-    let f = fit(&k, 1e-2);
+    let (k, f, lim) = torus_fit();
     let mut base: BaseMesh = f.base.clone();
     // The first base edge (in face order) with a vertex of S_T in one of its two faces.
     let (a, b) = base
@@ -56,12 +70,6 @@ fn af_embedding_ac_cb_split_concatenation_holds_and_wrong_concatenations_are_cau
                 .any(|g| !base.members(g).is_empty())
         })
         .expect("a base edge with a vertex of S_T in its faces");
-    let lim = RemovalLimits {
-        max_deviation: f.epsilon,
-        min_normal_cos: 0.5,
-        min_quality: 0.1,
-        max_degree: 12,
-    };
     // A flipped base mesh (same face count) counts as tried, so the rule splits.
     let faces = base.num_faces();
     let mut walk = Walk::default();
@@ -141,14 +149,11 @@ fn af_embedding_holds_on_bunny_at_1e_2() {
 /// first change; the first edge is still a base edge, the second one's change is kept.
 #[test]
 fn af_embedding_change_all_undoes_a_refused_change_and_keeps_the_others() {
-    let k = validate(&generate::torus(24, 12))
-        .surface
-        .expect("the generated torus is a simplicial surface");
-    let f = fit(&k, 1e-2);
+    let (_, f, lim) = torus_fit();
     let mut base: BaseMesh = f.base.clone();
     let mut edges: Vec<(u32, u32)> = Vec::new();
     for (_, c) in base.faces() {
-        // One edge per base face, of faces sharing no vertex: the two changes are independent.
+        // Edges with no end in common: neither change takes the other's edge away.
         if edges
             .iter()
             .all(|&(a, b)| !c.contains(&a) && !c.contains(&b))
@@ -158,12 +163,6 @@ fn af_embedding_change_all_undoes_a_refused_change_and_keeps_the_others() {
     }
     assert!(edges.len() >= 2, "two base edges apart");
     let (first, second) = (edges[0], edges[1]);
-    let lim = RemovalLimits {
-        max_deviation: f.epsilon,
-        min_normal_cos: 0.5,
-        min_quality: 0.1,
-        max_degree: 12,
-    };
     let calls = std::cell::Cell::new(0);
     let mut walk = Walk::default();
     let (done, gave_up) = walk.change_all(
