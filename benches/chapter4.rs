@@ -13,7 +13,7 @@ use std::path::Path;
 use std::time::Instant;
 
 fn surfaces() -> Vec<(String, SimplicialSurface)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/meshes/good");
     let mut v: Vec<(String, SimplicialSurface)> = std::fs::read_dir(&dir)
         .map(|rd| {
             rd.flatten()

@@ -16,7 +16,7 @@ fn bench(c: &mut Criterion) {
     g.bench_function("validate torus 80k triangles", |b| {
         b.iter(|| validate(&t).report.is_simplicial_surface)
     });
-    let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good/koala.obj");
+    let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/meshes/good/koala.obj");
     if koala.exists() {
         g.bench_function("read+validate koala.obj 100k triangles", |b| {
             b.iter(|| {

@@ -38,7 +38,7 @@ fn meshes() -> Vec<(String, SimplicialSurface)> {
             validate(&torus(100, 100)).surface.expect("torus"),
         ),
     ];
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/meshes/good");
     for name in ["cube.obj", "bob_small.ply", "bunny.off", "koala.obj"] {
         if let Ok(raw) = read_mesh(&dir.join(name), &ReadOptions::default()) {
             if let Some(k) = validate(&raw).surface {

@@ -18,7 +18,7 @@ use std::path::Path;
 
 fn corpus(name: &str) -> Option<SimplicialSurface> {
     let p = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/meshes/good")
+        .join("../../shared/meshes/good")
         .join(name);
     validate(&read_mesh(&p, &ReadOptions::default()).ok()?).surface
 }

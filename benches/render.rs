@@ -22,7 +22,7 @@ use rayon::prelude::*;
 use std::path::Path;
 
 fn mesh() -> (String, SimplicialSurface) {
-    let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good/koala.obj");
+    let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/meshes/good/koala.obj");
     if let Ok(raw) = read_mesh(&koala, &ReadOptions::default()) {
         if let Some(k) = validate(&raw).surface {
             return ("koala".into(), k);

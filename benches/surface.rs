@@ -32,7 +32,7 @@ fn meshes() -> Vec<(String, SimplicialSurface)> {
         "torus 20k".to_string(),
         validate(&torus(100, 100)).surface.expect("torus"),
     )];
-    let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good/koala.obj");
+    let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/meshes/good/koala.obj");
     if let Ok(raw) = read_mesh(&koala, &ReadOptions::default()) {
         if let Some(k) = validate(&raw).surface {
             meshes.push(("koala".to_string(), k));

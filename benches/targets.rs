@@ -22,7 +22,7 @@ use std::path::Path;
 use std::time::Instant;
 
 fn raw_mesh() -> (String, RawMesh) {
-    let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/meshes/good/koala.obj");
+    let koala = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/meshes/good/koala.obj");
     match read_mesh(&koala, &ReadOptions::default()) {
         Ok(raw) => ("koala".into(), raw),
         Err(_) => ("torus 20k".into(), torus(100, 100)),

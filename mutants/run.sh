@@ -21,7 +21,7 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 results="$here/mutants/results.tsv"
 
 # name | file globs (space separated) | tests (space separated): `lib` = the library's unit
-#        tests, `proofs_*` = those test binaries, any other name a theme of the suite binary
+#        tests, `proofs` = that test binary (proofs/main.rs), any other name a theme of the suite binary
 #        (tests/suite: `mesh`, `gluing`, `chapter4`, `surface`, `seeds`)
 #      | test names to skip (optional: the corpus-wide tests, minutes per mutant)
 #      | test-name filters (optional, space separated: only tests whose path contains one of
@@ -34,7 +34,7 @@ gluing-sampled|src/gluing/sampled/*.rs|lib gluing
 construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|lib chapter4 gluing
 surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/scalar_ext.rs src/surface/admissible.rs|lib surface gluing|corpus
 certify|src/certify/*.rs|lib chapter4
-exact|src/exact/*.rs|lib proofs_appendix_a1 proofs_eval_c6_1_4 proofs_combinatorial
+exact|src/exact/*.rs|lib proofs
 oracle|src/oracle/*.rs src/oracle/*/*.rs|surface
 report-harness|src/report/harness.rs src/report/check_result.rs src/report.rs|lib gluing
 conditions|src/conditions/*.rs|lib chapter4 mesh
@@ -87,7 +87,7 @@ themes=() haslib=0
 for t in $tests; do
     case "$t" in
         lib) haslib=1 args+=(-C --lib) ;;
-        proofs_*) args+=(-C "--test=$t") ;;
+        proofs) args+=(-C "--test=$t") ;;
         *) themes+=("$t::") ;;
     esac
 done

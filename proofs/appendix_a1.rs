@@ -6,16 +6,13 @@
 //! recorded verdict of every step; a failing step is recorded with its exact region.
 //! See proofs/README.md for the bounds and for running under Kani.
 
-#[path = "support.rs"]
-mod support;
-
+use crate::support::*;
 use pseudomanifold::exact::plane::{disks, Pt};
 use pseudomanifold::exact::polar::Region;
 use pseudomanifold::exact::q3::{q, Q3};
 use pseudomanifold::exact::replay::{
     first_mismatch, plant_sign_error, render, replay, Expect, Step, StepCheck,
 };
-use support::*;
 
 /// Degrees enumerated (every label of every degree).
 const MAX_DEG: u32 = 14;
@@ -316,7 +313,7 @@ pub fn l4_2_2_steps(t: Tri) -> Vec<Step> {
     s.extend([
         step("L4.2.2-s0", "if two of u, w, x coincide the claim is condition (3)(b) (Prop. 4.2.3)", (StepCheck::Definition, Expect::Definition)),
         step("L4.2.2-A1-A4", "(A.1)–(A.4): g_(u,w), g_(x,w), g_(u,x) and g_(x,w)∘g_(u,x) written out (Def. 4.1.8)", (StepCheck::Definition, Expect::Definition)),
-        step("L4.2.2-orient", "s_u(x) follows s_u(w) ⇒ s_w(u) follows s_w(x) and s_x(w) follows s_x(u) (orientation of K; labels of Sec. 6.1.2, see proofs_combinatorial)", (StepCheck::Definition, Expect::Definition)),
+        step("L4.2.2-orient", "s_u(x) follows s_u(w) ⇒ s_w(u) follows s_w(x) and s_x(w) follows s_x(u) (orientation of K; labels of Sec. 6.1.2, see the `combinatorial` module of the proofs binary)", (StepCheck::Definition, Expect::Definition)),
         step("L4.2.2-dom", "g_(u,x)⁻¹(Ω_xu ∩ Ω_xw) ⊆ Ω_uw (Lemma 4.2.1, replayed separately)", (StepCheck::Definition, Expect::Definition)),
         step(
             "L4.2.2-A5-cited",

@@ -3,8 +3,6 @@
 //! ordinary `#[test]` over a bounded exhaustive domain everywhere else (see proofs/README.md).
 //! The `Any` shim below draws from `kani::any()` under Kani and enumerates otherwise.
 
-mod support;
-
 use pseudomanifold::mesh::star::check_star_isomorphism;
 use pseudomanifold::mesh::validate::surface::{link_shape, LinkShape};
 use pseudomanifold::mesh::validate::validate;
@@ -234,7 +232,7 @@ fn proof_d3_4_1_4_exact_checkers_on_all_small_translations() {
                 g.add_piece(2, 1, d21, q(1, 1), -b.clone());
                 let g = g.with_default_diagonal();
                 for r in [check_3a(&g), check_3b(&g), check_3c(&g)] {
-                    support::assert_holds_for(&format!("l={l}, h={h}, b={b}"), &r);
+                    crate::support::assert_holds_for(&format!("l={l}, h={h}, b={b}"), &r);
                 }
                 let closed_form_fails =
                     (l > q(0, 1) && &l + &b > q(4, 1)) || (h < q(3, 1) && &h + &b < q(7, 1));

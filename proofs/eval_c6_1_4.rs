@@ -5,15 +5,12 @@
 //! x → c, so σ is counterclockwise: s_u(x) = s_u(w) + 1, s_w(u) = s_w(x) + 1,
 //! s_x(w) = s_x(u) + 1.
 
-#[path = "support.rs"]
-mod support;
-
+use crate::support::*;
 use pseudomanifold::exact::plane::{disks, Pt};
 use pseudomanifold::exact::q3::{q, Q3};
 use pseudomanifold::exact::replay::{
     first_mismatch, plant_sign_error, render, replay, Expect, Step, StepCheck,
 };
-use support::*;
 
 /// Degrees enumerated.
 const MAX_DEG: u32 = 48;
