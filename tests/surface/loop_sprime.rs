@@ -12,7 +12,7 @@ use pseudomanifold::numeric::Mp;
 use pseudomanifold::report::dev_max;
 use pseudomanifold::report::CheckResult;
 use pseudomanifold::surface::loop_subdiv::checks::{
-    check_edges, check_normals, check_vertices, radius, run_loop_checks, JetSource,
+    check_edges, check_eigen, check_normals, check_vertices, radius, run_loop_checks, JetSource,
     LoopCheckOptions, COND,
 };
 use pseudomanifold::surface::loop_subdiv::stam::PatchJet;
@@ -1145,4 +1145,18 @@ fn loop_regular_basis_exact_at_level3_partition_of_unity_and_limit_mask_recorded
     assert!(b[1..7].iter().all(|r| r[0] == rat(1, 12)));
     assert!(b[7..].iter().all(|r| r[0].is_zero()));
     common::verdicts::record("LOOP-regular-basis", common::verdicts::Seen::Holds, points);
+}
+
+/// `LOOP-eigen` through its checker: every valence 3..=12 except 6 in f64, and each irregular
+/// valence of K (at most six) again at the MP precision; valence 6 (regular, no eigen-structure
+/// needed) is in neither list.
+#[test]
+fn loop_eigen_checker_examines_each_irregular_valence_in_f64_and_mp() {
+    let r = check_eigen(&[3, 5, 6, 7, 6, 13], 128);
+    common::assert_holds_for("valences 3, 5, 6, 7, 13", &r);
+    // f64: 3..=12 without 6, and 13 (9 + 1); MP: 3, 5, 7, 13.
+    assert_eq!(r.examined, 10 + 4, "{r:?}");
+    let r = check_eigen(&[6, 6], 128);
+    common::assert_holds_for("valence 6 only", &r);
+    assert_eq!(r.examined, 9, "{r:?}");
 }
