@@ -705,6 +705,32 @@ fn sd_l168_3_d_curved_isosurface_has_the_topology_of_the_linear_one() {
         assert_eq!(iso.linear_topology.components, 1);
         assert_eq!(iso.linear_topology.boundary_loops, loops);
         assert_eq!(iso.curved_topology.nonmanifold_edges, 0);
+        // Each triangle is turned towards the + side of the level set, so O and 𝒪 are
+        // consistently oriented: no edge of two triangles with an area is used twice in the
+        // same direction. (Where F = 0 at a lattice point, two crossings meet there and give a
+        // triangle without area, whose orientation means nothing.)
+        for (name, m) in [("O", &iso.linear), ("𝒪", &iso.curved)] {
+            let mut directed = std::collections::HashSet::new();
+            let mut examined = 0;
+            for t in &m.triangles {
+                let [p, q1, q2] = t.map(|j| m.points[j]);
+                let (u, v) = (sub3(q1, p), sub3(q2, p));
+                let area2 = [
+                    u[1] * v[2] - u[2] * v[1],
+                    u[2] * v[0] - u[0] * v[2],
+                    u[0] * v[1] - u[1] * v[0],
+                ];
+                if area2 == [0.0; 3] {
+                    continue;
+                }
+                examined += 1;
+                for i in 0..3 {
+                    let e = (t[i], t[(i + 1) % 3]);
+                    assert!(directed.insert(e), "{mesh}: {name} uses {e:?} twice");
+                }
+            }
+            assert!(examined > m.triangles.len() / 2, "{mesh}: {name}");
+        }
         // 𝒪 differs from O (the map is not the identity) but has its topology.
         assert_ne!(iso.linear.points, iso.curved.points);
         let off = iso.curved.encode(MeshFormat::Off).expect("𝒪 as OFF");
@@ -882,4 +908,8 @@ fn sd_k_3_d_indices_witness_data_names_the_tet_its_line_and_the_vertex() {
         ),
         "{d}"
     );
+}
+
+fn sub3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
