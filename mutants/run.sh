@@ -44,7 +44,7 @@ msplines|src/msplines/*.rs|lib seeds||msplines
 sdiff|src/sdiff/*.rs src/sdiff/*/*.rs|lib seeds||sdiff
 render|src/render/*.rs|lib surface||render docs_pictures
 fitting|src/fitting/*.rs|lib seeds||fitting
-numeric|src/numeric/*.rs|lib chapter4 gluing
+numeric|src/numeric/*.rs|lib chapter4 gluing mesh
 mesh-io|src/mesh/io/*.rs src/mesh/load.rs|lib mesh
 EOF
 }

@@ -361,3 +361,28 @@ fn cert_f64_rounding_committed_m8_certificate_has_the_roundtrip_exact() {
         assert!(f.g_v.is_some_and(|g| g < 1e-14) && f.g_v_inv.is_some_and(|g| g < 1e-14));
     }
 }
+
+/// The rounding model's atan2 carries the error of either argument into its bound, also when
+/// the other is exact: ∂atan2(y, x)/∂y = x/(x² + y²) = 0.8 and ∂/∂x = −y/(x² + y²) = −0.4 at
+/// (x, y) = (1, 0.5). With both exact only libm's error is left.
+#[test]
+fn cert_f64_rounding_atan2_propagates_the_error_of_either_argument() {
+    let pt = |x: f64| Interval::try_from((x, x)).expect("a point");
+    let e = Interval::try_from((-1e-10, 1e-10)).expect("an interval");
+    let (x, y): (Fe, Fe) = (Fe::exact(pt(1.0)), Fe::exact(pt(0.5)));
+    let only_libm = y.atan2(&x).err();
+    assert!(only_libm > 0.0 && only_libm < 1e-15, "{only_libm:e}");
+    let y_err: Fe = Fe::new(pt(0.5), e);
+    let x_err: Fe = Fe::new(pt(1.0), e);
+    for (what, bound, least) in [
+        ("y inexact", y_err.atan2(&x).err(), 0.8e-10),
+        ("x inexact", y.atan2(&x_err).err(), 0.4e-10),
+        ("both inexact", y_err.atan2(&x_err).err(), 0.8e-10),
+    ] {
+        assert!(bound >= least, "{what}: bound {bound:e} < {least:e}");
+        assert!(
+            bound < 1e-8,
+            "{what}: bound {bound:e} is not a bound near 1e-10"
+        );
+    }
+}
