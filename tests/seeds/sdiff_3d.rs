@@ -5,6 +5,7 @@ use crate::common;
 
 use pseudomanifold::mesh::io::Limits;
 use pseudomanifold::mesh::{Location, MeshError, MeshFormat};
+use pseudomanifold::numeric::vec3;
 use pseudomanifold::report::{CheckResult, Verdict};
 use pseudomanifold::sdiff::common::interval::IntervalVerdict;
 use pseudomanifold::sdiff::common::poly1::Poly1;
@@ -714,13 +715,7 @@ fn sd_l168_3_d_curved_isosurface_has_the_topology_of_the_linear_one() {
             let mut examined = 0;
             for t in &m.triangles {
                 let [p, q1, q2] = t.map(|j| m.points[j]);
-                let (u, v) = (sub3(q1, p), sub3(q2, p));
-                let area2 = [
-                    u[1] * v[2] - u[2] * v[1],
-                    u[2] * v[0] - u[0] * v[2],
-                    u[0] * v[1] - u[1] * v[0],
-                ];
-                if area2 == [0.0; 3] {
+                if vec3::cross(vec3::sub(q1, p), vec3::sub(q2, p)) == [0.0; 3] {
                     continue;
                 }
                 examined += 1;
@@ -908,8 +903,4 @@ fn sd_k_3_d_indices_witness_data_names_the_tet_its_line_and_the_vertex() {
         ),
         "{d}"
     );
-}
-
-fn sub3(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
