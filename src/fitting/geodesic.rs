@@ -26,9 +26,9 @@
 //! nodes move by distinct rules, runs of edge nodes are straightened in their unfolded sleeve,
 //! without crossing another curve.
 
-use crate::mesh::{FaceId, SimplicialSurface, VertexId};
-use rustc_hash::FxHashMap;
+use crate::mesh::{FaceId, HalfedgeId, SimplicialSurface, VertexId};
 use serde::Serialize;
+use std::cell::RefCell;
 use std::collections::{BinaryHeap, HashMap};
 use std::ops::Deref;
 
@@ -270,28 +270,66 @@ pub const EDGE_POINTS: u32 = 3;
 pub(super) struct Graph<'a> {
     k: &'a SimplicialSurface,
     pub(super) n: u32,
-    edge_id: FxHashMap<(u32, u32), u32>,
+    /// The edge of each half-edge of S_T (its place in `edges`): a face's sides are found by
+    /// index, where a map keyed by vertex pairs cost a hash per side of every step.
+    he_edge: Vec<u32>,
     edges: Vec<(u32, u32)>,
+    /// Dijkstra's work arrays, reused by every search ([`dijkstra`]).
+    scratch: RefCell<Scratch>,
+}
+
+/// Distances and predecessors over all points of the graph, valid where `seen` holds the
+/// current search's stamp: one allocation per graph, where a map per search cost a hash per
+/// step and the page faults of a fresh allocation per curve (at 800k vertices of S_T).
+struct Scratch {
+    dist: Vec<f64>,
+    from: Vec<u32>,
+    seen: Vec<u32>,
+    stamp: u32,
+    heap: BinaryHeap<Item>,
 }
 
 impl<'a> Graph<'a> {
     pub(super) fn new(k: &'a SimplicialSurface) -> Self {
-        let edges: Vec<(u32, u32)> = k.edges().map(|(a, b)| (a.0, b.0)).collect();
-        let edge_id = edges
-            .iter()
-            .enumerate()
-            .map(|(i, &e)| (e, i as u32))
-            .collect();
+        // The edges in the order of `SimplicialSurface::edges` (half-edges ascending, origin
+        // < dest), which numbers the points inside them.
+        let nh = k.num_halfedges();
+        let mut he_edge = vec![u32::MAX; nh];
+        let mut edges = Vec::with_capacity(nh / 2);
+        for h in (0..nh as u32).map(HalfedgeId) {
+            let (u, w) = (k.origin(h), k.dest(h));
+            if u < w {
+                let i = edges.len() as u32;
+                he_edge[h.idx()] = i;
+                he_edge[k.twin(h).idx()] = i;
+                edges.push((u.0, w.0));
+            }
+        }
+        let n = k.vertex_slots() as u32;
+        let points = n as usize + EDGE_POINTS as usize * edges.len();
         Graph {
             k,
-            n: k.vertex_slots() as u32,
-            edge_id,
+            n,
+            he_edge,
             edges,
+            scratch: RefCell::new(Scratch {
+                dist: vec![0.0; points],
+                from: vec![0; points],
+                seen: vec![0; points],
+                stamp: 0,
+                heap: BinaryHeap::new(),
+            }),
         }
     }
-    /// The points of edge {u, w} from u to w, ends included.
-    pub(super) fn along(&self, u: u32, w: u32) -> [u32; EDGE_POINTS as usize + 2] {
-        let base = self.n + EDGE_POINTS * self.edge_id[&(u.min(w), u.max(w))];
+    /// The number of points (vertices of S_T and points inside its edges).
+    pub(super) fn points(&self) -> usize {
+        self.n as usize + EDGE_POINTS as usize * self.edges.len()
+    }
+    /// The points of the edge of half-edge h, from its origin to its destination, ends
+    /// included.
+    pub(super) fn along(&self, h: HalfedgeId) -> [u32; EDGE_POINTS as usize + 2] {
+        let (u, w) = (self.k.origin(h).0, self.k.dest(h).0);
+        let base = self.n + EDGE_POINTS * self.he_edge[h.idx()];
         std::array::from_fn(|i| match i as u32 {
             0 => u,
             j if j == EDGE_POINTS + 1 => w,
@@ -325,7 +363,8 @@ impl<'a> Graph<'a> {
         out.clear();
         for &f in self.faces(p).iter() {
             let c = self.k.face(f).map(|v| v.0);
-            let sides: [_; 3] = std::array::from_fn(|i| self.along(c[i], c[(i + 1) % 3]));
+            // Side i of f is its half-edge 3f + i, from corner i to corner i + 1.
+            let sides: [_; 3] = std::array::from_fn(|i| self.along(HalfedgeId(3 * f.0 + i as u32)));
             for (i, side) in sides.iter().enumerate() {
                 match side.iter().position(|&x| x == p) {
                     // p on this side: its neighbours along it.
@@ -355,6 +394,67 @@ impl<'a> Graph<'a> {
     }
 }
 
+/// Whether a path a → b exists under the same refusals as [`dijkstra`] (a point refused by
+/// `point`, a step by `step`; a and b always allowed): searched from both ends in turn, so an
+/// end walled in by fixed curves is found out after about twice its own small component,
+/// where the search from the other end sweeps all of S_T first (1–2 s per edge at 800k
+/// vertices). The steps of the graph and their refusals are symmetric (a chord and its
+/// reverse lie on the same triangles and meet the same segments), so the answer is
+/// [`dijkstra`]'s `is_some()`.
+pub(super) fn connected(
+    g: &Graph,
+    a: u32,
+    b: u32,
+    point: impl Fn(u32) -> Option<f64>,
+    step: impl Fn(u32, u32, &[FaceId]) -> Option<f64>,
+) -> bool {
+    let mut scratch = g.scratch.borrow_mut();
+    let Scratch { seen, stamp, .. } = &mut *scratch;
+    if *stamp >= u32::MAX - 2 {
+        seen.fill(0);
+        *stamp = 0;
+    }
+    let (sa, sb) = (*stamp + 1, *stamp + 2);
+    *stamp = sb;
+    let (ai, bi) = (a as usize, b as usize);
+    if ai >= seen.len() || bi >= seen.len() {
+        return false;
+    }
+    if a == b {
+        return true;
+    }
+    seen[ai] = sa;
+    seen[bi] = sb;
+    let mut fronts = [
+        std::collections::VecDeque::from([a]),
+        std::collections::VecDeque::from([b]),
+    ];
+    let mut steps = Vec::new();
+    loop {
+        for (front, mine, theirs) in [(0, sa, sb), (1, sb, sa)] {
+            let Some(u) = fronts[front].pop_front() else {
+                return false;
+            };
+            g.steps(u, &mut steps);
+            for &(w, fs) in &steps {
+                let wi = w as usize;
+                if seen[wi] == mine {
+                    continue;
+                }
+                let ok = (w == a || w == b || point(w).is_some()) && step(u, w, &fs[..]).is_some();
+                if !ok {
+                    continue;
+                }
+                if seen[wi] == theirs {
+                    return true;
+                }
+                seen[wi] = mine;
+                fronts[front].push_back(w);
+            }
+        }
+    }
+}
+
 /// Shortest path a → b in the graph: a step costs its length plus what `point` charges for
 /// its end (b excepted) and `step` for itself; None refuses the point or the step.
 pub(super) fn dijkstra(
@@ -364,23 +464,42 @@ pub(super) fn dijkstra(
     point: impl Fn(u32) -> Option<f64>,
     step: impl Fn(u32, u32, &[FaceId]) -> Option<f64>,
 ) -> Option<Vec<u32>> {
-    let mut d: FxHashMap<u32, (f64, u32)> = FxHashMap::default();
+    let mut scratch = g.scratch.borrow_mut();
+    let Scratch {
+        dist: d,
+        from,
+        seen,
+        stamp,
+        heap,
+    } = &mut *scratch;
+    if *stamp == u32::MAX {
+        seen.fill(0);
+        *stamp = 0;
+    }
+    *stamp += 1;
+    let now = *stamp;
+    heap.clear();
     let mut steps = Vec::new();
-    let mut heap = BinaryHeap::new();
-    d.insert(a, (0.0, a));
+    let (ai, bi) = (a as usize, b as usize);
+    if ai >= d.len() || bi >= d.len() {
+        return None;
+    }
+    d[ai] = 0.0;
+    from[ai] = a;
+    seen[ai] = now;
     heap.push(Item(0.0, a));
     while let Some(Item(du, u)) = heap.pop() {
         if u == b {
             let mut path = vec![b];
             let mut x = b;
             while x != a {
-                x = d[&x].1;
+                x = from[x as usize];
                 path.push(x);
             }
             path.reverse();
             return Some(path);
         }
-        if d.get(&u).is_some_and(|&(x, _)| du > x) {
+        if seen[u as usize] == now && du > d[u as usize] {
             continue;
         }
         let pu = g.point(u);
@@ -391,11 +510,85 @@ pub(super) fn dijkstra(
                 continue;
             };
             let nd = du + dist(pu, g.point(w)) + pc + sc;
-            if d.get(&w).map_or(true, |&(x, _)| nd < x) {
-                d.insert(w, (nd, u));
+            let wi = w as usize;
+            if seen[wi] != now || nd < d[wi] {
+                d[wi] = nd;
+                from[wi] = u;
+                seen[wi] = now;
                 heap.push(Item(nd, w));
             }
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::generate;
+    use crate::mesh::validate::validate;
+    use std::collections::HashSet;
+
+    /// [`connected`] answers as [`dijkstra`]`(..).is_some()` does (the shortcut must never
+    /// refuse a path the search would find, nor pass a walled-in end): on the 12 × 6 torus
+    /// with the link of vertex 0 closed (a wall around its star) and with seeded random
+    /// closures, for every pair of a fixed set of points. Both answers occur, so neither
+    /// side of the comparison is vacuous.
+    #[test]
+    fn connected_agrees_with_dijkstra_on_walled_and_random_closures() {
+        let Some(k) = validate(&generate::torus(12, 6)).surface else {
+            panic!("the torus is a simplicial surface");
+        };
+        let g = Graph::new(&k);
+        let mut wall: HashSet<u32> = HashSet::new();
+        for &f in k.faces_around(VertexId(0)) {
+            for i in 0..3 {
+                let h = HalfedgeId(3 * f.0 + i);
+                if k.origin(h).0 != 0 && k.dest(h).0 != 0 {
+                    wall.extend(g.along(h));
+                }
+            }
+        }
+        let spoke = g.along(k.outgoing(VertexId(0))[0])[2];
+        let ends: Vec<u32> = [0, spoke, 20, 41, 57]
+            .into_iter()
+            .chain((0..6).map(|i| g.n + 7 * i + 1))
+            .collect();
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
+        let mut closures = vec![wall];
+        for _ in 0..6 {
+            closures.push(
+                (0..g.points() as u32)
+                    .filter(|_| {
+                        seed = seed
+                            .wrapping_mul(6_364_136_223_846_793_005)
+                            .wrapping_add(1_442_695_040_888_963_407);
+                        (seed >> 33) % 5 < 2
+                    })
+                    .collect(),
+            );
+        }
+        let (mut yes, mut no) = (0, 0);
+        for closed in &closures {
+            let point = |p: u32| (!closed.contains(&p)).then_some(0.0);
+            let step = |_: u32, _: u32, _: &[FaceId]| Some(0.0);
+            for &a in &ends {
+                for &b in &ends {
+                    let d = dijkstra(&g, a, b, point, step).is_some();
+                    assert_eq!(connected(&g, a, b, point, step), d, "{a} → {b}");
+                    if d {
+                        yes += 1;
+                    } else {
+                        no += 1;
+                    }
+                }
+            }
+        }
+        assert!(yes > 0 && no > 0, "{yes} connected, {no} not");
+        // The wall holds: vertex 0 reaches the spoke's point, not vertex 20.
+        let point = |p: u32| (!closures[0].contains(&p)).then_some(0.0);
+        let step = |_: u32, _: u32, _: &[FaceId]| Some(0.0);
+        assert!(connected(&g, 0, spoke, point, step));
+        assert!(!connected(&g, 0, 20, point, step));
+    }
 }

@@ -27,7 +27,7 @@
 use super::base::{BaseMesh, Param};
 use super::disjoint::{local, meet, only_at};
 use super::geodesic::{
-    common_faces, dijkstra, dist, Curve, EmbedError, EmbedStats, Embedding, Graph, Node,
+    common_faces, connected, dijkstra, dist, Curve, EmbedError, EmbedStats, Embedding, Graph, Node,
 };
 use crate::mesh::{FaceId, SimplicialSurface, VertexId};
 use rustc_hash::FxHashMap;
@@ -42,13 +42,17 @@ pub const PENALTY: f64 = 1.0;
 /// Times the tracing starts again with the edge that had no path first.
 pub const RESTARTS: usize = 12;
 
+/// The owner of a point no curve uses.
+const FREE: u32 = u32::MAX;
+
 /// A segment of a traced curve in a triangle's reference frame.
 type Seg = (usize, [[f64; 2]; 2]);
 
 /// The traced curves so far.
 struct Traced {
-    /// Owner (base edge index) of each closed point.
-    used: FxHashMap<u32, usize>,
+    /// Owner (base edge index) of each closed point of the graph, [`FREE`] where none: an
+    /// array over all points, where a map cost a hash on every point a search looks at.
+    used: Vec<u32>,
     /// Segments per triangle of S_T.
     segs: FxHashMap<FaceId, Vec<Seg>>,
     /// Path and tier of each traced base edge.
@@ -62,9 +66,21 @@ struct Traced {
 }
 
 impl Traced {
+    /// The base edge whose curve closes point p, if any.
+    fn owner(&self, p: u32) -> Option<usize> {
+        match self.used.get(p as usize) {
+            Some(&c) if c != FREE => Some(c as usize),
+            _ => None,
+        }
+    }
+    fn close(&mut self, p: u32, e: usize) {
+        if let Some(x) = self.used.get_mut(p as usize) {
+            *x = e as u32;
+        }
+    }
     fn commit(&mut self, g: &Graph, k: &SimplicialSurface, e: usize, tier: usize, path: Vec<u32>) {
         for &p in &path[1..path.len() - 1] {
-            self.used.insert(p, e);
+            self.close(p, e);
         }
         for w in path.windows(2) {
             let (u, v) = (g.node(w[0]), g.node(w[1]));
@@ -84,7 +100,7 @@ impl Traced {
     fn commit_kept(&mut self, k: &SimplicialSurface, e: usize, nodes: &[Node]) {
         for n in nodes.iter().skip(1).take(nodes.len().saturating_sub(2)) {
             if let Node::Vertex(v) = *n {
-                self.used.insert(v, e);
+                self.close(v, e);
             }
         }
         for w in nodes.windows(2) {
@@ -101,9 +117,9 @@ impl Traced {
     /// visited (a take-up used to sweep every closed point and triangle of S_T).
     fn take_up(&mut self, g: &Graph, k: &SimplicialSurface, e: usize) {
         if let Some((_, path)) = self.paths[e].take() {
-            for p in &path[1..path.len() - 1] {
-                if self.used.get(p) == Some(&e) {
-                    self.used.remove(p);
+            for &p in &path[1..path.len() - 1] {
+                if let Some(x) = self.used.get_mut(p as usize).filter(|x| **x == e as u32) {
+                    *x = FREE;
                 }
             }
             for w in path.windows(2) {
@@ -260,33 +276,33 @@ impl<'a> Edge<'a> {
                 .filter(|_| t.ripped[c] < RIP_ROUNDS && !t.fixed[c])
                 .map(|p| p * (1 + t.ripped[c]) as f64)
         };
-        dijkstra(
-            self.g,
-            self.a,
-            self.b,
-            |p| {
-                if !self.point_ok(p, tier) {
-                    return None;
-                }
-                match t.used.get(&p) {
-                    Some(&c) => cost(c),
-                    None => Some(0.0),
-                }
-            },
-            |u, w, fs| {
-                if !self.step_ok(fs, tier) {
-                    return None;
-                }
-                let crossed = self.crossed(t, u, w, fs)?;
-                crossed.iter().try_fold(0.0, |s, &c| Some(s + cost(c)?))
-            },
-        )
+        let point = |p| {
+            if !self.point_ok(p, tier) {
+                return None;
+            }
+            match t.owner(p) {
+                Some(c) => cost(c),
+                None => Some(0.0),
+            }
+        };
+        let step = |u, w, fs: &[FaceId]| {
+            if !self.step_ok(fs, tier) {
+                return None;
+            }
+            let crossed = self.crossed(t, u, w, fs)?;
+            crossed.iter().try_fold(0.0, |s, &c| Some(s + cost(c)?))
+        };
+        // On all of S_T, an end walled in is found out from its own side first (`connected`).
+        if self.set(tier).is_none() && !connected(self.g, self.a, self.b, point, step) {
+            return None;
+        }
+        dijkstra(self.g, self.a, self.b, point, step)
     }
     /// The curves a path passes (its points and its steps).
     fn blockers(&self, t: &Traced, path: &[u32]) -> Vec<usize> {
         let mut out: Vec<usize> = path[1..path.len() - 1]
             .iter()
-            .filter_map(|p| t.used.get(p).copied())
+            .filter_map(|&p| t.owner(p))
             .collect();
         for w in path.windows(2) {
             let fs = common_faces(self.k, &self.g.node(w[0]), &self.g.node(w[1]));
@@ -313,7 +329,7 @@ fn trace_all(
 ) -> Result<Traced, Vec<usize>> {
     let diag = diagonal(base.positions());
     let mut t = Traced {
-        used: FxHashMap::default(),
+        used: vec![FREE; g.points()],
         segs: FxHashMap::default(),
         paths: vec![None; edges.len()],
         ripped: vec![0; edges.len()],
@@ -336,8 +352,8 @@ fn trace_all(
         if kept[e].is_some() {
             continue;
         }
-        if k.halfedge(VertexId(a), VertexId(b)).is_some() {
-            t.commit(g, k, e, 0, g.along(a, b).to_vec());
+        if let Some(h) = k.halfedge(VertexId(a), VertexId(b)) {
+            t.commit(g, k, e, 0, g.along(h).to_vec());
             t.fixed[e] = true;
         }
     }
