@@ -15,6 +15,15 @@
 //! curves' nodes), so the vertices of S_T inside it keep their parameters; the other faces are
 //! mapped again ([`super::floater`]).
 //!
+//! A base vertex inserted since (by the refinement or the walk) inside the curved triangle of a
+//! face whose corners did not change would be walled in by that face's kept curves, so such a
+//! face counts as changed too. Where the update still fails at a place — a base edge with no
+//! path (the kept curves wall it off), or base faces (a curved triangle that is no disk, a
+//! curve off the surface, a map that cannot be solved) — the faces around the edge's ends or
+//! the faces' corners, in the base mesh as it is and the curved triangles of the previous
+//! embedding that hold those vertices, count as changed and the update is tried again, up to
+//! [`MAX_OPENINGS`] times, each time one ring wider when the same vertices fail again.
+//!
 //! Nothing is skipped downstream: [`super::fit_surface`] runs every check of the embedding on
 //! the whole result, as after a global embedding, and embeds all of S_T again (saying so) when
 //! the local update fails or one of those checks fails on it. The fit may differ from a global
@@ -88,14 +97,56 @@ pub struct LocalStats {
     pub kept_maps: usize,
     /// Curved triangles in all.
     pub maps: usize,
+    /// Tries after the first, each opening the faces around where the one before failed.
+    pub openings: usize,
 }
 
-/// The face slots of `base` unchanged since `prev` (module doc).
+/// Tries of a local update after the first, each opening the faces where the one before failed.
+pub const MAX_OPENINGS: usize = 3;
+
+/// The face slots of `base` unchanged since `prev`: the same corners in the same order, and no
+/// base vertex inserted since inside their previous curved triangle (module doc).
 pub fn unchanged(base: &BaseMesh, prev: &Previous) -> HashSet<u32> {
-    base.faces()
+    let corners: HashSet<u32> = prev.faces.values().flatten().copied().collect();
+    let new: HashSet<u32> = base
+        .faces()
+        .flat_map(|(_, c)| c)
+        .filter(|v| !corners.contains(v))
+        .collect();
+    let mut same: HashSet<u32> = base
+        .faces()
         .filter(|(f, c)| prev.faces.get(f) == Some(c))
         .map(|(f, _)| f)
+        .collect();
+    for f in held(prev, &new) {
+        same.remove(&f);
+    }
+    same
+}
+
+/// The face slots of the previous embedding's curved triangles that hold one of `vertices` of
+/// S_T (inside or on their curves).
+fn held(prev: &Previous, vertices: &HashSet<u32>) -> Vec<u32> {
+    if vertices.is_empty() {
+        return Vec::new();
+    }
+    prev.emb
+        .maps
+        .iter()
+        .filter(|m| vertices.iter().any(|v| m.uv.contains_key(v)))
+        .map(|m| m.face)
         .collect()
+}
+
+/// The faces `open` makes count as changed: around each of its base vertices in `base`, and
+/// the previous curved triangles holding it.
+fn opened(base: &BaseMesh, prev: &Previous, open: &HashSet<u32>) -> HashSet<u32> {
+    let mut faces: HashSet<u32> = open
+        .iter()
+        .flat_map(|&v| base.faces_around(v).iter().copied())
+        .collect();
+    faces.extend(held(prev, open));
+    faces
 }
 
 /// The curves of `prev` to keep (module doc), by base edge (a, b), a < b.
@@ -124,8 +175,50 @@ pub fn embed_local(
     base: &BaseMesh,
     prev: &Previous,
 ) -> Result<(Embedded, LocalStats), Failure> {
-    let same = unchanged(base, prev);
-    let kept = kept_curves(base, prev, &same);
+    let unch = unchanged(base, prev);
+    let mut open: HashSet<u32> = HashSet::new();
+    let mut openings = 0;
+    loop {
+        let mut same = unch.clone();
+        for f in opened(base, prev, &open) {
+            same.remove(&f);
+        }
+        match embed_with(k, base, prev, &same) {
+            Ok((e, st)) => return Ok((e, LocalStats { openings, ..st })),
+            Err(f) if openings < MAX_OPENINGS && (f.edge.is_some() || !f.faces.is_empty()) => {
+                let ends: Vec<u32> = f
+                    .edge
+                    .iter()
+                    .chain(&f.blocked)
+                    .flat_map(|&(a, b)| [a, b])
+                    .chain(f.faces.iter().filter_map(|&g| base.face(g)).flatten())
+                    .collect();
+                let before = open.len();
+                open.extend(ends);
+                if open.len() == before {
+                    // The same ends again: one ring wider.
+                    let ring: Vec<u32> = opened(base, prev, &open)
+                        .into_iter()
+                        .filter_map(|f| base.face(f))
+                        .flatten()
+                        .collect();
+                    open.extend(ring);
+                }
+                openings += 1;
+            }
+            Err(f) => return Err(f),
+        }
+    }
+}
+
+/// One try of [`embed_local`] with the faces `same` taken as unchanged.
+fn embed_with(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    prev: &Previous,
+    same: &HashSet<u32>,
+) -> Result<(Embedded, LocalStats), Failure> {
+    let kept = kept_curves(base, prev, same);
     let old_maps: HashMap<u32, &RegionMap> = prev.emb.maps.iter().map(|m| (m.face, m)).collect();
     let n = k.vertex_slots() as u32;
     let mut kept_maps = 0;
@@ -182,6 +275,7 @@ pub fn embed_local(
         curves: e.emb.curves.len(),
         kept_maps,
         maps: e.maps.len(),
+        openings: 0,
     };
     Ok((e, st))
 }

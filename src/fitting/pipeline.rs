@@ -367,8 +367,15 @@ fn fit_once(
                 }
                 let how = match &local_stats {
                     Some(st) => format!(
-                        "local update: {} of {} curves kept, {} of {} curved triangles' maps kept; ",
-                        st.kept_curves, st.curves, st.kept_maps, st.maps
+                        "local update: {} of {} curves kept, {} of {} curved triangles' maps kept{}; ",
+                        st.kept_curves,
+                        st.curves,
+                        st.kept_maps,
+                        st.maps,
+                        match st.openings {
+                            0 => String::new(),
+                            n => format!(" ({n} tries after the first, each opening the faces where the one before failed)"),
+                        }
                     ),
                     None => String::new(),
                 };

@@ -134,6 +134,32 @@ fn af_refine_local_keeps_unchanged_curves_bit_identical_and_passes_the_global_ch
         !kept.contains_key(&(a, b)),
         "the curve through {x} is traced again"
     );
+    // A face whose previous curved triangle holds the inserted vertex counts as changed, its
+    // corners unchanged or not (its kept curves would wall the new vertex in).
+    let holding: Vec<u32> = prev
+        .emb
+        .maps
+        .iter()
+        .filter(|m| m.uv.contains_key(&x))
+        .map(|m| m.face)
+        .collect();
+    assert!(!holding.is_empty(), "{x} is in a previous curved triangle");
+    assert!(holding.iter().all(|f| !same.contains(f)), "{holding:?}");
+    // Planted: x moved, in the previous embedding, into a curved triangle far from the
+    // refinement whose corners did not change; that face now counts as changed too.
+    let far = prev
+        .emb
+        .maps
+        .iter()
+        .position(|m| same.contains(&m.face) && !holding.contains(&m.face))
+        .expect("a face far from the refinement");
+    let mut moved = prev.clone();
+    for m in &mut moved.emb.maps {
+        m.uv.remove(&x);
+    }
+    let h = moved.emb.maps[far].face;
+    moved.emb.maps[far].uv.insert(x, [0.25, 0.25]);
+    assert!(same.contains(&h) && !unchanged(&b2, &moved).contains(&h));
     // The parameters of the vertices of S_T inside the curved triangles kept whole.
     let whole: HashSet<u32> = b2
         .faces()
