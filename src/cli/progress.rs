@@ -3,8 +3,9 @@
 
 use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Instant;
 
-/// A progress line `"{label}: done/total {unit} (p%)"`, shown only when stderr is a terminal
+/// A progress line `"{label}: done/total {unit} (p%, rate/s, ETA t s)"`, shown only when stderr is a terminal
 /// and `wanted`. Call [`Line::finish`] after the work to end the line.
 pub(super) struct Line {
     label: &'static str,
@@ -13,6 +14,8 @@ pub(super) struct Line {
     /// Whether the hook was called (a construction that reports no progress leaves no line
     /// to end).
     updated: AtomicBool,
+    /// When the line was made: the rate and the ETA are measured from it.
+    start: Instant,
 }
 
 impl Line {
@@ -23,6 +26,7 @@ impl Line {
             unit,
             shown: wanted && std::io::stderr().is_terminal(),
             updated: AtomicBool::new(false),
+            start: Instant::now(),
         }
     }
 
@@ -30,8 +34,9 @@ impl Line {
     pub(crate) fn hook(&self) -> Option<impl Fn(usize, usize) + Sync + '_> {
         self.shown.then_some(move |d: usize, total: usize| {
             self.updated.store(true, Ordering::Relaxed);
+            let (rate, eta) = rate_eta(d, total, self.start.elapsed().as_secs_f64());
             eprint!(
-                "\r{}: {d}/{total} {} ({:.0}%)",
+                "\r{}: {d}/{total} {} ({:.0}%, {rate}, ETA {eta})   ",
                 self.label,
                 self.unit,
                 100.0 * d as f64 / total.max(1) as f64
@@ -44,5 +49,33 @@ impl Line {
         if self.updated.load(Ordering::Relaxed) {
             eprintln!();
         }
+    }
+}
+
+/// The rate ("12.3k/s") and the time left ("41 s") of `done` of `total` after `secs`; "?" while
+/// nothing is done yet (no rate to extrapolate from).
+fn rate_eta(done: usize, total: usize, secs: f64) -> (String, String) {
+    if done == 0 || secs <= 0.0 {
+        return ("?/s".into(), "?".into());
+    }
+    let rate = done as f64 / secs;
+    let left = total.saturating_sub(done) as f64 / rate;
+    let r = if rate >= 1e3 {
+        format!("{:.1}k/s", rate / 1e3)
+    } else {
+        format!("{rate:.1}/s")
+    };
+    (r, format!("{left:.0} s"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rate_eta;
+
+    #[test]
+    fn rate_and_eta_extrapolate_the_elapsed_time() {
+        assert_eq!(rate_eta(500, 2000, 2.0), ("250.0/s".into(), "6 s".into()));
+        assert_eq!(rate_eta(3000, 5000, 1.5), ("2.0k/s".into(), "1 s".into()));
+        assert_eq!(rate_eta(0, 10, 1.0), ("?/s".into(), "?".into()));
     }
 }
