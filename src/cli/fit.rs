@@ -45,6 +45,10 @@ pub(super) struct FitArgs {
     #[arg(long, default_value_t = crate::fitting::crossing::DEFAULT_EMBED_LEVEL,
           value_parser = clap::value_parser!(u32).range(0..=6))]
     pub embed_level: u32,
+    /// Refuse the fit when its memory, estimated from the size of S_T before anything is
+    /// allocated (docs/fitting-scale.md), exceeds this many GiB.
+    #[arg(long, default_value_t = 8.0)]
+    pub max_memory: f64,
     /// Print the summary as JSON.
     #[arg(long)]
     pub json: bool,
@@ -75,6 +79,15 @@ pub(super) fn run(a: FitArgs) -> ExitCode {
     o.deviation_ratio = a.deviation_ratio;
     o.max_rounds = a.max_rounds;
     o.embed_level = Some(a.embed_level);
+    if !(a.max_memory > 0.0 && a.max_memory.is_finite()) {
+        eprintln!(
+            "error: --max-memory must be a positive number of GiB, got {}",
+            a.max_memory
+        );
+        return ExitCode::from(2);
+    }
+    // A limit past u64's bytes is no limit (the cast saturates).
+    o.memory_limit = (a.max_memory * (1u64 << 30) as f64) as u64;
     let quiet = a.quiet;
     let fit = match fit_surface(&k, &o, |line| {
         if !quiet {

@@ -5,6 +5,7 @@ use super::base::{BaseMesh, RemovalLimits};
 use super::fitted::{BaseSurface, Fitted, SurfaceParam};
 use super::simplify::{Hierarchy, SimplifyOptions};
 use super::{embedded, local, refine, unblock, unsimplify};
+use crate::mesh::SimplicialSurface;
 use crate::surface::sigma_v::{SigmaVError, SigmaVPps};
 use rayon::prelude::*;
 use serde::Serialize;
@@ -29,6 +30,26 @@ pub struct FitOptions {
     /// base faces whose sample crosses are refined like vertices beyond ε
     /// (`AF-refine-embedded`). None: not checked in the loop.
     pub embed_level: Option<u32>,
+    /// The fit is refused when [`memory_estimate`] exceeds this many bytes.
+    pub memory_limit: u64,
+}
+
+/// Bytes per triangle of S_T in [`memory_estimate`]. Measured peaks (docs/fitting-scale.md,
+/// `/usr/bin/time -v`): 1.2 KB per face on koala (100k faces) and 0.9–1.3 KB on its two Loop
+/// steps (1.6 M faces); the routing graph alone holds 13 points per face at 20 bytes each,
+/// and an embedding is held twice during a local update.
+pub const BYTES_PER_FACE: u64 = 2048;
+
+/// Bytes of [`memory_estimate`] whatever the size of S_T (the (σ, v) tables, the thread pool).
+pub const FIXED_BYTES: u64 = 64 << 20;
+
+/// The default [`FitOptions::memory_limit`]: 8 GiB (a fit of 10⁶ vertices is ~2·10⁶ faces).
+pub const DEFAULT_MEMORY_LIMIT: u64 = 8 << 30;
+
+/// The memory a fit of S_T is allowed to reach, estimated from its size before anything is
+/// allocated: [`FIXED_BYTES`] + [`BYTES_PER_FACE`] per triangle.
+pub fn memory_estimate(k: &SimplicialSurface) -> u64 {
+    FIXED_BYTES.saturating_add(BYTES_PER_FACE.saturating_mul(k.num_faces() as u64))
 }
 
 impl FitOptions {
@@ -42,6 +63,7 @@ impl FitOptions {
             max_degree: 12,
             max_rounds: 40,
             embed_level: Some(super::crossing::DEFAULT_EMBED_LEVEL),
+            memory_limit: DEFAULT_MEMORY_LIMIT,
         }
     }
 }
@@ -69,6 +91,16 @@ pub enum FitError {
     /// ε must be a positive finite number.
     #[error("epsilon must be positive and finite, got {0}")]
     BadEpsilon(f64),
+    /// The fit of S_T would need more memory than allowed ([`memory_estimate`]).
+    #[error("a fit of {faces} triangles is estimated at {estimate} bytes, over the limit of {limit} bytes (--max-memory)")]
+    TooLarge {
+        /// Triangles of S_T.
+        faces: usize,
+        /// The estimate.
+        estimate: u64,
+        /// The limit.
+        limit: u64,
+    },
     /// The (σ, v) construction refused the base mesh.
     #[error("the (sigma, v) construction refused the base mesh: {0}")]
     SigmaV(#[from] SigmaVError),

@@ -41,5 +41,8 @@ pub mod straighten;
 pub mod unblock;
 pub mod unsimplify;
 
-pub use fit::{rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round};
+pub use fit::{
+    memory_estimate, rounding_bound, vertex_errors, Fit, FitError, FitOptions, Round,
+    BYTES_PER_FACE, DEFAULT_MEMORY_LIMIT, FIXED_BYTES,
+};
 pub use pipeline::fit_surface;

@@ -41,6 +41,14 @@ pub fn fit_surface(
     if !(opts.epsilon > 0.0 && opts.epsilon.is_finite()) {
         return Err(FitError::BadEpsilon(opts.epsilon));
     }
+    let estimate = super::fit::memory_estimate(k);
+    if estimate > opts.memory_limit {
+        return Err(FitError::TooLarge {
+            faces: k.num_faces(),
+            estimate,
+            limit: opts.memory_limit,
+        });
+    }
     let (r, restarted) = attempts(k, opts, true, &mut progress);
     let embeds =
         |r: &Result<Fit, FitError>| matches!(r, Ok(f) if f.embedded.is_ok() && f.floater_params);
