@@ -35,9 +35,10 @@ pub struct FitOptions {
 }
 
 /// Bytes per triangle of S_T in [`memory_estimate`]. Measured peaks (docs/fitting-scale.md,
-/// `/usr/bin/time -v`): 1.2 KB per face on koala (100k faces) and 0.9–1.3 KB on its two Loop
-/// steps (1.6 M faces); the routing graph alone holds 13 points per face at 20 bytes each,
-/// and an embedding is held twice during a local update.
+/// `/usr/bin/time -v`) are at most 0.59 of the estimate on the corpus at three ε (armadillo
+/// at 10⁻³: 73 MB of 124 MB) and 0.46 on koala's two Loop steps (1.52 GB of 3.34 GB at 30
+/// minutes); the routing graph alone holds ~13 points per triangle at 20 bytes each, and an
+/// embedding is held twice during a local update.
 pub const BYTES_PER_FACE: u64 = 2048;
 
 /// Bytes of [`memory_estimate`] whatever the size of S_T (the (σ, v) tables, the thread pool).
