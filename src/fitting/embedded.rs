@@ -50,19 +50,21 @@ pub struct Failure {
 
 /// Embed, cut, map (module doc).
 pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure> {
-    embed_keeping(k, base, &HashMap::new(), |_, _, _, _| None)
+    embed_keeping(k, base, &HashMap::new(), |_, _, _, _| None, &mut |_, _| {})
 }
 
 /// [`embed`] with the curves in `kept` taken as they are (neither traced nor shortened; the
 /// others are traced and shortened around them) and the maps `reuse` gives for some faces
-/// (`super::local`: given the face slot, its pieces, the overlay and the curves).
+/// (`super::local`: given the face slot, its pieces, the overlay and the curves); `tick`
+/// follows the tracing ([`route::curves_keeping`]).
 pub fn embed_keeping(
     k: &SimplicialSurface,
     base: &BaseMesh,
     kept: &HashMap<(u32, u32), Curve>,
     mut reuse: impl FnMut(u32, &[usize], &Overlay, &Embedding) -> Option<RegionMap>,
+    tick: &mut dyn FnMut(usize, usize),
 ) -> Result<Embedded, Failure> {
-    let mut emb = route::curves_keeping(k, base, kept).map_err(|e| {
+    let mut emb = route::curves_keeping(k, base, kept, tick).map_err(|e| {
         let EmbedError::NoPath { a, b, blocked } = &e;
         let (a, b) = (*a, *b);
         Failure {

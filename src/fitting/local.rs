@@ -175,6 +175,16 @@ pub fn embed_local(
     base: &BaseMesh,
     prev: &Previous,
 ) -> Result<(Embedded, LocalStats), Failure> {
+    embed_local_ticking(k, base, prev, &mut |_, _| {})
+}
+
+/// [`embed_local`] with `tick` following each tracing ([`super::route::curves_keeping`]).
+pub fn embed_local_ticking(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    prev: &Previous,
+    tick: &mut dyn FnMut(usize, usize),
+) -> Result<(Embedded, LocalStats), Failure> {
     let unch = unchanged(base, prev);
     let mut open: HashSet<u32> = HashSet::new();
     let mut openings = 0;
@@ -183,7 +193,7 @@ pub fn embed_local(
         for f in opened(base, prev, &open) {
             same.remove(&f);
         }
-        match embed_with(k, base, prev, &same) {
+        match embed_with(k, base, prev, &same, tick) {
             Ok((e, st)) => return Ok((e, LocalStats { openings, ..st })),
             Err(f) if openings < MAX_OPENINGS && (f.edge.is_some() || !f.faces.is_empty()) => {
                 let ends: Vec<u32> = f
@@ -217,59 +227,66 @@ fn embed_with(
     base: &BaseMesh,
     prev: &Previous,
     same: &HashSet<u32>,
+    tick: &mut dyn FnMut(usize, usize),
 ) -> Result<(Embedded, LocalStats), Failure> {
     let kept = kept_curves(base, prev, same);
     let old_maps: HashMap<u32, &RegionMap> = prev.emb.maps.iter().map(|m| (m.face, m)).collect();
     let n = k.vertex_slots() as u32;
     let mut kept_maps = 0;
-    let e = embed_keeping(k, base, &kept, |f, pieces, ov, emb| {
-        if !same.contains(&f) {
-            return None;
-        }
-        let c = base.face(f)?;
-        let old = old_maps.get(&f)?;
-        if old.pieces.len() != pieces.len() {
-            return None;
-        }
-        // Overlay ids of the nodes of the face's three curves, old to new (the vertices of S_T
-        // keep theirs: the overlay numbers them first).
-        let mut ids: HashMap<u32, u32> = HashMap::new();
-        for i in 0..3 {
-            let (u, w) = (c[i], c[(i + 1) % 3]);
-            let key = (u.min(w), u.max(w));
-            if !kept.contains_key(&key) {
+    let e = embed_keeping(
+        k,
+        base,
+        &kept,
+        |f, pieces, ov, emb| {
+            if !same.contains(&f) {
                 return None;
             }
-            let old_ids = prev
-                .emb
-                .overlay
-                .curve_ids
-                .get(*prev.emb.emb.index.get(&key)?)?;
-            let new_ids = ov.curve_ids.get(*emb.index.get(&key)?)?;
-            if old_ids.len() != new_ids.len() {
+            let c = base.face(f)?;
+            let old = old_maps.get(&f)?;
+            if old.pieces.len() != pieces.len() {
                 return None;
             }
-            ids.extend(old_ids.iter().copied().zip(new_ids.iter().copied()));
-        }
-        let mut uv = HashMap::with_capacity(old.uv.len());
-        for (&id, &p) in &old.uv {
-            let to = if id < n { id } else { *ids.get(&id)? };
-            uv.insert(to, p);
-        }
-        if pieces
-            .iter()
-            .any(|&p| ov.pieces[p].v.iter().any(|v| !uv.contains_key(v)))
-        {
-            return None;
-        }
-        kept_maps += 1;
-        Some(RegionMap {
-            face: f,
-            pieces: pieces.to_vec(),
-            uv,
-            interior: old.interior,
-        })
-    })?;
+            // Overlay ids of the nodes of the face's three curves, old to new (the vertices of S_T
+            // keep theirs: the overlay numbers them first).
+            let mut ids: HashMap<u32, u32> = HashMap::new();
+            for i in 0..3 {
+                let (u, w) = (c[i], c[(i + 1) % 3]);
+                let key = (u.min(w), u.max(w));
+                if !kept.contains_key(&key) {
+                    return None;
+                }
+                let old_ids = prev
+                    .emb
+                    .overlay
+                    .curve_ids
+                    .get(*prev.emb.emb.index.get(&key)?)?;
+                let new_ids = ov.curve_ids.get(*emb.index.get(&key)?)?;
+                if old_ids.len() != new_ids.len() {
+                    return None;
+                }
+                ids.extend(old_ids.iter().copied().zip(new_ids.iter().copied()));
+            }
+            let mut uv = HashMap::with_capacity(old.uv.len());
+            for (&id, &p) in &old.uv {
+                let to = if id < n { id } else { *ids.get(&id)? };
+                uv.insert(to, p);
+            }
+            if pieces
+                .iter()
+                .any(|&p| ov.pieces[p].v.iter().any(|v| !uv.contains_key(v)))
+            {
+                return None;
+            }
+            kept_maps += 1;
+            Some(RegionMap {
+                face: f,
+                pieces: pieces.to_vec(),
+                uv,
+                interior: old.interior,
+            })
+        },
+        tick,
+    )?;
     let st = LocalStats {
         kept_curves: e.emb.stats.kept,
         curves: e.emb.curves.len(),

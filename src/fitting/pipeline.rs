@@ -169,8 +169,10 @@ fn fit_once(
                 progress("embed: failed at this base mesh before, not tried again");
                 Err(f.clone())
             }
-            None => match prev.as_ref().map(|p| local::embed_local(k, &base, p)) {
-                None => embedded::embed(k, &base),
+            None => match prev.as_ref().map(|p| {
+                local::embed_local_ticking(k, &base, p, &mut ticker(progress, "local update"))
+            }) {
+                None => embed_all(k, &base, progress),
                 Some(Ok((e, st))) => {
                     let checks = embed_checks::run(k, &base, &e);
                     let bad: Vec<&str> = checks
@@ -187,7 +189,7 @@ fn fit_once(
                             "embed: the local update fails {}; embedding all of S_T again",
                             bad.join(", ")
                         ));
-                        embedded::embed(k, &base)
+                        embed_all(k, &base, progress)
                     }
                 }
                 Some(Err(f)) => {
@@ -195,7 +197,7 @@ fn fit_once(
                         "embed: the local update failed ({}); embedding all of S_T again",
                         f.what
                     ));
-                    embedded::embed(k, &base)
+                    embed_all(k, &base, progress)
                 }
             },
         };
@@ -694,6 +696,46 @@ fn unsimplify_round(
 }
 
 /// The walk's changes at the blocked edges ([`unblock::Walk::change_all`]), as progress lines.
+/// Seconds between two progress lines of one tracing (a tracing shorter than this prints none).
+const TICK_SECONDS: f64 = 10.0;
+
+/// A tracing's `tick` ([`super::route::curves_keeping`]) that prints, every [`TICK_SECONDS`],
+/// the base edges traced, the rate and the time left of the pass (a restart is a new pass).
+fn ticker<'a>(progress: &'a mut impl FnMut(&str), what: &'a str) -> impl FnMut(usize, usize) + 'a {
+    let start = std::time::Instant::now();
+    let (mut pass_start, mut pass, mut last, mut next) = (0.0, 1, 0, TICK_SECONDS);
+    move |done, total| {
+        let s = start.elapsed().as_secs_f64();
+        if done < last {
+            (pass_start, pass) = (s, pass + 1);
+        }
+        last = done;
+        if s >= next && 0 < done && done < total {
+            next = s + TICK_SECONDS;
+            let rate = done as f64 / (s - pass_start).max(1e-9);
+            progress(&format!(
+                "embed: {what}, tracing pass {pass}: {done}/{total} base edges ({rate:.1}/s, ETA {:.0} s)",
+                (total - done) as f64 / rate.max(1e-9)
+            ));
+        }
+    }
+}
+
+/// The embedding of all of S_T, with progress lines for a long tracing.
+fn embed_all(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    progress: &mut impl FnMut(&str),
+) -> Result<embedded::Embedded, embedded::Failure> {
+    embedded::embed_keeping(
+        k,
+        base,
+        &std::collections::HashMap::new(),
+        |_, _, _, _| None,
+        &mut ticker(progress, "all of S_T"),
+    )
+}
+
 fn unblock_all(
     base: &mut BaseMesh,
     walk: &mut unblock::Walk,

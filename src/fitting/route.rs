@@ -326,6 +326,7 @@ fn trace_all(
     first: &[usize],
     collect: bool,
     stats: &mut EmbedStats,
+    tick: &mut dyn FnMut(usize, usize),
 ) -> Result<Traced, Vec<usize>> {
     let diag = diagonal(base.positions());
     let mut t = Traced {
@@ -406,6 +407,7 @@ fn trace_all(
         budget = budget.saturating_sub(blockers.len());
         stats.ripped += blockers.len();
         t.commit(g, k, e, tier, path);
+        tick(edges.len() - queue.len(), edges.len());
     }
     if blocked.is_empty() {
         Ok(t)
@@ -418,17 +420,19 @@ fn trace_all(
 /// [`base_edges`] (shortest first); when one has no path, the tracing starts again with that
 /// edge first (before the edges promoted earlier), at most [`RESTARTS`] times.
 pub fn initial_curves(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedding, EmbedError> {
-    curves_keeping(k, base, &HashMap::new())
+    curves_keeping(k, base, &HashMap::new(), &mut |_, _| {})
 }
 
 /// [`initial_curves`] with the curves in `kept` (by base edge (a, b), a < b) taken as they
 /// are (a refinement round's unchanged curves, `super::local`): closed before any other is
 /// traced, never taken up; only the other base edges are traced. A kept curve whose edge is
-/// no base edge is ignored.
+/// no base edge is ignored. `tick(done, total)` follows each tracing (edges done of the edges
+/// in the queue; a restart starts again from 0).
 pub fn curves_keeping(
     k: &SimplicialSurface,
     base: &BaseMesh,
     kept: &HashMap<(u32, u32), Curve>,
+    tick: &mut dyn FnMut(usize, usize),
 ) -> Result<Embedding, EmbedError> {
     let g = Graph::new(k);
     let edges = base_edges(base);
@@ -437,7 +441,7 @@ pub fn curves_keeping(
     let mut first: Vec<usize> = Vec::new();
     let t = loop {
         let mut s = EmbedStats::default();
-        match trace_all(k, base, &g, &edges, &kept_of, &first, false, &mut s) {
+        match trace_all(k, base, &g, &edges, &kept_of, &first, false, &mut s, tick) {
             Ok(t) => {
                 stats.ripped = s.ripped;
                 break t;
@@ -446,9 +450,10 @@ pub fn curves_keeping(
                 let e = es[0];
                 if stats.restarts >= RESTARTS || first.first() == Some(&e) {
                     // The same tracing once more, past the blocked edges, to name them all.
-                    let mut all = trace_all(k, base, &g, &edges, &kept_of, &first, true, &mut s)
-                        .err()
-                        .unwrap_or_default();
+                    let mut all =
+                        trace_all(k, base, &g, &edges, &kept_of, &first, true, &mut s, tick)
+                            .err()
+                            .unwrap_or_default();
                     all.retain(|&x| x != e);
                     all.insert(0, e);
                     let (a, b) = edges[e];
