@@ -29,7 +29,7 @@
 use crate::mesh::{FaceId, HalfedgeId, SimplicialSurface, VertexId};
 use serde::Serialize;
 use std::cell::RefCell;
-use std::collections::{BinaryHeap, HashMap};
+use std::collections::{BinaryHeap, HashMap, VecDeque};
 use std::ops::Deref;
 
 /// A node of an embedded edge.
@@ -289,6 +289,27 @@ struct Scratch {
     heap: BinaryHeap<Item>,
 }
 
+impl Scratch {
+    fn new(points: usize) -> Self {
+        Scratch {
+            dist: vec![0.0; points],
+            from: vec![0; points],
+            seen: vec![0; points],
+            stamp: 0,
+            heap: BinaryHeap::new(),
+        }
+    }
+    /// The first of `n` stamps no point holds yet (`seen` cleared when the counter would wrap).
+    fn fresh(&mut self, n: u32) -> u32 {
+        if self.stamp > u32::MAX - n {
+            self.seen.fill(0);
+            self.stamp = 0;
+        }
+        self.stamp += n;
+        self.stamp - n + 1
+    }
+}
+
 impl<'a> Graph<'a> {
     pub(super) fn new(k: &'a SimplicialSurface) -> Self {
         // The edges in the order of `SimplicialSurface::edges` (half-edges ascending, origin
@@ -305,21 +326,15 @@ impl<'a> Graph<'a> {
                 edges.push((u.0, w.0));
             }
         }
-        let n = k.vertex_slots() as u32;
-        let points = n as usize + EDGE_POINTS as usize * edges.len();
-        Graph {
+        let mut g = Graph {
             k,
-            n,
+            n: k.vertex_slots() as u32,
             he_edge,
             edges,
-            scratch: RefCell::new(Scratch {
-                dist: vec![0.0; points],
-                from: vec![0; points],
-                seen: vec![0; points],
-                stamp: 0,
-                heap: BinaryHeap::new(),
-            }),
-        }
+            scratch: RefCell::new(Scratch::new(0)),
+        };
+        *g.scratch.get_mut() = Scratch::new(g.points());
+        g
     }
     /// The number of points (vertices of S_T and points inside its edges).
     pub(super) fn points(&self) -> usize {
@@ -409,13 +424,9 @@ pub(super) fn connected(
     step: impl Fn(u32, u32, &[FaceId]) -> Option<f64>,
 ) -> bool {
     let mut scratch = g.scratch.borrow_mut();
-    let Scratch { seen, stamp, .. } = &mut *scratch;
-    if *stamp >= u32::MAX - 2 {
-        seen.fill(0);
-        *stamp = 0;
-    }
-    let (sa, sb) = (*stamp + 1, *stamp + 2);
-    *stamp = sb;
+    let sa = scratch.fresh(2);
+    let sb = sa + 1;
+    let seen = &mut scratch.seen;
     let (ai, bi) = (a as usize, b as usize);
     if ai >= seen.len() || bi >= seen.len() {
         return false;
@@ -425,10 +436,7 @@ pub(super) fn connected(
     }
     seen[ai] = sa;
     seen[bi] = sb;
-    let mut fronts = [
-        std::collections::VecDeque::from([a]),
-        std::collections::VecDeque::from([b]),
-    ];
+    let mut fronts = [VecDeque::from([a]), VecDeque::from([b])];
     let mut steps = Vec::new();
     loop {
         for (front, mine, theirs) in [(0, sa, sb), (1, sb, sa)] {
@@ -465,19 +473,14 @@ pub(super) fn dijkstra(
     step: impl Fn(u32, u32, &[FaceId]) -> Option<f64>,
 ) -> Option<Vec<u32>> {
     let mut scratch = g.scratch.borrow_mut();
+    let now = scratch.fresh(1);
     let Scratch {
         dist: d,
         from,
         seen,
-        stamp,
         heap,
+        ..
     } = &mut *scratch;
-    if *stamp == u32::MAX {
-        seen.fill(0);
-        *stamp = 0;
-    }
-    *stamp += 1;
-    let now = *stamp;
     heap.clear();
     let mut steps = Vec::new();
     let (ai, bi) = (a as usize, b as usize);
