@@ -22,6 +22,23 @@ pub(crate) fn tick(progress: Progress, done: &std::sync::atomic::AtomicUsize, to
     }
 }
 
+/// The rate ("12.3k/s") and the time left ("41 s") of `done` of `total` items after `secs`
+/// seconds, as progress lines show them (the command line's, and `fitting`'s tracing lines);
+/// "?" while nothing is done yet (no rate to extrapolate from).
+pub fn rate_eta(done: usize, total: usize, secs: f64) -> (String, String) {
+    if done == 0 || secs <= 0.0 {
+        return ("?/s".into(), "?".into());
+    }
+    let rate = done as f64 / secs;
+    let left = total.saturating_sub(done) as f64 / rate;
+    let r = if rate >= 1e3 {
+        format!("{:.1}k/s", rate / 1e3)
+    } else {
+        format!("{rate:.1}/s")
+    };
+    (r, format!("{left:.0} s"))
+}
+
 /// Render a list of results as a text table, one line per check plus indented witnesses.
 pub fn render_text(results: &[CheckResult]) -> String {
     use std::fmt::Write;
@@ -70,4 +87,16 @@ pub fn render_text(results: &[CheckResult]) -> String {
         }
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rate_eta;
+
+    #[test]
+    fn rate_and_eta_extrapolate_the_elapsed_time() {
+        assert_eq!(rate_eta(500, 2000, 2.0), ("250.0/s".into(), "6 s".into()));
+        assert_eq!(rate_eta(3000, 5000, 1.5), ("2.0k/s".into(), "1 s".into()));
+        assert_eq!(rate_eta(0, 10, 1.0), ("?/s".into(), "?".into()));
+    }
 }

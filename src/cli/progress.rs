@@ -5,8 +5,10 @@ use std::io::IsTerminal;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
-/// A progress line `"{label}: done/total {unit} (p%, rate/s, ETA t s)"`, shown only when stderr is a terminal
-/// and `wanted`. Call [`Line::finish`] after the work to end the line.
+use crate::report::rate_eta;
+
+/// A progress line `"{label}: done/total {unit} (p%, rate, ETA t s)"`, shown only when stderr
+/// is a terminal and `wanted`. Call [`Line::finish`] after the work to end the line.
 pub(super) struct Line {
     label: &'static str,
     unit: &'static str,
@@ -49,33 +51,5 @@ impl Line {
         if self.updated.load(Ordering::Relaxed) {
             eprintln!();
         }
-    }
-}
-
-/// The rate ("12.3k/s") and the time left ("41 s") of `done` of `total` after `secs`; "?" while
-/// nothing is done yet (no rate to extrapolate from).
-fn rate_eta(done: usize, total: usize, secs: f64) -> (String, String) {
-    if done == 0 || secs <= 0.0 {
-        return ("?/s".into(), "?".into());
-    }
-    let rate = done as f64 / secs;
-    let left = total.saturating_sub(done) as f64 / rate;
-    let r = if rate >= 1e3 {
-        format!("{:.1}k/s", rate / 1e3)
-    } else {
-        format!("{rate:.1}/s")
-    };
-    (r, format!("{left:.0} s"))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::rate_eta;
-
-    #[test]
-    fn rate_and_eta_extrapolate_the_elapsed_time() {
-        assert_eq!(rate_eta(500, 2000, 2.0), ("250.0/s".into(), "6 s".into()));
-        assert_eq!(rate_eta(3000, 5000, 1.5), ("2.0k/s".into(), "1 s".into()));
-        assert_eq!(rate_eta(0, 10, 1.0), ("?/s".into(), "?".into()));
     }
 }

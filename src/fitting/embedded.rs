@@ -50,7 +50,16 @@ pub struct Failure {
 
 /// Embed, cut, map (module doc).
 pub fn embed(k: &SimplicialSurface, base: &BaseMesh) -> Result<Embedded, Failure> {
-    embed_keeping(k, base, &HashMap::new(), |_, _, _, _| None, &mut |_, _| {})
+    embed_ticking(k, base, &mut |_, _| {})
+}
+
+/// [`embed`] with `tick` following each tracing ([`route::curves_keeping`]).
+pub fn embed_ticking(
+    k: &SimplicialSurface,
+    base: &BaseMesh,
+    tick: &mut dyn FnMut(usize, usize),
+) -> Result<Embedded, Failure> {
+    embed_keeping(k, base, &HashMap::new(), |_, _, _, _| None, tick)
 }
 
 /// [`embed`] with the curves in `kept` taken as they are (neither traced nor shortened; the

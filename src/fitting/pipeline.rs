@@ -695,7 +695,6 @@ fn unsimplify_round(
     Some(how)
 }
 
-/// The walk's changes at the blocked edges ([`unblock::Walk::change_all`]), as progress lines.
 /// Seconds between two progress lines of one tracing (a tracing shorter than this prints none).
 const TICK_SECONDS: f64 = 10.0;
 
@@ -712,10 +711,9 @@ fn ticker<'a>(progress: &'a mut impl FnMut(&str), what: &'a str) -> impl FnMut(u
         last = done;
         if s >= next && 0 < done && done < total {
             next = s + TICK_SECONDS;
-            let rate = done as f64 / (s - pass_start).max(1e-9);
+            let (rate, eta) = crate::report::rate_eta(done, total, s - pass_start);
             progress(&format!(
-                "embed: {what}, tracing pass {pass}: {done}/{total} base edges ({rate:.1}/s, ETA {:.0} s)",
-                (total - done) as f64 / rate.max(1e-9)
+                "embed: {what}, tracing pass {pass}: {done}/{total} base edges ({rate}, ETA {eta})"
             ));
         }
     }
@@ -727,15 +725,10 @@ fn embed_all(
     base: &BaseMesh,
     progress: &mut impl FnMut(&str),
 ) -> Result<embedded::Embedded, embedded::Failure> {
-    embedded::embed_keeping(
-        k,
-        base,
-        &std::collections::HashMap::new(),
-        |_, _, _, _| None,
-        &mut ticker(progress, "all of S_T"),
-    )
+    embedded::embed_ticking(k, base, &mut ticker(progress, "all of S_T"))
 }
 
+/// The walk's changes at the blocked edges ([`unblock::Walk::change_all`]), as progress lines.
 fn unblock_all(
     base: &mut BaseMesh,
     walk: &mut unblock::Walk,
