@@ -37,8 +37,9 @@ pub struct FitOptions {
 /// Bytes per triangle of S_T in [`memory_estimate`]. Measured peaks (docs/fitting-scale.md,
 /// `/usr/bin/time -v`) are at most 0.59 of the estimate on the corpus at three ε (armadillo
 /// at 10⁻³: 73 MB of 124 MB), 0.46 on koala's two Loop steps (1.52 GB of 3.34 GB, stopped)
-/// and 0.51 on armadillo's three (1.99 GB of 3.89 GB, the whole fit); the routing graph alone holds ~13 points per triangle at 20 bytes each, and an
-/// embedding is held twice during a local update.
+/// and 0.51 on armadillo's three (1.99 GB of 3.89 GB, the whole fit); the routing graph
+/// alone holds ~13 points per triangle at 20 bytes each, and an embedding is held twice
+/// during a local update.
 pub const BYTES_PER_FACE: u64 = 2048;
 
 /// Bytes of [`memory_estimate`] whatever the size of S_T (the (σ, v) tables, the thread pool).
