@@ -13,8 +13,10 @@
 # campaigns (incremental builds).
 # Every cargo command of the campaign builds and runs only the module's test binaries (-C), so
 # one mutant costs one incremental build of the library and those binaries, not the suite.
-# A sample takes mutant i when i % DENOM == 0 (cargo-mutants' round-robin shard 0/DENOM):
-# systematic, deterministic for a given commit, and spread over every file of the module.
+# A sample takes mutant i when i % DENOM == K (cargo-mutants' round-robin shard K/DENOM, K from
+# PPM_MUTANTS_SHARD, 0 if unset): systematic, deterministic for a given commit, and spread over
+# every file of the module. A fresh sample of a module whose earlier sample's survivors were
+# aimed at by new tests takes another K, so that it does not measure those survivors again.
 set -euo pipefail
 
 here="$(cd "$(dirname "$0")/.." && pwd)"
@@ -63,6 +65,14 @@ if [[ -z "$row" ]]; then
     exit 2
 fi
 IFS='|' read -r _ globs tests skips filter <<<"$row"
+shard="${PPM_MUTANTS_SHARD:-0}"
+if ! [[ "$shard" =~ ^[0-9]+$ ]] || ((shard >= denom)); then
+    echo "PPM_MUTANTS_SHARD=$shard is not a shard of 0..$((denom - 1))" >&2
+    exit 2
+fi
+# The sample column: DENOM for shard 0 (as every earlier row), K/DENOM otherwise.
+sample="$denom"
+((shard == 0)) || sample="$shard/$denom"
 
 command -v cargo-mutants >/dev/null || {
     echo "cargo-mutants is not installed: cargo install cargo-mutants --locked" >&2
@@ -110,7 +120,7 @@ if [[ "$again" == again ]]; then
         args+=(--re "^$(printf '%s' "$name" | sed 's/[][\.*^$+?(){}|]/\\&/g')\$")
     done <"$prev"
 elif [[ "$denom" != 1 ]]; then
-    args+=(--shard "0/$denom" --sharding round-robin)
+    args+=(--shard "$shard/$denom" --sharding round-robin)
 fi
 if [[ -n "${skips:-}" || -n "${filter:-}" ]]; then
     args+=(--cargo-test-arg=--)
@@ -156,7 +166,7 @@ read -r score lo hi < <(awk -v c="$((caught + timeout))" -v n="$((caught + timeo
 
 [[ -f "$results" ]] || printf 'date\tcommit\tmodule\tdenom\tgenerated\ttested\tcaught\tmissed\ttimeout\tunviable\tscore\tci95_lo\tci95_hi\tseconds\n' >"$results"
 printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' \
-    "$(date -u +%Y-%m-%d)" "${commit:0:10}" "$module${again:+ (again)}" "$denom" "$generated" \
+    "$(date -u +%Y-%m-%d)" "${commit:0:10}" "$module${again:+ (again)}" "$sample" "$generated" \
     "$((caught + missed + timeout + unviable))" "$caught" "$missed" "$timeout" "$unviable" \
     "$score" "$lo" "$hi" "$secs" >>"$results"
 echo "module $module: caught $caught, missed $missed, timeout $timeout, unviable $unviable, score $score [$lo, $hi]"

@@ -28,7 +28,8 @@ END {
             split(again[m], g, "\t")
             after = wilson(caught + g[7] + g[9], viable, f[4] != 1) " (" g[2] ")"
         }
-        sample = f[4] == 1 ? "all" : "1/" f[4]
+        # DENOM (shard 0) or K/DENOM (shard K): one mutant in DENOM either way.
+        sample = f[4] == 1 ? "all" : (f[4] ~ /\// ? "1/" substr(f[4], index(f[4], "/") + 1) " (shard " substr(f[4], 1, index(f[4], "/") - 1) ")" : "1/" f[4])
         printf "| `%s` | %s | %s | %d | %d | %d | %d | %d | %d | %s | %s | %d min |\n",
             m, f[2], sample, f[5], f[6], f[7], f[8], f[9], f[10], wilson(caught, viable, f[4] != 1), after, int((f[14] + 59) / 60)
     }
