@@ -4,8 +4,7 @@
 use super::load::surface as load;
 use crate::fitting::{fit_surface, FitOptions};
 use crate::report::{render_text, CheckResult};
-use crate::surface::sigma_v::checks::{check_built, sv_erratum, SvCheckOptions};
-use crate::surface::sigma_v::SigmaVPps;
+use crate::surface::sigma_v::checks::sv_erratum;
 use clap::Args;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -109,7 +108,7 @@ pub(super) fn run(a: FitArgs) -> ExitCode {
     if !quiet {
         eprintln!("[{:7.1} s] checking the fit", t0.elapsed().as_secs_f64());
     }
-    let checks = fit_checks(&k, &fit, a.seed);
+    let checks = crate::fitting::checks::run_all_checks(&k, &fit, a.seed);
     let unexpected = unexpected(&checks);
     let last = fit.rounds.last();
     let summary = serde_json::json!({
@@ -155,29 +154,6 @@ pub(super) fn run(a: FitArgs) -> ExitCode {
         print_checks(&checks, &unexpected);
     }
     status(&unexpected)
-}
-
-/// The checks of each stage (SPEC `AF-…`) and those of the (σ, v) construction on the
-/// fitted PPS (SPEC `SV-…`).
-fn fit_checks(
-    k: &crate::mesh::SimplicialSurface,
-    fit: &crate::fitting::Fit,
-    seed: u64,
-) -> Vec<CheckResult> {
-    let mut out = crate::fitting::checks::run_fit_checks(k, fit, seed);
-    out.extend(sv_checks(&fit.surface.k, &fit.fitted.pps, seed));
-    out
-}
-
-/// The (σ, v) checks (Def. 3.4.1, condition (C), smoothness, eval) on a fitted PPS over K.
-fn sv_checks(k: &crate::mesh::SimplicialSurface, pps: &SigmaVPps, seed: u64) -> Vec<CheckResult> {
-    let o = SvCheckOptions {
-        seed,
-        kappa: pps.gluing.kappa,
-        patch_degree: pps.degree,
-        ..SvCheckOptions::default()
-    };
-    check_built(k, &pps.gluing, pps, &o)
 }
 
 /// The failures that are not documented errata of the (σ, v) construction.
@@ -258,7 +234,7 @@ pub(super) fn check_fit_file(file: &std::path::Path, json: bool, seed: u64) -> E
         Ok(f) => f,
         Err(c) => return c,
     };
-    let mut checks = sv_checks(&f.k, &f.pps, seed);
+    let mut checks = crate::fitting::checks::fitted_pps_checks(&f.k, &f.pps, seed);
     checks.push(
         crate::fitting::crossing::check_embedded(
             &f.pps,

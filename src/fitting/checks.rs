@@ -303,7 +303,29 @@ pub fn check_epsilon(
     r
 }
 
-/// Every check of a fit on S_T = `k`.
+/// Every check `ppm fit` runs on a fit of S_T = `k`: those of each stage (SPEC `AF-…`) and those
+/// of the (σ, v) construction on the fitted PPS over the base mesh (SPEC `SV-…`: Def. 3.4.1,
+/// condition (C), smoothness, eval).
+pub fn run_all_checks(k: &SimplicialSurface, fit: &Fit, seed: u64) -> Vec<CheckResult> {
+    let mut out = run_fit_checks(k, fit, seed);
+    out.extend(fitted_pps_checks(&fit.surface.k, &fit.fitted.pps, seed));
+    out
+}
+
+/// The (σ, v) checks (Def. 3.4.1, condition (C), smoothness, eval) on a fitted PPS over its
+/// base mesh `base` (also what `ppm check --spec` runs on a fit file read back).
+pub fn fitted_pps_checks(base: &SimplicialSurface, pps: &SigmaVPps, seed: u64) -> Vec<CheckResult> {
+    use crate::surface::sigma_v::checks::{check_built, SvCheckOptions};
+    let o = SvCheckOptions {
+        seed,
+        kappa: pps.gluing.kappa,
+        patch_degree: pps.degree,
+        ..SvCheckOptions::default()
+    };
+    check_built(base, &pps.gluing, pps, &o)
+}
+
+/// Every check of a fit's stages on S_T = `k` (SPEC `AF-…`).
 pub fn run_fit_checks(k: &SimplicialSurface, fit: &Fit, seed: u64) -> Vec<CheckResult> {
     let mut out = vec![
         check_base_vertices(k, &fit.surface.k, &fit.surface.fine_of),
