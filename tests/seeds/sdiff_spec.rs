@@ -953,6 +953,18 @@ fn sd_6_2_distance_sd_6_2_topology_sd_l302_sd_l324_taubin_and_circle() {
         by_id(&out.report, "SD-6.2(distance)").verdict(),
         Verdict::Skipped { .. }
     ));
+    // Planted: the circle's g times 10¹⁵⁵ has the same zero set, but the square of its
+    // gradient overflows f64, so no sample point has a Newton projection: every one is an
+    // evaluation error of SD-6.2(distance), an offence, never holds.
+    let mut steep = Implicit::circle();
+    let scale = Q::from_integer(num_bigint::BigInt::from(10u32).pow(155));
+    for t in &mut steep.terms {
+        t.2 = &t.2 * &scale;
+    }
+    let out = polygonize::polygonize(&steep, &opts).unwrap();
+    let d = by_id(&out.report, "SD-6.2(distance)");
+    assert!(d.failed() && d.eval_errors > 0, "{d:?}");
+    assert!(d.note.contains("without a projection"), "{}", d.note);
 }
 
 // ---- 3-D: monotonic coordinates on tetrahedra (Sec. 3.1, m = 3) ------------------------
