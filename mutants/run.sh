@@ -41,7 +41,7 @@ oracle|src/oracle/*.rs src/oracle/*/*.rs|surface
 report-harness|src/report/harness.rs src/report/check_result.rs src/report.rs|lib gluing
 conditions|src/conditions/*.rs|lib chapter4 mesh
 loop-subdiv|src/surface/loop_subdiv/*.rs|lib surface|corpus
-sigma-v|src/surface/sigma_v/*.rs|lib surface|corpus
+sigma-v|src/surface/sigma_v/*.rs|lib surface|corpus|sigma_v
 msplines|src/msplines/*.rs|lib seeds||msplines
 sdiff|src/sdiff/*.rs src/sdiff/*/*.rs|lib seeds||sdiff
 render|src/render/*.rs|lib surface||render docs_pictures
