@@ -576,3 +576,31 @@ fn af_planted_geodesic_off_surface_crossing_curves_and_folded_floater_map_are_ca
         );
     }
 }
+
+/// SPEC `AF-scale` and `AF-vs-PL` are measurements on inputs of 10⁶ vertices (`cargo bench
+/// --bench dense_fit`, `benches/pl_vertices.py`: tens of minutes a run, so no test records
+/// them). What a test can assert is what they count, here on the torus at 10⁻²: the charts are
+/// the base vertices, and the smooth side's degrees of freedom are 3 per control point, the
+/// fit file's `p ` lines that docs/fitting-scale.md counts: one patch of
+/// `num_control_points(d)` points per corner, 3 corners per base face.
+#[test]
+fn af_scale_af_vs_pl_what_the_measurements_count() {
+    use pseudomanifold::surface::sigma_v::patch::num_control_points;
+    let k = torus();
+    let f = fit(&k, 1e-2);
+    let base = &f.surface.k;
+    assert_eq!(f.surface.fine_of.len(), base.num_vertices());
+    assert_eq!(f.fitted.corners.len(), 3 * base.num_faces());
+    let dir = std::env::temp_dir().join(format!("ppm-af-scale-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("torus.fit");
+    write_fit(&path, &f).expect("write");
+    let text = std::fs::read_to_string(&path).expect("read the fit file");
+    let p = text.lines().filter(|l| l.starts_with("p ")).count();
+    assert!(p > 0);
+    assert_eq!(
+        p,
+        3 * base.num_faces() * num_control_points(f.fitted.pps.degree)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

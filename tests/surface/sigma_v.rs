@@ -307,8 +307,10 @@ impl ThetaJets for ThetaFault<'_> {
                 let k = std::f64::consts::PI / SMOOTH_H0;
                 t[0] = t[0].add(&q.y.scale_f64(k).sin().scale_f64(1e-6));
             }
-            // A second derivative off by 0.1 (θ_xx of the first coordinate): not the jet of θ.
+            // A second derivative off by 0.05 (θ_xx of the first coordinate): not the jet of θ.
             6 => t[0].c[idx(2, 0)] += 0.05,
+            // The same in θ_yy of the second coordinate (the other half of the stencil).
+            7 => t[1].c[idx(0, 2)] += 0.05,
             // "Outside Ω_i": a skipped sample.
             _ => {
                 return Err(SigmaVError::NotInOmega {
@@ -392,7 +394,8 @@ fn sv_smooth_planted_nan_error_and_empty_sample() {
 /// estimated at the five stencil points. A smooth θ whose θ''' changes sign between them (a
 /// ripple of half-period h) failed at the fixed h = 10⁻³ (the anchor fit's degree-34 vertex
 /// did so at one sample); the stencil is now halved there and it holds. A second derivative
-/// off by 0.1 still fails at every h, the corner named.
+/// off by 0.05 (θ_xx of one coordinate, θ_yy of another) still fails at every h, the corner
+/// named.
 #[test]
 fn sv_smooth_unresolved_third_derivative_refines_and_wrong_jet_fails() {
     let k = surface(&icosahedron());
@@ -423,15 +426,21 @@ fn sv_smooth_unresolved_third_derivative_refines_and_wrong_jet_fails() {
         .and_then(|n| n.parse().ok())
         .unwrap_or(0);
     assert!(by_bound > 0, "{}", r.note);
-    let wrong = ThetaFault {
-        inner: PpsJets::new(&pps),
-        at: Some(at),
-        kind: 6,
-    };
-    let r = check_smooth_with(&wrong, &view, &CFG);
-    fails(&r);
-    assert_eq!(r.witnesses[0].data["i"], pps.gluing.id(at).0);
-    assert!(r.worst_deviation.is_some_and(|d| d > 1.0 && d.is_finite()));
+    for kind in [6, 7] {
+        let wrong = ThetaFault {
+            inner: PpsJets::new(&pps),
+            at: Some(at),
+            kind,
+        };
+        let r = check_smooth_with(&wrong, &view, &CFG);
+        fails(&r);
+        assert_eq!(r.witnesses[0].data["i"], pps.gluing.id(at).0, "kind {kind}");
+        assert!(
+            r.worst_deviation.is_some_and(|d| d > 1.0 && d.is_finite()),
+            "kind {kind}: {:?}",
+            r.worst_deviation
+        );
+    }
 }
 
 /// `SV-D13` and `SV-H` under the harness: no sample examined is skipped, never holds.
@@ -526,11 +535,54 @@ fn sv_e_gu_factor_sv_e_angle_range_sv_e_equilateral_errata() {
     holds(&check_gu_factor_corrected(&degs));
     // m = 6 alone: the slides' factor is right there.
     common::assert_holds(&check_gu_factor_as_written(&[6]));
-    common::assert_fails_as_written(&check_angle_range_as_written(&degs));
+    let r = check_angle_range_as_written(&degs);
+    common::assert_fails_as_written(&r);
+    // Each witness is an angle of [0, 2π) mapped out of it, and at m = 6 (both factors 1)
+    // no angle of [0, 2π) leaves it.
+    for w in &r.witnesses {
+        let theta = w.data["theta"].as_f64().expect("θ in the witness");
+        assert!((0.0..2.0 * std::f64::consts::PI).contains(&theta), "{}", w.text);
+    }
+    common::assert_holds(&check_angle_range_as_written(&[6]));
     holds(&check_angle_range_corrected(&degs));
     let (w, c) = check_equilateral();
     common::assert_fails_as_written(&w);
     holds(&c);
+    // The corrected triangle's sides are 1 within a few rounding errors, the tolerance stated.
+    assert!(c.tolerance.is_some_and(|t| t > 0.0 && t <= 8.0 * f64::EPSILON), "{c:?}");
+}
+
+/// The samples of a p-domain (`sample_p_domain`, which `SV-smooth` and the gluing checks
+/// draw from) reach the arc of W = D_v ∩ int Δ: at every corner of a view some lie within
+/// 10⁻⁶·ρ inside the circle of radius ρ (the near-arc kind of sample).
+#[test]
+fn sv_smooth_p_domain_samples_reach_the_arc_of_the_wedge() {
+    use pseudomanifold::gluing::data::GluingData;
+    let k = surface(&icosahedron());
+    let pps = build(&k);
+    let f = k.face(FaceId(3));
+    let view = SigmaVView::at_vertices(&pps.gluing, &f, Version::Fixed);
+    let mut rng = CFG.rng(5);
+    let ids = view.indices();
+    assert!(!ids.is_empty());
+    for i in ids {
+        let c = view.corner(i).expect("a corner of I");
+        let rho = view
+            .wedges()
+            .get(pps.gluing.degree(c.v))
+            .expect("the wedge of the degree")
+            .rho;
+        let pts = view.sample_p_domain(i, &mut rng, 64);
+        let radii: Vec<f64> = pts
+            .iter()
+            .filter_map(|x| view.to_plane(i, x))
+            .map(|q| q.x.hypot(q.y))
+            .collect();
+        assert_eq!(radii.len(), pts.len(), "corner {i:?}: every sample maps to the plane");
+        assert!(radii.iter().all(|&r| r < rho * (1.0 + 1e-12)), "corner {i:?}: {radii:?}");
+        let near = radii.iter().filter(|&&r| r > rho * (1.0 - 1e-6)).count();
+        assert!(near > 0, "corner {i:?}: no sample near the arc ρ = {rho}: {radii:?}");
+    }
 }
 
 #[test]
@@ -619,6 +671,41 @@ fn sv_compare_two_constructions_on_the_same_mesh() {
         );
         common::verdicts::record("SV-compare", common::verdicts::Seen::Measured, 1);
     }
+}
+
+/// SPEC `SV-compare` reports distances and curvature jumps relative to the bounding-box
+/// diagonal. The icosahedron scaled by 4 (a power of two: every product and quotient scales
+/// exactly, so do the square roots) gives the same distances, and the same curvature jumps
+/// times the diagonal (mean |ΔH|·edge is scale-free, so jump / diagonal scales by 1/4).
+#[test]
+fn sv_compare_is_relative_to_the_diagonal_the_icosahedron_scaled_by_4() {
+    use pseudomanifold::surface::sigma_v::compare::compare;
+    let raw = icosahedron();
+    let mut big = raw.clone();
+    for p in &mut big.positions {
+        for x in p.iter_mut() {
+            *x *= 4.0;
+        }
+    }
+    let [a, b] = [&raw, &big].map(|m| {
+        let k = surface(m);
+        compare(&k, &PnTriangles::new(&k), &build(&k), 1).expect("both evaluate")
+    });
+    assert_eq!(b.diagonal, 4.0 * a.diagonal);
+    assert_eq!(a.points, b.points);
+    assert!(a.points > 0);
+    // Equal to the last bit: scaling by a power of two commutes with every rounding.
+    let close = |x: f64, y: f64| x == y && x.is_finite();
+    for (x, y) in [
+        (a.between.max, b.between.max),
+        (a.vertex_to_target.max, b.vertex_to_target.max),
+        (a.sigma_v_to_target.max, b.sigma_v_to_target.max),
+        (a.vertex_curvature_jump, 4.0 * b.vertex_curvature_jump),
+        (a.sigma_v_curvature_jump, 4.0 * b.sigma_v_curvature_jump),
+    ] {
+        assert!(close(x, y), "{x:e} against {y:e}: {a:?} / {b:?}");
+    }
+    assert!(a.sigma_v_curvature_jump > 0.0 && a.vertex_curvature_jump > 0.0);
 }
 
 /// SPEC `SV-C'`: (C′) and (C″) of the (σ, v) PPS are measured when asked for (`c_prime`, off by
