@@ -81,6 +81,13 @@ command -v cargo-mutants >/dev/null || {
 
 commit="$(git -C "$here" rev-parse HEAD)"
 tree="${PPM_MUTANTS_TREE:-$(dirname "$here")/$(basename "$here")-mutants}"
+# One campaign per tree: a second one would check its commit out under the first one's
+# in-place mutants and share its target directory.
+exec 9>"$tree.lock"
+if ! flock -n 9; then
+    echo "a campaign already runs in $tree; give this one another PPM_MUTANTS_TREE" >&2
+    exit 2
+fi
 if [[ -d "$tree" ]]; then
     git -C "$tree" checkout --quiet --detach --force "$commit"
     git -C "$tree" clean -fdq -e target
