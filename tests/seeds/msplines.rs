@@ -110,16 +110,26 @@ fn ms_5_2_3_ms_5_2_3_closed_ms_5_2_4_closed_harmonic_residual_and_closedness_hol
     }
     fm.harmonic.backward_error = f64::NAN;
     assert!(pseudomanifold::msplines::harmonic::check_harmonic_residual(&k, &fm.harmonic).failed());
-    fm.harmonic.forms[0][3] = f64::NAN;
-    let r = pseudomanifold::msplines::harmonic::check_closed(
-        &k,
-        &fm.ei,
-        &fm.harmonic.forms,
-        &fm.h_magnitude,
-        "MS-5.2(3)-closed",
-        "h",
-    );
-    assert!(r.failed());
+    let closed = |forms: &[Vec<f64>]| {
+        pseudomanifold::msplines::harmonic::check_closed(
+            &k,
+            &fm.ei,
+            forms,
+            &fm.h_magnitude,
+            "MS-5.2(3)-closed",
+            "h",
+        )
+    };
+    // Planted: one edge's value off by 10⁻³, finite (the tolerance is a few rounding errors
+    // of the face sums), then NaN.
+    let mut off = fm.harmonic.forms.clone();
+    off[0][3] += 1e-3;
+    let r = closed(&off);
+    assert!(r.failed() && !r.witnesses.is_empty(), "{r:?}");
+    assert!(r.tolerance.is_some_and(|t| t < 1e-9), "{:?}", r.tolerance);
+    let mut nan = fm.harmonic.forms.clone();
+    nan[0][3] = f64::NAN;
+    assert!(closed(&nan).failed());
 }
 
 #[test]
@@ -402,6 +412,34 @@ fn ms_dms_pu_ms_dms_3_1_3_3_partition_of_unity_and_completeness_exact_k2_k3() {
         assert!(matches!(rp.verdict(), Verdict::Holds), "k = {k}: {rp:?}");
         common::assert_holds_for(&format!("k = {k}"), &pu);
         common::assert_holds_for(&format!("k = {k}"), &rp);
+    }
+}
+
+/// The checks of `MS-DMS-PU` sample u strictly inside an interior triangle (`point_in`):
+/// 200 seeded points, each on the same side of the triangle's three edges as its opposite
+/// corner, exactly.
+#[test]
+fn ms_dms_pu_sample_points_lie_strictly_inside_their_triangle() {
+    let (dms, interior) = grid(2, 11);
+    let mut rng = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(7);
+    let orient = |a: &[Q; 2], b: &[Q; 2], c: &[Q; 2]| {
+        (&b[0] - &a[0]) * (&c[1] - &a[1]) - (&b[1] - &a[1]) * (&c[0] - &a[0])
+    };
+    let zero = q(0, 1);
+    assert!(!interior.is_empty());
+    for n in 0..200 {
+        let i = interior[n % interior.len()];
+        let p = dc::point_in(&dms, i, &mut rng);
+        let t = dms.triangles[i].map(|v| &dms.clouds[v][0]);
+        let whole = orient(t[0], t[1], t[2]);
+        assert!(whole != zero);
+        for (a, b) in [(0, 1), (1, 2), (2, 0)] {
+            let side = orient(t[a], t[b], &p);
+            assert!(
+                (side > zero) == (whole > zero) && side != zero,
+                "point {n} in triangle {i}: {p:?} is not strictly inside"
+            );
+        }
     }
 }
 
