@@ -42,7 +42,12 @@ struct Stage {
 fn high_water() -> Option<u64> {
     let s = std::fs::read_to_string("/proc/self/status").ok()?;
     let kb = s.lines().find_map(|l| l.strip_prefix("VmHWM:"))?;
-    kb.trim().trim_end_matches("kB").trim().parse::<u64>().ok().map(|k| k * 1024)
+    kb.trim()
+        .trim_end_matches("kB")
+        .trim()
+        .parse::<u64>()
+        .ok()
+        .map(|k| k * 1024)
 }
 
 /// Starts a new high-water interval: "5" resets VmHWM to the current RSS (Linux ≥ 4.0).
@@ -102,7 +107,9 @@ impl Recorder {
 }
 
 fn mb(b: Option<u64>) -> String {
-    b.map_or("not measured".to_string(), |b| format!("{:.0}", b as f64 / 1e6))
+    b.map_or("not measured".to_string(), |b| {
+        format!("{:.0}", b as f64 / 1e6)
+    })
 }
 
 fn default_input() -> PathBuf {
@@ -111,8 +118,14 @@ fn default_input() -> PathBuf {
 
 fn main() -> ExitCode {
     // `cargo bench` passes `--bench`; the other arguments are the input and ε.
-    let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
-    let input = args.first().map(PathBuf::from).unwrap_or_else(default_input);
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with("--"))
+        .collect();
+    let input = args
+        .first()
+        .map(PathBuf::from)
+        .unwrap_or_else(default_input);
     let rel: f64 = match args.get(1).map(|e| e.parse::<f64>()) {
         None => 1e-3,
         Some(Ok(e)) if e > 0.0 && e.is_finite() => e,
@@ -186,10 +199,7 @@ fn main() -> ExitCode {
             mb(s.peak)
         );
     }
-    println!(
-        "| **all** | | **{wall:.1}** | 100 % | **{}** |",
-        mb(peak)
-    );
+    println!("| **all** | | **{wall:.1}** | 100 % | **{}** |", mb(peak));
     println!();
     println!(
         "{} charts, {} rounds, max error {:.3} ε, p99 {:.3} ε; {} checks, {} failed ({} documented errata), unexpected: {:?}",
@@ -206,7 +216,10 @@ fn main() -> ExitCode {
         "targets: wall {wall:.0} s / {TARGET_SECONDS:.0} s = {:.2}×; peak {} / 8 GiB = {}",
         wall / TARGET_SECONDS,
         mb(peak),
-        peak.map_or("not measured".to_string(), |p| format!("{:.2}×", p as f64 / TARGET_BYTES))
+        peak.map_or("not measured".to_string(), |p| format!(
+            "{:.2}×",
+            p as f64 / TARGET_BYTES
+        ))
     );
     if unexpected.is_empty() {
         ExitCode::SUCCESS

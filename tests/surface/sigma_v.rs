@@ -541,7 +541,11 @@ fn sv_e_gu_factor_sv_e_angle_range_sv_e_equilateral_errata() {
     // no angle of [0, 2π) leaves it.
     for w in &r.witnesses {
         let theta = w.data["theta"].as_f64().expect("θ in the witness");
-        assert!((0.0..2.0 * std::f64::consts::PI).contains(&theta), "{}", w.text);
+        assert!(
+            (0.0..2.0 * std::f64::consts::PI).contains(&theta),
+            "{}",
+            w.text
+        );
     }
     common::assert_holds(&check_angle_range_as_written(&[6]));
     holds(&check_angle_range_corrected(&degs));
@@ -549,7 +553,11 @@ fn sv_e_gu_factor_sv_e_angle_range_sv_e_equilateral_errata() {
     common::assert_fails_as_written(&w);
     holds(&c);
     // The corrected triangle's sides are 1 within a few rounding errors, the tolerance stated.
-    assert!(c.tolerance.is_some_and(|t| t > 0.0 && t <= 8.0 * f64::EPSILON), "{c:?}");
+    assert!(
+        c.tolerance
+            .is_some_and(|t| t > 0.0 && t <= 8.0 * f64::EPSILON),
+        "{c:?}"
+    );
 }
 
 /// The samples of a p-domain (`sample_p_domain`, which `SV-smooth` and the gluing checks
@@ -578,10 +586,20 @@ fn sv_smooth_p_domain_samples_reach_the_arc_of_the_wedge() {
             .filter_map(|x| view.to_plane(i, x))
             .map(|q| q.x.hypot(q.y))
             .collect();
-        assert_eq!(radii.len(), pts.len(), "corner {i:?}: every sample maps to the plane");
-        assert!(radii.iter().all(|&r| r < rho * (1.0 + 1e-12)), "corner {i:?}: {radii:?}");
+        assert_eq!(
+            radii.len(),
+            pts.len(),
+            "corner {i:?}: every sample maps to the plane"
+        );
+        assert!(
+            radii.iter().all(|&r| r < rho * (1.0 + 1e-12)),
+            "corner {i:?}: {radii:?}"
+        );
         let near = radii.iter().filter(|&&r| r > rho * (1.0 - 1e-6)).count();
-        assert!(near > 0, "corner {i:?}: no sample near the arc ρ = {rho}: {radii:?}");
+        assert!(
+            near > 0,
+            "corner {i:?}: no sample near the arc ρ = {rho}: {radii:?}"
+        );
     }
 }
 
