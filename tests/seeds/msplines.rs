@@ -297,7 +297,20 @@ fn ms_t4_count_ms_3_4_3_ms_c2_genus_two_zero_points() {
 fn ms_p3_ms_d1_ms_d12_ms_l1_1_1_ms_3_1_3_2_ms_3_1_3_3_ms_3_1_3_4_ms_3_1_3_5_polar_forms_and_b_patches_exact(
 ) {
     for (k, seed) in [(2usize, 1u64), (3, 2)] {
-        for r in pc::check_all(k, seed) {
+        let rs = pc::check_all(k, seed);
+        // Every check the row names runs (an empty list would pass the loop below).
+        for id in [
+            "MS-P3",
+            "MS-D1",
+            "MS-3.1.3(2)",
+            "MS-3.1.3(3)",
+            "MS-3.1.3(4)",
+            "MS-3.1.3(5)",
+            "MS-L1.1(2)",
+        ] {
+            assert!(rs.iter().any(|r| r.id == id), "k = {k}: {id} missing");
+        }
+        for r in rs {
             common::assert_holds(&r);
             assert!(r.examined > 0, "{r:?}");
             // Lemma 1.1(1) is decided by the same check as Sec. 3.1.3(4).
