@@ -109,7 +109,7 @@ pub(super) fn run(a: FitArgs) -> ExitCode {
         eprintln!("[{:7.1} s] checking the fit", t0.elapsed().as_secs_f64());
     }
     let checks = crate::fitting::checks::run_all_checks(&k, &fit, a.seed);
-    let unexpected = unexpected(&checks);
+    let unexpected = crate::fitting::checks::unexpected_failures(&checks);
     let last = fit.rounds.last();
     let summary = serde_json::json!({
         "mesh": a.file.display().to_string(),
@@ -154,15 +154,6 @@ pub(super) fn run(a: FitArgs) -> ExitCode {
         print_checks(&checks, &unexpected);
     }
     status(&unexpected)
-}
-
-/// The failures that are not documented errata of the (σ, v) construction.
-fn unexpected(checks: &[CheckResult]) -> Vec<String> {
-    checks
-        .iter()
-        .filter(|r| r.failed() && sv_erratum(&r.id).is_none())
-        .map(|r| r.id.clone())
-        .collect()
 }
 
 /// The check table, the documented errata met, and the verdict line.
@@ -242,7 +233,7 @@ pub(super) fn check_fit_file(file: &std::path::Path, json: bool, seed: u64) -> E
         )
         .result,
     );
-    let unexpected = unexpected(&checks);
+    let unexpected = crate::fitting::checks::unexpected_failures(&checks);
     if json {
         let out = serde_json::json!({"fit": file.display().to_string(), "checks": checks, "unexpected_failures": unexpected});
         println!("{}", serde_json::to_string_pretty(&out).unwrap_or_default());
