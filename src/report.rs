@@ -91,7 +91,20 @@ pub fn render_text(results: &[CheckResult]) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::rate_eta;
+    use super::{rate_eta, tick};
+    use std::sync::atomic::AtomicUsize;
+    use std::sync::Mutex;
+
+    #[test]
+    fn tick_counts_one_item_per_call_and_shows_done_of_total() {
+        let seen = Mutex::new(Vec::new());
+        let show = |d: usize, t: usize| seen.lock().unwrap().push((d, t));
+        let done = AtomicUsize::new(0);
+        for _ in 0..3 {
+            tick(Some(&show), &done, 7);
+        }
+        assert_eq!(*seen.lock().unwrap(), vec![(1, 7), (2, 7), (3, 7)]);
+    }
 
     #[test]
     fn rate_and_eta_extrapolate_the_elapsed_time() {

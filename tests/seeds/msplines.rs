@@ -1227,3 +1227,54 @@ fn ms_5_2_scaled_one_form_is_the_complex_product() {
     }
     assert!(examined > 0 && om.x.iter().chain(&om.y).any(|v| v.abs() > 1e-3));
 }
+
+/// `ppm sample --construction manifold-spline` (the spline as a run-time choice of surface)
+/// samples the same spline as `ppm msplines sample` (the same defaults: form 0, degree 2, the
+/// same seed, 3-ring charts): the same points, and not none.
+#[test]
+fn ms_sample_ms_t3_ppm_sample_manifold_spline_equals_msplines_sample() {
+    let dir = std::env::temp_dir().join(format!("ms_choice_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let mesh = dir.join("torus.off");
+    let raw = generate::torus(12, 8);
+    pseudomanifold::mesh::io::write_mesh(
+        &mesh,
+        &raw.positions,
+        &raw.faces,
+        pseudomanifold::mesh::MeshFormat::Off,
+    )
+    .expect("write the torus");
+    let run = |args: &[&str]| {
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
+            .args(args)
+            .output()
+            .expect("ppm runs");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    let (a, b) = (dir.join("choice.obj"), dir.join("msplines.obj"));
+    let m = mesh.to_str().expect("utf-8 path");
+    let (sa, sb) = (a.to_str().expect("utf-8"), b.to_str().expect("utf-8"));
+    run(&[
+        "sample",
+        m,
+        "--construction",
+        "manifold-spline",
+        "--level",
+        "1",
+        "--attributes",
+        "positions",
+        "-o",
+        sa,
+        "--quiet",
+    ]);
+    run(&[
+        "msplines", "sample", m, "--level", "1", "--out", sb, "--quiet",
+    ]);
+    let ra = read_mesh(&a, &ReadOptions::default()).expect("reads back");
+    let rb = read_mesh(&b, &ReadOptions::default()).expect("reads back");
+    // Level 1: every face of the 12 × 8 torus split in four.
+    assert_eq!(ra.faces.len(), 4 * raw.faces.len());
+    assert_eq!(ra.faces, rb.faces);
+    assert_eq!(ra.positions, rb.positions);
+    let _ = std::fs::remove_dir_all(&dir);
+}
