@@ -420,3 +420,27 @@ fn min_height(v: &[P2]) -> f64 {
     }
     h
 }
+
+#[cfg(test)]
+mod tests {
+    use super::min_height;
+
+    /// The least height of the knot triangles: 2·area over the longest edge, least over every
+    /// non-degenerate triple.
+    #[test]
+    fn min_height_is_twice_the_area_over_the_longest_edge() {
+        // hypot need not round as sqrt does: a few ulps.
+        let close = |a: f64, b: f64| (a - b).abs() <= 4.0 * f64::EPSILON * b;
+        let right = [[0.0, 0.0], [2.0, 0.0], [0.0, 1.0]];
+        assert!(close(min_height(&right), 2.0 / 5f64.sqrt()));
+        // A fourth point: the least height is the flattest triple's, (2,0), (0,1), (1,1/4),
+        // 2·area 1/2 over the edge √5.
+        let four = [[0.0, 0.0], [2.0, 0.0], [0.0, 1.0], [1.0, 0.25]];
+        assert!(close(min_height(&four), 0.5 / 5f64.sqrt()));
+        // A collinear triple has no height and is passed over.
+        assert_eq!(
+            min_height(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]),
+            f64::INFINITY
+        );
+    }
+}
