@@ -324,9 +324,12 @@ impl GluingData<2> for SigmaVView<'_> {
         }
         let want = n.max(1);
         let cand = self.candidates(a, b, rng, (4 * want).max(400));
+        // Only the first `want` members are returned, so the filter stops there: the same
+        // points (the candidates draw every random number before it runs).
         let mut kept: Vec<P2<f64>> = cand
             .into_iter()
             .filter(|q| self.in_gluing_plane(a, b, q))
+            .take(want)
             .collect();
         if !kept.is_empty() && kept.len() < want {
             let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
