@@ -57,9 +57,20 @@ fn band_points(m_u: u32, m_w: u32, n: usize, seed: u64) -> Vec<(EdgeConfig, [f64
         let dir = [a.cos(), a.sin()];
         let at = |s: f64| [p0[0] + s * dir[0], p0[1] + s * dir[1]];
         let (mut lo, mut hi) = (0.0f64, 2.0f64);
+        // Past ~55 halvings `at(mid)` rounds to f64 points already decided: each is decided
+        // once (the same answers, without repeating the 256-bit evaluation).
+        let mut decided: Vec<([f64; 2], bool)> = Vec::new();
+        let mut inside_uw = |q: [f64; 2]| match decided.iter().find(|(x, _)| *x == q) {
+            Some(&(_, b)) => b,
+            None => {
+                let b = in_uw(&e, q);
+                decided.push((q, b));
+                b
+            }
+        };
         for _ in 0..80 {
             let mid = 0.5 * (lo + hi);
-            if in_uw(&e, at(mid)) {
+            if inside_uw(at(mid)) {
                 lo = mid;
             } else {
                 hi = mid;
