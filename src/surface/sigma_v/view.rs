@@ -16,6 +16,7 @@
 use super::gluing::{g_uw_on_domain, Corner, CornerId, PairCase, SigmaV};
 use super::wedge::WedgeTable;
 use crate::construction::abstract_view::COPY_SPACING;
+use crate::construction::config::EdgeConfig;
 use crate::construction::maps::{g_v_inv, rotate_frac, P2};
 use crate::construction::sampling::sample_lens;
 use crate::gluing::data::{GluingData, Idx, Point};
@@ -143,38 +144,40 @@ impl<'a> SigmaVView<'a> {
         self.from_plane(i, &w.to_plane(c.k, &P2::new(p[0], p[1])))
     }
 
-    /// Plane-coordinate candidates for Ω_ij (not yet filtered).
-    fn candidates(&self, i: Corner, j: Corner, rng: &mut ChaCha8Rng, n: usize) -> Vec<P2<f64>> {
+    /// Candidates for Ω_ij (not yet filtered), in the order they are drawn. Every random
+    /// number is drawn here; the maps that bring a case-(2) candidate to the plane of P_v
+    /// (g_v⁻¹, g_(w,u)) are left to [`Cand::to_plane`], so that a filter that stops early
+    /// maps only the candidates it reaches (the maps were most of the sampling's time).
+    fn candidates(&self, i: Corner, j: Corner, rng: &mut ChaCha8Rng, n: usize) -> Vec<Cand> {
         let mut out = Vec::new();
         match self.g.case(i, j) {
             PairCase::SameVertex => {
                 let m = self.g.degree(i.v);
                 if let Some(w) = self.t.get(m) {
-                    out.extend(self.wedge_samples(i, rng, n));
-                    out.extend(self.wedge_samples(j, rng, n));
+                    out.extend(self.wedge_samples(i, rng, n).into_iter().map(Cand::Plane));
+                    out.extend(self.wedge_samples(j, rng, n).into_iter().map(Cand::Plane));
                     // W_i ∩ W_j always contains a neighbourhood of the centre.
                     let r = 3.0 * w.delta;
                     for _ in 0..n {
                         let (a, t): (f64, f64) =
                             (rng.gen_range(0.0..std::f64::consts::TAU), rng.gen());
-                        out.push(P2::new(r * t.sqrt() * a.cos(), r * t.sqrt() * a.sin()));
+                        out.push(Cand::Plane(P2::new(
+                            r * t.sqrt() * a.cos(),
+                            r * t.sqrt() * a.sin(),
+                        )));
                     }
-                    out.push(P2::new(0.0, 0.0));
+                    out.push(Cand::Plane(P2::new(0.0, 0.0)));
                 }
             }
             PairCase::Edge(e) => {
                 for (_, q) in sample_lens::<f64>(rng.next_u64(), n, 53).points {
-                    if let Ok(p) = g_v_inv(e.m_u, &q) {
-                        out.push(rotate_frac(&p, e.i as i64, e.m_u as i64));
-                    }
+                    out.push(Cand::Lens(e, q));
                 }
                 // And from j's side (so Ω_ij and Ω_ji are found non-empty together, also
                 // when they are thin slivers along a side of W_j).
                 let back = e.reversed();
                 for y in self.wedge_samples(j, rng, n) {
-                    if let Some(q) = g_uw_on_domain(&back, &y) {
-                        out.push(q);
-                    }
+                    out.push(Cand::Back(back, y));
                 }
             }
             PairCase::DeclaredEmptyEdge(_) | PairCase::NotAdjacent => {}
@@ -268,6 +271,29 @@ impl<'a> SigmaVView<'a> {
     }
 }
 
+/// A candidate of [`SigmaVView::candidates`]: a point of the plane of P_v, or a point the
+/// case-(2) maps bring there (a point of the canonical lens, by g_v⁻¹ and the rotation to the
+/// edge's label; a point of W_j, by g_(w,u) of the reversed edge).
+enum Cand {
+    Plane(P2<f64>),
+    Lens(EdgeConfig, P2<f64>),
+    Back(EdgeConfig, P2<f64>),
+}
+
+impl Cand {
+    /// The point in the plane of P_v; `None` where the map is undefined (such a candidate
+    /// was never one).
+    fn to_plane(self) -> Option<P2<f64>> {
+        match self {
+            Cand::Plane(q) => Some(q),
+            Cand::Lens(e, q) => g_v_inv(e.m_u, &q)
+                .ok()
+                .map(|p| rotate_frac(&p, e.i as i64, e.m_u as i64)),
+            Cand::Back(back, y) => g_uw_on_domain(&back, &y),
+        }
+    }
+}
+
 impl GluingData<2> for SigmaVView<'_> {
     type S = f64;
 
@@ -328,6 +354,7 @@ impl GluingData<2> for SigmaVView<'_> {
         // points (the candidates draw every random number before it runs).
         let mut kept: Vec<P2<f64>> = cand
             .into_iter()
+            .filter_map(Cand::to_plane)
             .filter(|q| self.in_gluing_plane(a, b, q))
             .take(want)
             .collect();
