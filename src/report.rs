@@ -91,7 +91,7 @@ pub fn render_text(results: &[CheckResult]) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{rate_eta, tick};
+    use super::{rate_eta, render_text, tick, Check, Witness};
     use std::sync::atomic::AtomicUsize;
     use std::sync::Mutex;
 
@@ -104,6 +104,34 @@ mod tests {
             tick(Some(&show), &done, 7);
         }
         assert_eq!(*seen.lock().unwrap(), vec![(1, 7), (2, 7), (3, 7)]);
+    }
+
+    /// One line per check with its counts, then its note and witnesses indented; the counts,
+    /// the note and the "more" line only when there is something to say.
+    #[test]
+    fn render_text_says_offences_notes_and_witnesses_only_when_there_are_some() {
+        let mut bad = Check::new("X-bad", "a failing check");
+        bad.holds(true, || Witness::new("never", serde_json::json!({})));
+        for k in 0..3 {
+            bad.holds(false, || {
+                Witness::new(format!("witness {k}"), serde_json::json!({}))
+            });
+        }
+        let bad = bad.finish("a note");
+        let mut good = Check::new("X-good", "a holding check");
+        good.holds(true, || Witness::new("never", serde_json::json!({})));
+        let good = good.finish("");
+        let text = render_text(&[bad, good]);
+        let lines: Vec<&str> = text.lines().collect();
+        assert!(lines[0].contains("X-bad") && lines[0].contains("examined 4, offending 3"));
+        assert_eq!(lines[1].trim(), "note: a note");
+        assert_eq!(lines[2].trim(), "- witness 0");
+        let good_line = lines
+            .iter()
+            .find(|l| l.contains("X-good"))
+            .expect("its line");
+        assert!(good_line.trim_end().ends_with("examined 1"), "{good_line}");
+        assert!(!text.contains("note: \n") && text.matches("note:").count() == 1);
     }
 
     #[test]
