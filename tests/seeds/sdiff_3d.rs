@@ -791,6 +791,20 @@ fn sd_params_3_d_errors_name_the_file_and_entry() {
         let e = tet_params::parse(text, p).unwrap_err().to_string();
         assert!(e.contains("e.toml") && e.contains(needle), "{text}: {e}");
     }
+    // g of the highest degree (6 in 3-D, the limit `degree = 7` above exceeds: 7
+    // coefficients) is read, one more coefficient refused.
+    let g_with = |n: usize| {
+        format!(
+            "family = \"monotonic\"\n[[g]]\nvertex = 0\ncoeffs = [{}]",
+            vec!["1"; n].join(", ")
+        )
+    };
+    let top = 7;
+    assert!(tet_params::parse(&g_with(top), p).is_ok());
+    let e = tet_params::parse(&g_with(top + 1), p)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains(&format!("needs 1 to {top} coefficients")), "{e}");
     let build = |text: &str| {
         tet_params::parse(text, p)
             .unwrap()
