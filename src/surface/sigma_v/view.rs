@@ -146,7 +146,7 @@ impl<'a> SigmaVView<'a> {
 
     /// Candidates for Ω_ij (not yet filtered), in the order they are drawn. Every random
     /// number is drawn here; the maps that bring a case-(2) candidate to the plane of P_v
-    /// (g_v⁻¹, g_(w,u)) are left to [`Cand::to_plane`], so that a filter that stops early
+    /// (g_v⁻¹, g_(w,u)) are left to [`Cand::into_plane`], so that a filter that stops early
     /// maps only the candidates it reaches (the maps were most of the sampling's time).
     fn candidates(&self, i: Corner, j: Corner, rng: &mut ChaCha8Rng, n: usize) -> Vec<Cand> {
         let mut out = Vec::new();
@@ -283,7 +283,7 @@ enum Cand {
 impl Cand {
     /// The point in the plane of P_v; `None` where the map is undefined (such a candidate
     /// was never one).
-    fn to_plane(self) -> Option<P2<f64>> {
+    fn into_plane(self) -> Option<P2<f64>> {
         match self {
             Cand::Plane(q) => Some(q),
             Cand::Lens(e, q) => g_v_inv(e.m_u, &q)
@@ -354,7 +354,7 @@ impl GluingData<2> for SigmaVView<'_> {
         // points (the candidates draw every random number before it runs).
         let mut kept: Vec<P2<f64>> = cand
             .into_iter()
-            .filter_map(Cand::to_plane)
+            .filter_map(Cand::into_plane)
             .filter(|q| self.in_gluing_plane(a, b, q))
             .take(want)
             .collect();
