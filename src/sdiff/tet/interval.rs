@@ -196,3 +196,44 @@ pub fn certify_det_tet(m: &TetMap, max_boxes: usize) -> IntervalVerdict {
         lower_bound: lower,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{det_enclosure, I};
+    use crate::sdiff::common::poly1::Poly1;
+    use crate::sdiff::common::rational::q;
+    use crate::sdiff::tet::params::TetMap;
+
+    /// D = Σ g_i(w^i) of Eq. (9): with constant g_i = i + 1, D = 10 at every point, so the
+    /// enclosure over a point box holds 10 and nothing as far as 11.
+    #[test]
+    fn det_enclosure_of_the_monotonic_family_encloses_the_sum_of_the_g() {
+        let m = TetMap::monotonic(std::array::from_fn(|i| Poly1(vec![q(i as i64 + 1)])));
+        let p = I::try_from((0.25, 0.25)).expect("a point");
+        let (d, _) = det_enclosure(&m, [p, p, p]);
+        assert!(d.inf() <= 10.0 && 10.0 <= d.sup(), "{d:?}");
+        assert!(d.sup() < 11.0, "{d:?}");
+    }
+
+    /// The second enclosure, D·det A − ∇Dᵀ adj(A) N, over a point box holds the exact
+    /// `jacobian_numerator` there, for g_i with distinct slopes (so every ∂_j D counts).
+    #[test]
+    fn det_enclosure_of_the_monotonic_family_encloses_the_exact_jacobian_numerator() {
+        use crate::sdiff::common::rational::{qr, to_f64};
+        use crate::sdiff::tet::poly::{jacobian_numerator, monotonic};
+        let g: [Poly1; 4] =
+            std::array::from_fn(|i| Poly1(vec![q(i as i64 + 1), q(2 * i as i64 + 3)]));
+        let (n, d) = monotonic(&g);
+        let x = [qr(1, 4), qr(1, 5), qr(1, 3)];
+        let exact = to_f64(&jacobian_numerator(&n, &d).eval(&x));
+        let m = TetMap::monotonic(g);
+        let b = [0.25, 0.2, 1.0 / 3.0].map(|v| I::try_from((v, v)).expect("a point"));
+        let (_, j) = det_enclosure(&m, b);
+        let tol = 1e-9 * exact.abs().max(1.0);
+        assert!(
+            j.inf() - tol <= exact && exact <= j.sup() + tol,
+            "{j:?} against {exact}"
+        );
+        assert!(j.sup() - j.inf() <= tol, "{j:?}");
+    }
+}
