@@ -3,7 +3,9 @@
 
 use super::load::surface as load;
 use crate::report::render_text;
-use crate::surface::sigma_v::checks::{run_sigma_v_checks, sv_erratum, SvCheckOptions};
+use crate::surface::sigma_v::checks::{
+    run_sigma_v_checks, sv_erratum, unexpected_failures, SvCheckOptions,
+};
 use crate::surface::PnTriangles;
 use std::path::Path;
 use std::process::ExitCode;
@@ -19,11 +21,7 @@ pub(super) fn run_check(file: &Path, json: bool, o: &SvCheckOptions) -> ExitCode
     };
     let pn = PnTriangles::new(&k);
     let results = run_sigma_v_checks(&k, &pn, o);
-    let unexpected: Vec<&str> = results
-        .iter()
-        .filter(|r| r.failed() && sv_erratum(&r.id).is_none())
-        .map(|r| r.id.as_str())
-        .collect();
+    let unexpected = unexpected_failures(&results);
     if json {
         let out = serde_json::json!({
             "construction": "sigma-v",

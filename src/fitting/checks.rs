@@ -312,16 +312,9 @@ pub fn run_all_checks(k: &SimplicialSurface, fit: &Fit, seed: u64) -> Vec<CheckR
     out
 }
 
-/// The IDs of the failing checks among `checks` that are not documented errata of the (σ, v)
-/// construction (`sigma_v::checks::sv_erratum`): the failures that make `ppm fit` exit 1.
-pub fn unexpected_failures(checks: &[CheckResult]) -> Vec<String> {
-    use crate::surface::sigma_v::checks::sv_erratum;
-    checks
-        .iter()
-        .filter(|r| r.failed() && sv_erratum(&r.id).is_none())
-        .map(|r| r.id.clone())
-        .collect()
-}
+/// The failures of a fit's checks that make `ppm fit` exit 1: those that are not documented
+/// errata of the (σ, v) construction, the rule of `ppm check --spec --construction sigma-v`.
+pub use crate::surface::sigma_v::checks::unexpected_failures;
 
 /// The (σ, v) checks (Def. 3.4.1, condition (C), smoothness, eval) on a fitted PPS over its
 /// base mesh `base` (also what `ppm check --spec` runs on a fit file read back).

@@ -129,6 +129,23 @@ pub fn assert_hold_except_skipped(what: &str, rs: &[CheckResult], skipped: &[&st
     }
 }
 
+/// `raw` written as the OFF file `name` in a temporary directory of its own (`dir` names it
+/// with the process id), for tests that run `ppm` on a generated mesh: (the directory, for the
+/// test's other files and its clean-up; the mesh's path).
+pub fn temp_off(dir: &str, name: &str, raw: &pseudomanifold::mesh::RawMesh) -> (PathBuf, PathBuf) {
+    let dir = std::env::temp_dir().join(format!("{dir}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join(name);
+    pseudomanifold::mesh::io::write_mesh(
+        &path,
+        &raw.positions,
+        &raw.faces,
+        pseudomanifold::mesh::MeshFormat::Off,
+    )
+    .expect("write the generated mesh");
+    (dir, path)
+}
+
 /// One row of `../shared/meshes/manifest.tsv`.
 #[derive(Debug, Clone)]
 pub struct CorpusMesh {

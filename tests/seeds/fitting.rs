@@ -303,17 +303,7 @@ fn af_memory_over_the_limit_is_refused_with_the_estimate() {
             + pseudomanifold::fitting::BYTES_PER_FACE * faces_of_a_million_vertices
             <= DEFAULT_MEMORY_LIMIT
     );
-    let dir = std::env::temp_dir().join(format!("ppm-af-mem-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let path = dir.join("torus.off");
-    let raw = generate::torus(24, 12);
-    pseudomanifold::mesh::io::write_mesh(
-        &path,
-        &raw.positions,
-        &raw.faces,
-        pseudomanifold::mesh::MeshFormat::Off,
-    )
-    .expect("write the torus");
+    let (_, path) = crate::common::temp_off("ppm-af-mem", "torus.off", &generate::torus(24, 12));
     let o = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
         .args([
             "fit",

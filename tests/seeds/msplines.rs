@@ -1233,17 +1233,8 @@ fn ms_5_2_scaled_one_form_is_the_complex_product() {
 /// same seed, 3-ring charts): the same points, and not none.
 #[test]
 fn ms_sample_ms_t3_ppm_sample_manifold_spline_equals_msplines_sample() {
-    let dir = std::env::temp_dir().join(format!("ms_choice_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    let mesh = dir.join("torus.off");
     let raw = generate::torus(12, 8);
-    pseudomanifold::mesh::io::write_mesh(
-        &mesh,
-        &raw.positions,
-        &raw.faces,
-        pseudomanifold::mesh::MeshFormat::Off,
-    )
-    .expect("write the torus");
+    let (dir, mesh) = common::temp_off("ms_choice", "torus.off", &raw);
     let run = |args: &[&str]| {
         let o = std::process::Command::new(env!("CARGO_BIN_EXE_ppm"))
             .args(args)

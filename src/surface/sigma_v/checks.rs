@@ -43,6 +43,17 @@ pub fn sv_erratum(id: &str) -> Option<&'static str> {
     SV_ERRATA.iter().find(|(e, _)| *e == id).map(|(_, w)| *w)
 }
 
+/// The IDs of the failing checks among `checks` that are not documented errata
+/// ([`sv_erratum`]): the failures that make `ppm check --spec --construction sigma-v` and
+/// `ppm fit` exit 1.
+pub fn unexpected_failures(checks: &[CheckResult]) -> Vec<String> {
+    checks
+        .iter()
+        .filter(|r| r.failed() && sv_erratum(&r.id).is_none())
+        .map(|r| r.id.clone())
+        .collect()
+}
+
 /// Options of the run.
 #[derive(Debug, Clone, Copy)]
 pub struct SvCheckOptions {
