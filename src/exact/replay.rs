@@ -484,6 +484,30 @@ mod tests {
         .0
     }
 
+    /// `PointOutside` is strict membership in an open disk: the centre fails the step with
+    /// the point named, a point on the circle and one beyond it hold.
+    #[test]
+    fn point_outside_fails_inside_the_open_disk_only() {
+        use crate::exact::q3::Q3;
+        let disk = Disk::new(Pt::origin(), Q3::one());
+        let step = |point: Pt| {
+            run_check(
+                &StepCheck::PointOutside {
+                    point,
+                    disk: disk.clone(),
+                },
+                &BTreeMap::new(),
+            )
+            .0
+        };
+        match step(Pt::new(Q3::frac(1, 2), Q3::zero())) {
+            StepVerdict::Fails(s) => assert!(s.contains('∈'), "{s}"),
+            v => panic!("a point inside the unit disk taken for outside: {v}"),
+        }
+        assert_eq!(step(Pt::new(Q3::one(), Q3::zero())), StepVerdict::Holds);
+        assert_eq!(step(Pt::new(Q3::frac(3, 2), Q3::one())), StepVerdict::Holds);
+    }
+
     #[test]
     fn rotation_equality_is_mod_two_pi_and_reports_the_reduced_difference() {
         // Angles in units of π: 1/3 + 2/3 = 1 ≡ 1 − 2 = −1, but 1 ≢ 0.

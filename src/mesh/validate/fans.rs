@@ -339,8 +339,61 @@ fn side_of_plane(pos: &[[f64; 3]], t: [u32; 3], o: [u32; 3]) -> bool {
 
 #[cfg(test)]
 mod tests {
-    use super::separated;
+    use super::{search_boxes, separated, trimmed_box, Fans};
     use crate::mesh::validate::predicates::triangles_meet_improperly;
+    use crate::mesh::RawMesh;
+    use rstar::Envelope;
+
+    /// The trimmed box (and the slices of `search_boxes`) must hold every point of the
+    /// triangle at distance ≥ cut from its high-degree corner: the points at exactly that
+    /// distance along both edges from the corner, and a grid of the triangle's points beyond
+    /// it. Edges with a negative z component, so a wrong length of the edge moves the cut.
+    #[test]
+    fn trimmed_boxes_cover_the_triangle_outside_the_cut_ball() {
+        let raw = RawMesh::from_arrays(
+            vec![[0.0, 0.0, 0.0], [3.0, 0.5, -1.0], [0.5, 2.0, -1.5]],
+            vec![[0, 1, 2]],
+        );
+        let cut = 0.8;
+        let fans = Fans {
+            star: vec![vec![0], vec![], vec![]],
+            cut: vec![cut, 0.0, 0.0],
+        };
+        let p = &raw.positions;
+        let dist = |a: [f64; 3], b: [f64; 3]| {
+            ((a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2) + (a[2] - b[2]).powi(2)).sqrt()
+        };
+        let mut points = Vec::new();
+        for y in [1, 2] {
+            let s = cut / dist(p[0], p[y]);
+            points.push(std::array::from_fn(|i| p[0][i] + s * (p[y][i] - p[0][i])));
+        }
+        let n = 40;
+        for i in 0..=n {
+            for j in 0..=n - i {
+                let (u, w) = (i as f64 / n as f64, j as f64 / n as f64);
+                let q: [f64; 3] = std::array::from_fn(|d| {
+                    p[0][d] + u * (p[1][d] - p[0][d]) + w * (p[2][d] - p[0][d])
+                });
+                if dist(q, p[0]) >= cut {
+                    points.push(q);
+                }
+            }
+        }
+        let t = [0, 1, 2];
+        let tb = trimmed_box(&raw, t, &fans);
+        let slices = search_boxes(&raw, t, &fans);
+        let full = super::face_box(&raw, t);
+        // Trimmed: the corner at 0 is cut off.
+        assert!(tb.lower()[0] > full.lower()[0], "{tb:?} vs {full:?}");
+        for q in &points {
+            assert!(tb.contains_point(q), "{q:?} not in {tb:?}");
+            assert!(
+                slices.iter().any(|b| b.contains_point(q)),
+                "{q:?} in no slice"
+            );
+        }
+    }
 
     /// D3.1.3(ii): the f64 filter may only skip pairs that meet properly. Pairs sharing a
     /// corner or an edge: skipped exactly when the other corners lie clearly on one side;
