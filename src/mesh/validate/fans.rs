@@ -393,6 +393,19 @@ mod tests {
                 "{q:?} in no slice"
             );
         }
+        // A fan's long thin triangle is cut into slices halving toward the far edge, so the
+        // box at that edge is a small part of the trimmed box (the point of the slices).
+        let thin = RawMesh::from_arrays(
+            vec![[0.0, 0.0, 0.0], [10.0, 0.1, 0.0], [10.0, -0.1, 0.05]],
+            vec![[0, 1, 2]],
+        );
+        let tb = trimmed_box(&thin, t, &fans);
+        let slices = search_boxes(&thin, t, &fans);
+        let len = |b: &rstar::AABB<[f64; 3]>| b.upper()[0] - b.lower()[0];
+        assert!(slices.len() >= 4, "{slices:?}");
+        let last = slices.last().map_or(f64::INFINITY, len);
+        assert!(last < len(&tb) / 8.0, "{slices:?} vs {tb:?}");
+        assert!(slices.iter().all(|b| tb.contains_envelope(b)), "{slices:?}");
     }
 
     /// D3.1.3(ii): the f64 filter may only skip pairs that meet properly. Pairs sharing a
