@@ -207,4 +207,19 @@ mod tests {
         assert!(disks::d().in_open_sector_sixths(-2, 2));
         assert!(!disks::d().in_open_sector_sixths(-1, 1));
     }
+
+    /// A small disk at angle π/4: inside the sector (0, π/2), and in neither (0, π/6) (left of
+    /// its lower ray only) nor (π/3, π/2) (right of its upper ray only): both rays bound.
+    /// `contains` is strict: the centre in, a point of the circle out.
+    #[test]
+    fn sectors_need_both_rays_and_disks_are_open() {
+        let r2 = Q3::frac(1, 100);
+        let disk = Disk::new(Pt::new(Q3::one(), Q3::one()), r2);
+        assert!(disk.in_open_sector_sixths(0, 3));
+        assert!(!disk.in_open_sector_sixths(0, 1));
+        assert!(!disk.in_open_sector_sixths(2, 3));
+        assert!(!disk.in_open_sector_sixths(3, 0));
+        assert!(disk.contains(&Pt::new(Q3::one(), Q3::one())));
+        assert!(!disk.contains(&Pt::new(Q3::frac(11, 10), Q3::one())));
+    }
 }

@@ -339,10 +339,56 @@ fn side_of_plane(pos: &[[f64; 3]], t: [u32; 3], o: [u32; 3]) -> bool {
 
 #[cfg(test)]
 mod tests {
-    use super::{search_boxes, separated, trimmed_box, Fans};
+    use super::{search_boxes, separated, star_pairs, trimmed_box, Fans};
     use crate::mesh::validate::predicates::triangles_meet_improperly;
     use crate::mesh::RawMesh;
     use rstar::Envelope;
+
+    /// `star_pairs` finds exactly the pairs of a star that meet improperly (all pairs decided
+    /// by the exact predicate as the reference), on seeded random fans folded over themselves,
+    /// their centre far from the origin (a direction must be taken from the centre).
+    #[test]
+    fn star_pairs_are_the_improperly_meeting_pairs_of_random_folded_fans() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+        let mut found = 0;
+        for _ in 0..40 {
+            let c: [f64; 3] = std::array::from_fn(|_| rng.gen_range(-100.0..100.0));
+            let mut positions = vec![c];
+            let mut faces = Vec::new();
+            for i in 0..18u32 {
+                for _ in 0..2 {
+                    // Directions in one half-space, lengths over three decades: many corners overlap.
+                    let d = [
+                        rng.gen_range(0.1..1.0),
+                        rng.gen_range(-1.0..1.0),
+                        rng.gen_range(-0.3..0.3),
+                    ];
+                    let l = 10f64.powf(rng.gen_range(-2.0..1.0));
+                    positions.push(std::array::from_fn(|k| c[k] + l * d[k]));
+                }
+                faces.push([0, 2 * i + 1, 2 * i + 2]);
+            }
+            let raw = RawMesh::from_arrays(positions, faces);
+            let star: Vec<u32> = (0..raw.faces.len() as u32).collect();
+            let (mut got, _) = star_pairs(&raw, 0, &star);
+            got.sort_unstable();
+            let mut want = Vec::new();
+            for f in 0..star.len() {
+                for g in f + 1..star.len() {
+                    if triangles_meet_improperly(&raw.positions, raw.faces[f], raw.faces[g]) {
+                        want.push((f as u32, g as u32));
+                    }
+                }
+            }
+            assert_eq!(got, want, "centre {c:?}");
+            found += want.len();
+        }
+        assert!(
+            found > 40,
+            "only {found} improper pairs: the fans do not fold"
+        );
+    }
 
     /// The trimmed box (and the slices of `search_boxes`) must hold every point of the
     /// triangle at distance ≥ cut from its high-degree corner: the points at exactly that
