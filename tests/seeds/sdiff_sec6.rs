@@ -466,6 +466,35 @@ fn sd_l268_full_sd_l268_full_restricted_optimiser_over_all_control_points_of_x1(
     );
     crate::common::assert_holds(&r);
     assert!(opt.objective < opt.start);
+    // The descent's stop (L268's coordinate descent, `tol` relative): every sweep but the
+    // last decreased the objective by more than tol·|before|; the last by no more, unless
+    // the sweeps ran out. At the default tol and at 10⁻³ (where the rule decides the count).
+    let stops_by_rule = |opt: &optimise::Optimum, o: &OptimiseOptions| {
+        println!("history: start {:e}, {:?}", opt.start, opt.history);
+        let hist = &opt.history;
+        assert!(!hist.is_empty() && hist.len() <= o.sweeps, "{hist:?}");
+        let mut before = opt.start;
+        for (i, &now) in hist.iter().enumerate() {
+            let small = before - now <= o.tol * before.abs();
+            assert!(now <= before, "sweep {i} increased the objective: {hist:?}");
+            let last = i + 1 == hist.len();
+            assert!(
+                small == last || (last && hist.len() == o.sweeps),
+                "sweep {i} of {hist:?} (start {:e}, tol {:e})",
+                opt.start,
+                o.tol
+            );
+            before = now;
+        }
+    };
+    stops_by_rule(&opt, &o);
+    let coarse = OptimiseOptions {
+        tol: 1e-3,
+        ..OptimiseOptions::default()
+    };
+    let (opt3, _) = optimise(&k, &f, &h, &coarse).unwrap();
+    stops_by_rule(&opt3, &coarse);
+    assert!(opt3.history.len() >= 3, "{:?}", opt3.history);
     // The one-edge scan of SD-L268(restricted) (λ on (0, 2) only, j/16): the full optimiser
     // is at least as good (it contains that family).
     let inside: Vec<Q> = (1..16).map(|j| qr(j, 16)).collect();
