@@ -30,14 +30,14 @@ results="$here/mutants/results.tsv"
 #        them, e.g. the module's own tests in a theme that also holds slow engines)
 modules() {
     cat <<'EOF'
-mesh-validate|src/mesh/validate/*.rs|mesh gluing
+mesh-validate|src/mesh/validate/*.rs|lib mesh gluing
 gluing-exact1d|src/gluing/exact1d/*.rs|lib gluing
 gluing-sampled|src/gluing/sampled/*.rs|lib gluing
 construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|lib chapter4 gluing
 surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/scalar_ext.rs src/surface/admissible.rs|lib surface gluing|corpus
 certify|src/certify/*.rs|lib chapter4
 exact|src/exact/*.rs|lib proofs
-oracle|src/oracle/*.rs src/oracle/*/*.rs|surface
+oracle|src/oracle/*.rs src/oracle/*/*.rs|lib surface
 report-harness|src/report/harness.rs src/report/check_result.rs src/report.rs|lib gluing
 conditions|src/conditions/*.rs|lib chapter4 mesh
 loop-subdiv|src/surface/loop_subdiv/*.rs|lib surface|corpus

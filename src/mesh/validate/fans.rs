@@ -489,5 +489,15 @@ mod tests {
         assert!(triangles_meet_improperly(&pos, t1, [0, 5, 3]));
         assert!(triangles_meet_improperly(&pos, t1, [0, 1, 5]));
         assert!(!triangles_meet_improperly(&pos, t1, [0, 1, 6]));
+        // A side that overflows (n·(q − a) = ∞ while its error bound, rounded in another
+        // order, is finite) is undecided: the pair goes to the exact test.
+        let huge = [
+            [0.0, 0.0, 0.0],
+            [1.2e154, 0.0, 0.0],
+            [0.0, 1.2e154, 0.0],
+            [0.0, 0.0, 1e10],
+            [1e10, 1e10, 1e10],
+        ];
+        assert!(!separated(&huge, [0, 1, 2], [0, 3, 4]));
     }
 }
