@@ -638,5 +638,18 @@ mod tests {
         assert!(g6
             .non_injective(&Region::of(Interval::pi_range()))
             .is_empty());
+        // After a rotation by π/2 the chain has two pieces (Π wraps at t = 1/2), whose images
+        // touch: g_7 ∘ R identifies φ = Π(t + 1/2) with φ ∓ 12/7 exactly where g_7 does,
+        // on (−1, −5/7] ∪ (5/7, 1] in φ, i.e. t ∈ (3/14, 11/14]; g_6 ∘ R is injective.
+        let r = || PMap::rot("R", q(1, 2));
+        let pi = Region::of(Interval::pi_range());
+        assert_eq!(Chain(vec![PMap::g("g", 7), r()]).eval(&pi).len(), 2);
+        assert_eq!(
+            Chain(vec![PMap::g("g", 7), r()]).non_injective(&pi),
+            Region::of(Interval::open_closed(q(3, 14), q(11, 14)))
+        );
+        assert!(Chain(vec![PMap::g("g", 6), r()])
+            .non_injective(&pi)
+            .is_empty());
     }
 }
