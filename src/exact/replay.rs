@@ -525,5 +525,10 @@ mod tests {
             StepVerdict::Fails(s) => assert!(s.contains("by 1/2·π"), "{s}"),
             v => panic!("5π/2 taken for a multiple of 2π: {v}"),
         }
+        // The witness is lhs − rhs: 1/2 − 1/4 = 1/4 (the sum would say 3/4).
+        match rot_eq(vec![(1, 2)], vec![(1, 4)]) {
+            StepVerdict::Fails(s) => assert!(s.contains("by 1/4·π"), "{s}"),
+            v => panic!("π/2 taken for π/4: {v}"),
+        }
     }
 }
