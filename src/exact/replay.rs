@@ -484,6 +484,50 @@ mod tests {
         .0
     }
 
+    /// The printed table: per step a mark (ok / XX against the recorded verdict), its id, the
+    /// paper's claim and the computed verdict, then the details.
+    #[test]
+    fn render_lists_each_step_with_its_mark_claim_and_verdict() {
+        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+        let steps = vec![
+            Step::new(
+                "S-1",
+                "a full turn is the identity",
+                StepCheck::RotEq {
+                    lhs: vec![q(2, 1)],
+                    rhs: vec![],
+                },
+                Expect::Holds,
+            ),
+            Step::new(
+                "S-2",
+                "π/2 is π/4",
+                StepCheck::RotEq {
+                    lhs: vec![q(1, 2)],
+                    rhs: vec![q(1, 4)],
+                },
+                Expect::Holds,
+            ),
+        ];
+        let mut out = replay(&steps);
+        out[1].detail.push("a detail".into());
+        let text = render(&steps, &out);
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines.len(), 5, "{text}");
+        assert!(
+            lines[0].starts_with("ok ") && lines[0].contains("S-1"),
+            "{text}"
+        );
+        assert!(lines[0].contains("a full turn is the identity"), "{text}");
+        assert!(lines[1].contains("⇒ holds"), "{text}");
+        assert!(
+            lines[2].starts_with("XX ") && lines[2].contains("S-2"),
+            "{text}"
+        );
+        assert!(lines[3].contains("FAILS: angles differ by 1/4·π"), "{text}");
+        assert!(lines[4].contains("· a detail"), "{text}");
+    }
+
     /// `PointOutside` is strict membership in an open disk: the centre fails the step with
     /// the point named, a point on the circle and one beyond it hold.
     #[test]
