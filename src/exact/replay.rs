@@ -484,6 +484,240 @@ mod tests {
         .0
     }
 
+    /// Every kind of step both ways, with the exact region where it fails: a check that
+    /// could only hold (or only fail) on the paper's configurations fails here.
+    #[test]
+    fn every_step_kind_holds_and_fails_where_it_should() {
+        use crate::exact::polar::{Chain, Interval, PMap};
+        use crate::exact::q3::Q3;
+        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+        let none = BTreeMap::new();
+        let run = |c: StepCheck| run_check(&c, &none).0;
+        let fails_on = |holds: Region, fails: Region| StepVerdict::HoldsOn { holds, fails };
+        let pi = || Region::of(Interval::pi_range());
+        let g = |m| Chain(vec![PMap::g("g", m)]);
+        // Derived: holds when every premise holds or is a definition, else names the others.
+        let mut done = BTreeMap::new();
+        done.insert("a".to_string(), StepVerdict::Holds);
+        done.insert("b".to_string(), StepVerdict::Definition);
+        done.insert("c".to_string(), StepVerdict::Fails("x".into()));
+        let derived = |ids: &[&str]| {
+            run_check(
+                &StepCheck::Derived(ids.iter().map(|s| s.to_string()).collect()),
+                &done,
+            )
+            .0
+        };
+        assert_eq!(derived(&["a", "b"]), StepVerdict::Holds);
+        assert_eq!(
+            derived(&["a", "c", "z"]),
+            StepVerdict::Inherits(vec!["c".into(), "z".into()])
+        );
+        // Affine identities: h ∘ h = id, M_{π/6} ≠ id.
+        let affine = |lhs, rhs| run(StepCheck::AffineEq { lhs, rhs });
+        assert_eq!(
+            affine(vec![Affine::h(), Affine::h()], vec![Affine::identity()]),
+            StepVerdict::Holds
+        );
+        assert!(matches!(
+            affine(vec![Affine::rot_sixths(1)], vec![]),
+            StepVerdict::Fails(_)
+        ));
+        // Disk images: a disk rotated by π, the right claim, a wrong one, a map that is no
+        // isometry.
+        let disk = Disk::new(Pt::new(Q3::one(), Q3::one()), Q3::frac(1, 4));
+        let image = |map, claimed| {
+            run(StepCheck::DiskImage {
+                map,
+                disk: disk.clone(),
+                claimed,
+            })
+        };
+        let turned = Disk::new(Pt::new(-Q3::one(), -Q3::one()), Q3::frac(1, 4));
+        assert_eq!(
+            image(vec![Affine::rot_sixths(6)], turned.clone()),
+            StepVerdict::Holds
+        );
+        assert!(matches!(
+            image(vec![Affine::rot_sixths(3)], turned.clone()),
+            StepVerdict::Fails(s) if s.starts_with("image is")
+        ));
+        let mut stretch = Affine::identity();
+        stretch.l[0][0] = Q3::frac(2, 1);
+        assert_eq!(
+            image(vec![stretch], turned),
+            StepVerdict::Fails("map is not an isometry".into())
+        );
+        // A sector check both ways.
+        let sector = |lo, hi| {
+            run(StepCheck::DiskInSector {
+                disk: disk.clone(),
+                lo,
+                hi,
+            })
+        };
+        assert_eq!(sector(0, 3), StepVerdict::Holds);
+        assert!(matches!(sector(0, 1), StepVerdict::Fails(_)));
+        // Pointwise identities of chains: g_6 is Π (the identity on (−1, 1]); g_3 halves t and
+        // takes the square root of the radius, so it agrees with the identity nowhere.
+        let eq = |lhs, region| {
+            run(StepCheck::PolarEq {
+                lhs,
+                rhs: Chain(vec![]),
+                region,
+            })
+        };
+        assert_eq!(eq(g(6), pi()), StepVerdict::Holds);
+        let half = Region::of(Interval::open(q(-1, 2), q(1, 2)));
+        assert_eq!(
+            eq(g(3), half.clone()),
+            fails_on(Region::empty(), half.clone())
+        );
+        // Covers: g_7 covers all angles from (−1, 1]; g_3 of (−1/2, 1/2) is (−1/4, 1/4).
+        let covers = |chain, domain| {
+            run(StepCheck::PolarCovers {
+                chain,
+                domain,
+                target: Region::of(Interval::open(q(-1, 2), q(1, 2))),
+            })
+        };
+        assert_eq!(covers(g(7), pi()), StepVerdict::Holds);
+        assert_eq!(
+            covers(g(3), half.clone()),
+            fails_on(
+                Region::of(Interval::open(q(-1, 4), q(1, 4))),
+                Region::from_intervals(vec![
+                    Interval::open_closed(q(-1, 2), q(-1, 4)),
+                    Interval::closed_open(q(1, 4), q(1, 2)),
+                ])
+            )
+        );
+        // Into: g_3 maps (−1, 1] into (−1/2, 1/2], and into (−1/4, 1/4) only for |t| < 1/2.
+        let into = |target| {
+            run(StepCheck::PolarInto {
+                chain: g(3),
+                domain: pi(),
+                target,
+            })
+        };
+        assert_eq!(
+            into(Region::of(Interval::open_closed(q(-1, 2), q(1, 2)))),
+            StepVerdict::Holds
+        );
+        assert_eq!(
+            into(Region::of(Interval::open(q(-1, 4), q(1, 4)))),
+            fails_on(
+                Region::of(Interval::open(q(-1, 2), q(1, 2))),
+                Region::from_intervals(vec![
+                    Interval::open_closed(q(-1, 1), q(-1, 2)),
+                    Interval::closed(q(1, 2), q(1, 1)),
+                ])
+            )
+        );
+        // Injective: g_6 is, g_7 is not on (−1, −5/7] ∪ (5/7, 1].
+        let injective = |chain| {
+            run(StepCheck::PolarInjective {
+                chain,
+                domain: pi(),
+            })
+        };
+        assert_eq!(injective(g(6)), StepVerdict::Holds);
+        assert_eq!(
+            injective(g(7)),
+            fails_on(
+                Region::of(Interval::open_closed(q(-5, 7), q(5, 7))),
+                Region::from_intervals(vec![
+                    Interval::open_closed(q(-1, 1), q(-5, 7)),
+                    Interval::open_closed(q(5, 7), q(1, 1)),
+                ])
+            )
+        );
+        // Facts.
+        assert_eq!(run(StepCheck::Fact(true, "y".into())), StepVerdict::Holds);
+        assert_eq!(
+            run(StepCheck::Fact(false, "n".into())),
+            StepVerdict::Fails("n".into())
+        );
+    }
+
+    /// A set identity fails only where the left image leaves the right side's extent; a
+    /// pointwise failure inside it is said to be one.
+    #[test]
+    fn set_identity_fails_only_outside_the_right_extent() {
+        use crate::exact::polar::{Chain, Interval, PMap};
+        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+        let set_eq = |extent| {
+            run_check(
+                &StepCheck::PolarSetEq {
+                    lhs: Chain(vec![PMap::g("g", 3)]),
+                    rhs: Chain(vec![]),
+                    region: Region::of(Interval::open(q(0, 1), q(1, 2))),
+                    rhs_extent: extent,
+                },
+                &BTreeMap::new(),
+            )
+        };
+        let (v, d) = set_eq(Region::of(Interval::open(q(0, 1), q(1, 2))));
+        assert!(matches!(v, StepVerdict::HoldsOn { .. }), "{v}");
+        assert!(
+            d.iter().any(|s| s.contains("pointwise failure only")),
+            "{d:?}"
+        );
+        let (_, d) = set_eq(Region::of(Interval::open(q(1, 8), q(1, 2))));
+        assert!(
+            d.iter().any(|s| s.contains("the set identity fails")),
+            "{d:?}"
+        );
+        let (v, _) = run_check(
+            &StepCheck::PolarSetEq {
+                lhs: Chain(vec![PMap::g("g", 6)]),
+                rhs: Chain(vec![]),
+                region: Region::of(Interval::pi_range()),
+                rhs_extent: Region::of(Interval::pi_range()),
+            },
+            &BTreeMap::new(),
+        );
+        assert_eq!(v, StepVerdict::Holds);
+    }
+
+    /// Replay's match of a computed verdict against the recorded one: a failure matches
+    /// `FailsOn` only on exactly that region, and a definition only a definition.
+    #[test]
+    fn replay_matches_recorded_verdicts_exactly() {
+        use crate::exact::polar::{Chain, Interval, PMap};
+        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
+        let bad = Region::from_intervals(vec![
+            Interval::open_closed(q(-1, 1), q(-5, 7)),
+            Interval::open_closed(q(5, 7), q(1, 1)),
+        ]);
+        let inj = || StepCheck::PolarInjective {
+            chain: Chain(vec![PMap::g("g", 7)]),
+            domain: Region::of(Interval::pi_range()),
+        };
+        let steps = vec![
+            Step::new("1", "", inj(), Expect::FailsOn(bad)),
+            Step::new(
+                "2",
+                "",
+                inj(),
+                Expect::FailsOn(Region::of(Interval::pi_range())),
+            ),
+            Step::new("3", "", StepCheck::Definition, Expect::Definition),
+            Step::new("4", "", StepCheck::Definition, Expect::Holds),
+            Step::new(
+                "5",
+                "",
+                StepCheck::Derived(vec!["2".into()]),
+                Expect::Inherits,
+            ),
+            Step::new("6", "", StepCheck::Fact(false, "n".into()), Expect::Fails),
+        ];
+        let out = replay(&steps);
+        let m: Vec<bool> = out.iter().map(|o| o.matches).collect();
+        assert_eq!(m, [true, false, true, false, true, true]);
+        assert_eq!(first_mismatch(&out).map(|o| o.id.as_str()), Some("2"));
+    }
+
     /// The printed table: per step a mark (ok / XX against the recorded verdict), its id, the
     /// paper's claim and the computed verdict, then the details.
     #[test]
