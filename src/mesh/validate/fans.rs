@@ -397,7 +397,7 @@ mod tests {
     #[test]
     fn trimmed_boxes_cover_the_triangle_outside_the_cut_ball() {
         let raw = RawMesh::from_arrays(
-            vec![[0.0, 0.0, 0.0], [3.0, 0.5, -1.0], [0.5, 2.0, -1.5]],
+            vec![[0.0, 0.0, 0.0], [3.0, 0.5, -1.3], [0.5, 2.0, -1.7]],
             vec![[0, 1, 2]],
         );
         let cut = 0.8;
@@ -430,8 +430,19 @@ mod tests {
         let tb = trimmed_box(&raw, t, &fans);
         let slices = search_boxes(&raw, t, &fans);
         let full = super::face_box(&raw, t);
-        // Trimmed: the corner at 0 is cut off.
+        // Trimmed: the corner at 0 is cut off, and the box is the cut points' and the far
+        // corners' box (padded for rounding only).
         assert!(tb.lower()[0] > full.lower()[0], "{tb:?} vs {full:?}");
+        for d in 0..3 {
+            let at = |pick: fn(f64, f64) -> f64| {
+                [points[0], points[1], p[1], p[2]]
+                    .iter()
+                    .map(|x| x[d])
+                    .fold(points[0][d], pick)
+            };
+            assert!((tb.lower()[d] - at(f64::min)).abs() < 1e-12, "{tb:?}");
+            assert!((tb.upper()[d] - at(f64::max)).abs() < 1e-12, "{tb:?}");
+        }
         for q in &points {
             assert!(tb.contains_point(q), "{q:?} not in {tb:?}");
             assert!(
