@@ -463,6 +463,28 @@ mod tests {
         let last = slices.last().map_or(f64::INFINITY, len);
         assert!(last < len(&tb) / 8.0, "{slices:?} vs {tb:?}");
         assert!(slices.iter().all(|b| tb.contains_envelope(b)), "{slices:?}");
+        // ... and together they still hold every point of the thin triangle beyond the cut,
+        // each slice meeting the next (no gap between them).
+        let q = &thin.positions;
+        let n = 200;
+        for i in 0..=n {
+            for j in 0..=n - i {
+                let (u, w) = (i as f64 / n as f64, j as f64 / n as f64);
+                let x: [f64; 3] = std::array::from_fn(|d| {
+                    q[0][d] + u * (q[1][d] - q[0][d]) + w * (q[2][d] - q[0][d])
+                });
+                if dist(x, q[0]) >= cut {
+                    assert!(
+                        slices.iter().any(|b| b.contains_point(&x)),
+                        "{x:?} in no slice"
+                    );
+                }
+            }
+        }
+        assert!(
+            slices.windows(2).all(|w| w[0].intersects(&w[1])),
+            "{slices:?}"
+        );
     }
 
     /// D3.1.3(ii): the f64 filter may only skip pairs that meet properly. Pairs sharing a
