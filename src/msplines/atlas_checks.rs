@@ -479,3 +479,28 @@ pub fn check_gluing_data(
     }
     acc
 }
+
+#[cfg(test)]
+mod tests {
+    use super::interiors_overlap;
+
+    /// `MS-D4`'s overlap test: triangles sharing an edge or touching boxes do not overlap,
+    /// crossing ones do, boxes that overlap with disjoint triangles do not, and one image
+    /// inside another does, in either order.
+    #[test]
+    fn ms_d4_interiors_overlap_exactly() {
+        let a = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        let cases = [
+            ([[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], false), // shares the edge
+            ([[1.0, 0.0], [2.0, 0.0], [2.0, 1.0]], false), // boxes touch at x = 1
+            ([[0.6, 0.6], [1.0, 0.6], [0.6, 1.0]], false), // boxes overlap, beyond the edge
+            ([[0.2, 0.2], [2.0, 0.2], [0.2, 2.0]], true),  // crossing
+            ([[0.1, 0.1], [0.3, 0.1], [0.1, 0.3]], true),  // inside
+            ([[-1.0, -1.0], [3.0, -1.0], [-1.0, 3.0]], true), // around
+        ];
+        for (b, want) in cases {
+            assert_eq!(interiors_overlap(&a, &b), want, "{b:?}");
+            assert_eq!(interiors_overlap(&b, &a), want, "{b:?} (swapped)");
+        }
+    }
+}

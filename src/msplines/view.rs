@@ -47,6 +47,19 @@ fn locate(t: &[P2; 3], p: P2) -> Option<[f64; 3]> {
     Some([s[0] / area, s[1] / area, s[2] / area])
 }
 
+/// Whether p lies strictly outside the axis-aligned box of the triangle's corners (exact:
+/// comparisons only).
+fn outside_box(t: &[P2; 3], p: P2) -> bool {
+    (0..2).any(|d| {
+        let (lo, hi) = t
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), c| {
+                (l.min(c[d]), h.max(c[d]))
+            });
+        p[d] < lo || p[d] > hi
+    })
+}
+
 impl<'a> AtlasView<'a> {
     /// The view on the charts `ids` (chart indices of `atlas`).
     pub fn new(k: &'a SimplicialSurface, atlas: &'a Atlas, ids: Vec<u32>) -> Self {
@@ -115,7 +128,9 @@ impl<'a> AtlasView<'a> {
     fn find(&self, i: Idx, q: P2, keep: &dyn Fn(FaceId) -> bool) -> Option<(FaceId, [f64; 3])> {
         let ch = self.atlas.charts.get(i as usize)?;
         for (&f, t) in &ch.faces {
-            if !keep(f) {
+            // Outside the triangle's box is outside the closed triangle: `locate`'s exact
+            // signs would refuse it too, at four orientation tests (most of a chart's faces).
+            if outside_box(t, q) || !keep(f) {
                 continue;
             }
             let Some(b) = locate(t, q) else { continue };
