@@ -33,7 +33,7 @@ modules() {
 mesh-validate|src/mesh/validate/*.rs|lib mesh gluing
 gluing-exact1d|src/gluing/exact1d/*.rs|lib gluing
 gluing-sampled|src/gluing/sampled/*.rs|lib gluing
-construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|lib chapter4 gluing
+construction|src/construction/maps.rs src/construction/checks/*.rs src/construction/abstract_view.rs src/construction/mesh_gluing.rs src/construction/figure.rs|lib chapter4 gluing||tests:: chapter4:: gluing:: docs_pictures
 surface|src/surface/fit.rs src/surface/fit_linear.rs src/surface/weights.rs src/surface/pps.rs src/surface/eval.rs src/surface/checks/*.rs src/surface/bezier.rs src/surface/scalar_ext.rs src/surface/admissible.rs|lib surface gluing|corpus
 certify|src/certify/*.rs|lib chapter4
 exact|src/exact/*.rs|lib proofs

@@ -207,6 +207,54 @@ mod tests {
     use super::*;
     use crate::construction::maps::in_canonical_lens;
 
+    /// The grid of Fig. 4.x as drawn: each grid line in Ω_uw (left panel, x ∈ [0, 360]) is
+    /// followed by its image under φ_wu (right panel, x ∈ [360, 720]), every point inside the
+    /// picture, and each line spans a good part of the lens (not a few pixels).
+    #[test]
+    fn d4_1_9_figure_grid_lines_lie_in_their_panels_and_span_the_lens() {
+        let svg = render_svg(5, 7).expect("valid degrees");
+        let grid: Vec<Vec<(f64, f64)>> = svg
+            .lines()
+            .filter(|l| l.contains("stroke-width:0.6"))
+            .map(|l| {
+                let pts = l
+                    .split("points=\"")
+                    .nth(1)
+                    .and_then(|r| r.split('"').next());
+                pts.unwrap_or("")
+                    .split(' ')
+                    .filter_map(|xy| {
+                        let (x, y) = xy.split_once(',')?;
+                        Some((x.parse().ok()?, y.parse().ok()?))
+                    })
+                    .collect()
+            })
+            .collect();
+        assert_eq!(
+            grid.len(),
+            2 * 2 * 8,
+            "two directions × 8 lines, each drawn twice"
+        );
+        for (n, line) in grid.iter().enumerate() {
+            let panel = (n % 2) as f64;
+            assert!(line.len() > 10, "line {n}: {line:?}");
+            for &(x, y) in line {
+                assert!(
+                    x >= panel * PANEL && x <= (panel + 1.0) * PANEL,
+                    "line {n}: x = {x}"
+                );
+                assert!((0.0..=PANEL + 40.0).contains(&y), "line {n}: y = {y}");
+            }
+            let span = |f: fn(&(f64, f64)) -> f64| {
+                let v: Vec<f64> = line.iter().map(f).collect();
+                v.iter().cloned().fold(f64::NEG_INFINITY, f64::max)
+                    - v.iter().cloned().fold(f64::INFINITY, f64::min)
+            };
+            let extent = span(|p| p.0).max(span(|p| p.1));
+            assert!(extent > 20.0, "line {n} spans {extent} px");
+        }
+    }
+
     /// The drawn lens of Figs. 4.1–4.6 is the boundary of the canonical lens E (Sec. 4.1):
     /// every vertex of the polyline has points of E within 10⁻⁶ and points outside E within
     /// 10⁻⁶, and the two arcs meet at E's corners (1/2, ±√2/2).
