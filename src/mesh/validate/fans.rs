@@ -388,6 +388,28 @@ mod tests {
             found > 40,
             "only {found} improper pairs: the fans do not fold"
         );
+        // A corner of almost π (its arc bulges far from its end directions, here toward +y)
+        // over a narrow corner at that bulge: the pair meets along a segment from the centre
+        // (not mirror-symmetric: a wrong tangent point of such a pair can land on the same
+        // coordinate for both arcs).
+        let c = [3.0, -2.0, 5.0];
+        let at = |d: [f64; 3]| std::array::from_fn(|k| c[k] + d[k]);
+        let raw = RawMesh::from_arrays(
+            vec![
+                c,
+                at([1.0, 0.1, 0.0]),
+                at([-1.0, 0.15, 0.0]),
+                at([0.05, 1.0, 0.3]),
+                at([-0.1, 1.2, -0.2]),
+            ],
+            vec![[0, 1, 2], [0, 3, 4]],
+        );
+        assert!(triangles_meet_improperly(
+            &raw.positions,
+            raw.faces[0],
+            raw.faces[1]
+        ));
+        assert_eq!(star_pairs(&raw, 0, &[0, 1]).0, vec![(0, 1)]);
     }
 
     /// The trimmed box (and the slices of `search_boxes`) must hold every point of the
