@@ -277,6 +277,32 @@ fn d4_1_10_f64_vs_mp_agreement_within_eps_bound() {
         let (a, b, d) = phi_wu_f64_vs_mp(&pair, p.to_f64(), 256).unwrap();
         let bound = maps::ROUNDTRIP_COND * 2.0f64.powi(-53);
         assert!(d < bound, "{cfg:?}: {a:?} vs {b:?}: {d:e} ≥ {bound:e}");
+        // The f64 value is φ_wu's own (a point of Ω_wu: not the origin), and the Mp one,
+        // rounded to f64, agrees with it to the bound.
+        let pf = P2::new(p.to_f64()[0], p.to_f64()[1]);
+        assert_eq!(a, phi_wu(&pair, &pf).unwrap().to_f64(), "{cfg:?}");
+        assert!(a[0].hypot(a[1]) > 0.1, "{cfg:?}: {a:?}");
+        let ab = (a[0] - b[0]).hypot(a[1] - b[1]);
+        assert!(ab < bound, "{cfg:?}: {ab:e}");
+    }
+}
+
+/// p ≠ 0 three-valued: the origin is not in the punctured sets, in f64 and in Mp, and a
+/// point on an axis is.
+#[test]
+fn d4_1_1_is_nonzero_refuses_only_the_origin() {
+    let zero = P2::new(0.0f64, 0.0);
+    assert_eq!(is_nonzero(&zero), Trit::False);
+    assert_eq!(in_omega_v_punctured(6, &zero), Trit::False);
+    assert_eq!(in_int_c_punctured(&zero), Trit::False);
+    assert_eq!(is_nonzero(&P2::<Mp>::from_f64(0.0, 0.0, 128)), Trit::False);
+    for p in [[0.0, 0.25], [-0.25, 0.0], [0.1, -0.1]] {
+        assert_eq!(is_nonzero(&P2::new(p[0], p[1])), Trit::True, "{p:?}");
+        assert_eq!(
+            in_omega_v_punctured(6, &P2::new(p[0], p[1])),
+            Trit::True,
+            "{p:?}"
+        );
     }
 }
 
