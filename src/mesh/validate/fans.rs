@@ -352,6 +352,7 @@ mod tests {
         use rand::{Rng, SeedableRng};
         let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
         let mut found = 0;
+        let mut whole = 0;
         for _ in 0..40 {
             let c: [f64; 3] = std::array::from_fn(|_| rng.gen_range(-100.0..100.0));
             let mut positions = vec![c];
@@ -382,8 +383,17 @@ mod tests {
                 }
             }
             assert_eq!(got, want, "centre {c:?}");
+            // The whole search (the star's pairs and the general one): each pair once.
+            let (_, mut all) = super::super::intersect::triangles_meet_properly_pairs(
+                &raw,
+                &vec![true; raw.faces.len()],
+            );
+            all.sort_unstable();
+            whole += usize::from(!all.is_empty());
+            assert_eq!(all, want, "centre {c:?} (whole search)");
             found += want.len();
         }
+        assert!(whole > 10, "the whole search found pairs in {whole} fans");
         assert!(
             found > 40,
             "only {found} improper pairs: the fans do not fold"
