@@ -86,3 +86,20 @@ pub fn origin<S: Scalar>(prec: u32) -> P2<S> {
 pub fn membership<S: Scalar>(pair: &VertexPair, p: &P2<S>) -> Trit {
     Paper.in_omega_pair(pair, p)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::amp;
+
+    /// The tolerances' amplification by degree: max over the degrees of max(m/6, 6/m), at
+    /// least 1 (g_v stretches angles by m/6, g_v⁻¹ by 6/m).
+    #[test]
+    fn amp_is_the_largest_angle_stretch_of_the_degrees() {
+        assert_eq!(amp(&[]), 1.0);
+        assert_eq!(amp(&[6]), 1.0);
+        assert_eq!(amp(&[3]), 2.0);
+        assert_eq!(amp(&[7]), 7.0 / 6.0);
+        assert_eq!(amp(&[12, 4]), 2.0);
+        assert_eq!(amp(&[5, 13]), 13.0 / 6.0);
+    }
+}
