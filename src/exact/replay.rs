@@ -467,13 +467,10 @@ pub fn plant_sign_error(step: &mut Step) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::exact::q3::q;
 
     fn rot_eq(lhs: Vec<(i64, i64)>, rhs: Vec<(i64, i64)>) -> StepVerdict {
-        let v = |x: Vec<(i64, i64)>| -> Vec<Q> {
-            x.into_iter()
-                .map(|(n, d)| Q::new(n.into(), d.into()))
-                .collect()
-        };
+        let v = |x: Vec<(i64, i64)>| -> Vec<Q> { x.into_iter().map(|(n, d)| q(n, d)).collect() };
         run_check(
             &StepCheck::RotEq {
                 lhs: v(lhs),
@@ -490,7 +487,6 @@ mod tests {
     fn every_step_kind_holds_and_fails_where_it_should() {
         use crate::exact::polar::{Chain, Interval, PMap};
         use crate::exact::q3::Q3;
-        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
         let none = BTreeMap::new();
         let run = |c: StepCheck| run_check(&c, &none).0;
         let fails_on = |holds: Region, fails: Region| StepVerdict::HoldsOn { holds, fails };
@@ -645,7 +641,6 @@ mod tests {
     #[test]
     fn set_identity_fails_only_outside_the_right_extent() {
         use crate::exact::polar::{Chain, Interval, PMap};
-        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
         let set_eq = |extent| {
             run_check(
                 &StepCheck::PolarSetEq {
@@ -685,7 +680,6 @@ mod tests {
     #[test]
     fn replay_matches_recorded_verdicts_exactly() {
         use crate::exact::polar::{Chain, Interval, PMap};
-        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
         let bad = Region::from_intervals(vec![
             Interval::open_closed(q(-1, 1), q(-5, 7)),
             Interval::open_closed(q(5, 7), q(1, 1)),
@@ -722,7 +716,6 @@ mod tests {
     /// paper's claim and the computed verdict, then the details.
     #[test]
     fn render_lists_each_step_with_its_mark_claim_and_verdict() {
-        let q = |n: i64, d: i64| Q::new(n.into(), d.into());
         let steps = vec![
             Step::new(
                 "S-1",

@@ -446,18 +446,23 @@ mod tests {
             let s = cut / dist(p[0], p[y]);
             points.push(std::array::from_fn(|i| p[0][i] + s * (p[y][i] - p[0][i])));
         }
-        let n = 40;
-        for i in 0..=n {
-            for j in 0..=n - i {
-                let (u, w) = (i as f64 / n as f64, j as f64 / n as f64);
-                let q: [f64; 3] = std::array::from_fn(|d| {
-                    p[0][d] + u * (p[1][d] - p[0][d]) + w * (p[2][d] - p[0][d])
-                });
-                if dist(q, p[0]) >= cut {
-                    points.push(q);
+        // A grid of n steps per side over triangle p, the points at distance ≥ cut from p[0].
+        let beyond_cut = |p: &[[f64; 3]], n: usize| {
+            let mut out = Vec::new();
+            for i in 0..=n {
+                for j in 0..=n - i {
+                    let (u, w) = (i as f64 / n as f64, j as f64 / n as f64);
+                    let q: [f64; 3] = std::array::from_fn(|d| {
+                        p[0][d] + u * (p[1][d] - p[0][d]) + w * (p[2][d] - p[0][d])
+                    });
+                    if dist(q, p[0]) >= cut {
+                        out.push(q);
+                    }
                 }
             }
-        }
+            out
+        };
+        points.extend(beyond_cut(p, 40));
         let t = [0, 1, 2];
         let tb = trimmed_box(&raw, t, &fans);
         let slices = search_boxes(&raw, t, &fans);
@@ -497,21 +502,11 @@ mod tests {
         assert!(slices.iter().all(|b| tb.contains_envelope(b)), "{slices:?}");
         // ... and together they still hold every point of the thin triangle beyond the cut,
         // each slice meeting the next (no gap between them).
-        let q = &thin.positions;
-        let n = 200;
-        for i in 0..=n {
-            for j in 0..=n - i {
-                let (u, w) = (i as f64 / n as f64, j as f64 / n as f64);
-                let x: [f64; 3] = std::array::from_fn(|d| {
-                    q[0][d] + u * (q[1][d] - q[0][d]) + w * (q[2][d] - q[0][d])
-                });
-                if dist(x, q[0]) >= cut {
-                    assert!(
-                        slices.iter().any(|b| b.contains_point(&x)),
-                        "{x:?} in no slice"
-                    );
-                }
-            }
+        for x in beyond_cut(&thin.positions, 200) {
+            assert!(
+                slices.iter().any(|b| b.contains_point(&x)),
+                "{x:?} in no slice"
+            );
         }
         assert!(
             slices.windows(2).all(|w| w[0].intersects(&w[1])),
