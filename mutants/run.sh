@@ -11,9 +11,8 @@
 # HEAD), so `../shared` resolves exactly as it does here and the tree you work in is never
 # mutated (PPM_MUTANTS_TREE names another place). Its target directory persists between
 # campaigns (incremental builds).
-# Every cargo command of the campaign builds and runs only the module's test binaries (-C) and,
-# by libtest filters, only the module's tests in them: one mutant costs one incremental build
-# of the library's test binary (which holds the suite) and of those binaries.
+# Every cargo command of the campaign builds and runs only the module's test binaries (-C), so
+# one mutant costs one incremental build of the library and those binaries, not the suite.
 # A sample takes mutant i when i % DENOM == K (cargo-mutants' round-robin shard K/DENOM, K from
 # PPM_MUTANTS_SHARD, 0 if unset): systematic, deterministic for a given commit, and spread over
 # every file of the module. A fresh sample of a module whose earlier sample's survivors were
@@ -24,9 +23,8 @@ here="$(cd "$(dirname "$0")/.." && pwd)"
 results="$here/mutants/results.tsv"
 
 # name | file globs (space separated) | tests (space separated): `lib` = the library's unit
-#        tests, `proofs` = that test binary (proofs/main.rs), any other name a theme of the suite
-#        (tests/suite, in the library's test binary, and tests/cli: `mesh`, `gluing`, `chapter4`,
-#        `surface`, `seeds`)
+#        tests, `proofs` = that test binary (proofs/main.rs), any other name a theme of the suite binary
+#        (tests/suite: `mesh`, `gluing`, `chapter4`, `surface`, `seeds`)
 #      | test names to skip (optional: the corpus-wide tests, minutes per mutant)
 #      | test-name filters (optional, space separated: only tests whose path contains one of
 #        them, e.g. the module's own tests in a theme that also holds slow engines)
@@ -105,30 +103,19 @@ args=(--in-place --profile mutants --output "$outdir" "${files[@]}")
 themes=() haslib=0
 for t in $tests; do
     case "$t" in
-        lib) haslib=1 ;;
+        lib) haslib=1 args+=(-C --lib) ;;
         proofs) args+=(-C "--test=$t") ;;
-        *) themes+=("suite::$t::") ;;
+        *) themes+=("$t::") ;;
     esac
 done
-# The library's test binary holds its unit tests (each in a `tests` module) and the suite
-# (`suite::THEME::…`, tests/suite/main.rs); `tests/cli` holds the suite's tests that run the
-# `ppm` binary, under the same `suite::THEME::…` paths.
-if [[ $haslib == 1 || ${#themes[@]} -gt 0 ]]; then
-    args+=(-C --lib)
-fi
 if [[ ${#themes[@]} -gt 0 ]]; then
-    args+=(-C --test=cli)
-fi
-# libtest's filters apply to every binary of the run. Without a row filter, the themes (and
-# `tests::`, the module every unit test of the library sits in) select the row's tests; a row
-# of unit tests and proofs only skips the suite instead (a `tests::` filter would drop every
-# proof).
-if [[ -z "${filter:-}" ]]; then
-    if [[ ${#themes[@]} -gt 0 ]]; then
+    args+=(-C --test=suite)
+    # libtest's filters apply to every binary of the run. Without a row filter, the themes (and
+    # `tests::`, the module every unit test of the library sits in) select what the row's
+    # binaries held before the themes became one suite binary.
+    if [[ -z "${filter:-}" ]]; then
         filter="${themes[*]}"
         if [[ $haslib == 1 ]]; then filter="tests:: $filter"; fi
-    elif [[ $haslib == 1 ]]; then
-        skips="${skips:+$skips }suite::"
     fi
 fi
 if [[ "$again" == again ]]; then

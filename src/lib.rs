@@ -119,22 +119,3 @@ pub mod render;
 pub mod report;
 pub mod sdiff;
 pub mod surface;
-
-// The conformance suite (tests/suite/main.rs) is compiled into this crate's unit-test binary
-// rather than into an integration-test binary of its own: an integration test links the
-// finished library, so it could only start compiling when the library had, and on two cores
-// a clean `cargo test` waited for it at the end (docs/performance.md, "The suite inside the
-// library's test binary"). `extern crate self` lets its tests keep naming the crate
-// `pseudomanifold::…`, as a user does; they reach only what a user reaches, plus `pub(crate)`.
-// The tests that run the `ppm` binary stay an integration test (tests/cli), where cargo
-// guarantees that binary is built from the same sources.
-#[cfg(test)]
-extern crate self as pseudomanifold;
-#[cfg(test)]
-#[allow(unreachable_pub, missing_docs)]
-#[path = "../tests/suite/main.rs"]
-mod suite;
-// The suite's files name their shared fixtures `crate::common`, as they would at the root of
-// an integration test.
-#[cfg(test)]
-use suite::common;

@@ -1,16 +1,14 @@
-//! The conformance suite, by theme, compiled into the library's unit-test binary (`src/lib.rs`
-//! includes this file as the module `suite`): one compilation of the crate for its unit tests
-//! and the suite together, which a clean `cargo test` on two cores no longer waits for at the
-//! end (docs/performance.md, "The suite inside the library's test binary"). Its tests share the
-//! two test threads with the unit tests. Integration tests of their own: `proofs/`, `tests/cli`
-//! (the tests that run the `ppm` binary: cargo builds it from the same sources for them) and
-//! `tests/verdicts` (it reads what the others recorded, so it runs after them).
+//! The conformance suite: every integration test in one binary, by theme. Each test binary
+//! links the whole crate and instantiates its generic code again, so one binary builds faster
+//! than one per theme (measured in docs/performance.md, "The test suite's build"), and its
+//! tests share the two test threads instead of waiting for the slowest test of each binary.
+//! `tests/verdicts` stays apart: it reads what this binary recorded, so it runs after it.
 //!
-//! One theme: `cargo test --lib suite::chapter4::` (or `gluing::`, `mesh::`, `seeds::`,
-//! `surface::`); the whole suite: `cargo test --lib suite::`.
+//! One theme: `cargo test --test suite chapter4::` (or `gluing::`, `mesh::`, `seeds::`,
+//! `surface::`).
 
 #[path = "../common/mod.rs"]
-pub(crate) mod common;
+mod common;
 
 #[path = "../chapter4/mod.rs"]
 mod chapter4;

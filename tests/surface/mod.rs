@@ -2,6 +2,7 @@
 
 mod architecture;
 mod authors_code;
+mod docs_pictures;
 mod loop_sprime;
 mod one_surface;
 mod oracle;

@@ -17,6 +17,7 @@ use pseudomanifold::surface::sigma_v::{SigmaVPps, DEFAULT_KAPPA, DEFAULT_PATCH_D
 use pseudomanifold::surface::{PnTriangles, Pps, PpsOptions};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
 
 const FACE: u32 = 3;
 const BARY: [f64; 3] = [0.2, 0.3, 0.5];
@@ -137,5 +138,93 @@ fn x_one_surface_oracle_eval_answers_every_construction() {
     ok(&mut s, &load);
     let again = ok(&mut s, EVAL);
     assert_eq!(again, v);
+    record("X-one-surface", Seen::Holds, 4);
+}
+
+fn ppm(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_ppm"))
+        .args(args)
+        .output()
+        .expect("run ppm")
+}
+
+fn json(o: &Output) -> Value {
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    serde_json::from_slice(&o.stdout).expect("one JSON object")
+}
+
+#[test]
+fn x_one_surface_ppm_eval_takes_every_construction() {
+    let k = torus();
+    let mesh = torus_path();
+    let mesh = mesh.to_str().expect("utf-8 path");
+    let at = ["3", "0.2", "0.3", "0.5"];
+    let eval = |extra: &[&str]| {
+        let mut a = vec!["eval", mesh];
+        a.extend(at);
+        a.extend(extra);
+        ppm(&a)
+    };
+    // The vertex PPS: the line its own eval_geometry gives, byte for byte.
+    let pps = Pps::build(&k, &PnTriangles::new(&k), PpsOptions::default());
+    let (chart, vx, g) = pps
+        .eval_geometry(FaceId(FACE), BARY, &pps.consts(53))
+        .expect("geometry");
+    let line = format!(
+        "{{\"face\": {FACE}, \"bary\": {BARY:?}, \"chart\": \"{chart:?}\", \"vertex\": {vx}, \"point\": {:?}, \"normal\": {:?}, \"gaussian\": {}, \"mean\": {}}}\n",
+        g.point, g.normal, g.gaussian, g.mean
+    );
+    let o = eval(&[]);
+    assert_eq!(String::from_utf8_lossy(&o.stdout), line);
+    // The (σ, v) PPS: its corner, normal and curvatures.
+    let sv = json(&eval(&["--construction", "sigma-v"]));
+    assert!(
+        sv["corner"].is_object() && sv["gaussian"].is_number(),
+        "{sv}"
+    );
+    // The manifold spline: the point, and its missing jets a typed refusal (exit 1).
+    let sp = json(&eval(&[
+        "--construction",
+        "manifold-spline",
+        "--attributes",
+        "positions",
+    ]));
+    let mut s = Session::with_surface(k.clone());
+    ok(
+        &mut s,
+        r#"{"op":"set_construction","construction":"manifold-spline"}"#,
+    );
+    let want = s
+        .reference()
+        .expect("spline")
+        .eval_f64(FaceId(FACE), BARY)
+        .expect("eval");
+    assert_eq!(bits(&f64s(&sp["point"])), bits(&want));
+    let o = eval(&["--construction", "manifold-spline"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(o.stdout.is_empty());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("not available") && err.contains("--attributes positions"),
+        "{err}"
+    );
+    // A fitted-surface file: its point (positions by default) and its corner; a construction
+    // option is a usage error.
+    let path = fit_file("cli.fit");
+    let fit = path.to_str().expect("utf-8 path");
+    let mut a = vec!["eval", fit];
+    a.extend(at);
+    let one = json(&ppm(&a));
+    let back = read_fit(&path).expect("read");
+    let want = back.pps.eval_f64(FaceId(FACE), BARY).expect("eval");
+    assert_eq!(bits(&f64s(&one["point"])), bits(&want));
+    assert!(one["corner"].is_object(), "{one}");
+    a.extend(["--construction", "sigma-v"]);
+    assert_eq!(ppm(&a).status.code(), Some(2));
     record("X-one-surface", Seen::Holds, 4);
 }

@@ -115,17 +115,13 @@ fn first_words(s: &str) -> String {
 /// One record: (ID, seen, examined).
 type Record = (String, String, u64);
 
-/// The test binaries that record (`<binary>.jsonl`): the library's unit-test binary, which holds
-/// the suite (`tests/suite/main.rs`), the proofs, the tests of the `ppm` binary and this one
-/// (`X-spec-verdicts`). Only these
-/// files are read, so the record of a binary that no longer exists (`suite.jsonl`, before the
-/// suite moved into the library's test binary) cannot stand in for a test that no longer runs.
-const RECORDING_BINARIES: [&str; 4] = ["pseudomanifold", "proofs", "cli", "verdicts"];
-
 fn read_records(dir: &Path) -> Vec<Record> {
     let mut out = Vec::new();
-    for bin in RECORDING_BINARIES {
-        let Ok(text) = std::fs::read_to_string(dir.join(format!("{bin}.jsonl"))) else {
+    let Ok(rd) = std::fs::read_dir(dir) else {
+        return out;
+    };
+    for e in rd.flatten() {
+        let Ok(text) = std::fs::read_to_string(e.path()) else {
             continue;
         };
         for line in text.lines() {
