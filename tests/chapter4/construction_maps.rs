@@ -420,6 +420,29 @@ fn p4_1_2_holds_proof_step_fails_and_planted_fault_caught() {
     assert_fails_with_witness(&r[0]);
 }
 
+/// g_(u,w) constant at (r, 0) on Ω_u − {0}: every image has norm r.
+struct ConstG(f64);
+impl<S: Scalar> Ppm<S> for ConstG {
+    fn g_uw(&self, _e: &EdgeConfig, p: &P2<S>) -> Result<P2<S>, MapError> {
+        Ok(P2::new(p.x.like_f64(self.0), p.x.like_f64(0.0)))
+    }
+}
+
+/// P4.1.2's bound is δ = (1 − cos π/6)·cos(π/m_w)/cos(π/6), no other: images of norm 1 % above
+/// δ hold and 1 % below fail, at m_w = 4 (δ ≈ 0.1094, below 1 − cos π/6) and m_w = 12
+/// (δ ≈ 0.1494, above it), so a δ off by the factor cos(π/m_w)/cos(π/6) either way is caught.
+#[test]
+fn p4_1_2_delta_is_the_stated_bound_planted_norms_either_side() {
+    use std::f64::consts::PI;
+    for m_w in [4u32, 12] {
+        let delta = (1.0 - (PI / 6.0).cos()) * (PI / m_w as f64).cos() / (PI / 6.0).cos();
+        let r = check_p4_1_2::<f64, _>(&ConstG(delta * 1.01), &e(5, 1, m_w, 0), SEED, N, 53);
+        common::assert_holds(&r[0]);
+        let r = check_p4_1_2::<f64, _>(&ConstG(delta * 0.99), &e(5, 1, m_w, 0), SEED, N, 53);
+        assert_fails_with_witness(&r[0]);
+    }
+}
+
 #[test]
 fn p4_1_3_inverse_fails_for_m_u_ge_11_holds_below() {
     let r = check_p4_1_3::<f64, _>(&Paper, &e(12, 3, 6, 0), SEED, N, 53);
