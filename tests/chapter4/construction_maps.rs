@@ -487,6 +487,46 @@ fn d4_1_9_lens_planted_fault_caught() {
     ));
 }
 
+/// g_v constant at (x, y), and a lens test that answers the opposite of the literal Def. 4.1.9
+/// at every point: every sample disagrees, with g_u∘R_(u,w)(p) = (x, y).
+struct DisagreeAt(f64, f64);
+impl<S: Scalar> Ppm<S> for DisagreeAt {
+    fn g_v(&self, _m: u32, p: &P2<S>) -> Result<P2<S>, MapError> {
+        Ok(P2::new(p.x.like_f64(self.0), p.x.like_f64(self.1)))
+    }
+    fn in_omega_uw_lens(&self, e: &EdgeConfig, p: &P2<S>) -> Trit {
+        match self.in_omega_uw_literal(e, p) {
+            Trit::True => Trit::False,
+            _ => Trit::True,
+        }
+    }
+}
+
+/// D4.1.9-lens ignores a disagreement only within the rounding margin of ∂E, the two circles of
+/// radius √3/2 centred at (0, 0) and (1, 0) that bound the lens: with g_u∘R_(u,w)(p) on either
+/// one, every sample's disagreement is ignored (and the note counts them all); on the circle
+/// centred at (−1, 0), or off every circle, none is.
+#[test]
+fn d4_1_9_lens_margin_is_to_the_two_circles_of_the_lens() {
+    let r3 = 0.75f64.sqrt();
+    for (x, ignored) in [
+        (r3, true),
+        (1.0 - r3, true),
+        (r3 - 1.0, false),
+        (0.5, false),
+    ] {
+        let r =
+            check_d4_1_9_lens_agreement::<f64, _>(&DisagreeAt(x, 0.0), &e(6, 1, 6, 2), SEED, N, 53);
+        if ignored {
+            common::assert_holds(&r);
+            let all = format!("{} disagreements within the rounding margin", r.examined);
+            assert!(r.note.contains(&all), "x = {x}: {}", r.note);
+        } else {
+            assert_fails_with_witness(&r);
+        }
+    }
+}
+
 #[test]
 fn p4_2_1_holds_and_planted_fault_caught() {
     common::assert_holds(&check_p4_2_1::<f64, _>(&Paper, &e(5, 0, 7, 3), SEED, N, 53));
