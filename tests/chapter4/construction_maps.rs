@@ -353,6 +353,31 @@ fn c4_1_6_gv_smooth_planted_fault_caught() {
     assert_fails_with_witness(&r[0]);
 }
 
+/// g_v plus the smooth bump c·p·exp(−|p|²/s²), s = 0.02: its Jacobian differs from g_v's by
+/// about c within |p| ≈ s and by nothing measurable beyond |p| ≈ 5s.
+struct BumpG(f64);
+impl<S: Scalar> Ppm<S> for BumpG {
+    fn g_v(&self, m: u32, p: &P2<S>) -> Result<P2<S>, MapError> {
+        let q = g_v(m, p)?;
+        let b = p.x.like_f64(self.0 * (-p.norm2().to_f64() / 4e-4).exp());
+        Ok(P2::new(q.x.add(&p.x.mul(&b)), q.y.add(&p.y.mul(&b))))
+    }
+}
+
+/// The finite-difference tolerance of the smoothness tests is 16·(h²·L·k²/(6r²) + ε(|F(p)| +
+/// L·r)/h) with h = ε^{1/3}·r: for g_v at m_v = 6 about 8·10⁻¹⁰ at every radius r. A Jacobian
+/// off by 10⁻⁸ only near the centre must fail there; a rounding term that grew like 1/r² near
+/// the centre (L/r in place of L·r) would excuse it.
+#[test]
+fn c4_1_6_gv_smooth_fd_tolerance_does_not_grow_near_the_centre() {
+    let r = check_c4_1_6_gv_smooth::<f64, _>(&BumpG(1e-8), 6, SEED, N, 53);
+    assert_fails_with_witness(&r[0]);
+    let p = &r[0].witnesses[0].data["p"];
+    let (x, y) = (p[0].as_f64(), p[1].as_f64());
+    let rad = x.zip(y).map(|(x, y)| x.hypot(y));
+    assert!(rad.is_some_and(|r| r < 0.05), "witness at {p}");
+}
+
 #[test]
 fn c4_1_8_onto_intc_fails_for_small_degree_holds_otherwise() {
     let r = check_c4_1_8_onto_int_c::<f64, _>(&Paper, &e(4, 1, 6, 0), SEED, N, 53);
