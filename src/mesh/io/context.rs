@@ -84,3 +84,20 @@ pub(crate) fn capped_capacity(count: u64, remaining: usize, min_bytes_each: usiz
     let fit = remaining / min_bytes_each.max(1);
     usize::try_from(count).unwrap_or(usize::MAX).min(fit)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::capped_capacity;
+
+    /// The hint is the claimed count when the bytes left could hold it, and never more than
+    /// they could: a header claiming 10¹⁸ elements in 100 bytes reserves room for 16, not 10¹⁸
+    /// (nor none, which would only be slower, so pinned here rather than seen by a reader test).
+    #[test]
+    fn capped_capacity_is_the_count_capped_by_the_bytes_left() {
+        assert_eq!(capped_capacity(10, 100, 6), 10);
+        assert_eq!(capped_capacity(1_000_000_000_000_000_000, 100, 6), 16);
+        assert_eq!(capped_capacity(u64::MAX, 100, 8), 12);
+        assert_eq!(capped_capacity(5, 100, 0), 5);
+        assert_eq!(capped_capacity(5, 0, 6), 0);
+    }
+}
