@@ -114,6 +114,42 @@ fn quick() -> Ch4Options {
     }
 }
 
+/// The coverage a Chapter 4 run reports is K's own count: every oriented edge, triangle and
+/// vertex, each covered once when no configuration is left out (`quick()`'s limits exceed the
+/// octahedron's and the icosahedron's configuration counts).
+#[test]
+fn ch4_coverage_counts_every_oriented_edge_triangle_and_vertex() {
+    for (name, raw, (v, e, t)) in [
+        ("octahedron", octahedron(), (6, 12, 8)),
+        ("icosahedron", icosahedron(), (12, 30, 20)),
+    ] {
+        let c = run_chapter4(&surface(&raw), &quick()).coverage;
+        assert_eq!(
+            (c.vertices, c.oriented_edges, c.triangles),
+            (v, 2 * e, t),
+            "{name}"
+        );
+        assert_eq!(c.edge_configs_checked, c.edge_configs, "{name}");
+        assert_eq!(c.triangle_configs_checked, c.triangle_configs, "{name}");
+        assert_eq!(c.star_configs_checked, c.star_configs, "{name}");
+        assert_eq!(
+            (c.vertices_covered, c.edges_covered, c.triangles_covered),
+            (v, 2 * e, t),
+            "{name}"
+        );
+    }
+}
+
+/// A certificate property names the Chapter 4 check it certifies by its ID and the suffix
+/// `(cert)`; other names stand for themselves.
+#[test]
+fn ch4_cert_property_check_id_drops_only_the_cert_suffix() {
+    use pseudomanifold::conditions::chapter4::cert_property_check_id;
+    assert_eq!(cert_property_check_id("L4.2.1(cert)"), "L4.2.1");
+    assert_eq!(cert_property_check_id("P4.2.3(cert)"), "P4.2.3");
+    assert_eq!(cert_property_check_id("D4.1.9-lens"), "D4.1.9-lens");
+}
+
 #[test]
 fn c4_1_6_gv_bijective_errata_depend_on_degree_on_meshes() {
     // Every vertex of the grid torus has degree 6: the statements that fail only for m ≠ 6
