@@ -469,3 +469,53 @@ fn utf8_bom_is_skipped() {
     .unwrap();
     assert_eq!(m.faces, vec![[0, 1, 2]]);
 }
+
+/// A coordinate declared as a list is refused by name, at its header line (not read as an
+/// unknown property and then missed).
+#[test]
+fn ply_coordinate_declared_as_a_list_is_refused() {
+    let text = "ply\nformat ascii 1.0\nelement vertex 3\nproperty list uchar float x\n\
+                property float y\nproperty float z\nelement face 1\n\
+                property list uchar int vertex_indices\nend_header\n\
+                1 0 0 0\n1 1 0 0\n1 0 1 0\n3 0 1 2\n";
+    let e = read_mesh_from_bytes(
+        text.as_bytes(),
+        MeshFormat::PlyAscii,
+        "x-list.ply",
+        &Default::default(),
+    )
+    .unwrap_err();
+    let msg = e.to_string();
+    assert!(msg.contains("vertex property 'x' is a list"), "{msg}");
+    assert!(msg.contains("line 4"), "{msg}");
+}
+
+/// A binary file that ends inside an element the reader skips says how many of its elements
+/// were complete: 14 bytes of 4-byte elements are 3.
+#[test]
+fn binary_ply_truncated_in_a_skipped_element_names_the_last_complete_one() {
+    let mut b = b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n\
+                  property float y\nproperty float z\nelement face 1\n\
+                  property list uchar int vertex_indices\nelement extra 10\n\
+                  property float a\nend_header\n"
+        .to_vec();
+    for v in [[0f32, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]] {
+        for c in v {
+            b.extend_from_slice(&c.to_le_bytes());
+        }
+    }
+    b.push(3);
+    for i in [0i32, 1, 2] {
+        b.extend_from_slice(&i.to_le_bytes());
+    }
+    b.extend_from_slice(&[0u8; 14]);
+    let e = read_mesh_from_bytes(
+        &b,
+        MeshFormat::PlyBinaryLittleEndian,
+        "extra.ply",
+        &Default::default(),
+    )
+    .unwrap_err();
+    assert!(matches!(e, MeshError::Truncated { .. }), "{e}");
+    assert!(e.to_string().contains("'extra' element 3 of 10"), "{e}");
+}
