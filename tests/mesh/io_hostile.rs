@@ -519,3 +519,33 @@ fn binary_ply_truncated_in_a_skipped_element_names_the_last_complete_one() {
     assert!(matches!(e, MeshError::Truncated { .. }), "{e}");
     assert!(e.to_string().contains("'extra' element 3 of 10"), "{e}");
 }
+
+/// A polygon is fan-split when every corner is at most the planarity tolerance (10⁻⁴ of the
+/// box diagonal) off its mean plane, *at most* included: a saddle quad whose corners lie exactly
+/// at the tolerance (h found by bisection on the reader's own f64 operations) is split, one
+/// ulp further is refused as not planar.
+#[test]
+fn polygon_corners_exactly_at_the_planarity_tolerance_are_accepted() {
+    let quad = |h: f64| {
+        format!(
+            "OFF\n4 1 0\n0 0 {h:?}\n1 0 {:?}\n1 1 {h:?}\n0 1 {:?}\n4 0 1 2 3\n",
+            -h, -h
+        )
+    };
+    let opts = ReadOptions {
+        triangulate: true,
+        ..Default::default()
+    };
+    let h: f64 = 0.000_141_421_359_065_736_72;
+    let m = read_mesh_from_bytes(quad(h).as_bytes(), MeshFormat::Off, "tie.off", &opts)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!((m.faces.len(), m.triangulated_polygons), (2, 1));
+    let e = read_mesh_from_bytes(
+        quad(f64::from_bits(h.to_bits() + 1)).as_bytes(),
+        MeshFormat::Off,
+        "tie.off",
+        &opts,
+    )
+    .unwrap_err();
+    assert!(e.to_string().contains("not planar"), "{e}");
+}
